@@ -1,0 +1,177 @@
+// §2.2 The coarsening operation: equations (8a)-(12b), with errata E2 and E3.
+//
+// The paper's Fig. 3 configuration, with the names used below. Node n is the
+// center of a refined level-l cell; its four children Y (level l+1) are merged
+// back. B is every node on the children's boundaries except n: the 4 corners
+// of the coarse cell and the 4 midpoints of its sides. A side midpoint with a
+// same-level (l) cell or the domain boundary beyond it is no longer needed
+// (J-); one with two level-(l+1) cells beyond it stays, as a junction.
+//
+//        before                                after
+//   b ------ j- ------ b ---+              b --------------- b ---+
+//   | y_3    |    y_4  |  x |              |                 |  x |
+//   |        |         |----|              |                 |----|
+//   b ------ n ------- b    |     ==>      |        n        b    |
+//   | y_1    |    y_2  |----|              |                 |----|
+//   |        |         |  x |              |                 |  x |
+//   b ------ j- ------ b ---+              b --------------- b ---+
+//
+// Each statement carries two comment lines: the spec id (spec/equations.toml)
+// and the equation as text. Deviations from the paper are marked
+// `type=deviation` and explained in spec/errata.toml.
+
+#include <bit>
+#include <stdexcept>
+
+#include "bccmis/ops.h"
+#include "bccmis/set_ops.h"
+
+namespace bccmis {
+
+std::string_view code(CoarsenRefusal r) {
+  switch (r) {
+    case CoarsenRefusal::NoSuchNode: return "no-such-node";
+    case CoarsenRefusal::NotARefinedCenter: return "not-a-refined-center";
+    case CoarsenRefusal::ChildrenRefined: return "children-refined";
+    case CoarsenRefusal::FinerNeighbor: return "finer-neighbor";
+  }
+  return "?";
+}
+
+std::optional<int> refined_center_level(const LatticeSize& size, const Point& p) {
+  const std::int64_t S = level0_side(size);
+  // Strictly inside the domain; W*S <= 2^62 so the products do not overflow.
+  if (p.x <= 0 || p.y <= 0 || p.x >= size.W * S || p.y >= size.H * S) return std::nullopt;
+  // A level-l center has both coordinates odd multiples of 2^(L-l).
+  const int tx = std::countr_zero(static_cast<std::uint64_t>(p.x));
+  const int ty = std::countr_zero(static_cast<std::uint64_t>(p.y));
+  if (tx != ty) return std::nullopt;
+  const int l = size.L - tx;
+  if (l < 0 || l >= size.L) return std::nullopt;  // grid node (l < 0) or level-L center
+  return l;
+}
+
+std::optional<CoarsenRefusal> can_coarsen(const Graph& g, const Vertex& n) {
+  //= erleben2009#pre-coarsen-node
+  //# n in N
+  if (!g.is_node(n)) return CoarsenRefusal::NoSuchNode;
+  //= erleben2009#pre-coarsen-refined-center
+  //= type=deviation
+  //= reason=E3: |N(n)| = 4 also holds at grid nodes and at midpoints between refined cells
+  //# n is the center of a refined level-l cell, l = L - log2(lowest set bit of n.x and n.y)
+  const std::optional<int> l = refined_center_level(g.size, n);
+  if (!l) return CoarsenRefusal::NotARefinedCenter;
+  //= erleben2009#pre-coarsen-not-junction
+  //# |N(n)| = 4
+  if (g.nbr(n).size() != 4) return CoarsenRefusal::NotARefinedCenter;
+  //= erleben2009#pre-coarsen-children-leaves
+  //= type=deviation
+  //= reason=E3: a refined child would leave overlapping cells
+  //# for all y in N(n): level(y) = l + 1
+  for (const Vertex& y : g.nbr(n))
+    if (!g.is_center(y) || g.level_of(y) != *l + 1) return CoarsenRefusal::ChildrenRefined;
+  //= erleben2009#pre-coarsen-balance
+  //= type=deviation
+  //= reason=E3: a junction on a child means an edge-neighbour of level l+2
+  //# for all y in N(n): |N(y)| = 4
+  for (const Vertex& y : g.nbr(n))
+    if (g.nbr(y).size() != 4) return CoarsenRefusal::FinerNeighbor;
+  return std::nullopt;
+}
+
+CoarsenResult coarsen(Graph& g, const Vertex& n) {
+  CoarsenResult result;
+  result.refused = can_coarsen(g, n);
+  if (result.refused) return result;
+
+  auto nb = [&g](const Vertex& v) -> VertexSet& { return g.neighbors[v]; };
+  const int l = *refined_center_level(g.size, n);
+
+  // 1. The children and the boundary of the coarse cell: eq. (8a)-(8b).
+  //= erleben2009#eq-8a
+  //# Y = N(n)
+  const VertexSet Y = nb(n);
+  //= erleben2009#eq-8b
+  //# B = ( union over y_i in Y of N(y_i) ) \ {n}
+  VertexSet B;
+  for (const Vertex& y_i : Y) B = unite(B, nb(y_i));
+  B = minus(B, VertexSet{n});
+
+  // Erratum E2: the side midpoints of the coarse cell are the b shared by two
+  // children; they are found before (9a) removes the children.
+  VertexSet side_midpoints;
+  for (const Vertex& b_i : B)
+    if (intersect(nb(b_i), Y).size() == 2) side_midpoints.insert(b_i);
+
+  // 2. Unhook and delete the children (Fig. 3a): eq. (9a)-(9f).
+  //= erleben2009#eq-9a
+  //# N(b_i) = N(b_i) \ Y  for all b_i in B
+  for (const Vertex& b_i : B) nb(b_i) = minus(nb(b_i), Y);
+  //= erleben2009#eq-9b
+  //# N(y_i) = ∅  for all y_i in Y
+  for (const Vertex& y_i : Y) nb(y_i).clear();
+  //= erleben2009#eq-9c
+  //# N(n) = ∅
+  nb(n).clear();
+  //= erleben2009#eq-9d
+  //# N = N \ {n}
+  g.N = minus(g.N, VertexSet{n});
+  //= erleben2009#eq-9e
+  //# C = C ∪ {n}
+  g.C = unite(g.C, VertexSet{n});
+  g.level[n] = l;
+  //= erleben2009#eq-9f
+  //# C = C \ Y
+  g.C = minus(g.C, Y);
+  for (const Vertex& y_i : Y) {
+    g.neighbors.erase(y_i);
+    g.level.erase(y_i);
+  }
+
+  // 3. Delete the junctions the coarse cell no longer needs (Fig. 3b):
+  //    eq. (10a)-(11d).
+  //= erleben2009#eq-10a
+  //= type=deviation
+  //= reason=E2: |N(b)| = 1 alone deletes boundary corners and keeps boundary side midpoints
+  //# J- = { b in B : b is a side midpoint of the coarse cell and |N(b)| <= 1 }
+  VertexSet J_minus;
+  for (const Vertex& b_i : side_midpoints)
+    if (nb(b_i).size() <= 1) J_minus.insert(b_i);
+  //= erleben2009#eq-10b
+  //# B = B \ J-
+  B = minus(B, J_minus);
+  //= erleben2009#eq-10c
+  //# N = N \ J-
+  g.N = minus(g.N, J_minus);
+  for (const Vertex& j_i : J_minus) {
+    //= erleben2009#eq-11a
+    //= type=deviation
+    //= reason=E2: x_i is a set of 0 or 1 cells (none on the domain boundary)
+    //# x_i = N(j-_i)
+    const VertexSet x_i = nb(j_i);
+    //= erleben2009#eq-11b
+    //# N(x_i) = N(x_i) \ {j-_i}
+    for (const Vertex& x : x_i) nb(x) = minus(nb(x), VertexSet{j_i});
+    //= erleben2009#eq-11c
+    //# N(j-_i) = ∅
+    nb(j_i).clear();
+    g.neighbors.erase(j_i);
+  }
+  //= erleben2009#eq-11d
+  //# N = N \ J-   (repeats eq. 10c; erratum E5)
+  g.N = minus(g.N, J_minus);
+
+  // 4. Connect the coarse cell to its boundary (Fig. 3c): eq. (12a)-(12b).
+  //= erleben2009#eq-12a
+  //# N(n) = B
+  nb(n) = B;
+  //= erleben2009#eq-12b
+  //# N(b_i) = N(b_i) ∪ {n}  for all b_i in B
+  for (const Vertex& b_i : B) nb(b_i) = unite(nb(b_i), VertexSet{n});
+
+  result.Y = Y;
+  result.J_minus = J_minus;
+  return result;
+}
+
+}  // namespace bccmis

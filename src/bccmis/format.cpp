@@ -1,0 +1,381 @@
+#include "bccmis/format.h"
+
+#include <charconv>
+#include <limits>
+#include <optional>
+
+namespace bccmis {
+
+ParseError::ParseError(std::string file_, int line_, int column_, std::string message_)
+    : std::runtime_error(file_ + ":" + std::to_string(line_) + ":" + std::to_string(column_) +
+                         ": " + message_),
+      file(std::move(file_)),
+      line(line_),
+      column(column_),
+      message(std::move(message_)) {}
+
+namespace {
+
+// A word of a line and the 1-based column where it starts.
+struct Token {
+  std::string_view text;
+  int column;
+};
+
+// Shows a token in an error message, shortened and with control bytes escaped.
+std::string shown(std::string_view t) {
+  std::string r;
+  for (char ch : t.substr(0, 40)) {
+    const auto u = static_cast<unsigned char>(ch);
+    if (u < 0x20 || u >= 0x7f) {
+      static const char* hex = "0123456789abcdef";
+      r += "\\x";
+      r += hex[u >> 4];
+      r += hex[u & 15];
+    } else {
+      r += ch;
+    }
+  }
+  if (t.size() > 40) r += "...";
+  return "'" + r + "'";
+}
+
+// Splits a text into lines at '\n'. The last element is what follows the final
+// newline (empty for a text that ends with a newline).
+std::vector<std::string_view> split_lines(std::string_view text) {
+  std::vector<std::string_view> lines;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t nl = text.find('\n', start);
+    if (nl == std::string_view::npos) {
+      lines.push_back(text.substr(start));
+      return lines;
+    }
+    lines.push_back(text.substr(start, nl - start));
+    start = nl + 1;
+  }
+}
+
+// Parses a decimal int64. `strict` rejects leading zeros and "-0" (the
+// canonical form); otherwise they are accepted.
+std::optional<std::int64_t> to_int(std::string_view t, bool strict, bool& out_of_range) {
+  out_of_range = false;
+  if (t.empty()) return std::nullopt;
+  std::string_view digits = t[0] == '-' ? t.substr(1) : t;
+  if (digits.empty()) return std::nullopt;
+  for (char ch : digits)
+    if (ch < '0' || ch > '9') return std::nullopt;
+  if (strict && digits.size() > 1 && digits[0] == '0') return std::nullopt;
+  if (strict && t == "-0") return std::nullopt;
+  std::int64_t v = 0;
+  const auto [ptr, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+  if (ec == std::errc::result_out_of_range) {
+    out_of_range = true;
+    return std::nullopt;
+  }
+  if (ec != std::errc() || ptr != t.data() + t.size()) return std::nullopt;
+  return v;
+}
+
+class LineParser {
+ public:
+  LineParser(std::string_view file, int line) : file_(file), line_(line) {}
+
+  [[noreturn]] void fail(int column, const std::string& message) const {
+    throw ParseError(std::string(file_), line_, column, message);
+  }
+
+  std::int64_t integer(const Token& t, bool strict, std::string_view what) const {
+    bool out_of_range = false;
+    const auto v = to_int(t.text, strict, out_of_range);
+    if (out_of_range)
+      fail(t.column, std::string(what) + " " + shown(t.text) + " is out of range (64-bit signed)");
+    if (!v)
+      fail(t.column, "expected " + std::string(what) + " (a decimal integer), got " + shown(t.text));
+    return *v;
+  }
+
+  // Checks W, H, L of a `lattice` line; `keyword` is the column of "lattice".
+  LatticeSize lattice(const Token& w, const Token& h, const Token& l, int keyword, bool strict) const {
+    LatticeSize size;
+    size.W = integer(w, strict, "lattice width W");
+    size.H = integer(h, strict, "lattice height H");
+    const std::int64_t L = integer(l, strict, "maximum level L");
+    if (size.W < 1) fail(w.column, "lattice width W must be >= 1, got " + std::to_string(size.W));
+    if (size.H < 1) fail(h.column, "lattice height H must be >= 1, got " + std::to_string(size.H));
+    if (L < 0) fail(l.column, "maximum level L must be >= 0, got " + std::to_string(L));
+    if (L > 61) fail(l.column, "maximum level L = " + std::to_string(L) + " is above 61 (cell side 2^(L+1) > 2^62)");
+    size.L = static_cast<int>(L);
+    try {
+      validate_lattice_size(size);
+    } catch (const LatticeError& e) {
+      fail(keyword, e.what());
+    }
+    return size;
+  }
+
+ private:
+  std::string_view file_;
+  int line_;
+};
+
+// Trace tokens: separated by spaces or tabs; '#' starts a comment; a trailing
+// '\r' (CRLF files) is ignored. Other control bytes are errors.
+std::vector<Token> trace_tokens(std::string_view line, const LineParser& lp) {
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  std::vector<Token> tokens;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    const char ch = line[i];
+    if (ch == '#') break;
+    if (ch == ' ' || ch == '\t') {
+      ++i;
+      continue;
+    }
+    const std::size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '#') {
+      const auto u = static_cast<unsigned char>(line[i]);
+      if (u < 0x20 || u >= 0x7f)
+        lp.fail(static_cast<int>(i) + 1, "unexpected byte " + shown(line.substr(i, 1)) +
+                                             " (traces are plain ASCII text)");
+      ++i;
+    }
+    tokens.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
+  }
+  return tokens;
+}
+
+// State tokens: exactly one space between tokens, none at either end.
+std::vector<Token> state_tokens(std::string_view line, const LineParser& lp) {
+  std::vector<Token> tokens;
+  if (line.empty()) lp.fail(1, "empty line (canonical states have no blank lines)");
+  std::size_t start = 0;
+  for (std::size_t i = 0; i <= line.size(); ++i) {
+    if (i < line.size()) {
+      const auto u = static_cast<unsigned char>(line[i]);
+      if (u == '\r') lp.fail(static_cast<int>(i) + 1, "carriage return (canonical states use '\\n' line ends)");
+      if (u != ' ' && (u < 0x20 || u >= 0x7f))
+        lp.fail(static_cast<int>(i) + 1, "unexpected byte " + shown(line.substr(i, 1)));
+      if (u != ' ') continue;
+    }
+    if (i == start) {
+      if (i == line.size()) lp.fail(static_cast<int>(i), "trailing space");
+      lp.fail(static_cast<int>(i) + 1, "expected a single space between fields");
+    }
+    tokens.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
+    start = i + 1;
+  }
+  return tokens;
+}
+
+std::string point_text(const Point& p) { return std::to_string(p.x) + " " + std::to_string(p.y); }
+
+// A position in an error message.
+std::string shown(const Point& p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; }
+
+}  // namespace
+
+// ---- Canonical state ---------------------------------------------------------
+
+std::string canonical_state(const Graph& g) {
+  std::string out = "bccmis-state 1\nlattice " + std::to_string(g.size.W) + " " +
+                    std::to_string(g.size.H) + " " + std::to_string(g.size.L) + "\n";
+  auto neighbours = [&](const Vertex& v) {
+    out += " :";
+    for (const Vertex& w : g.nbr(v)) out += " " + point_text(w);
+    out += "\n";
+  };
+  for (const Vertex& c : g.C) {
+    auto it = g.level.find(c);
+    out += "C " + point_text(c) + " " + (it == g.level.end() ? std::string("?") : std::to_string(it->second));
+    neighbours(c);
+  }
+  for (const Vertex& n : g.N) {
+    out += "N " + point_text(n);
+    neighbours(n);
+  }
+  out += "end " + std::to_string(g.C.size()) + " " + std::to_string(g.N.size()) + "\n";
+  return out;
+}
+
+Graph parse_state(std::string_view text, std::string_view file) {
+  const std::vector<std::string_view> lines = split_lines(text);
+  Graph g;
+  const int nlines = static_cast<int>(lines.size());
+
+  auto at = [&](int index) { return LineParser(file, index + 1); };
+
+  // Line 1: header.
+  if (text.empty()) at(0).fail(1, "empty file, expected 'bccmis-state 1'");
+  {
+    const LineParser lp = at(0);
+    const auto t = state_tokens(lines[0], lp);
+    if (t[0].text != "bccmis-state") lp.fail(1, "expected 'bccmis-state 1', got " + shown(lines[0]));
+    if (t.size() != 2) lp.fail(1, "expected 'bccmis-state 1', got " + shown(lines[0]));
+    if (t[1].text != "1") lp.fail(t[1].column, "unsupported state format version " + shown(t[1].text) + " (this reader knows version 1)");
+  }
+  // Line 2: lattice.
+  if (nlines < 3) at(nlines - 1).fail(static_cast<int>(lines[nlines - 1].size()) + 1, "unexpected end of file, expected 'lattice W H L'");
+  {
+    const LineParser lp = at(1);
+    const auto t = state_tokens(lines[1], lp);
+    if (t[0].text != "lattice" || t.size() != 4)
+      lp.fail(1, "expected 'lattice W H L', got " + shown(lines[1]));
+    g.size = lp.lattice(t[1], t[2], t[3], 1, true);
+  }
+
+  bool in_nodes = false;
+  std::optional<Vertex> previous;
+  for (int i = 2;; ++i) {
+    if (i == nlines - 1) {
+      // The text after the last newline: either the unterminated last line or
+      // nothing at all; in both cases the 'end' line was not seen.
+      if (lines[i].empty()) at(i).fail(1, "unexpected end of file, expected 'end <#C> <#N>'");
+      at(i).fail(static_cast<int>(lines[i].size()) + 1, "missing newline at end of line");
+    }
+    const LineParser lp = at(i);
+    const auto t = state_tokens(lines[i], lp);
+    const std::string_view kind = t[0].text;
+    if (kind == "end") {
+      if (t.size() != 3) lp.fail(1, "expected 'end <#C> <#N>', got " + shown(lines[i]));
+      const std::int64_t nc = lp.integer(t[1], true, "center count");
+      const std::int64_t nn = lp.integer(t[2], true, "node count");
+      if (nc != static_cast<std::int64_t>(g.C.size()))
+        lp.fail(t[1].column, "center count " + std::to_string(nc) + " does not match the " +
+                                 std::to_string(g.C.size()) + " C lines");
+      if (nn != static_cast<std::int64_t>(g.N.size()))
+        lp.fail(t[2].column, "node count " + std::to_string(nn) + " does not match the " +
+                                 std::to_string(g.N.size()) + " N lines");
+      if (i + 1 != nlines - 1) at(i + 1).fail(1, "text after the 'end' line");
+      if (!lines[i + 1].empty()) at(i + 1).fail(1, "text after the 'end' line");
+      return g;
+    }
+    if (kind != "C" && kind != "N")
+      lp.fail(1, "expected a 'C', 'N' or 'end' line, got " + shown(t[0].text));
+    const bool center = kind == "C";
+    if (center && in_nodes) lp.fail(1, "C line after an N line (all C lines come first)");
+    if (!center && !in_nodes) {
+      in_nodes = true;
+      previous.reset();
+    }
+    // C x y level : ...   or   N x y : ...
+    const std::size_t colon = center ? 4 : 3;
+    if (t.size() <= colon || t[colon].text != ":")
+      lp.fail(t.size() > colon ? t[colon].column : static_cast<int>(lines[i].size()) + 1,
+              center ? "expected 'C x y level : neighbours'" : "expected 'N x y : neighbours'");
+    const Vertex v{lp.integer(t[1], true, "x coordinate"), lp.integer(t[2], true, "y coordinate")};
+    if (previous && !(*previous < v))
+      lp.fail(t[1].column, std::string(center ? "C" : "N") + " lines must be sorted by (x, y) without repeats; " +
+                               shown(v) + " follows " + shown(*previous));
+    previous = v;
+    if (!center && g.C.count(v))
+      lp.fail(t[1].column, "vertex " + shown(v) + " is listed both as a center and as a node");
+    if (center) {
+      const std::int64_t level = lp.integer(t[3], true, "level");
+      if (level < 0 || level > 61) lp.fail(t[3].column, "level " + std::to_string(level) + " is outside 0..61");
+      g.C.insert(v);
+      g.level[v] = static_cast<int>(level);
+    } else {
+      g.N.insert(v);
+    }
+    if ((t.size() - colon - 1) % 2 != 0)
+      lp.fail(t.back().column, "neighbour list has an odd number of coordinates");
+    VertexSet& nbrs = g.neighbors[v];
+    std::optional<Vertex> prev_nbr;
+    for (std::size_t k = colon + 1; k < t.size(); k += 2) {
+      const Vertex w{lp.integer(t[k], true, "x coordinate"), lp.integer(t[k + 1], true, "y coordinate")};
+      if (prev_nbr && !(*prev_nbr < w))
+        lp.fail(t[k].column, "neighbours must be sorted by (x, y) without repeats; " + shown(w) +
+                                 " follows " + shown(*prev_nbr));
+      prev_nbr = w;
+      nbrs.insert(w);
+    }
+    if (nbrs.empty()) g.neighbors.erase(v);
+  }
+}
+
+// ---- Traces -----------------------------------------------------------------
+
+Trace parse_trace(std::string_view text, std::string_view file, const TraceLimits& limits) {
+  Trace trace;
+  bool have_lattice = false;
+  const std::vector<std::string_view> lines = split_lines(text);
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const int line_no = static_cast<int>(i) + 1;
+    const LineParser lp(file, line_no);
+    const auto t = trace_tokens(lines[i], lp);
+    if (t.empty()) continue;
+    const std::string_view cmd = t[0].text;
+    auto arity = [&](std::size_t n, const char* usage) {
+      if (t.size() != n + 1)
+        lp.fail(t.size() > n + 1 ? t[n + 1].column : static_cast<int>(lines[i].size()) + 1,
+                std::string(t.size() > n + 1 ? "too many arguments" : "too few arguments") + "; usage: " + usage);
+    };
+    if (cmd == "lattice") {
+      if (have_lattice) lp.fail(t[0].column, "second 'lattice' command (the first is on line " + std::to_string(trace.lattice_line) + ")");
+      arity(3, "lattice W H L");
+      trace.size = lp.lattice(t[1], t[2], t[3], t[0].column, false);
+      if (trace.size.W > limits.max_initial_cells / trace.size.H)
+        lp.fail(t[0].column, "lattice of " + std::to_string(trace.size.W) + " x " + std::to_string(trace.size.H) +
+                                 " cells exceeds the limit of " + std::to_string(limits.max_initial_cells) + " initial cells");
+      trace.lattice_line = line_no;
+      have_lattice = true;
+      continue;
+    }
+    TraceCommand c;
+    c.line = line_no;
+    if (cmd == "refine" || cmd == "coarsen") {
+      c.kind = cmd == "refine" ? TraceCommand::Kind::Refine : TraceCommand::Kind::Coarsen;
+      arity(2, cmd == "refine" ? "refine X Y" : "coarsen X Y");
+      c.at = {lp.integer(t[1], false, "x coordinate"), lp.integer(t[2], false, "y coordinate")};
+    } else if (cmd == "check") {
+      arity(0, "check");
+    } else {
+      lp.fail(t[0].column, "unknown command " + shown(cmd) + " (expected lattice, refine, coarsen or check)");
+    }
+    if (!have_lattice) lp.fail(t[0].column, "'" + std::string(cmd) + "' before the 'lattice W H L' command");
+    trace.commands.push_back(c);
+  }
+  if (!have_lattice)
+    throw ParseError(std::string(file), static_cast<int>(lines.size()), 1,
+                     "no 'lattice W H L' command (a trace starts with one)");
+  return trace;
+}
+
+std::string format_trace(const Trace& trace) {
+  std::string out = "lattice " + std::to_string(trace.size.W) + " " + std::to_string(trace.size.H) + " " +
+                    std::to_string(trace.size.L) + "\n";
+  for (const TraceCommand& c : trace.commands) {
+    switch (c.kind) {
+      case TraceCommand::Kind::Refine: out += "refine " + point_text(c.at) + "\n"; break;
+      case TraceCommand::Kind::Coarsen: out += "coarsen " + point_text(c.at) + "\n"; break;
+      case TraceCommand::Kind::Check: out += "check\n"; break;
+    }
+  }
+  return out;
+}
+
+std::string decision_line(const TraceCommand& cmd, std::string_view refusal_code) {
+  std::string out = cmd.kind == TraceCommand::Kind::Refine ? "refine " : "coarsen ";
+  out += point_text(cmd.at);
+  if (refusal_code.empty()) return out + " ok";
+  return out + " refused " + std::string(refusal_code);
+}
+
+Graph replay(const Trace& trace, std::string& log,
+             const std::function<void(const TraceCommand&, const Graph&)>& after) {
+  Graph g = make_lattice(trace.size);
+  for (const TraceCommand& c : trace.commands) {
+    if (c.kind == TraceCommand::Kind::Refine) {
+      const RefineResult r = refine(g, c.at);
+      log += decision_line(c, r.refused ? code(*r.refused) : std::string_view{}) + "\n";
+    } else if (c.kind == TraceCommand::Kind::Coarsen) {
+      const CoarsenResult r = coarsen(g, c.at);
+      log += decision_line(c, r.refused ? code(*r.refused) : std::string_view{}) + "\n";
+    }
+    if (after) after(c, g);
+  }
+  return g;
+}
+
+}  // namespace bccmis

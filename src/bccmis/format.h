@@ -1,0 +1,77 @@
+// bccmis: the version-1 interchange formats of spec/formats.md: traces,
+// decision logs and canonical states. Parsers report the first error as
+// `file:line:column: message`.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "bccmis/graph.h"
+#include "bccmis/ops.h"
+
+namespace bccmis {
+
+/// A malformed trace or state. what() is `file:line:column: message`.
+struct ParseError : std::runtime_error {
+  ParseError(std::string file, int line, int column, std::string message);
+  std::string file;
+  int line;
+  int column;
+  std::string message;
+};
+
+// ---- Canonical state (spec/formats.md, "Canonical state") ------------------
+
+/// The canonical text of g. Two graphs are equal iff their texts are equal.
+std::string canonical_state(const Graph& g);
+
+/// Parses a canonical state. The parser is strict: it accepts exactly the
+/// texts canonical_state can print (up to the validity of the graph itself,
+/// which is the checker's job), so a parsed state prints back byte-identically.
+Graph parse_state(std::string_view text, std::string_view file = "<state>");
+
+// ---- Traces (spec/formats.md, "Trace") --------------------------------------
+
+struct TraceCommand {
+  enum class Kind { Refine, Coarsen, Check };
+  Kind kind = Kind::Check;
+  Point at;       ///< the cell center (refine) or node (coarsen)
+  int line = 0;   ///< 1-based line in the trace file
+};
+
+struct Trace {
+  LatticeSize size;
+  int lattice_line = 0;
+  std::vector<TraceCommand> commands;
+};
+
+/// Limits that keep a hostile trace from exhausting memory.
+struct TraceLimits {
+  std::int64_t max_initial_cells = 4'000'000;  ///< W*H of the `lattice` command
+};
+
+/// Parses a trace; throws ParseError on the first malformed line.
+Trace parse_trace(std::string_view text, std::string_view file = "<trace>",
+                  const TraceLimits& limits = {});
+
+/// Prints a trace in the format parse_trace reads (used to print reproducers).
+std::string format_trace(const Trace& trace);
+
+// ---- Decision log (spec/formats.md, "Decision log") ------------------------
+
+/// One decision-log line without the newline, e.g. `refine 4 4 ok` or
+/// `coarsen 8 8 refused not-a-refined-center`.
+std::string decision_line(const TraceCommand& cmd, std::string_view refusal_code);
+
+/// Replays `trace` from its initial lattice. For every refine and coarsen it
+/// appends one decision-log line to `log`; after every command it calls
+/// `after` (if set) with the command and the graph, so a caller can check
+/// invariants. Returns the final graph.
+Graph replay(const Trace& trace, std::string& log,
+             const std::function<void(const TraceCommand&, const Graph&)>& after = {});
+
+}  // namespace bccmis

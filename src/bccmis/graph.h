@@ -1,0 +1,90 @@
+// bccmis: the data of the paper's §2 graph representation, nothing else.
+//
+// Erleben 2009, §2: the vertices of the triangulation are split into node
+// vertices N and cell-center vertices C (N ∩ C = ∅); every vertex v stores a
+// neighbour set 𝒩(v) of vertices of the other kind. Centers also carry the
+// refinement level of their cell (used by the §2.1 level test).
+//
+// Vertex identity. A vertex is named by its integer lattice position
+// (spec/formats.md, "Coordinates"). A position is never both a node and a
+// center, and the paper's operations keep a vertex's identity when they change
+// its kind (eq. 4g/4h turns c into a node; eq. 9d/9e turns n into a center), so
+// the position is a stable, implementation-independent id. The operations only
+// *use* positions where the paper's sets cannot decide; each such use is listed
+// in spec/errata.toml (entries with kind = "position").
+#pragma once
+
+#include <compare>
+#include <cstdint>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+namespace bccmis {
+
+/// A lattice position in integer coordinates (spec/formats.md, "Coordinates").
+struct Point {
+  std::int64_t x = 0;
+  std::int64_t y = 0;
+  friend auto operator<=>(const Point&, const Point&) = default;
+  friend bool operator==(const Point&, const Point&) = default;
+};
+
+using Vertex = Point;
+using VertexSet = std::set<Vertex>;
+
+/// The size of a lattice: W x H level-0 cells, at most L refinements deep.
+/// Level-0 cells have side S = 2^(L+1); a level-l cell has side 2^(L+1-l), so
+/// every center, corner and side midpoint down to level L is an integer point.
+struct LatticeSize {
+  std::int64_t W = 1;
+  std::int64_t H = 1;
+  int L = 0;
+  friend bool operator==(const LatticeSize&, const LatticeSize&) = default;
+};
+
+/// Thrown when a lattice size is out of range (W, H < 1, L < 0, or a domain
+/// side W*S or H*S above 2^62). The message names the offending value.
+struct LatticeError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+/// Largest allowed domain side W*S and H*S.
+inline constexpr std::int64_t kMaxDomainSide = std::int64_t{1} << 62;
+
+/// Throws LatticeError unless `size` is a valid lattice.
+void validate_lattice_size(const LatticeSize& size);
+
+/// Side of a level-0 cell: S = 2^(L+1).
+std::int64_t level0_side(const LatticeSize& size);
+
+/// Side of a level-`level` cell: 2^(L+1-level).
+std::int64_t cell_side(const LatticeSize& size, int level);
+
+/// The graph of §2: N, C, 𝒩(·) and the level of every center.
+///
+/// Invariants the operations maintain are checked by invariants/ (never
+/// assumed here): see spec/invariants.md.
+struct Graph {
+  LatticeSize size;
+  VertexSet N;                           ///< node vertices
+  VertexSet C;                           ///< cell-center vertices
+  std::map<Vertex, VertexSet> neighbors; ///< 𝒩(v) for every v in N ∪ C
+  std::map<Vertex, int> level;           ///< refinement level of every c in C
+
+  /// 𝒩(v); the empty set for a vertex not in the graph.
+  const VertexSet& nbr(const Vertex& v) const;
+  bool is_node(const Vertex& v) const { return N.count(v) != 0; }
+  bool is_center(const Vertex& v) const { return C.count(v) != 0; }
+  /// Level of center c; throws std::out_of_range if c is not a center.
+  int level_of(const Vertex& c) const { return level.at(c); }
+
+  friend bool operator==(const Graph&, const Graph&) = default;
+};
+
+/// The initial lattice: W x H level-0 cells; nodes at the grid points, each
+/// center joined to its 4 corners. Throws LatticeError on an invalid size.
+Graph make_lattice(const LatticeSize& size);
+
+}  // namespace bccmis

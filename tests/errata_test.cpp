@@ -1,0 +1,114 @@
+// One regression test per erratum of spec/errata.toml. Each uses the erratum's
+// minimal repro and asserts a fact that the literal reading of the paper gets
+// wrong (the comment says what the literal reading does instead).
+#include <gtest/gtest.h>
+
+#include "test_util.h"
+
+namespace bccmis {
+namespace {
+
+using test::vs;
+
+TEST(Errata, E1_RefineGivesBoundarySidesAMidpointNode) {
+  //= erleben2009#eq-5a type=test
+  //= erleben2009#eq-6c type=test
+  // Literal (6): no corner pair of the root has a common cell once c is
+  // removed, so no junction is connected; J+ stays isolated and the children
+  // have 2 neighbours each.
+  Graph g = make_lattice({1, 1, 1});  // S = 4, root center (2,2)
+  const RefineResult r = refine(g, {2, 2});
+  ASSERT_TRUE(r.applied());
+  EXPECT_EQ(r.J_plus, vs({{0, 2}, {2, 0}, {2, 4}, {4, 2}}));
+  EXPECT_EQ(g.nbr({2, 0}), vs({{1, 1}, {3, 1}}));
+  EXPECT_EQ(g.nbr({0, 2}), vs({{1, 1}, {1, 3}}));
+  EXPECT_EQ(g.nbr({4, 2}), vs({{3, 1}, {3, 3}}));
+  EXPECT_EQ(g.nbr({2, 4}), vs({{1, 3}, {3, 3}}));
+  EXPECT_EQ(g.nbr({1, 1}), vs({{0, 0}, {0, 2}, {2, 0}, {2, 2}}));
+  EXPECT_EQ(g.nbr({3, 3}), vs({{2, 2}, {2, 4}, {4, 2}, {4, 4}}));
+}
+
+TEST(Errata, E2_CoarsenKeepsBoundaryCornersAndDropsBoundaryMidpoints) {
+  //= erleben2009#eq-10a type=test
+  // Literal (10a): (4,0) and (4,4) fall to one neighbour and are deleted; the
+  // boundary midpoints (2,0), (0,2), (2,4) fall to zero and are kept.
+  const Graph initial = make_lattice({2, 1, 1});  // S = 4
+  Graph g = initial;
+  ASSERT_TRUE(refine(g, {2, 2}).applied());
+  const CoarsenResult r = coarsen(g, {2, 2});
+  ASSERT_TRUE(r.applied());
+  EXPECT_EQ(r.J_minus, vs({{0, 2}, {2, 0}, {2, 4}, {4, 2}}));
+  EXPECT_TRUE(g.is_node({4, 0}));
+  EXPECT_TRUE(g.is_node({4, 4}));
+  EXPECT_FALSE(g.is_node({2, 0}));
+  EXPECT_EQ(canonical_state(g), canonical_state(initial));
+}
+
+TEST(Errata, E3_GridNodeWithFourCellsIsNotCoarsenable) {
+  //= erleben2009#pre-coarsen-refined-center type=test
+  // Literal: |N(4,4)| = 4, accepted, and the result is a "level -1" cell.
+  Graph g = make_lattice({2, 2, 1});
+  ASSERT_EQ(g.nbr({4, 4}).size(), 4u);
+  EXPECT_EQ(coarsen(g, {4, 4}).refused, CoarsenRefusal::NotARefinedCenter);
+}
+
+TEST(Errata, E3_MidpointBetweenTwoRefinedCellsIsNotCoarsenable) {
+  // Literal: the shared side midpoint (8,6) has 4 cells around it and is
+  // accepted, giving a cell that straddles two level-0 cells.
+  Graph g = test::build("lattice 4 3 1\nrefine 6 6\nrefine 10 6\n");
+  ASSERT_EQ(g.nbr({8, 6}).size(), 4u);
+  EXPECT_EQ(coarsen(g, {8, 6}).refused, CoarsenRefusal::NotARefinedCenter);
+}
+
+TEST(Errata, E3_CenterWithARefinedChildIsNotCoarsenable) {
+  //= erleben2009#pre-coarsen-children-leaves type=test
+  // Literal: |N(4,4)| = 4 (three children and a grandchild), accepted, and the
+  // new cell overlaps the grandchildren.
+  Graph g = test::build("lattice 1 1 2\nrefine 4 4\nrefine 2 2\n");
+  ASSERT_EQ(g.nbr({4, 4}).size(), 4u);
+  EXPECT_EQ(coarsen(g, {4, 4}).refused, CoarsenRefusal::ChildrenRefined);
+}
+
+TEST(Errata, E3_SiblingsWithAFinerNeighbourAreNotCoarsenable) {
+  //= erleben2009#pre-coarsen-balance type=test
+  // Literal: accepted; the level-0 cell (4,4) would then touch the level-2
+  // cell (9,1) along a side and list 9 boundary nodes' worth of neighbours.
+  Graph g = test::build("lattice 2 1 2\nrefine 4 4\nrefine 12 4\nrefine 10 2\n");
+  ASSERT_EQ(g.nbr({4, 4}).size(), 4u);
+  EXPECT_EQ(coarsen(g, {4, 4}).refused, CoarsenRefusal::FinerNeighbor);
+}
+
+TEST(Errata, E4_DiagonalCoarserCellDoesNotBlockRefinement) {
+  //= erleben2009#eq-3 type=test
+  // Lattice 2 2 2 (S = 8): three of the four level-0 cells refined. The child
+  // (6,6) has only level-1 cells along its sides, but touches the level-0
+  // cell (12,12) at the corner (8,8). The formula of (3) (edge neighbours)
+  // accepts; the sentence reading (all cells at the pure corners) refuses.
+  Graph g = test::build("lattice 2 2 2\nrefine 4 4\nrefine 12 4\nrefine 4 12\n");
+  ASSERT_TRUE(g.nbr({8, 8}).count({12, 12}));  // the sentence reading's X
+  EXPECT_TRUE(refine(g, {6, 6}).applied());
+}
+
+TEST(Errata, E5_CoarsenedCellTakesTheLevelOfItsPosition) {
+  Graph g = test::build("lattice 1 1 2\nrefine 4 4\nrefine 2 2\n");
+  ASSERT_TRUE(coarsen(g, {2, 2}).applied());
+  EXPECT_EQ(g.level_of({2, 2}), 1);
+  ASSERT_TRUE(coarsen(g, {4, 4}).applied());
+  EXPECT_EQ(g.level_of({4, 4}), 0);
+}
+
+TEST(Errata, E5_RefinedCenterLevelFromPosition) {
+  const LatticeSize s{3, 2, 2};  // S = 8
+  EXPECT_EQ(refined_center_level(s, {4, 4}), 0);
+  EXPECT_EQ(refined_center_level(s, {12, 4}), 0);
+  EXPECT_EQ(refined_center_level(s, {2, 6}), 1);
+  EXPECT_EQ(refined_center_level(s, {1, 1}), std::nullopt);   // level-L center
+  EXPECT_EQ(refined_center_level(s, {8, 8}), std::nullopt);   // grid node
+  EXPECT_EQ(refined_center_level(s, {4, 8}), std::nullopt);   // side midpoint
+  EXPECT_EQ(refined_center_level(s, {4, 2}), std::nullopt);   // mixed
+  EXPECT_EQ(refined_center_level(s, {28, 4}), std::nullopt);  // outside (W*S = 24)
+  EXPECT_EQ(refined_center_level(s, {-4, 4}), std::nullopt);
+}
+
+}  // namespace
+}  // namespace bccmis

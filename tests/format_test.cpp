@@ -1,0 +1,193 @@
+// The version-1 formats of spec/formats.md: canonical state, trace, decision
+// log, and their error messages (file:line:column).
+#include <gtest/gtest.h>
+
+#include "test_util.h"
+
+namespace bccmis {
+namespace {
+
+// Written by hand from spec/formats.md: lattice 1 1 0 has S = 2.
+constexpr const char* kLattice110 =
+    "bccmis-state 1\n"
+    "lattice 1 1 0\n"
+    "C 1 1 0 : 0 0 0 2 2 0 2 2\n"
+    "N 0 0 : 1 1\n"
+    "N 0 2 : 1 1\n"
+    "N 2 0 : 1 1\n"
+    "N 2 2 : 1 1\n"
+    "end 1 4\n";
+
+TEST(CanonicalState, InitialLatticeMatchesHandWrittenText) {
+  EXPECT_EQ(canonical_state(make_lattice({1, 1, 0})), kLattice110);
+}
+
+TEST(CanonicalState, ParsesBackToTheSameGraph) {
+  const Graph g = parse_state(kLattice110);
+  EXPECT_EQ(g, make_lattice({1, 1, 0}));
+  const Graph h = test::build("lattice 3 1 1\nrefine 10 2\nrefine 6 2\n");
+  const std::string text = canonical_state(h);
+  EXPECT_EQ(parse_state(text), h);
+  EXPECT_EQ(canonical_state(parse_state(text)), text);
+}
+
+TEST(CanonicalState, RefinedRootByHand) {
+  // lattice 1 1 1 (S = 4) after refining the root: derived from (4)-(6) with E1.
+  const char* expected =
+      "bccmis-state 1\n"
+      "lattice 1 1 1\n"
+      "C 1 1 1 : 0 0 0 2 2 0 2 2\n"
+      "C 1 3 1 : 0 2 0 4 2 2 2 4\n"
+      "C 3 1 1 : 2 0 2 2 4 0 4 2\n"
+      "C 3 3 1 : 2 2 2 4 4 2 4 4\n"
+      "N 0 0 : 1 1\n"
+      "N 0 2 : 1 1 1 3\n"
+      "N 0 4 : 1 3\n"
+      "N 2 0 : 1 1 3 1\n"
+      "N 2 2 : 1 1 1 3 3 1 3 3\n"
+      "N 2 4 : 1 3 3 3\n"
+      "N 4 0 : 3 1\n"
+      "N 4 2 : 3 1 3 3\n"
+      "N 4 4 : 3 3\n"
+      "end 4 9\n";
+  EXPECT_EQ(canonical_state(test::build("lattice 1 1 1\nrefine 2 2\n")), expected);
+}
+
+struct BadState {
+  const char* name;
+  std::string text;
+  int line, column;
+  const char* message_part;
+};
+
+class StateErrors : public testing::TestWithParam<BadState> {};
+
+TEST_P(StateErrors, NamesLineColumnAndProblem) {
+  const BadState& b = GetParam();
+  try {
+    parse_state(b.text, "s.txt");
+    FAIL() << "parsed: " << b.name;
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.file, "s.txt");
+    EXPECT_EQ(e.line, b.line) << e.what();
+    EXPECT_EQ(e.column, b.column) << e.what();
+    EXPECT_NE(e.message.find(b.message_part), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).rfind("s.txt:" + std::to_string(b.line) + ":" + std::to_string(b.column) + ": ", 0), 0u);
+  }
+}
+
+std::string with(std::string text, const std::string& from, const std::string& to) {
+  text.replace(text.find(from), from.size(), to);
+  return text;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Format, StateErrors,
+    testing::Values(
+        BadState{"empty", "", 1, 1, "empty file"},
+        BadState{"magic", with(kLattice110, "bccmis-state 1", "bccmis-stat 1"), 1, 1, "expected 'bccmis-state 1'"},
+        BadState{"version", with(kLattice110, "bccmis-state 1", "bccmis-state 2"), 1, 14, "version"},
+        BadState{"double space", with(kLattice110, "C 1 1 0 :", "C 1  1 0 :"), 3, 5, "single space"},
+        BadState{"trailing space", with(kLattice110, "N 0 0 : 1 1\n", "N 0 0 : 1 1 \n"), 4, 12, "trailing space"},
+        BadState{"bad int", with(kLattice110, "N 0 2 : 1 1", "N 0 2 : 1 x"), 5, 11, "expected y coordinate"},
+        BadState{"leading zero", with(kLattice110, "N 0 2 : 1 1", "N 0 02 : 1 1"), 5, 5, "expected y coordinate"},
+        BadState{"unsorted", with(kLattice110, "N 0 2 : 1 1\nN 2 0", "N 2 0 : 1 1\nN 0 2"), 6, 3, "sorted"},
+        BadState{"count", with(kLattice110, "end 1 4", "end 1 5"), 8, 7, "node count 5"},
+        BadState{"no end", "bccmis-state 1\nlattice 1 1 0\n", 3, 1, "unexpected end of file"},
+        BadState{"no newline", with(kLattice110, "end 1 4\n", "end 1 4"), 8, 8, "missing newline"},
+        BadState{"after end", std::string(kLattice110) + "x\n", 9, 1, "after the 'end' line"},
+        BadState{"bad lattice", with(kLattice110, "lattice 1 1 0", "lattice 0 1 0"), 2, 9, "W must be >= 1"},
+        BadState{"huge int", with(kLattice110, "N 0 0 : 1 1", "N 0 0 : 1 99999999999999999999"), 4, 11, "out of range"},
+        BadState{"crlf", with(kLattice110, "end 1 4\n", "end 1 4\r\n"), 8, 8, "carriage return"},
+        BadState{"both kinds", with(kLattice110, "N 0 0 : 1 1", "N 1 1 : 1 1"), 4, 3, "both as a center and as a node"},
+        BadState{"odd neighbours", with(kLattice110, "N 0 0 : 1 1", "N 0 0 : 1 1 2"), 4, 13, "odd number"},
+        BadState{"no colon", with(kLattice110, "N 0 0 : 1 1", "N 0 0 1 1"), 4, 7, "expected 'N x y : neighbours'"}),
+    [](const testing::TestParamInfo<BadState>& p) {
+      std::string n = p.param.name;
+      for (char& ch : n)
+        if (!isalnum(static_cast<unsigned char>(ch))) ch = '_';
+      return n;
+    });
+
+// ---- Traces ------------------------------------------------------------------
+
+TEST(Trace, ParsesCommandsCommentsAndBlankLines) {
+  const Trace t = parse_trace("# a comment\n\nlattice 2 1 1   # trailing comment\n\trefine 2 2\ncoarsen 2 2\ncheck\r\n");
+  EXPECT_EQ(t.size, (LatticeSize{2, 1, 1}));
+  EXPECT_EQ(t.lattice_line, 3);
+  ASSERT_EQ(t.commands.size(), 3u);
+  EXPECT_EQ(t.commands[0].kind, TraceCommand::Kind::Refine);
+  EXPECT_EQ(t.commands[0].at, (Point{2, 2}));
+  EXPECT_EQ(t.commands[0].line, 4);
+  EXPECT_EQ(t.commands[1].kind, TraceCommand::Kind::Coarsen);
+  EXPECT_EQ(t.commands[2].kind, TraceCommand::Kind::Check);
+  EXPECT_EQ(format_trace(t), "lattice 2 1 1\nrefine 2 2\ncoarsen 2 2\ncheck\n");
+}
+
+TEST(Trace, DecisionLogSaysOkOrRefusedWithCode) {
+  EXPECT_EQ(test::decisions("lattice 2 1 1\nrefine 2 2\nrefine 3 1\ncoarsen 4 2\ncoarsen 2 2\nrefine 0 0\n"),
+            "refine 2 2 ok\n"
+            "refine 3 1 refused max-level\n"
+            "coarsen 4 2 refused not-a-refined-center\n"
+            "coarsen 2 2 ok\n"
+            "refine 0 0 refused no-such-cell\n");
+}
+
+struct BadTrace {
+  const char* name;
+  const char* text;
+  int line, column;
+  const char* message_part;
+};
+
+class TraceErrors : public testing::TestWithParam<BadTrace> {};
+
+TEST_P(TraceErrors, NamesLineColumnAndProblem) {
+  const BadTrace& b = GetParam();
+  try {
+    parse_trace(b.text, "t.trace");
+    FAIL() << "parsed: " << b.name;
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.file, "t.trace");
+    EXPECT_EQ(e.line, b.line) << e.what();
+    EXPECT_EQ(e.column, b.column) << e.what();
+    EXPECT_NE(e.message.find(b.message_part), std::string::npos) << e.what();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Format, TraceErrors,
+    testing::Values(
+        BadTrace{"unknown", "lattice 1 1 1\nsplit 2 2\n", 2, 1, "unknown command 'split'"},
+        BadTrace{"no lattice", "# nothing\nrefine 2 2\n", 2, 1, "before the 'lattice W H L' command"},
+        BadTrace{"empty", "", 1, 1, "no 'lattice W H L' command"},
+        BadTrace{"two lattices", "lattice 1 1 1\nlattice 1 1 1\n", 2, 1, "second 'lattice'"},
+        BadTrace{"few args", "lattice 1 1 1\nrefine 2\n", 2, 9, "too few arguments"},
+        BadTrace{"many args", "lattice 1 1 1\n  refine 2 2 2\n", 2, 14, "too many arguments"},
+        BadTrace{"not int", "lattice 1 1 1\nrefine 2 two\n", 2, 10, "expected y coordinate"},
+        BadTrace{"overflow", "lattice 1 1 1\ncoarsen 9223372036854775808 0\n", 2, 9, "out of range"},
+        BadTrace{"zero width", "lattice 0 1 1\n", 1, 9, "W must be >= 1"},
+        BadTrace{"negative L", "lattice 1 1 -1\n", 1, 13, "L must be >= 0"},
+        BadTrace{"huge L", "lattice 1 1 62\n", 1, 13, "above 61"},
+        BadTrace{"domain too big", "lattice 3 1 60\n", 1, 1, "exceed 2^62"},
+        BadTrace{"too many cells", "lattice 3000 3000 0\n", 1, 1, "exceeds the limit"},
+        BadTrace{"binary", "lattice 1 1 1\nrefine \x01 2\n", 2, 8, "unexpected byte '\\x01'"}),
+    [](const testing::TestParamInfo<BadTrace>& p) {
+      std::string n = p.param.name;
+      for (char& ch : n)
+        if (!isalnum(static_cast<unsigned char>(ch))) ch = '_';
+      return n;
+    });
+
+TEST(Lattice, RejectsSizesOutOfRange) {
+  EXPECT_THROW(make_lattice({0, 1, 0}), LatticeError);
+  EXPECT_THROW(make_lattice({1, 0, 0}), LatticeError);
+  EXPECT_THROW(make_lattice({1, 1, -1}), LatticeError);
+  EXPECT_THROW(validate_lattice_size({2, 1, 61}), LatticeError);  // 2 * 2^62 > 2^62
+  EXPECT_NO_THROW(validate_lattice_size({1, 1, 61}));             // exactly 2^62
+  EXPECT_NO_THROW(validate_lattice_size({std::int64_t{1} << 61, 1, 0}));
+  EXPECT_THROW(validate_lattice_size({(std::int64_t{1} << 61) + 1, 1, 0}), LatticeError);
+}
+
+}  // namespace
+}  // namespace bccmis

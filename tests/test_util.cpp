@@ -1,0 +1,21 @@
+#include "test_util.h"
+
+#include <stdexcept>
+
+namespace bccmis::test {
+
+Graph build(const std::string& trace_text) {
+  std::string log;
+  Graph g = replay(parse_trace(trace_text, "<test>"), log);
+  if (log.find("refused") != std::string::npos)
+    throw std::runtime_error("test setup: an operation was refused:\n" + log);
+  return g;
+}
+
+std::string decisions(const std::string& trace_text) {
+  std::string log;
+  replay(parse_trace(trace_text, "<test>"), log);
+  return log;
+}
+
+}  // namespace bccmis::test
