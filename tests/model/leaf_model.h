@@ -389,44 +389,45 @@ inline ReachableCount count_reachable_states(int W, int H, int L,
 // checks the adjacent pairs whose both cells are already painted (pruning).
 // ---------------------------------------------------------------------------
 
-// All complete quadtree leaf sets of a single root cell, as patches.
+// All complete quadtree leaf sets of a single root cell, as patches: the
+// n x n finest cells (n = 2^L) of the root, each holding the level of the
+// leaf that contains it, index [y*n + x].  Depth-first over a stack of
+// undecided cells: each cell is either kept as a leaf (painted with its
+// level) or, if its level is < L, split into 4 undecided children.  Every
+// tree corresponds to exactly one sequence of decisions.  (Paint left over
+// from an abandoned branch is always overwritten, since every finest cell
+// is painted again by the leaf that finally covers it.)
 inline std::vector<std::vector<int>> root_patches(int L) {
   const int n = 1 << L;
-  // Represent a tree by the list of its leaves (level, x, y in finest units).
   struct Sq {
     int level;
     int x, y;  // lower-left finest cell
   };
-  std::function<std::vector<std::vector<Sq>>(Sq)> trees = [&](Sq c) {
-    std::vector<std::vector<Sq>> res{{c}};
-    if (c.level < L) {
-      const int half = (n >> c.level) / 2;
-      std::vector<std::vector<Sq>> acc{{}};
-      for (int k = 0; k < 4; ++k) {
-        Sq ch{c.level + 1, c.x + (k % 2) * half, c.y + (k / 2) * half};
-        std::vector<std::vector<Sq>> next;
-        for (const auto& a : acc)
-          for (const auto& t : trees(ch)) {
-            std::vector<Sq> u = a;
-            u.insert(u.end(), t.begin(), t.end());
-            next.push_back(std::move(u));
-          }
-        acc = std::move(next);
-      }
-      res.insert(res.end(), acc.begin(), acc.end());
-    }
-    return res;
-  };
   std::vector<std::vector<int>> patches;
-  for (const auto& t : trees(Sq{0, 0, 0})) {
-    std::vector<int> p(static_cast<std::size_t>(n) * n, -1);
-    for (const Sq& q : t) {
-      const int w = n >> q.level;
-      for (int y = q.y; y < q.y + w; ++y)
-        for (int x = q.x; x < q.x + w; ++x) p[static_cast<std::size_t>(y) * n + x] = q.level;
+  std::vector<int> patch(static_cast<std::size_t>(n) * n, -1);
+  std::vector<Sq> undecided{Sq{0, 0, 0}};
+  std::function<void()> rec = [&]() {
+    if (undecided.empty()) {
+      patches.push_back(patch);
+      return;
     }
-    patches.push_back(std::move(p));
-  }
+    const Sq c = undecided.back();
+    undecided.pop_back();
+    const int w = n >> c.level;
+    // Option 1: c is a leaf.
+    for (int y = c.y; y < c.y + w; ++y)
+      for (int x = c.x; x < c.x + w; ++x) patch[static_cast<std::size_t>(y) * n + x] = c.level;
+    rec();
+    // Option 2: c is split.
+    if (c.level < L) {
+      const int h = w / 2;
+      for (int k = 0; k < 4; ++k) undecided.push_back(Sq{c.level + 1, c.x + (k % 2) * h, c.y + (k / 2) * h});
+      rec();
+      undecided.resize(undecided.size() - 4);
+    }
+    undecided.push_back(c);
+  };
+  rec();
   return patches;
 }
 

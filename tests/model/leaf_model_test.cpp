@@ -287,6 +287,17 @@ void expect_bfs(const Expected& e) {
   EXPECT_EQ(rc.states, count_balanced_leaf_sets(e.W, e.H, e.L));
 }
 
+TEST(LeafModelCounts, UnbalancedTreesPerRoot) {
+  // Complete quadtrees of depth <= L: T(0) = 1, T(L) = 1 + T(L-1)^4.
+  EXPECT_EQ(root_patches(0).size(), 1u);
+  EXPECT_EQ(root_patches(1).size(), 2u);
+  EXPECT_EQ(root_patches(2).size(), 17u);
+  EXPECT_EQ(root_patches(3).size(), 1u + 17u * 17u * 17u * 17u);  // 83522
+  // Each patch is fully painted with levels 0..L.
+  for (const auto& p : root_patches(2))
+    for (int v : p) EXPECT_TRUE(v >= 0 && v <= 2);
+}
+
 TEST(LeafModelCounts, KnownFacts) {
   EXPECT_EQ(count_reachable_states(1, 1, 2).states, 17);
   EXPECT_EQ(count_reachable_states(2, 2, 1).states, 16);
