@@ -36,6 +36,7 @@ TEST(Refine, Fig2Before_EdgeNeighbourhoodIsAsDrawn) {
 TEST(Refine, Eq4And5_CreatesFourChildrenAndOnlyTheMissingJunctions) {
   //= erleben2009#eq-4a type=test
   //= erleben2009#eq-5a type=test
+  //= erleben2009#eq-5b type=test
   Graph g = test::build(kFig2Before);
   const RefineResult r = refine(g, c);
   ASSERT_TRUE(r.applied());
@@ -44,9 +45,11 @@ TEST(Refine, Eq4And5_CreatesFourChildrenAndOnlyTheMissingJunctions) {
   // (5a) ||J+|| = 4 - ||J|| = 3: left (same-level neighbour), bottom and top
   // (domain boundary); the right side keeps its old junction (8,2).
   EXPECT_EQ(r.J_plus, vs({{4, 2}, {6, 0}, {6, 4}}));
+  for (const Vertex& j : r.J_plus) EXPECT_TRUE(g.is_node(j));
 }
 
 TEST(Refine, Eq4c_RefinedCellBecomesNodeOfItsFourChildren) {
+  //= erleben2009#eq-4b type=test
   //= erleben2009#eq-4c type=test
   //= erleben2009#eq-4g type=test
   //= erleben2009#eq-4h type=test
@@ -63,6 +66,7 @@ TEST(Refine, Eq4c_RefinedCellBecomesNodeOfItsFourChildren) {
 }
 
 TEST(Refine, Eq4e_PureCornersSwapCForTheirChild) {
+  //= erleben2009#eq-2c type=test
   //= erleben2009#eq-4e type=test
   Graph g = test::build(kFig2Before);
   ASSERT_TRUE(refine(g, c).applied());
@@ -88,6 +92,7 @@ TEST(Refine, Eq6_NewJunctionJoinsNeighbourAcrossTheSideAndTwoChildren) {
 
 TEST(Refine, Eq4d_Eq7_OldJunctionMovesFromCToTheTwoChildrenBesideIt) {
   //= erleben2009#eq-4d type=test
+  //= erleben2009#eq-7-condition type=test
   //= erleben2009#eq-7a type=test
   //= erleben2009#eq-7b type=test
   Graph g = test::build(kFig2Before);

@@ -345,35 +345,38 @@ Trace parse_trace(std::string_view text, std::string_view file, const TraceLimit
 std::string format_trace(const Trace& trace) {
   std::string out = "lattice " + std::to_string(trace.size.W) + " " + std::to_string(trace.size.H) + " " +
                     std::to_string(trace.size.L) + "\n";
-  for (const TraceCommand& c : trace.commands) {
-    switch (c.kind) {
-      case TraceCommand::Kind::Refine: out += "refine " + point_text(c.at) + "\n"; break;
-      case TraceCommand::Kind::Coarsen: out += "coarsen " + point_text(c.at) + "\n"; break;
-      case TraceCommand::Kind::Check: out += "check\n"; break;
-    }
-  }
+  for (const TraceCommand& c : trace.commands) out += command_text(c) + "\n";
   return out;
 }
 
+std::string command_text(const TraceCommand& cmd) {
+  switch (cmd.kind) {
+    case TraceCommand::Kind::Refine: return "refine " + point_text(cmd.at);
+    case TraceCommand::Kind::Coarsen: return "coarsen " + point_text(cmd.at);
+    case TraceCommand::Kind::Check: break;
+  }
+  return "check";
+}
+
 std::string decision_line(const TraceCommand& cmd, std::string_view refusal_code) {
-  std::string out = cmd.kind == TraceCommand::Kind::Refine ? "refine " : "coarsen ";
-  out += point_text(cmd.at);
+  const std::string out = command_text(cmd);
   if (refusal_code.empty()) return out + " ok";
   return out + " refused " + std::string(refusal_code);
 }
 
-Graph replay(const Trace& trace, std::string& log,
-             const std::function<void(const TraceCommand&, const Graph&)>& after) {
+Graph replay(const Trace& trace, std::string& log, const ReplayObserver& after) {
   Graph g = make_lattice(trace.size);
   for (const TraceCommand& c : trace.commands) {
+    std::string decision;
     if (c.kind == TraceCommand::Kind::Refine) {
       const RefineResult r = refine(g, c.at);
-      log += decision_line(c, r.refused ? code(*r.refused) : std::string_view{}) + "\n";
+      decision = decision_line(c, r.refused ? code(*r.refused) : std::string_view{});
     } else if (c.kind == TraceCommand::Kind::Coarsen) {
       const CoarsenResult r = coarsen(g, c.at);
-      log += decision_line(c, r.refused ? code(*r.refused) : std::string_view{}) + "\n";
+      decision = decision_line(c, r.refused ? code(*r.refused) : std::string_view{});
     }
-    if (after) after(c, g);
+    if (!decision.empty()) log += decision + "\n";
+    if (after) after(c, g, decision);
   }
   return g;
 }

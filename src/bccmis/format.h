@@ -63,15 +63,19 @@ std::string format_trace(const Trace& trace);
 
 // ---- Decision log (spec/formats.md, "Decision log") ------------------------
 
+/// A command as trace text without the newline: `refine 4 4`, `check`.
+std::string command_text(const TraceCommand& cmd);
+
 /// One decision-log line without the newline, e.g. `refine 4 4 ok` or
 /// `coarsen 8 8 refused not-a-refined-center`.
 std::string decision_line(const TraceCommand& cmd, std::string_view refusal_code);
 
 /// Replays `trace` from its initial lattice. For every refine and coarsen it
 /// appends one decision-log line to `log`; after every command it calls
-/// `after` (if set) with the command and the graph, so a caller can check
-/// invariants. Returns the final graph.
-Graph replay(const Trace& trace, std::string& log,
-             const std::function<void(const TraceCommand&, const Graph&)>& after = {});
+/// `after` (if set) with the command, the graph and the command's decision
+/// line (empty for `check`), so a caller can check invariants. Returns the
+/// final graph.
+using ReplayObserver = std::function<void(const TraceCommand&, const Graph&, std::string_view decision)>;
+Graph replay(const Trace& trace, std::string& log, const ReplayObserver& after = {});
 
 }  // namespace bccmis

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages bccmis needs (idempotent; fast when they are
+# already installed). Run as root, or with sudo available.
+set -euo pipefail
+
+packages=(
+  cmake ninja-build g++ clang-14 libclang-rt-14-dev llvm-14 pkg-config python3
+  libgtest-dev libgmock-dev googletest librapidcheck-dev libbenchmark-dev
+  libcgal-dev libgmp-dev libmpfr-dev libcli11-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if [ "$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null)" != "installed" ]; then
+    missing+=("$p")
+  fi
+done
+if [ "${#missing[@]}" -eq 0 ]; then
+  echo "setup: all ${#packages[@]} packages already installed"
+  exit 0
+fi
+
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+echo "setup: installing ${missing[*]}"
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+# clang++ is clang 14 on Debian 12; make sure the unversioned name exists.
+if ! command -v clang++ >/dev/null 2>&1; then
+  $sudo ln -sf /usr/bin/clang++-14 /usr/local/bin/clang++
+  $sudo ln -sf /usr/bin/clang-14 /usr/local/bin/clang
+fi
+echo "setup: done"

@@ -1,0 +1,258 @@
+// bccmis: the command-line oracle. Subcommands replay traces and check states
+// in the version-1 formats of spec/formats.md.
+//
+// Exit codes (spec/cli.md): 0 success; 1 an invariant is violated; 2 bad input
+// (usage, parse error, unreadable file, unwritable output); 3 internal error.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <system_error>
+#include <unistd.h>
+
+#include "bccmis/format.h"
+#include "bccmis/invariants.h"
+#if BCCMIS_HAVE_TRIANGULATION_CHECK
+#include "bccmis/triangulation_check.h"
+#endif
+
+namespace {
+
+using namespace bccmis;
+
+constexpr int kExitOk = 0;
+constexpr int kExitViolation = 1;
+constexpr int kExitInput = 2;
+constexpr int kExitInternal = 3;
+
+/// An error in the user's input; the message is complete (names file and line).
+struct InputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Reads a whole file, or standard input for "-".
+std::string read_input(const std::string& path) {
+  if (path == "-") {
+    std::ostringstream ss;
+    ss << std::cin.rdbuf();
+    return ss.str();
+  }
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, expected a file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open for reading");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) throw InputError(path + ": read error");
+  return ss.str();
+}
+
+/// Writes `content` to `path` atomically: a temporary file in the same
+/// directory, flushed, then renamed over the target. "-" means stdout.
+void write_output(const std::string& path, const std::string& content) {
+  if (path == "-") {
+    std::cout << content << std::flush;
+    return;
+  }
+  const std::filesystem::path target(path);
+  const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
+  std::string tmpl = (dir / ("." + target.filename().string() + ".tmp-XXXXXX")).string();
+  const int fd = ::mkstemp(tmpl.data());
+  if (fd < 0) throw InputError(path + ": cannot create a temporary file in " + dir.string());
+  std::size_t done = 0;
+  while (done < content.size()) {
+    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
+    if (n <= 0) {
+      ::close(fd);
+      ::unlink(tmpl.c_str());
+      throw InputError(path + ": write error");
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  if (::fsync(fd) != 0 || ::close(fd) != 0) {
+    ::unlink(tmpl.c_str());
+    throw InputError(path + ": write error");
+  }
+  ::chmod(tmpl.c_str(), 0644);
+  if (std::rename(tmpl.c_str(), path.c_str()) != 0) {
+    ::unlink(tmpl.c_str());
+    throw InputError(path + ": cannot replace the file");
+  }
+}
+
+std::string display_name(const std::string& path) { return path == "-" ? "<stdin>" : path; }
+
+/// Runs the checker to `depth` (5 adds the CGAL triangulation layer).
+std::optional<Violation> check_graph(const Graph& g, int depth) {
+  auto v = find_violation(g, depth < 5 ? depth : 4);
+#if BCCMIS_HAVE_TRIANGULATION_CHECK
+  if (!v && depth >= 5) v = find_triangulation_violation(g);
+#endif
+  return v;
+}
+
+std::string summary(const Graph& g) {
+  std::map<int, std::size_t> per_level;
+  for (const auto& [c, l] : g.level) ++per_level[l];
+  std::string s = std::to_string(g.C.size()) + " cells (";
+  bool first = true;
+  for (const auto& [l, n] : per_level) {
+    s += (first ? "" : ", ") + std::string("level ") + std::to_string(l) + ": " + std::to_string(n);
+    first = false;
+  }
+  return s + "), " + std::to_string(g.N.size()) + " nodes";
+}
+
+struct ReplayOptions {
+  std::string trace;
+  std::string log_file;
+  std::string state_file;
+  std::string check = "every";
+  int depth = 4;
+  bool quiet = false;
+};
+
+int run_replay(const ReplayOptions& o) {
+  const std::string name = display_name(o.trace);
+  const Trace trace = parse_trace(read_input(o.trace), name);
+  std::string log;
+  std::size_t refines = 0, coarsens = 0, refused = 0, checks = 0;
+  std::optional<std::string> failure;
+  const Graph g = [&] {
+    // A violation stops the replay at the command that caused it.
+    struct Stop {};
+    Graph result;
+    auto after = [&](const TraceCommand& c, const Graph& now, std::string_view decision) {
+      if (c.kind == TraceCommand::Kind::Refine) ++refines;
+      if (c.kind == TraceCommand::Kind::Coarsen) ++coarsens;
+      if (decision.find(" refused ") != std::string_view::npos) ++refused;
+      const bool explicit_check = c.kind == TraceCommand::Kind::Check;
+      if (explicit_check || o.check == "every") {
+        ++checks;
+        if (auto v = check_graph(now, o.depth)) {
+          failure = name + ":" + std::to_string(c.line) + ": invariant violated after '" + command_text(c) +
+                    "': " + to_string(*v);
+          throw Stop{};
+        }
+      }
+    };
+    try {
+      result = replay(trace, log, after);
+    } catch (const Stop&) {
+    }
+    return result;
+  }();
+  if (failure) {
+    std::cerr << "bccmis replay: " << *failure << "\n";
+    if (!o.log_file.empty()) write_output(o.log_file, log);
+    return kExitViolation;
+  }
+  if (o.check == "end") {
+    ++checks;
+    if (auto v = check_graph(g, o.depth)) {
+      std::cerr << "bccmis replay: " << name << ": invariant violated at the end: " << to_string(*v) << "\n";
+      return kExitViolation;
+    }
+  }
+  const std::string state = canonical_state(g);
+  if (o.log_file.empty() && o.state_file.empty()) {
+    write_output("-", log + state);
+  } else {
+    if (!o.log_file.empty()) write_output(o.log_file, log);
+    write_output(o.state_file.empty() ? "-" : o.state_file, state);
+  }
+  if (!o.quiet)
+    std::cerr << "bccmis replay: " << name << ": " << refines << " refine and " << coarsens << " coarsen commands ("
+              << refused << " refused), " << checks << " checks passed (depth " << o.depth << "); final state: "
+              << summary(g) << "\n";
+  return kExitOk;
+}
+
+int run_check(const std::string& path, int depth, bool quiet) {
+  const std::string name = display_name(path);
+  const Graph g = parse_state(read_input(path), name);
+  if (auto v = check_graph(g, depth)) {
+    std::cerr << "bccmis check: " << name << ": " << to_string(*v) << "\n";
+    return kExitViolation;
+  }
+  if (!quiet) std::cout << name << ": valid (depth " << depth << "): " << summary(g) << "\n";
+  return kExitOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"bccmis: reference implementation and oracle for Erleben's 2009 MIS graph "
+               "representation of adaptive 2D BCC lattices."};
+  app.set_version_flag("--version", std::string("bccmis ") + BCCMIS_VERSION);
+  app.require_subcommand(1);
+  app.footer(
+      "Exit codes: 0 success, 1 invariant violated, 2 bad input (usage, parse error, file), 3 internal error.\n"
+      "Formats: spec/formats.md. Run 'bccmis SUBCOMMAND --help' for examples.");
+
+  const int max_depth =
+#if BCCMIS_HAVE_TRIANGULATION_CHECK
+      5;
+#else
+      4;
+#endif
+
+  ReplayOptions ro;
+  CLI::App* replay_cmd = app.add_subcommand("replay", "Replay a trace; print the decision log and the canonical state.");
+  replay_cmd->add_option("trace", ro.trace, "Trace file ('-' for stdin)")->required();
+  replay_cmd->add_option("--log", ro.log_file, "Write the decision log to this file (atomically) instead of stdout");
+  replay_cmd->add_option("--state", ro.state_file, "Write the canonical state to this file (atomically) instead of stdout");
+  replay_cmd->add_option("--check", ro.check, "When to run the invariant checker: every (after each command), end, none")
+      ->check(CLI::IsMember({"every", "end", "none"}))
+      ->capture_default_str();
+  replay_cmd->add_option("--depth", ro.depth, "Checker layers to run: 1-4, or 5 for the CGAL triangulation layer")
+      ->check(CLI::Range(1, max_depth))
+      ->capture_default_str();
+  replay_cmd->add_flag("-q,--quiet", ro.quiet, "No summary on stderr");
+  replay_cmd->footer(
+      "Example:\n  bccmis replay spec/examples/fig2.trace\n  bccmis replay run.trace --check=end --log run.log --state run.state");
+
+  std::string check_path;
+  int check_depth = 4;
+  bool check_quiet = false;
+  CLI::App* check_cmd = app.add_subcommand("check", "Check a canonical state against every invariant.");
+  check_cmd->add_option("state", check_path, "State file ('-' for stdin)")->required();
+  check_cmd->add_option("--depth", check_depth, "Checker layers to run: 1-4, or 5 for the CGAL triangulation layer")
+      ->check(CLI::Range(1, max_depth))
+      ->capture_default_str();
+  check_cmd->add_flag("-q,--quiet", check_quiet, "Print nothing when the state is valid");
+  check_cmd->footer("Example:\n  bccmis replay spec/examples/fig2.trace --state fig2.state && bccmis check fig2.state");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "bccmis: " << e.what() << "\nRun 'bccmis --help' for usage.\n";
+    return kExitInput;
+  }
+
+  try {
+    if (*replay_cmd) return run_replay(ro);
+    if (*check_cmd) return run_check(check_path, check_depth, check_quiet);
+  } catch (const ParseError& e) {
+    std::cerr << "bccmis: " << e.what() << "\n";
+    return kExitInput;
+  } catch (const InputError& e) {
+    std::cerr << "bccmis: " << e.what() << "\n";
+    return kExitInput;
+  } catch (const std::exception& e) {
+    std::cerr << "bccmis: internal error: " << e.what() << "\n";
+    return kExitInternal;
+  }
+  return kExitInternal;
+}

@@ -1,0 +1,38 @@
+# Runs one CLI invocation and checks its exit code and output.
+#   cmake -DCMD="prog;arg;..." -DEXPECT_EXIT=N [-DEXPECT_STDOUT_FILE=f]
+#         [-DEXPECT_STDOUT_REGEX=r] [-DEXPECT_STDERR_REGEX=r] [-DSTDIN_FILE=f]
+#         [-DWORKDIR=d] -P run_cli.cmake
+if(WORKDIR)
+  file(REMOVE_RECURSE "${WORKDIR}")
+  file(MAKE_DIRECTORY "${WORKDIR}")
+else()
+  set(WORKDIR ".")
+endif()
+if(STDIN_FILE)
+  execute_process(COMMAND ${CMD} WORKING_DIRECTORY "${WORKDIR}" INPUT_FILE "${STDIN_FILE}"
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 60)
+else()
+  execute_process(COMMAND ${CMD} WORKING_DIRECTORY "${WORKDIR}"
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 60)
+endif()
+set(fail "")
+if(NOT "${rc}" STREQUAL "${EXPECT_EXIT}")
+  string(APPEND fail "exit code ${rc}, expected ${EXPECT_EXIT}\n")
+endif()
+if(EXPECT_STDOUT_FILE)
+  file(READ "${EXPECT_STDOUT_FILE}" expected)
+  if(NOT out STREQUAL expected)
+    file(WRITE "${WORKDIR}/actual.out" "${out}")
+    execute_process(COMMAND diff -u "${EXPECT_STDOUT_FILE}" "${WORKDIR}/actual.out" OUTPUT_VARIABLE d)
+    string(APPEND fail "stdout differs from ${EXPECT_STDOUT_FILE}:\n${d}\n")
+  endif()
+endif()
+if(DEFINED EXPECT_STDOUT_REGEX AND NOT out MATCHES "${EXPECT_STDOUT_REGEX}")
+  string(APPEND fail "stdout does not match '${EXPECT_STDOUT_REGEX}'\n")
+endif()
+if(DEFINED EXPECT_STDERR_REGEX AND NOT err MATCHES "${EXPECT_STDERR_REGEX}")
+  string(APPEND fail "stderr does not match '${EXPECT_STDERR_REGEX}'\n")
+endif()
+if(fail)
+  message(FATAL_ERROR "${CMD}\n${fail}--- stdout ---\n${out}--- stderr ---\n${err}")
+endif()
