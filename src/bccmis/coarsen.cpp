@@ -25,6 +25,7 @@
 
 #include "bccmis/ops.h"
 #include "bccmis/set_ops.h"
+#include "bccmis/transaction.h"
 
 namespace bccmis {
 
@@ -84,7 +85,9 @@ CoarsenResult coarsen(Graph& g, const Vertex& n) {
   result.refused = can_coarsen(g, n);
   if (result.refused) return result;
 
-  auto nb = [&g](const Vertex& v) -> VertexSet& { return g.neighbors[v]; };
+  // Every change is staged in tx and applied at the end, all or nothing.
+  Transaction tx(g);
+  auto nb = [&tx](const Vertex& v) -> VertexSet& { return tx.nb(v); };
   const int l = *refined_center_level(g.size, n);
 
   // 1. The children and the boundary of the coarse cell: eq. (8a)-(8b).
@@ -115,17 +118,15 @@ CoarsenResult coarsen(Graph& g, const Vertex& n) {
   nb(n).clear();
   //= erleben2009#eq-9d
   //# N = N \ {n}
-  g.N = minus(g.N, VertexSet{n});
+  tx.remove_node(n);
   //= erleben2009#eq-9e
   //# C = C ∪ {n}
-  g.C = unite(g.C, VertexSet{n});
-  g.level[n] = l;
+  tx.add_center(n, l);
   //= erleben2009#eq-9f
   //# C = C \ Y
-  g.C = minus(g.C, Y);
   for (const Vertex& y_i : Y) {
-    g.neighbors.erase(y_i);
-    g.level.erase(y_i);
+    tx.remove_center(y_i);
+    tx.remove_vertex(y_i);  // the Y-vertices are deleted
   }
 
   // 3. Delete the junctions the coarse cell no longer needs (Fig. 3b):
@@ -142,7 +143,7 @@ CoarsenResult coarsen(Graph& g, const Vertex& n) {
   B = minus(B, J_minus);
   //= erleben2009#eq-10c
   //# N = N \ J-
-  g.N = minus(g.N, J_minus);
+  for (const Vertex& j_i : J_minus) tx.remove_node(j_i);
   for (const Vertex& j_i : J_minus) {
     //= erleben2009#eq-11a
     //= type=deviation
@@ -155,11 +156,11 @@ CoarsenResult coarsen(Graph& g, const Vertex& n) {
     //= erleben2009#eq-11c
     //# N(j-_i) = ∅
     nb(j_i).clear();
-    g.neighbors.erase(j_i);
+    tx.remove_vertex(j_i);  // the J- vertices are deleted
   }
   //= erleben2009#eq-11d
   //# N = N \ J-   (repeats eq. 10c; erratum E5)
-  g.N = minus(g.N, J_minus);
+  for (const Vertex& j_i : J_minus) tx.remove_node(j_i);
 
   // 4. Connect the coarse cell to its boundary (Fig. 3c): eq. (12a)-(12b).
   //= erleben2009#eq-12a
@@ -171,6 +172,7 @@ CoarsenResult coarsen(Graph& g, const Vertex& n) {
 
   result.Y = Y;
   result.J_minus = J_minus;
+  tx.commit();
   return result;
 }
 

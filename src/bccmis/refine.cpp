@@ -31,6 +31,7 @@
 #include "bccmis/geometry.h"
 #include "bccmis/ops.h"
 #include "bccmis/set_ops.h"
+#include "bccmis/transaction.h"
 
 namespace bccmis {
 
@@ -97,7 +98,9 @@ RefineResult refine(Graph& g, const Vertex& c) {
   result.refused = can_refine(g, c);
   if (result.refused) return result;
 
-  auto nb = [&g](const Vertex& v) -> VertexSet& { return g.neighbors[v]; };
+  // Every change is staged in tx and applied at the end, all or nothing.
+  Transaction tx(g);
+  auto nb = [&tx](const Vertex& v) -> VertexSet& { return tx.nb(v); };
   const int l = g.level_of(c);
 
   // 1. The neighbourhood of c (Fig. 2a): eq. (2a)-(3).
@@ -144,8 +147,7 @@ RefineResult refine(Graph& g, const Vertex& c) {
   const VertexSet Y(y.begin(), y.end());
   //= erleben2009#eq-4b
   //# C = C ∪ Y
-  g.C = unite(g.C, Y);
-  for (const Vertex& yi : Y) g.level[yi] = l + 1;
+  for (const Vertex& y_i : Y) tx.add_center(y_i, l + 1);
   //= erleben2009#eq-4c
   //# N(c) = Y
   nb(c) = Y;
@@ -160,11 +162,10 @@ RefineResult refine(Graph& g, const Vertex& c) {
   for (std::size_t i = 0; i < 4; ++i) nb(y[i]) = VertexSet{p[i], c};
   //= erleben2009#eq-4g
   //# C = C \ {c}
-  g.C = minus(g.C, VertexSet{c});
-  g.level.erase(c);
+  tx.remove_center(c);
   //= erleben2009#eq-4h
   //# N = N ∪ {c}
-  g.N = unite(g.N, VertexSet{c});
+  tx.add_node(c);
 
   // 3. New junctions (Fig. 2c): eq. (5a)-(6e), over the sides found above.
   //= erleben2009#eq-5a
@@ -175,7 +176,7 @@ RefineResult refine(Graph& g, const Vertex& c) {
   for (const Side& s : sides) J_plus.insert(s.j_plus);
   //= erleben2009#eq-5b
   //# N = N ∪ J+
-  g.N = unite(g.N, J_plus);
+  for (const Vertex& j : J_plus) tx.add_node(j);
 
   for (const Side& s : sides) {
     const Vertex& j_k = s.j_plus;
@@ -218,6 +219,7 @@ RefineResult refine(Graph& g, const Vertex& c) {
 
   result.Y = Y;
   result.J_plus = J_plus;
+  tx.commit();
   return result;
 }
 
