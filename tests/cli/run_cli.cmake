@@ -1,7 +1,8 @@
 # Runs one CLI invocation and checks its exit code and output.
 #   cmake -DCMD="prog;arg;..." -DEXPECT_EXIT=N [-DEXPECT_STDOUT_FILE=f]
 #         [-DEXPECT_STDOUT_REGEX=r] [-DEXPECT_STDERR_REGEX=r] [-DSTDIN_FILE=f]
-#         [-DWORKDIR=d] -P run_cli.cmake
+#         [-DWORKDIR=d] -P run_cli.cmake   (CMD: arguments separated by "|")
+string(REPLACE "|" ";" CMD "${CMD}")
 if(WORKDIR)
   file(REMOVE_RECURSE "${WORKDIR}")
   file(MAKE_DIRECTORY "${WORKDIR}")
