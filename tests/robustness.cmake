@@ -1,0 +1,91 @@
+# Robustness against bad input and faults (issue 6), ctest label `robustness`.
+#
+# 1. tests/bad_input/: every file in trace/ must make `bccmis replay` and every
+#    file in state/ must make `bccmis check` exit 2 with exactly one line
+#    `bccmis: FILE:LINE:COLUMN: MESSAGE` on stderr, nothing on stdout, within
+#    a second and bounded memory. expected.txt gives LINE:COLUMN and the start
+#    of MESSAGE for each file. Large inputs are generated at test time;
+#    a directory and a missing file give `bccmis: PATH: MESSAGE`.
+# 2. Output files: atomic writes, untouched on failure, no temporaries left.
+# 3. Strong exception guarantee under injected allocation failures
+#    (robustness_alloc_test.cpp).
+set(_bad ${CMAKE_CURRENT_SOURCE_DIR}/bad_input)
+set(_bad_run ${_bad}/run_bad_input.cmake)
+set(_bad_work ${CMAKE_CURRENT_BINARY_DIR}/bad_input_work)
+
+# Sanitized builds start slower and map more memory.
+if(BCCMIS_SANITIZERS OR BCCMIS_FUZZ)
+  set(_bad_limits -DMAX_SECONDS=2 -DMAX_RSS_MB=1024)
+else()
+  set(_bad_limits -DMAX_SECONDS=1 -DMAX_RSS_MB=256)
+endif()
+
+function(bccmis_bad_input_test name mode input expect)
+  string(REPLACE ";" "." expect "${expect}")
+  add_test(NAME robustness.bad_input.${name}
+           COMMAND ${CMAKE_COMMAND} -DBCCMIS=$<TARGET_FILE:bccmis> -DMODE=${mode} -DINPUT=${input}
+                   "-DEXPECT=${expect}" -DWORKDIR=${_bad_work}/${name} ${_bad_limits} ${ARGN} -P ${_bad_run})
+  set_tests_properties(robustness.bad_input.${name} PROPERTIES LABELS robustness TIMEOUT 60)
+endfunction()
+
+# The manifest: <file> TAB <line>:<column>: <message regex>.
+file(STRINGS ${_bad}/expected.txt _bad_manifest ENCODING UTF-8)
+set(_bad_known)
+foreach(entry IN LISTS _bad_manifest)
+  if(entry MATCHES "^#" OR NOT entry MATCHES "^([^\t]+)\t(.+)$")
+    continue()
+  endif()
+  set(file ${CMAKE_MATCH_1})
+  set(expect "${CMAKE_MATCH_2}")
+  list(APPEND _bad_known ${file})
+  if(file MATCHES "^trace/")
+    set(mode replay)
+  else()
+    set(mode check)
+  endif()
+  string(REGEX REPLACE "^(trace|state)/(.*)\\.(trace|state)$" "\\1.\\2" name "${file}")
+  bccmis_bad_input_test(${name} ${mode} ${_bad}/${file} "${expect}")
+endforeach()
+# A file without a manifest entry fails until it gets one.
+file(GLOB _bad_files RELATIVE ${_bad} CONFIGURE_DEPENDS ${_bad}/trace/* ${_bad}/state/*)
+foreach(file IN LISTS _bad_files)
+  if(NOT file IN_LIST _bad_known)
+    string(REGEX REPLACE "[^A-Za-z0-9_.]" "_" name "${file}")
+    bccmis_bad_input_test(unlisted.${name} replay ${_bad}/${file} "no entry in tests/bad_input/expected.txt")
+  endif()
+endforeach()
+
+# Inputs too large to keep in git, written by the script before the run.
+bccmis_bad_input_test(generated.long_line replay ${_bad_work}/generated.long_line/in.trace
+                      "2:10: y coordinate .9+\\.\\.\\.. is out of range" -DGENERATE=long_line)
+bccmis_bad_input_test(generated.many_lines replay ${_bad_work}/generated.many_lines/in.trace
+                      "200002:1: unknown command .bogus." -DGENERATE=many_lines)
+bccmis_bad_input_test(generated.many_comments replay ${_bad_work}/generated.many_comments/in.trace
+                      "104865:1: no .lattice W H L. command" -DGENERATE=many_comments)
+bccmis_bad_input_test(generated.long_state check ${_bad_work}/generated.long_state/in.state
+                      "100003:3: N lines must be sorted" -DGENERATE=long_state)
+
+# No line to point at: a directory, a missing file.
+bccmis_bad_input_test(directory_replay replay ${_bad} "is a directory, expected a file" -DNO_LINE=1)
+bccmis_bad_input_test(directory_check check ${_bad} "is a directory, expected a file" -DNO_LINE=1)
+bccmis_bad_input_test(missing_replay replay ${_bad}/no-such-file.trace "cannot open for reading" -DNO_LINE=1)
+bccmis_bad_input_test(missing_check check ${_bad}/no-such-file.state "cannot open for reading" -DNO_LINE=1)
+
+# Output files.
+foreach(case parse_error_keeps_outputs success_leaves_only_outputs missing_output_directory output_is_a_fifo)
+  add_test(NAME robustness.outputs.${case}
+           COMMAND sh ${_bad}/outputs.sh $<TARGET_FILE:bccmis> ${case} ${CMAKE_CURRENT_BINARY_DIR}/outputs_work/${case})
+  set_tests_properties(robustness.outputs.${case} PROPERTIES LABELS robustness TIMEOUT 60)
+endforeach()
+# Known bug, reported with issue 6: write_output renames its temporary file
+# over the target even when the target is a FIFO or a device, so
+# `--state /dev/null` or `--log /dev/stdout` run as root replaces the device
+# node with a regular file. Enable once src/cli writes special files in place.
+set_tests_properties(robustness.outputs.output_is_a_fifo PROPERTIES DISABLED TRUE)
+
+# Strong exception guarantee: every k-th allocation fails, for every k.
+if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/robustness_alloc_test.cpp)
+  add_executable(robustness_alloc_test robustness_alloc_test.cpp)
+  target_link_libraries(robustness_alloc_test PRIVATE bccmis::invariants bccmis::core GTest::gtest_main bccmis::warnings)
+  gtest_discover_tests(robustness_alloc_test DISCOVERY_MODE PRE_TEST PROPERTIES LABELS robustness)
+endif()
