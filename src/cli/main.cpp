@@ -5,6 +5,7 @@
 // (usage, parse error, unreadable file, unwritable output); 3 internal error.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -16,8 +17,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "bccmis/conformance.h"
 #include "bccmis/format.h"
 #include "bccmis/invariants.h"
+#include "bccmis/oracle.h"
 #if BCCMIS_HAVE_TRIANGULATION_CHECK
 #include "bccmis/triangulation_check.h"
 #endif
@@ -185,6 +188,22 @@ int run_check(const std::string& path, int depth, bool quiet) {
   return kExitOk;
 }
 
+/// A state from a canonical-state file, or from a trace with --from-trace.
+Graph load_state(const std::string& path, bool from_trace) {
+  const std::string name = display_name(path);
+  const std::string text = read_input(path);
+  if (!from_trace) return parse_state(text, name);
+  std::string log;
+  return replay(parse_trace(text, name), log);
+}
+
+int run_diff(const std::string& a, const std::string& b, bool quiet) {
+  const std::vector<std::string> d = diff_states(load_state(a, false), load_state(b, false));
+  if (!quiet)
+    for (const std::string& line : d) std::cout << line << "\n";
+  return d.empty() ? kExitOk : kExitViolation;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -229,6 +248,46 @@ int main(int argc, char** argv) {
   check_cmd->add_flag("-q,--quiet", check_quiet, "Print nothing when the state is valid");
   check_cmd->footer("Example:\n  bccmis replay spec/examples/fig2.trace --state fig2.state && bccmis check fig2.state");
 
+  std::string diff_a, diff_b;
+  bool diff_quiet = false;
+  CLI::App* diff_cmd = app.add_subcommand("diff", "Semantic difference of two canonical states, by position.");
+  diff_cmd->add_option("a", diff_a, "First state file ('-' for stdin)")->required();
+  diff_cmd->add_option("b", diff_b, "Second state file")->required();
+  diff_cmd->add_flag("-q,--quiet", diff_quiet, "Only the exit code: 0 equal, 1 different");
+  diff_cmd->footer("Exit codes: 0 equal, 1 different, 2 bad input.\nExample:\n  bccmis diff expected.state actual.state");
+
+  std::string stats_path;
+  bool stats_json = false, stats_from_trace = false;
+  CLI::App* stats_cmd = app.add_subcommand("stats", "Counts of a state: cells per level, nodes, junctions, edges, memory estimate.");
+  stats_cmd->add_option("state", stats_path, "State file ('-' for stdin)")->required();
+  stats_cmd->add_flag("--json", stats_json, "JSON output");
+  stats_cmd->add_flag("--from-trace", stats_from_trace, "The input is a trace: replay it first");
+  stats_cmd->footer("Example:\n  bccmis stats --from-trace spec/examples/fig2.trace --json");
+
+  std::string render_path, render_out;
+  bool render_from_trace = false;
+  CLI::App* render_cmd = app.add_subcommand("render", "Draw a state as SVG: cells by level, stored and hull edges, junctions.");
+  render_cmd->add_option("state", render_path, "State file ('-' for stdin)")->required();
+  render_cmd->add_option("-o,--output", render_out, "SVG file to write (atomically); '-' for stdout")->required();
+  render_cmd->add_flag("--from-trace", render_from_trace, "The input is a trace: replay it first");
+  render_cmd->footer("Example:\n  bccmis render --from-trace spec/examples/fig2.trace -o fig2.svg");
+
+  ConformanceOptions co;
+  std::string co_traces;
+  CLI::App* conf_cmd = app.add_subcommand(
+      "conformance", "Check another implementation against the reference: decisions and final states, with shrinking.");
+  conf_cmd->add_option("--impl", co.impl, "Command to run; the trace file path is appended (spec/conformance.md)")->required();
+  conf_cmd->add_option("--traces", co_traces, "Directory of bundled *.trace files to run first");
+  conf_cmd->add_option("--random", co.random, "Number of random traces")->check(CLI::Range(0, 1000000))->capture_default_str();
+  conf_cmd->add_option("--seed", co.seed, "Seed of the random traces")->capture_default_str();
+  conf_cmd->add_option("--max-ops", co.max_ops, "Operations per random trace")->check(CLI::Range(1, 100000))->capture_default_str();
+  conf_cmd->add_option("--timeout", co.timeout_seconds, "Seconds per run of the implementation")
+      ->check(CLI::Range(0.01, 86400.0))
+      ->capture_default_str();
+  conf_cmd->footer(
+      "Exit codes: 0 all agree, 1 disagreement (the minimal trace is printed), 2 harness error.\n"
+      "Example:\n  bccmis conformance --impl './my-lattice replay' --traces spec/examples --random 200 --seed 7");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -245,6 +304,26 @@ int main(int argc, char** argv) {
   try {
     if (*replay_cmd) return run_replay(ro);
     if (*check_cmd) return run_check(check_path, check_depth, check_quiet);
+    if (*diff_cmd) return run_diff(diff_a, diff_b, diff_quiet);
+    if (*stats_cmd) {
+      std::cout << format_stats(stats(load_state(stats_path, stats_from_trace)), stats_json);
+      return kExitOk;
+    }
+    if (*render_cmd) {
+      const Graph g = load_state(render_path, render_from_trace);
+      write_output(render_out, render_svg(g, display_name(render_path)));
+      return kExitOk;
+    }
+    if (*conf_cmd) {
+      if (!co_traces.empty()) {
+        std::error_code ec;
+        if (!std::filesystem::is_directory(co_traces, ec)) throw InputError(co_traces + ": not a directory");
+        for (const auto& e : std::filesystem::directory_iterator(co_traces))
+          if (e.path().extension() == ".trace") co.trace_files.push_back(e.path().string());
+        std::sort(co.trace_files.begin(), co.trace_files.end());
+      }
+      return run_conformance(co, std::cout);
+    }
   } catch (const ParseError& e) {
     std::cerr << "bccmis: " << e.what() << "\n";
     return kExitInput;

@@ -1,0 +1,59 @@
+// bccmis conformance harness: runs an external implementation on traces and
+// compares its decision log and final state with the reference, shrinking
+// the first disagreement to a minimal trace (spec/conformance.md).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <ostream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "bccmis/format.h"
+
+namespace bccmis {
+
+struct ConformanceOptions {
+  std::string impl;                    ///< shell command; the trace file path is appended
+  std::vector<std::string> trace_files;///< bundled traces to run first
+  int random = 0;                      ///< number of random traces
+  std::uint64_t seed = 1;              ///< seed of the random traces
+  int max_ops = 30;                    ///< operations per random trace
+  double timeout_seconds = 10;         ///< per run of the implementation
+};
+
+/// The output of one run of the implementation.
+struct ImplRun {
+  int exit_code = 0;       ///< exit status when it exited normally
+  int signal = 0;          ///< terminating signal, 0 if none
+  bool timed_out = false;
+  std::string out, err;
+};
+
+/// Runs `command 'trace_file'` under /bin/sh with a timeout.
+ImplRun run_implementation(const std::string& command, const std::string& trace_file, double timeout_seconds);
+
+/// What the reference prints for a trace (`bccmis replay`, no checks): the
+/// decision log followed by the canonical state.
+std::string reference_output(const Trace& trace);
+
+/// Compares an implementation's run with the reference output. Empty when
+/// they agree; otherwise a description of the first difference: the first
+/// differing decision, or the semantic diff of the final states, or the
+/// crash / timeout / exit status.
+std::string compare_run(const Trace& trace, const ImplRun& run);
+
+/// A random trace biased toward legal operations (seeded, deterministic).
+Trace random_trace(std::mt19937_64& rng, int max_ops);
+
+/// Delta debugging: a smallest trace (no single command can be dropped) for
+/// which `disagrees` still holds. `disagrees(trace)` must hold for the input.
+Trace shrink(const Trace& trace, const std::function<bool(const Trace&)>& disagrees);
+
+/// Runs the harness; reports to `out` (progress and the verdict). Returns the
+/// exit code: 0 all agree, 1 a disagreement (minimal trace printed), 2 harness
+/// error (bad options, unreadable trace).
+int run_conformance(const ConformanceOptions& options, std::ostream& out);
+
+}  // namespace bccmis
