@@ -66,3 +66,39 @@ add_test(NAME cli.output_files_content
          COMMAND ${CMAKE_COMMAND} -E compare_files ${CMAKE_CURRENT_BINARY_DIR}/cli_work/output_files/out.log
                  ${_cli}/fig2.log)
 set_tests_properties(cli.output_files_content PROPERTIES DEPENDS cli.output_files LABELS cli)
+
+# Conformance harness: the reference against itself agrees; each deliberately
+# wrong implementation (tests/conformance/*.sh) is caught and shrunk to <= 5
+# operations.
+set(_conf ${CMAKE_CURRENT_SOURCE_DIR}/conformance)
+bccmis_cli_test(conformance.self 0
+  ARGS conformance --impl "$<TARGET_FILE:bccmis> replay --quiet --check=none" --traces ${_examples} --random 100 --seed 1
+  STDOUT_REGEX "all 103 traces agree")
+set(_minimal "minimal trace \\(([1-5]) operations?\\)")
+bccmis_cli_test(conformance.wrong_refusal_code 1
+  ARGS conformance --impl "sh ${_conf}/wrong_refusal_code.sh $<TARGET_FILE:bccmis>" --traces ${_examples} --random 50 --seed 1
+  STDOUT_REGEX "${_minimal}.*refine [0-9]+ [0-9]+ refused max-level', implementation '[^']*refused coarser-neighbor")
+bccmis_cli_test(conformance.missing_boundary_junction 1
+  ARGS conformance --impl "sh ${_conf}/missing_boundary_junction.sh $<TARGET_FILE:bccmis>" --random 50 --seed 1
+  STDOUT_REGEX "${_minimal}.*only in A: node \\([0-9]+, 0\\)")
+bccmis_cli_test(conformance.crash 1
+  ARGS conformance --impl "sh ${_conf}/crash_on_coarsen.sh $<TARGET_FILE:bccmis>" --random 50 --seed 1
+  STDOUT_REGEX "${_minimal}.*crashed: signal 11")
+bccmis_cli_test(conformance.timeout 1
+  ARGS conformance --impl "sh ${_conf}/hang_on_long_traces.sh $<TARGET_FILE:bccmis>" --random 20 --seed 1 --timeout 0.5
+  STDOUT_REGEX "minimal trace \\(4 operations\\).*timed out")
+bccmis_cli_test(conformance.no_impl 2 ARGS conformance STDERR_REGEX "impl")
+bccmis_cli_test(conformance.bad_trace_dir 2 ARGS conformance --impl true --traces ${_cli}/no-such-dir STDERR_REGEX "not a directory")
+
+# More verbs: diff, stats, render.
+bccmis_cli_test(diff_equal 0 ARGS diff ${_examples}/initial_1_1_0.state ${_examples}/initial_1_1_0.state)
+bccmis_cli_test(diff_different 1 ARGS diff ${_examples}/initial_1_1_0.state ${_cli}/broken.state
+                STDOUT_REGEX "neighbours of \\(2, 2\\): only in A: \\(1, 1\\); only in B: none")
+# fig2 by hand: 1 + 8 cells, 17 nodes, one junction (4,2); 5 + 8*4 = 37 stored
+# edges; Euler: V - E + F = 26 - (37 + hull) + (37 + 1) = 2 gives 25 hull edges.
+bccmis_cli_test(stats_fig2 0 ARGS stats --from-trace ${_examples}/fig2.trace
+                STDOUT_REGEX "cells 9\ncells_level_0 1\ncells_level_1 8\nnodes 17\njunctions 1\ngraph_edges 37\nhull_edges 25\ntriangles 37\n")
+bccmis_cli_test(render_fig2 0 ARGS render --from-trace ${_examples}/fig2.trace -o fig2.svg)
+add_test(NAME cli.render_fig2_content
+         COMMAND ${CMAKE_COMMAND} -DFILE=${CMAKE_CURRENT_BINARY_DIR}/cli_work/render_fig2/fig2.svg -P ${_cli}/check_svg.cmake)
+set_tests_properties(cli.render_fig2_content PROPERTIES DEPENDS cli.render_fig2 LABELS cli)

@@ -140,7 +140,11 @@ std::string compare_run(const Trace& trace, const ImplRun& run) {
   if (run.signal != 0) return "the implementation crashed (signal " + std::to_string(run.signal) + ")";
   if (run.exit_code != 0) {
     std::string first_err = run.err.substr(0, run.err.find('\n'));
-    return "the implementation exited with status " + std::to_string(run.exit_code) +
+    // A shell reports a child killed by signal N as status 128 + N.
+    const std::string crash = run.exit_code > 128 && run.exit_code < 160
+                                  ? " (crashed: signal " + std::to_string(run.exit_code - 128) + ")"
+                                  : "";
+    return "the implementation exited with status " + std::to_string(run.exit_code) + crash +
            (first_err.empty() ? "" : ": " + first_err);
   }
   std::string log;

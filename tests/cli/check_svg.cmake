@@ -1,0 +1,15 @@
+# Checks a rendered fig2.svg: 9 cell rectangles + 9 center markers, 37 stored
+# edges + 25 hull edges as lines, 17 nodes and 1 junction ring as circles.
+file(READ "${FILE}" svg)
+string(REGEX MATCHALL "<rect x=" rects "${svg}")
+string(REGEX MATCHALL "<line " lines "${svg}")
+string(REGEX MATCHALL "<circle " circles "${svg}")
+list(LENGTH rects nr)
+list(LENGTH lines nl)
+list(LENGTH circles nc)
+if(NOT nr EQUAL 18 OR NOT nl EQUAL 62 OR NOT nc EQUAL 18)
+  message(FATAL_ERROR "fig2.svg: ${nr} rects (want 18), ${nl} lines (want 62), ${nc} circles (want 18)")
+endif()
+if(NOT svg MATCHES "^<svg xmlns" OR NOT svg MATCHES "</svg>\n$")
+  message(FATAL_ERROR "fig2.svg is not a complete SVG document")
+endif()
