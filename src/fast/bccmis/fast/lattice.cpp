@@ -1,0 +1,824 @@
+// bccmis::fast: refine (§2.1) and coarsen (§2.2) as fixed slot updates.
+//
+// Directions. A quadrant (and a corner) q has bit 0 set when it points east
+// (+x) and bit 1 set when it points north (+y): 0 = SW, 1 = SE, 2 = NW,
+// 3 = NE; q ^ 3 is the opposite quadrant. A side s is 0 = S, 1 = E, 2 = N,
+// 3 = W; s ^ 2 is the opposite side.
+//
+// The one rule that links the two pools: when node m is corner k of cell x,
+// x lies in quadrant k ^ 3 of m, so m.cell[k ^ 3] == x; when m is the
+// midpoint of side s of x, x fills the two quadrants of m that face x.
+//
+// Refinement of c (level l, half side h), with the names of refine.cpp:
+//
+//      K[2] ---- m[N] ---- K[3]          K[q]  the pure corners P (eq. 2c)
+//       |  y[2]   |   y[3]  |            m[s]  the side midpoints: an old
+//      m[W] ----- c ----- m[E]                 junction of J (eq. 2b) or a
+//       |  y[0]   |   y[1]  |                  new one of J+ (eq. 5a, E1)
+//      K[0] ---- m[S] ---- K[1]          y[q]  the children Y (eq. 4a)
+//
+// Child y[q] has corners K[q] (outer), c (inner, eq. 4c/4f), and the
+// midpoints of the two sides of c it touches (eq. 6d/6e, 7b); it has no
+// junction: across its outer sides lie cells of its own level (old junction)
+// or of c's level (a new junction is made on that cell's side instead).
+#include "bccmis/fast/lattice.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+
+namespace bccmis::fast {
+
+namespace {
+
+using Index = Lattice::Index;
+constexpr Index kNone = Lattice::kNone;
+
+constexpr std::int64_t qx(int q) { return (q & 1) ? 1 : -1; }
+constexpr std::int64_t qy(int q) { return (q & 2) ? 1 : -1; }
+constexpr std::int64_t kSideDx[4] = {0, 1, 0, -1};
+constexpr std::int64_t kSideDy[4] = {-1, 0, 1, 0};
+
+// The side of c that child q touches horizontally (S or N) and vertically (W or E).
+constexpr int hside(int q) { return (q & 2) ? 2 : 0; }
+constexpr int vside(int q) { return (q & 1) ? 1 : 3; }
+
+// For side s: a corner of c on that side, and the quadrant of that corner
+// node that lies across side s, next to c. The same pair finds, in a refined
+// cell, the midpoint of side s: corner kSideQuad[s] of child kSideCorner[s].
+constexpr int kSideCorner[4] = {0, 1, 3, 2};
+constexpr int kSideQuad[4] = {1, 3, 2, 0};
+// The two quadrants of the midpoint of side s that face c, and the child of c
+// in each; the two quadrants that face away from c.
+constexpr int kInwardQuad[4][2] = {{2, 3}, {0, 2}, {0, 1}, {1, 3}};
+constexpr int kInwardChild[4][2] = {{0, 1}, {1, 3}, {2, 3}, {0, 2}};
+constexpr int kOutwardQuad[4][2] = {{0, 1}, {1, 3}, {2, 3}, {0, 2}};
+// Sorted (x, y) orders: children (quadrants) and side midpoints.
+constexpr int kQuadSorted[4] = {0, 2, 1, 3};
+constexpr int kSideSorted[4] = {3, 0, 2, 1};
+
+Point offset(const Point& p, std::int64_t dx, std::int64_t dy) { return {p.x + dx, p.y + dy}; }
+
+bool point_less(const Point& a, const Point& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
+
+std::uint64_t mix(const Point& p) {
+  std::uint64_t h = static_cast<std::uint64_t>(p.x) * 0x9E3779B97F4A7C15ull;
+  h ^= static_cast<std::uint64_t>(p.y) * 0xC2B2AE3D27D4EB4Full;
+  h ^= h >> 29;
+  h *= 0xBF58476D1CE4E5B9ull;
+  h ^= h >> 32;
+  return h;
+}
+
+constexpr std::size_t kMaxPool = 0x7FFFFFFFu;  // indices below 2^31 (the node bit)
+
+}  // namespace
+
+// ---- SmallPoints / outcomes --------------------------------------------------
+
+RefineResult RefineOutcome::to_result() const {
+  RefineResult r;
+  r.refused = refused;
+  r.Y = Y.to_set();
+  r.J_plus = J_plus.to_set();
+  return r;
+}
+
+CoarsenResult CoarsenOutcome::to_result() const {
+  CoarsenResult r;
+  r.refused = refused;
+  r.Y = Y.to_set();
+  r.J_minus = J_minus.to_set();
+  return r;
+}
+
+// ---- Records -----------------------------------------------------------------
+
+Point Lattice::Center::position() const {
+  std::uint64_t x = xy[0] | (std::uint64_t{xy[1]} << 32);
+  std::uint64_t y = xy[2] | (std::uint64_t{xy[3]} << 32);
+  return {static_cast<std::int64_t>(x), static_cast<std::int64_t>(y)};
+}
+
+void Lattice::Center::set_position(const Point& p) {
+  const auto x = static_cast<std::uint64_t>(p.x);
+  const auto y = static_cast<std::uint64_t>(p.y);
+  xy[0] = static_cast<std::uint32_t>(x);
+  xy[1] = static_cast<std::uint32_t>(x >> 32);
+  xy[2] = static_cast<std::uint32_t>(y);
+  xy[3] = static_cast<std::uint32_t>(y >> 32);
+}
+
+Point Lattice::node_position(Index n) const {
+  const Node& nd = nodes_[n];
+  int q = 0;
+  while (nd.cell[q] == kNone) ++q;  // a live node has a cell in some quadrant
+  const Index x = nd.cell[q];
+  const Center& cx = centers_[x];
+  const Point p = cx.position();
+  const std::int64_t h = half_side(cx.level);
+  // x fills quadrant q; if it also fills the horizontally (vertically)
+  // adjacent quadrant, the node is the midpoint of its south or north (west
+  // or east) side, otherwise its corner q ^ 3.
+  return {nd.cell[q ^ 1] == x ? p.x : p.x - qx(q) * h, nd.cell[q ^ 2] == x ? p.y : p.y - qy(q) * h};
+}
+
+// ---- Position table -------------------------------------------------------------
+
+std::size_t Lattice::home(const Point& p) const { return static_cast<std::size_t>(mix(p) >> table_shift_); }
+
+Point Lattice::key_of(Index ref) const {
+  return (ref & kNodeBit) ? node_position(ref & ~kNodeBit) : centers_[ref].position();
+}
+
+std::size_t Lattice::slot_of(Index ref, const Point& p) const {
+  const std::size_t mask = table_.size() - 1;
+  std::size_t i = home(p);
+  while (table_[i] != ref) i = (i + 1) & mask;
+  return i;
+}
+
+Index Lattice::find(const Point& p) const {
+  const std::size_t mask = table_.size() - 1;
+  for (std::size_t i = home(p);; i = (i + 1) & mask) {
+    const Index r = table_[i];
+    if (r == kNone) return kNone;
+    if (key_of(r) == p) return r;
+  }
+}
+
+Index Lattice::find_center(const Point& p) const {
+  const std::size_t mask = table_.size() - 1;
+  for (std::size_t i = home(p);; i = (i + 1) & mask) {
+    const Index r = table_[i];
+    if (r == kNone) return kNone;
+    if (!(r & kNodeBit) && centers_[r].position() == p) return r;
+  }
+}
+
+Index Lattice::find_node(const Point& p) const {
+  const std::size_t mask = table_.size() - 1;
+  for (std::size_t i = home(p);; i = (i + 1) & mask) {
+    const Index r = table_[i];
+    if (r == kNone) return kNone;
+    if ((r & kNodeBit) && node_position(r & ~kNodeBit) == p) return r & ~kNodeBit;
+  }
+}
+
+void Lattice::table_insert(Index ref, const Point& p) {
+  const std::size_t mask = table_.size() - 1;
+  std::size_t i = home(p);
+  while (table_[i] != kNone) i = (i + 1) & mask;
+  table_[i] = ref;
+  ++table_used_;
+}
+
+void Lattice::table_erase(Index ref, const Point& p) {
+  // Backward-shift deletion (Knuth 6.4, Algorithm R): later entries of the
+  // cluster whose home is not cyclically in (hole, j] move into the hole.
+  const std::size_t mask = table_.size() - 1;
+  std::size_t hole = slot_of(ref, p);
+  for (std::size_t j = (hole + 1) & mask; table_[j] != kNone; j = (j + 1) & mask) {
+    const std::size_t k = home(key_of(table_[j]));
+    const bool stays = hole <= j ? (hole < k && k <= j) : (hole < k || k <= j);
+    if (stays) continue;
+    table_[hole] = table_[j];
+    hole = j;
+  }
+  table_[hole] = kNone;
+  --table_used_;
+}
+
+void Lattice::rehash(std::size_t slots) {
+  std::size_t bits = 4;
+  while ((std::size_t{1} << bits) < slots) ++bits;
+  std::vector<Index> fresh(std::size_t{1} << bits, kNone);  // may throw: nothing changed yet
+  table_.swap(fresh);
+  table_shift_ = 64 - bits;
+  table_used_ = 0;
+  for (std::size_t c = 0; c < centers_.size(); ++c)
+    if (centers_[c].level != kDead) table_insert(static_cast<Index>(c), centers_[c].position());
+  for (std::size_t n = 0; n < nodes_.size(); ++n)
+    if (nodes_[n].cell[3] != kFreeMark)
+      table_insert(static_cast<Index>(n) | kNodeBit, node_position(static_cast<Index>(n)));
+}
+
+// ---- Pools ------------------------------------------------------------------------
+
+void Lattice::ensure_room(std::size_t new_centers, std::size_t new_nodes, std::size_t new_keys) {
+  auto grow = [](auto& pool, std::size_t free_count, std::size_t wanted) {
+    if (free_count >= wanted) return;
+    const std::size_t need = pool.size() + (wanted - free_count);
+    if (need > kMaxPool) throw std::length_error("bccmis::fast::Lattice: more than 2^31 - 1 vertices of one kind");
+    if (need > pool.capacity()) pool.reserve(std::min(kMaxPool, std::max(need, pool.capacity() * 2)));
+  };
+  grow(centers_, free_center_count_, new_centers);
+  grow(nodes_, free_node_count_, new_nodes);
+  // Load factor at most 0.7.
+  std::size_t slots = table_.size();
+  while ((table_used_ + new_keys) * 10 > slots * 7) slots *= 2;
+  if (slots != table_.size()) rehash(slots);
+}
+
+Index Lattice::alloc_center() {
+  if (free_centers_ != kNone) {
+    const Index c = free_centers_;
+    free_centers_ = centers_[c].corner[0];
+    --free_center_count_;
+    return c;
+  }
+  centers_.emplace_back();  // capacity reserved by ensure_room
+  return static_cast<Index>(centers_.size() - 1);
+}
+
+Index Lattice::alloc_node() {
+  if (free_nodes_ != kNone) {
+    const Index n = free_nodes_;
+    free_nodes_ = nodes_[n].cell[0];
+    --free_node_count_;
+    return n;
+  }
+  nodes_.emplace_back();
+  return static_cast<Index>(nodes_.size() - 1);
+}
+
+void Lattice::free_center(Index c) {
+  Center& r = centers_[c];
+  r.level = kDead;
+  r.corner[0] = free_centers_;
+  free_centers_ = c;
+  ++free_center_count_;
+}
+
+void Lattice::free_node(Index n) {
+  Node& r = nodes_[n];
+  r.cell[0] = free_nodes_;
+  r.cell[1] = r.cell[2] = kNone;
+  r.cell[3] = kFreeMark;
+  free_nodes_ = n;
+  ++free_node_count_;
+}
+
+// ---- Construction ------------------------------------------------------------------
+
+Lattice::Lattice(const LatticeSize& size) : size_(size) {
+  validate_lattice_size(size);
+  const std::int64_t W = size.W, H = size.H;
+  if (W > static_cast<std::int64_t>(kMaxPool) / H || (W + 1) > static_cast<std::int64_t>(kMaxPool) / (H + 1))
+    throw std::length_error("bccmis::fast::Lattice: lattice " + std::to_string(W) + " x " + std::to_string(H) +
+                            " needs 2^31 or more vertices of one kind");
+  const std::int64_t S = level0_side(size);
+  const auto node_at = [&](std::int64_t i, std::int64_t j) { return static_cast<Index>(j * (W + 1) + i); };
+  const auto cell_at = [&](std::int64_t i, std::int64_t j) -> Index {
+    if (i < 0 || j < 0 || i >= W || j >= H) return kNone;
+    return static_cast<Index>(j * W + i);
+  };
+  centers_.resize(static_cast<std::size_t>(W * H));
+  nodes_.resize(static_cast<std::size_t>((W + 1) * (H + 1)));
+  for (std::int64_t j = 0; j < H; ++j)
+    for (std::int64_t i = 0; i < W; ++i) {
+      Center& c = centers_[cell_at(i, j)];
+      c.set_position({i * S + S / 2, j * S + S / 2});
+      c.level = 0;
+      for (int q = 0; q < 4; ++q) {
+        c.corner[q] = node_at(i + (q & 1), j + (q >> 1));
+        c.mid[q] = kNone;
+      }
+    }
+  for (std::int64_t j = 0; j <= H; ++j)
+    for (std::int64_t i = 0; i <= W; ++i)
+      for (int q = 0; q < 4; ++q) nodes_[node_at(i, j)].cell[q] = cell_at(i - 1 + (q & 1), j - 1 + (q >> 1));
+  cell_count_ = centers_.size();
+  node_count_ = nodes_.size();
+  rehash((cell_count_ + node_count_) * 10 / 7 + 1);
+}
+
+Lattice Lattice::from_graph(const Graph& g) {
+  validate_lattice_size(g.size);
+  Lattice lat;
+  lat.size_ = g.size;
+  if (g.C.size() > kMaxPool || g.N.size() > kMaxPool)
+    throw std::length_error("bccmis::fast::Lattice::from_graph: more than 2^31 - 1 vertices of one kind");
+  std::vector<Point> node_points(g.N.begin(), g.N.end());  // sorted
+  auto node_index = [&](const Point& p) -> Index {
+    const auto it = std::lower_bound(node_points.begin(), node_points.end(), p);
+    if (it == node_points.end() || *it != p)
+      throw std::invalid_argument("from_graph: neighbour (" + std::to_string(p.x) + ", " + std::to_string(p.y) +
+                                  ") of a center is not a node");
+    return static_cast<Index>(it - node_points.begin());
+  };
+  lat.nodes_.assign(node_points.size(), Node{{kNone, kNone, kNone, kNone}});
+  lat.centers_.reserve(g.C.size());
+  for (const Point& c : g.C) {
+    const auto lv = g.level.find(c);
+    if (lv == g.level.end() || lv->second < 0 || lv->second > g.size.L)
+      throw std::invalid_argument("from_graph: center (" + std::to_string(c.x) + ", " + std::to_string(c.y) +
+                                  ") has no level in 0..L");
+    const auto ci = static_cast<Index>(lat.centers_.size());
+    Center rec{};
+    rec.set_position(c);
+    rec.level = static_cast<std::uint8_t>(lv->second);
+    for (int k = 0; k < 4; ++k) rec.corner[k] = rec.mid[k] = kNone;
+    const std::int64_t h = lat.half_side(lv->second);
+    for (const Point& b : g.nbr(c)) {
+      const std::int64_t dx = b.x - c.x, dy = b.y - c.y;
+      const Index n = node_index(b);
+      if ((dx == h || dx == -h) && (dy == h || dy == -h)) {
+        const int q = (dx > 0 ? 1 : 0) | (dy > 0 ? 2 : 0);
+        rec.corner[q] = n;
+        lat.nodes_[n].cell[q ^ 3] = ci;
+      } else if ((dx == 0 && (dy == h || dy == -h)) || (dy == 0 && (dx == h || dx == -h))) {
+        const int s = dy < 0 ? 0 : dx > 0 ? 1 : dy > 0 ? 2 : 3;
+        rec.mid[s] = n;
+        for (int k = 0; k < 2; ++k) lat.nodes_[n].cell[kInwardQuad[s][k]] = ci;
+      } else {
+        throw std::invalid_argument("from_graph: node (" + std::to_string(b.x) + ", " + std::to_string(b.y) +
+                                    ") is neither a corner nor a side midpoint of cell (" + std::to_string(c.x) +
+                                    ", " + std::to_string(c.y) + ")");
+      }
+    }
+    for (int q = 0; q < 4; ++q)
+      if (rec.corner[q] == kNone)
+        throw std::invalid_argument("from_graph: cell (" + std::to_string(c.x) + ", " + std::to_string(c.y) +
+                                    ") lacks a corner");
+    lat.centers_.push_back(rec);
+  }
+  for (std::size_t n = 0; n < lat.nodes_.size(); ++n) {
+    const Node& nd = lat.nodes_[n];
+    if (nd.cell[0] == kNone && nd.cell[1] == kNone && nd.cell[2] == kNone && nd.cell[3] == kNone)
+      throw std::invalid_argument("from_graph: node (" + std::to_string(node_points[n].x) + ", " +
+                                  std::to_string(node_points[n].y) + ") touches no cell");
+  }
+  lat.cell_count_ = lat.centers_.size();
+  lat.node_count_ = lat.nodes_.size();
+  lat.rehash((lat.cell_count_ + lat.node_count_) * 10 / 7 + 1);
+  if (const auto problem = lat.audit()) throw std::invalid_argument("from_graph: " + *problem);
+  return lat;
+}
+
+// ---- Refinement: §2.1, eq. (2a)-(7b) with errata E1, E4, E5 -----------------------
+
+std::optional<RefineRefusal> Lattice::can_refine(const Point& c) const {
+  Index ci = kNone;
+  return refine_refusal(c, ci);
+}
+
+std::optional<RefineRefusal> Lattice::refine_refusal(const Point& c, Index& ci) const {
+  // pre-refine-cell: c in C
+  ci = find_center(c);
+  if (ci == kNone) return RefineRefusal::NoSuchCell;
+  const Center& cc = centers_[ci];
+  // pre-refine-max-level (E5): level(c) < L
+  if (cc.level >= size_.L) return RefineRefusal::MaxLevel;
+  // pre-refine-level with X of eq. (3) (E4): the cells across the sides of c.
+  // A side with a junction has two cells of level l+1 across it; a side
+  // without one has one cell of level l or l-1 (or the domain boundary).
+  for (int s = 0; s < 4; ++s) {
+    if (cc.mid[s] != kNone) continue;
+    const Index x = nodes_[cc.corner[kSideCorner[s]]].cell[kSideQuad[s]];
+    if (x != kNone && centers_[x].level < cc.level) return RefineRefusal::CoarserNeighbor;
+  }
+  return std::nullopt;
+}
+
+RefineOutcome Lattice::refine(const Point& c) {
+  RefineOutcome out;
+  Index ci = kNone;
+  out.refused = refine_refusal(c, ci);
+  if (out.refused) return out;
+
+  // Everything that can allocate happens here; the update below cannot throw.
+  // 3 centers (c's slot is reused by child 0), c as a node and up to 4 new
+  // junctions, 4 children and up to 4 junctions in the table.
+  ensure_room(3, 5, 8);  // keeps indices; may move the table slots
+  const Center old = centers_[ci];
+  const int l = old.level;
+  const std::int64_t h = half_side(l);
+  const std::int64_t h2 = h / 2;
+
+  // 1. The neighbourhood (eq. 2a-3): K = P, old.mid = J, across = X.
+  Index across[4];
+  for (int s = 0; s < 4; ++s)
+    across[s] = old.mid[s] == kNone ? nodes_[old.corner[kSideCorner[s]]].cell[kSideQuad[s]] : kNone;
+
+  // 2. Subdivide (eq. 4a-4h): Y, and c becomes a node.
+  Index y[4];
+  y[0] = ci;
+  for (int q = 1; q < 4; ++q) y[q] = alloc_center();
+  const Index nc = alloc_node();
+
+  // 3. Side midpoints: old junctions (J) or new ones (J+, eq. 5a-5b, E1).
+  Index m[4];
+  bool fresh[4];
+  for (int s = 0; s < 4; ++s) {
+    fresh[s] = old.mid[s] == kNone;
+    m[s] = fresh[s] ? alloc_node() : old.mid[s];
+  }
+
+  // Children: N(y_i) = {p_i, c} (4f) plus the two midpoints beside them (6d, 6e, 7b).
+  for (int q = 0; q < 4; ++q) {
+    Center& yc = centers_[y[q]];
+    yc.set_position(offset(c, qx(q) * h2, qy(q) * h2));
+    yc.level = static_cast<std::uint8_t>(l + 1);
+    yc.corner[q] = old.corner[q];
+    yc.corner[q ^ 3] = nc;
+    yc.corner[q ^ 1] = m[hside(q)];
+    yc.corner[q ^ 2] = m[vside(q)];
+    for (int s = 0; s < 4; ++s) yc.mid[s] = kNone;
+  }
+  // N(c) = Y (4c).
+  for (int q = 0; q < 4; ++q) nodes_[nc].cell[q] = y[q];
+  // N(p_i) = N(p_i) ∪ {y_i} \ {c} (4e).
+  for (int q = 0; q < 4; ++q) nodes_[old.corner[q]].cell[q ^ 3] = y[q];
+  for (int s = 0; s < 4; ++s) {
+    Node& mn = nodes_[m[s]];
+    // Old junction: N(j) \ {c} (4d) ∪ {y_i} (7a). New junction: {x_k, y_i, y_j} (6c).
+    for (int k = 0; k < 2; ++k) mn.cell[kInwardQuad[s][k]] = y[kInwardChild[s][k]];
+    if (!fresh[s]) continue;
+    mn.cell[kOutwardQuad[s][0]] = mn.cell[kOutwardQuad[s][1]] = across[s];
+    // N(x_k) = N(x_k) ∪ {j+_k} (6b); x_k is empty on the domain boundary (E1).
+    if (across[s] != kNone) centers_[across[s]].mid[s ^ 2] = m[s];
+  }
+
+  // Position table: c is now a node; the children and new junctions are added.
+  table_[slot_of(ci, c)] = nc | kNodeBit;
+  for (int q = 0; q < 4; ++q) table_insert(y[q], offset(c, qx(q) * h2, qy(q) * h2));
+  for (int s = 0; s < 4; ++s)
+    if (fresh[s]) table_insert(m[s] | kNodeBit, offset(c, kSideDx[s] * h, kSideDy[s] * h));
+
+  cell_count_ += 3;
+  node_count_ += 1;
+  for (const int q : kQuadSorted) out.Y.push_back(offset(c, qx(q) * h2, qy(q) * h2));
+  for (const int s : kSideSorted)
+    if (fresh[s]) {
+      out.J_plus.push_back(offset(c, kSideDx[s] * h, kSideDy[s] * h));
+      ++node_count_;
+    }
+  return out;
+}
+
+// ---- Coarsening: §2.2, eq. (8a)-(12b) with errata E2, E3, E5 ----------------------
+
+std::optional<CoarsenRefusal> Lattice::can_coarsen(const Point& n) const {
+  Index ni = kNone;
+  int level = 0;
+  return coarsen_refusal(n, ni, level);
+}
+
+std::optional<CoarsenRefusal> Lattice::coarsen_refusal(const Point& n, Index& ni, int& level) const {
+  // pre-coarsen-node: n in N
+  ni = find_node(n);
+  if (ni == kNone) return CoarsenRefusal::NoSuchNode;
+  // pre-coarsen-refined-center (E3, E5): the level from n's position.
+  const std::optional<int> l = refined_center_level(size_, n);
+  if (!l) return CoarsenRefusal::NotARefinedCenter;
+  level = *l;
+  // pre-coarsen-not-junction: |N(n)| = 4
+  const Node& nd = nodes_[ni];
+  for (int q = 0; q < 4; ++q) {
+    if (nd.cell[q] == kNone) return CoarsenRefusal::NotARefinedCenter;
+    for (int r = 0; r < q; ++r)
+      if (nd.cell[r] == nd.cell[q]) return CoarsenRefusal::NotARefinedCenter;
+  }
+  // pre-coarsen-children-leaves (E3): every cell around n has level l+1.
+  for (int q = 0; q < 4; ++q)
+    if (centers_[nd.cell[q]].level != *l + 1) return CoarsenRefusal::ChildrenRefined;
+  // pre-coarsen-balance (E3): no child has a junction (all four mid slots empty).
+  for (int q = 0; q < 4; ++q) {
+    const Center& y = centers_[nd.cell[q]];
+    for (int s = 0; s < 4; ++s)
+      if (y.mid[s] != kNone) return CoarsenRefusal::FinerNeighbor;
+  }
+  return std::nullopt;
+}
+
+CoarsenOutcome Lattice::coarsen(const Point& n) {
+  CoarsenOutcome out;
+  Index ni = kNone;
+  int l = 0;
+  out.refused = coarsen_refusal(n, ni, l);
+  if (out.refused) return out;
+
+  // Coarsening frees slots and table entries and never allocates.
+  const std::int64_t h = half_side(l);
+  const std::int64_t h2 = h / 2;
+
+  // 1. Y = N(n) (8a); B = the corners K and side midpoints m of the children (8b).
+  Index y[4], K[4], m[4], outside[4];
+  bool drop[4];
+  for (int q = 0; q < 4; ++q) y[q] = nodes_[ni].cell[q];
+  for (int q = 0; q < 4; ++q) K[q] = centers_[y[q]].corner[q];
+  for (int s = 0; s < 4; ++s) {
+    m[s] = centers_[y[kSideCorner[s]]].corner[kSideQuad[s]];
+    // J- (10a, E2): a side midpoint left with at most one cell once Y is gone,
+    // i.e. with one cell (or the domain boundary) in both outer quadrants.
+    const Node& mn = nodes_[m[s]];
+    outside[s] = mn.cell[kOutwardQuad[s][0]];
+    drop[s] = outside[s] == mn.cell[kOutwardQuad[s][1]];
+  }
+
+  // Position table first, while every key can still be computed: the children
+  // and J- leave; n becomes the center that reuses child 0's slot.
+  for (int q = 0; q < 4; ++q) table_erase(y[q], offset(n, qx(q) * h2, qy(q) * h2));
+  for (int s = 0; s < 4; ++s)
+    if (drop[s]) table_erase(m[s] | kNodeBit, offset(n, kSideDx[s] * h, kSideDy[s] * h));
+  const Index nc = y[0];
+  table_[slot_of(ni | kNodeBit, n)] = nc;
+
+  // 2. The children go (9a-9f) and n becomes a center of level l (9d, 9e, E5).
+  Center& cc = centers_[nc];
+  cc.set_position(n);
+  cc.level = static_cast<std::uint8_t>(l);
+  // 4. N(n) = B (12a) and N(b_i) ∪ {n} (12b), for the corners ...
+  for (int q = 0; q < 4; ++q) {
+    cc.corner[q] = K[q];
+    nodes_[K[q]].cell[q ^ 3] = nc;
+  }
+  // ... and for the side midpoints that stay; 3. J- goes (10b-11d).
+  for (int s = 0; s < 4; ++s) {
+    if (drop[s]) {
+      cc.mid[s] = kNone;
+      // N(x_i) = N(x_i) \ {j-_i} (11b); x_i is empty on the domain boundary (E2).
+      if (outside[s] != kNone) centers_[outside[s]].mid[s ^ 2] = kNone;
+      free_node(m[s]);
+    } else {
+      cc.mid[s] = m[s];
+      for (int k = 0; k < 2; ++k) nodes_[m[s]].cell[kInwardQuad[s][k]] = nc;
+    }
+  }
+  for (int q = 1; q < 4; ++q) free_center(y[q]);
+  free_node(ni);
+
+  cell_count_ -= 3;
+  node_count_ -= 1;
+  for (const int q : kQuadSorted) out.Y.push_back(offset(n, qx(q) * h2, qy(q) * h2));
+  for (const int s : kSideSorted)
+    if (drop[s]) {
+      out.J_minus.push_back(offset(n, kSideDx[s] * h, kSideDy[s] * h));
+      --node_count_;
+    }
+  return out;
+}
+
+// ---- Queries -------------------------------------------------------------------------
+
+bool Lattice::is_center(const Point& v) const {
+  const Index r = find(v);
+  return r != kNone && !(r & kNodeBit);
+}
+
+bool Lattice::is_node(const Point& v) const {
+  const Index r = find(v);
+  return r != kNone && (r & kNodeBit);
+}
+
+int Lattice::level_of(const Point& c) const {
+  const Index r = find(c);
+  if (r == kNone || (r & kNodeBit)) throw std::out_of_range("bccmis::fast::Lattice::level_of: not a center");
+  return centers_[r].level;
+}
+
+namespace {
+
+// 𝒩(c) of a center, in sorted (x, y) order: SW, W, NW, S, N, SE, E, NE.
+template <class Out>
+void center_neighbours(const Lattice::Center& cc, std::int64_t h, Out& out) {
+  const Point c = cc.position();
+  out.push_back(offset(c, -h, -h));
+  if (cc.mid[3] != kNone) out.push_back(offset(c, -h, 0));
+  out.push_back(offset(c, -h, h));
+  if (cc.mid[0] != kNone) out.push_back(offset(c, 0, -h));
+  if (cc.mid[2] != kNone) out.push_back(offset(c, 0, h));
+  out.push_back(offset(c, h, -h));
+  if (cc.mid[1] != kNone) out.push_back(offset(c, h, 0));
+  out.push_back(offset(c, h, h));
+}
+
+// 𝒩(n) of a node, sorted.
+SmallPoints<4> node_neighbours(const Lattice& g, Index n) {
+  const Lattice::Node& nd = g.node_pool()[n];
+  SmallPoints<4> out;
+  for (int q = 0; q < 4; ++q) {
+    const Index x = nd.cell[q];
+    if (x == kNone) continue;
+    bool seen = false;
+    for (int r = 0; r < q; ++r) seen = seen || nd.cell[r] == x;
+    if (!seen) out.push_back(g.center_pool()[x].position());
+  }
+  out.sort();
+  return out;
+}
+
+}  // namespace
+
+SmallPoints<8> Lattice::nbr(const Point& v) const {
+  SmallPoints<8> out;
+  const Index r = find(v);
+  if (r == kNone) return out;
+  if (r & kNodeBit) {
+    for (const Point& p : node_neighbours(*this, r & ~kNodeBit)) out.push_back(p);
+    return out;
+  }
+  center_neighbours(centers_[r], half_side(centers_[r].level), out);
+  return out;
+}
+
+std::vector<Point> Lattice::cells() const {
+  std::vector<Point> out;
+  out.reserve(cell_count_);
+  for (const Center& c : centers_)
+    if (c.level != kDead) out.push_back(c.position());
+  std::sort(out.begin(), out.end(), point_less);
+  return out;
+}
+
+std::vector<Point> Lattice::nodes() const {
+  std::vector<Point> out;
+  out.reserve(node_count_);
+  for (std::size_t n = 0; n < nodes_.size(); ++n)
+    if (nodes_[n].cell[3] != kFreeMark) out.push_back(node_position(static_cast<Index>(n)));
+  std::sort(out.begin(), out.end(), point_less);
+  return out;
+}
+
+// ---- Conversions and printing ----------------------------------------------------------
+
+Graph Lattice::to_graph() const {
+  Graph g;
+  g.size = size_;
+  std::vector<std::pair<Point, Index>> cs, ns;
+  cs.reserve(cell_count_);
+  ns.reserve(node_count_);
+  for (std::size_t c = 0; c < centers_.size(); ++c)
+    if (centers_[c].level != kDead) cs.emplace_back(centers_[c].position(), static_cast<Index>(c));
+  for (std::size_t n = 0; n < nodes_.size(); ++n)
+    if (nodes_[n].cell[3] != kFreeMark) ns.emplace_back(node_position(static_cast<Index>(n)), static_cast<Index>(n));
+  const auto by_point = [](const auto& a, const auto& b) { return point_less(a.first, b.first); };
+  std::sort(cs.begin(), cs.end(), by_point);
+  std::sort(ns.begin(), ns.end(), by_point);
+  for (const auto& [p, c] : cs) {
+    g.C.insert(g.C.end(), p);
+    g.level.emplace_hint(g.level.end(), p, centers_[c].level);
+    SmallPoints<8> nb;
+    center_neighbours(centers_[c], half_side(centers_[c].level), nb);
+    g.neighbors.emplace_hint(g.neighbors.end(), p, nb.to_set());
+  }
+  for (const auto& [p, n] : ns) {
+    g.N.insert(g.N.end(), p);
+    g.neighbors.emplace(p, node_neighbours(*this, n).to_set());
+  }
+  return g;
+}
+
+namespace {
+
+void append_int(std::string& out, std::int64_t v) {
+  char buf[24];
+  const auto res = std::to_chars(buf, buf + sizeof buf, v);
+  out.append(buf, res.ptr);
+}
+
+void append_point(std::string& out, const Point& p) {
+  out += ' ';
+  append_int(out, p.x);
+  out += ' ';
+  append_int(out, p.y);
+}
+
+}  // namespace
+
+std::string canonical_state(const Lattice& g) {
+  const auto& centers = g.center_pool();
+  const auto& nodes = g.node_pool();
+  std::vector<std::pair<Point, Index>> cs, ns;
+  cs.reserve(g.cell_count());
+  ns.reserve(g.node_count());
+  for (std::size_t c = 0; c < centers.size(); ++c)
+    if (centers[c].level != Lattice::kDead) cs.emplace_back(centers[c].position(), static_cast<Index>(c));
+  for (std::size_t n = 0; n < nodes.size(); ++n)
+    if (nodes[n].cell[3] != Lattice::kFreeMark)
+      ns.emplace_back(g.node_position(static_cast<Index>(n)), static_cast<Index>(n));
+  const auto by_point = [](const auto& a, const auto& b) { return point_less(a.first, b.first); };
+  std::sort(cs.begin(), cs.end(), by_point);
+  std::sort(ns.begin(), ns.end(), by_point);
+
+  std::string out = "bccmis-state 1\nlattice ";
+  append_int(out, g.size().W);
+  out += ' ';
+  append_int(out, g.size().H);
+  out += ' ';
+  append_int(out, g.size().L);
+  out += '\n';
+  for (const auto& [p, c] : cs) {
+    out += 'C';
+    append_point(out, p);
+    out += ' ';
+    append_int(out, centers[c].level);
+    out += " :";
+    SmallPoints<8> nb;
+    center_neighbours(centers[c], g.half_side(centers[c].level), nb);
+    for (const Point& b : nb) append_point(out, b);
+    out += '\n';
+  }
+  for (const auto& [p, n] : ns) {
+    out += 'N';
+    append_point(out, p);
+    out += " :";
+    for (const Point& b : node_neighbours(g, n)) append_point(out, b);
+    out += '\n';
+  }
+  out += "end ";
+  append_int(out, static_cast<std::int64_t>(g.cell_count()));
+  out += ' ';
+  append_int(out, static_cast<std::int64_t>(g.node_count()));
+  out += '\n';
+  return out;
+}
+
+Lattice replay(const Trace& trace, std::string& log, const FastReplayObserver& after) {
+  Lattice g(trace.size);
+  for (const TraceCommand& cmd : trace.commands) {
+    std::string decision;
+    if (cmd.kind == TraceCommand::Kind::Refine) {
+      const RefineOutcome r = g.refine(cmd.at);
+      decision = decision_line(cmd, r.refused ? code(*r.refused) : std::string_view{});
+    } else if (cmd.kind == TraceCommand::Kind::Coarsen) {
+      const CoarsenOutcome r = g.coarsen(cmd.at);
+      decision = decision_line(cmd, r.refused ? code(*r.refused) : std::string_view{});
+    }
+    if (!decision.empty()) log += decision + "\n";
+    if (after) after(cmd, g, decision);
+  }
+  return g;
+}
+
+// ---- Memory and audit -------------------------------------------------------------------
+
+void Lattice::reserve(std::size_t cells) {
+  const std::size_t nodes = cells + cells / 4 + 16;
+  centers_.reserve(std::min(kMaxPool, cells));
+  nodes_.reserve(std::min(kMaxPool, nodes));
+  std::size_t slots = table_.size();
+  while ((cells + nodes) * 10 > slots * 7) slots *= 2;
+  if (slots != table_.size()) rehash(slots);
+}
+
+void Lattice::shrink_to_fit() {
+  centers_.shrink_to_fit();
+  nodes_.shrink_to_fit();
+}
+
+std::size_t Lattice::memory_bytes() const {
+  return centers_.capacity() * sizeof(Center) + nodes_.capacity() * sizeof(Node) + table_.capacity() * sizeof(Index);
+}
+
+std::optional<std::string> Lattice::audit() const {
+  auto at = [](const Point& p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; };
+  auto live_node = [&](Index n) { return n < nodes_.size() && nodes_[n].cell[3] != kFreeMark; };
+  auto live_center = [&](Index c) { return c < centers_.size() && centers_[c].level != kDead; };
+  std::size_t cells = 0, nodes = 0;
+  for (std::size_t ci = 0; ci < centers_.size(); ++ci) {
+    const Center& c = centers_[ci];
+    if (c.level == kDead) continue;
+    ++cells;
+    const Point p = c.position();
+    if (c.level > size_.L) return "cell " + at(p) + " has level " + std::to_string(c.level) + " > L";
+    for (int q = 0; q < 4; ++q) {
+      if (!live_node(c.corner[q]) || nodes_[c.corner[q]].cell[q ^ 3] != ci)
+        return "cell " + at(p) + ": corner " + std::to_string(q) + " does not list the cell back";
+      if (c.mid[q] != kNone)
+        for (int k = 0; k < 2; ++k)
+          if (!live_node(c.mid[q]) || nodes_[c.mid[q]].cell[kInwardQuad[q][k]] != ci)
+            return "cell " + at(p) + ": junction on side " + std::to_string(q) + " does not list the cell back";
+    }
+    if (find(p) != ci) return "cell " + at(p) + " is not in the position table";
+  }
+  for (std::size_t ni = 0; ni < nodes_.size(); ++ni) {
+    const Node& n = nodes_[ni];
+    if (n.cell[3] == kFreeMark) continue;
+    ++nodes;
+    bool any = false;
+    for (int q = 0; q < 4; ++q) {
+      const Index x = n.cell[q];
+      if (x == kNone) continue;
+      any = true;
+      if (!live_center(x)) return "node " + std::to_string(ni) + " lists a free cell slot";
+      const Center& c = centers_[x];
+      bool listed = false;
+      for (int k = 0; k < 4; ++k) listed = listed || c.corner[k] == ni || c.mid[k] == ni;
+      if (!listed) return "node " + std::to_string(ni) + ": cell " + at(c.position()) + " does not list it";
+    }
+    if (!any) return "node " + std::to_string(ni) + " touches no cell";
+    const Point p = node_position(static_cast<Index>(ni));
+    if (find(p) != (static_cast<Index>(ni) | kNodeBit)) return "node " + at(p) + " is not in the position table";
+  }
+  if (cells != cell_count_ || nodes != node_count_) return std::string("vertex counts are off");
+  if (table_used_ != cells + nodes) return std::string("the position table holds stale entries");
+  if (free_center_count_ + cells != centers_.size() || free_node_count_ + nodes != nodes_.size())
+    return std::string("free-list counts are off");
+  return std::nullopt;
+}
+
+}  // namespace bccmis::fast

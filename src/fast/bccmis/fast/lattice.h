@@ -1,0 +1,260 @@
+// bccmis::fast: the graph of Erleben 2009 §2 on flat arrays, for embedding.
+//
+// The reference core (src/bccmis) transcribes the paper's set equations onto
+// std::set and is the oracle. This is the same graph, the same operations and
+// the same decisions, stored for speed:
+//
+//   - every neighbour set has a fixed place per direction. A center keeps its
+//     4 corners and its 4 side midpoints (junctions, empty when absent): at
+//     most 8 neighbours. A node keeps, per quadrant around it, the leaf cell
+//     that occupies that quadrant: at most 4 neighbours (a junction is the side
+//     midpoint of one cell, which then occupies two quadrants). The paper's
+//     set operations become a fixed number of slot writes: O(1).
+//   - centers and nodes live in two flat pools with free lists; only centers
+//     store a position (integer, as in spec/formats.md) and a level. A node's
+//     position follows from any cell around it and that cell's level.
+//   - a position -> vertex table (open addressing, 4 bytes a slot) serves the
+//     trace interface: refine(Point) and coarsen(Point).
+//   - in steady state (a free slot for every vertex an operation creates)
+//     refine and coarsen allocate nothing; they reserve first and then only
+//     write, so a throwing allocation leaves the lattice unchanged (strong
+//     guarantee, as the reference).
+//
+// The preconditions and refusal codes are those of the reference
+// (spec/errata.toml E3, E4, E5; spec/formats.md), and the canonical state is
+// byte-identical: tests/fast_*_test.cpp replay every trace and random
+// operation sequences through both and compare every decision and state.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "bccmis/format.h"
+#include "bccmis/graph.h"
+#include "bccmis/ops.h"
+
+namespace bccmis::fast {
+
+/// Up to N points, sorted by (x, y) like the reference's std::set; no heap.
+template <std::size_t N>
+class SmallPoints {
+ public:
+  const Point* begin() const { return items_.data(); }
+  const Point* end() const { return items_.data() + size_; }
+  std::size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  const Point& operator[](std::size_t i) const { return items_[i]; }
+  bool contains(const Point& p) const {
+    for (std::size_t i = 0; i < size_; ++i)
+      if (items_[i] == p) return true;
+    return false;
+  }
+  /// Appends p; the caller keeps the order (or calls sort()).
+  void push_back(const Point& p) { items_[size_++] = p; }
+  /// Sorts by (x, y) (insertion sort: at most N elements).
+  void sort() {
+    for (std::size_t i = 1; i < size_; ++i)
+      for (std::size_t j = i; j > 0 && items_[j] < items_[j - 1]; --j) std::swap(items_[j], items_[j - 1]);
+  }
+  /// The same points as a std::set (allocates; for comparisons and adapters).
+  VertexSet to_set() const { return VertexSet(begin(), end()); }
+
+ private:
+  std::array<Point, N> items_{};
+  std::size_t size_ = 0;
+};
+
+/// What Lattice::refine did. Same members as bccmis::RefineResult, without
+/// heap allocation: Y and J_plus are sorted by (x, y) as the reference's sets.
+struct RefineOutcome {
+  std::optional<RefineRefusal> refused;  ///< empty when applied
+  SmallPoints<4> Y;                      ///< the four new centers (eq. 4a)
+  SmallPoints<4> J_plus;                 ///< the new junction nodes (eq. 5a, erratum E1)
+  bool applied() const { return !refused; }
+  /// The reference's result type (allocates).
+  RefineResult to_result() const;
+};
+
+/// What Lattice::coarsen did. Same members as bccmis::CoarsenResult.
+struct CoarsenOutcome {
+  std::optional<CoarsenRefusal> refused;  ///< empty when applied
+  SmallPoints<4> Y;                       ///< the four deleted centers (eq. 8a)
+  SmallPoints<4> J_minus;                 ///< the deleted junction nodes (eq. 10a, erratum E2)
+  bool applied() const { return !refused; }
+  CoarsenResult to_result() const;
+};
+
+/// The adaptive lattice on flat arrays. Copyable and movable.
+class Lattice {
+ public:
+  /// The initial lattice of make_lattice(size): W x H level-0 cells. Throws
+  /// LatticeError on an invalid size, std::length_error when the lattice
+  /// would need 2^31 or more vertices of one kind.
+  explicit Lattice(const LatticeSize& size);
+
+  const LatticeSize& size() const { return size_; }
+
+  // ---- The operations (same preconditions and codes as bccmis::refine/coarsen)
+
+  std::optional<RefineRefusal> can_refine(const Point& c) const;
+  std::optional<CoarsenRefusal> can_coarsen(const Point& n) const;
+  /// §2.1: split cell c into its four children. A refused call changes nothing.
+  RefineOutcome refine(const Point& c);
+  /// §2.2: merge the four cells around node n. A refused call changes nothing.
+  CoarsenOutcome coarsen(const Point& n);
+
+  // ---- Queries (the reference's Graph accessors, by position) ---------------
+
+  std::size_t cell_count() const { return cell_count_; }  ///< |C|
+  std::size_t node_count() const { return node_count_; }  ///< |N|
+  bool is_center(const Point& v) const;
+  bool is_node(const Point& v) const;
+  /// Level of center c; throws std::out_of_range if c is not a center.
+  int level_of(const Point& c) const;
+  /// 𝒩(v), sorted; empty for a position that is not a vertex.
+  SmallPoints<8> nbr(const Point& v) const;
+  /// C and N, sorted by (x, y) (allocates).
+  std::vector<Point> cells() const;
+  std::vector<Point> nodes() const;
+
+  /// Calls f(Point center, int level) for every cell, in storage order.
+  template <class F>
+  void for_each_cell(F&& f) const {
+    for (const Center& c : centers_)
+      if (c.level != kDead) f(c.position(), static_cast<int>(c.level));
+  }
+
+  // ---- Conversions ------------------------------------------------------------
+
+  /// The same state as a reference Graph (allocates; O(size log size)).
+  Graph to_graph() const;
+  /// Builds the lattice of a valid reference graph (one the checker accepts,
+  /// e.g. parsed from a canonical state). Throws std::invalid_argument when a
+  /// neighbour is not at a corner or side midpoint of its cell.
+  static Lattice from_graph(const Graph& g);
+
+  // ---- Memory -----------------------------------------------------------------
+
+  /// Room for `cells` cells and about as many nodes without reallocating.
+  void reserve(std::size_t cells);
+  /// Gives back unused pool capacity (the free lists stay).
+  void shrink_to_fit();
+  /// Bytes held by the pools and the position table (capacity, not size).
+  std::size_t memory_bytes() const;
+
+  /// Internal consistency: every slot link is mirrored, every vertex is in
+  /// the position table under its position, the counts add up. Empty when
+  /// consistent, otherwise the first problem. For tests; O(size).
+  std::optional<std::string> audit() const;
+
+  /// Implementation details used by the printers (canonical_state) and the
+  /// benchmarks; not part of the stable interface.
+  using Index = std::uint32_t;
+  static constexpr Index kNone = 0xFFFFFFFFu;
+  static constexpr std::uint8_t kDead = 0xFF;
+
+  /// A cell center: position, level, 4 corners (by quadrant q: bit 0 = east,
+  /// bit 1 = north) and 4 side midpoints (s: 0 south, 1 east, 2 north,
+  /// 3 west; kNone when the side has no junction). 52 bytes.
+  struct Center {
+    std::uint32_t xy[4];      ///< x and y as two 32-bit halves each (keeps the record 4-aligned)
+    Index corner[4];
+    Index mid[4];
+    std::uint8_t level;       ///< kDead for a free slot (then corner[0] links the free list)
+    std::uint8_t pad_[3];
+    Point position() const;
+    void set_position(const Point& p);
+  };
+  /// A node: the leaf cell in each quadrant around it (kNone outside the
+  /// domain). 16 bytes. A free slot has cell[3] == kFreeMark and cell[0]
+  /// linking the free list.
+  struct Node {
+    Index cell[4];
+  };
+  static constexpr Index kFreeMark = 0xFFFFFFFEu;
+
+  const std::vector<Center>& center_pool() const { return centers_; }
+  const std::vector<Node>& node_pool() const { return nodes_; }
+  /// Position of a live node.
+  Point node_position(Index n) const;
+  /// Half the side of a level-l cell: 2^(L-l).
+  std::int64_t half_side(int level) const { return std::int64_t{1} << (size_.L - level); }
+
+ private:
+  Lattice() = default;
+
+  // Position table: open addressing with linear probing; a slot holds a
+  // vertex reference (kNodeBit | index for nodes, index for centers) or
+  // kNone. Deletion shifts back (no tombstones); keys are recomputed from
+  // the pools, so every vertex in the table must be live and consistent.
+  static constexpr Index kNodeBit = 0x80000000u;
+  std::size_t home(const Point& p) const;
+  Point key_of(Index ref) const;
+  /// The slot holding `ref`, which is stored under position p.
+  std::size_t slot_of(Index ref, const Point& p) const;
+  /// The reference stored under p, or kNone.
+  Index find(const Point& p) const;
+  /// The center (node) index stored under p, or kNone; skips entries of the
+  /// other kind without computing their keys.
+  Index find_center(const Point& p) const;
+  Index find_node(const Point& p) const;
+  /// can_refine / can_coarsen that also return the index they found.
+  std::optional<RefineRefusal> refine_refusal(const Point& c, Index& ci) const;
+  std::optional<CoarsenRefusal> coarsen_refusal(const Point& n, Index& ni, int& level) const;
+  void table_insert(Index ref, const Point& p);  ///< p must be absent; room must exist
+  void table_erase(Index ref, const Point& p);
+  void rehash(std::size_t slots);
+
+  /// Makes room for `new_centers` more centers, `new_nodes` more nodes and
+  /// `new_keys` more table entries, so that the update that follows cannot
+  /// allocate (and so cannot throw).
+  void ensure_room(std::size_t new_centers, std::size_t new_nodes, std::size_t new_keys);
+  Index alloc_center();
+  Index alloc_node();
+  void free_center(Index c);
+  void free_node(Index n);
+
+  LatticeSize size_;
+  std::vector<Center> centers_;
+  std::vector<Node> nodes_;
+  Index free_centers_ = kNone;
+  Index free_nodes_ = kNone;
+  std::size_t free_center_count_ = 0;
+  std::size_t free_node_count_ = 0;
+  std::size_t cell_count_ = 0;
+  std::size_t node_count_ = 0;
+  std::vector<Index> table_;
+  std::size_t table_shift_ = 64;  ///< home = hash >> table_shift_
+  std::size_t table_used_ = 0;
+};
+
+// ---- Free functions with the reference's names (one-line switch) -------------
+//
+// Code written against `namespace impl = bccmis;` with a Graph switches to
+// `namespace impl = bccmis::fast;` with a Lattice:
+//   auto g = impl::make_lattice(size);  impl::refine(g, c);  impl::canonical_state(g);
+
+inline Lattice make_lattice(const LatticeSize& size) { return Lattice(size); }
+inline std::optional<RefineRefusal> can_refine(const Lattice& g, const Point& c) { return g.can_refine(c); }
+inline std::optional<CoarsenRefusal> can_coarsen(const Lattice& g, const Point& n) { return g.can_coarsen(n); }
+inline RefineOutcome refine(Lattice& g, const Point& c) { return g.refine(c); }
+inline CoarsenOutcome coarsen(Lattice& g, const Point& n) { return g.coarsen(n); }
+
+/// The canonical text of spec/formats.md, byte-identical to
+/// bccmis::canonical_state(g.to_graph()), printed from the pools directly.
+std::string canonical_state(const Lattice& g);
+
+/// Replays `trace` like bccmis::replay: one decision-log line per refine and
+/// coarsen appended to `log`; `after` (if set) is called after every command
+/// with the command and its decision line (empty for `check`).
+using FastReplayObserver = std::function<void(const TraceCommand&, const Lattice&, std::string_view decision)>;
+Lattice replay(const Trace& trace, std::string& log, const FastReplayObserver& after = {});
+
+}  // namespace bccmis::fast

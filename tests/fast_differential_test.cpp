@@ -1,0 +1,264 @@
+// Differential tests (issue 9): the same random operation sequences through
+// the reference core and bccmis::fast::Lattice. After every operation the two
+// must agree on can_refine and can_coarsen at the position (for both
+// operations), on the decision, on the sets the operation returns (Y, J+,
+// J-), and on the canonical state, byte for byte; the fast lattice must pass
+// its own audit (mirrored links, position table, free lists).
+//
+// Positions are drawn by tests/generators.h against the reference graph
+// (live cells, refinable centers, wrong kinds, anywhere in and around the
+// domain). A failure prints the shrunk scenario and the reproducer trace
+// (spec/formats.md); save it in tests/regressions/ and it is replayed by
+// FastReplay.EveryProjectTraceGivesTheSameLogAndStatesAfterEveryCommand.
+//
+// The second group runs the reference's own property bodies (the checker
+// after every step, §3 inverses, counts, the leaf model's decisions) on the
+// fast implementation through an Ops adapter that converts each state with
+// from_graph / to_graph.
+#include <gtest/gtest.h>  // must come before rapidcheck/gtest.h
+#include <rapidcheck.h>
+#include <rapidcheck/gtest.h>
+
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "bccmis/fast/lattice.h"
+#include "generators.h"
+
+namespace bccmis::proptest {
+namespace {
+
+using fast::Lattice;
+
+std::string codes(const std::optional<RefineRefusal>& r) { return r ? std::string(code(*r)) : "ok"; }
+std::string codes(const std::optional<CoarsenRefusal>& r) { return r ? std::string(code(*r)) : "ok"; }
+
+std::string set_text(const VertexSet& s) {
+  std::string out = "{";
+  for (const Point& p : s) out += " " + point_text(p);
+  return out + " }";
+}
+
+/// The reference graph and the fast lattice, driven in lockstep.
+class Twin {
+ public:
+  explicit Twin(const LatticeSize& size) : g_(make_lattice(size)), lat_(size) {
+    trace_.size = size;
+    compare_states("initial lattice");
+  }
+
+  const Graph& graph() const { return g_; }
+  const Lattice& lattice() const { return lat_; }
+  std::size_t applied() const { return applied_; }
+
+  [[noreturn]] void fail(const std::string& msg) const {
+    std::ostringstream os;
+    os << "[fast vs reference] " << msg << "\nreproducer trace:\n" << format_trace(trace_);
+    RC_FAIL(os.str());
+    throw std::logic_error("unreachable");
+  }
+
+  void run(OpKind op, const Point& p) {
+    trace_.commands.push_back(
+        TraceCommand{op == OpKind::Refine ? TraceCommand::Kind::Refine : TraceCommand::Kind::Coarsen, p, 0});
+    const std::string at = point_text(p);
+    // The guards, for both operations, before the operation.
+    if (codes(lat_.can_refine(p)) != codes(can_refine(g_, p)))
+      fail("can_refine " + at + ": fast " + codes(lat_.can_refine(p)) + ", reference " + codes(can_refine(g_, p)));
+    if (codes(lat_.can_coarsen(p)) != codes(can_coarsen(g_, p)))
+      fail("can_coarsen " + at + ": fast " + codes(lat_.can_coarsen(p)) + ", reference " +
+           codes(can_coarsen(g_, p)));
+    std::string what;
+    if (op == OpKind::Refine) {
+      const RefineResult want = refine(g_, p);
+      const fast::RefineOutcome got = lat_.refine(p);
+      what = "refine " + at;
+      if (codes(got.refused) != codes(want.refused))
+        fail(what + ": fast says " + codes(got.refused) + ", reference " + codes(want.refused));
+      if (got.Y.to_set() != want.Y) fail(what + ": Y " + set_text(got.Y.to_set()) + " != " + set_text(want.Y));
+      if (got.J_plus.to_set() != want.J_plus)
+        fail(what + ": J+ " + set_text(got.J_plus.to_set()) + " != " + set_text(want.J_plus));
+      applied_ += got.applied();
+    } else {
+      const CoarsenResult want = coarsen(g_, p);
+      const fast::CoarsenOutcome got = lat_.coarsen(p);
+      what = "coarsen " + at;
+      if (codes(got.refused) != codes(want.refused))
+        fail(what + ": fast says " + codes(got.refused) + ", reference " + codes(want.refused));
+      if (got.Y.to_set() != want.Y) fail(what + ": Y " + set_text(got.Y.to_set()) + " != " + set_text(want.Y));
+      if (got.J_minus.to_set() != want.J_minus)
+        fail(what + ": J- " + set_text(got.J_minus.to_set()) + " != " + set_text(want.J_minus));
+      applied_ += got.applied();
+    }
+    compare_states("after " + what);
+  }
+
+  void run(const Step& s) { run(s.op, resolve(g_, s)); }
+
+  void compare_states(const std::string& when) const {
+    if (lat_.cell_count() != g_.C.size() || lat_.node_count() != g_.N.size())
+      fail(when + ": counts differ (fast |C| = " + std::to_string(lat_.cell_count()) +
+           ", |N| = " + std::to_string(lat_.node_count()) + ")");
+    const std::string want = canonical_state(g_);
+    const std::string got = fast::canonical_state(lat_);
+    if (got != want) fail(when + ": canonical states differ\n--- reference\n" + want + "--- fast\n" + got);
+    if (const auto problem = lat_.audit()) fail(when + ": fast audit: " + *problem);
+  }
+
+ private:
+  Graph g_;
+  Lattice lat_;
+  Trace trace_;
+  std::size_t applied_ = 0;
+};
+
+/// Larger lattices than the reference's property suites: W, H in 1..8, L in 0..6.
+rc::Gen<LatticeSize> genLargerSize() {
+  return rc::gen::map(rc::gen::tuple(rc::gen::inRange<std::int64_t>(1, 9), rc::gen::inRange<std::int64_t>(1, 9),
+                                     rc::gen::inRange<int>(0, 7)),
+                      [](const std::tuple<std::int64_t, std::int64_t, int>& t) {
+                        return LatticeSize{std::get<0>(t), std::get<1>(t), std::get<2>(t)};
+                      });
+}
+
+/// Steps that mostly pick live cells and refinable centers: deep states and
+/// many refine/coarsen cycles (the position table's deletions).
+rc::Gen<Step> genLiveStep() {
+  return rc::gen::map(rc::gen::tuple(rc::gen::weightedElement<OpKind>({{5, OpKind::Refine}, {4, OpKind::Coarsen}}),
+                                     rc::gen::weightedElement<Pick>({{18, Pick::Live}, {1, Pick::WrongKind}, {1, Pick::Anywhere}}),
+                                     rc::gen::arbitrary<std::uint32_t>(), rc::gen::arbitrary<std::uint32_t>()),
+                      [](const std::tuple<OpKind, Pick, std::uint32_t, std::uint32_t>& t) {
+                        Step s;
+                        s.op = std::get<0>(t);
+                        s.pick = std::get<1>(t);
+                        s.a = std::get<2>(t);
+                        s.b = std::get<3>(t);
+                        return s;
+                      });
+}
+
+// ---- Lockstep differential properties -------------------------------------------------
+
+RC_GTEST_PROP(Differential, SameDecisionsSetsAndCanonicalStateAfterEveryOperation, ()) {
+  const Scenario sc = *genScenario(80);
+  Twin t(sc.size);
+  for (const Step& s : sc.steps) t.run(s);
+}
+
+RC_GTEST_PROP(Differential, LargerLatticesAndLongSequences, ()) {
+  const LatticeSize size = *genLargerSize();
+  const auto steps = *rc::gen::scale(4.0, rc::gen::container<std::vector<Step>>(genLiveStep()));
+  Twin t(size);
+  for (const Step& s : steps) t.run(s);
+}
+
+RC_GTEST_PROP(Differential, EveryVertexAndItsNeighboursAgreeAfterRandomOperations, ()) {
+  const Scenario sc = *genScenario(40);
+  Twin t(sc.size);
+  for (const Step& s : sc.steps) t.run(s);
+  // Every guard at every vertex, and the queries, by position.
+  const Graph& g = t.graph();
+  const Lattice& lat = t.lattice();
+  for (const VertexSet* set : {&g.C, &g.N})
+    for (const Point& p : *set) {
+      RC_ASSERT(lat.nbr(p).to_set() == g.nbr(p));
+      RC_ASSERT(lat.is_center(p) == g.is_center(p));
+      RC_ASSERT(lat.is_node(p) == g.is_node(p));
+      RC_ASSERT(codes(lat.can_refine(p)) == codes(can_refine(g, p)));
+      RC_ASSERT(codes(lat.can_coarsen(p)) == codes(can_coarsen(g, p)));
+    }
+  RC_ASSERT(lat.cells() == std::vector<Point>(g.C.begin(), g.C.end()));
+  RC_ASSERT(lat.nodes() == std::vector<Point>(g.N.begin(), g.N.end()));
+  RC_ASSERT(lat.to_graph() == g);
+}
+
+RC_GTEST_PROP(Differential, ACopyAndAConvertedStateGoOnLikeTheReference, ()) {
+  const Scenario sc = *genScenario(60);
+  const std::size_t split = *rc::gen::inRange<std::size_t>(0, sc.steps.size() + 1);
+  Twin t(sc.size);
+  for (std::size_t i = 0; i < split; ++i) t.run(sc.steps[i]);
+  Lattice copy = t.lattice();
+  Lattice converted = Lattice::from_graph(t.graph());
+  Graph g = t.graph();
+  for (std::size_t i = split; i < sc.steps.size(); ++i) {
+    const Point p = resolve(g, sc.steps[i]);
+    if (sc.steps[i].op == OpKind::Refine) {
+      const auto want = codes(refine(g, p).refused);
+      RC_ASSERT(codes(copy.refine(p).refused) == want);
+      RC_ASSERT(codes(converted.refine(p).refused) == want);
+    } else {
+      const auto want = codes(coarsen(g, p).refused);
+      RC_ASSERT(codes(copy.coarsen(p).refused) == want);
+      RC_ASSERT(codes(converted.coarsen(p).refused) == want);
+    }
+  }
+  const std::string want = canonical_state(g);
+  RC_ASSERT(fast::canonical_state(copy) == want);
+  RC_ASSERT(fast::canonical_state(converted) == want);
+  // The original was not touched by the copies.
+  t.compare_states("original after the copies ran");
+}
+
+// The generators reach deep, busy states (a vacuous pass would be worthless).
+TEST(DifferentialGenerators, ReachDeepStatesWithManyAppliedOperations) {
+  std::size_t most_applied = 0;
+  int deepest = 0;
+  const bool ok = rc::check("differential generator coverage", [&] {
+    const LatticeSize size = *genLargerSize();
+    const auto steps = *rc::gen::scale(4.0, rc::gen::container<std::vector<Step>>(genLiveStep()));
+    Twin t(size);
+    for (const Step& s : steps) t.run(s);
+    most_applied = std::max(most_applied, t.applied());
+    for (const auto& [c, l] : t.graph().level) deepest = std::max(deepest, l);
+  });
+  EXPECT_TRUE(ok);
+  EXPECT_GE(most_applied, 100u);
+  EXPECT_GE(deepest, 4);
+}
+
+// ---- The reference's property bodies, on the fast implementation ------------------------
+
+Ops fast_ops() {
+  Ops ops;
+  ops.name = "fast via from_graph/to_graph";
+  ops.refine = [](Graph& g, const Vertex& c) {
+    Lattice lat = Lattice::from_graph(g);
+    const fast::RefineOutcome r = lat.refine(c);
+    g = lat.to_graph();
+    return r.to_result();
+  };
+  ops.coarsen = [](Graph& g, const Vertex& n) {
+    Lattice lat = Lattice::from_graph(g);
+    const fast::CoarsenOutcome r = lat.coarsen(n);
+    g = lat.to_graph();
+    return r.to_result();
+  };
+  ops.can_refine = [](const Graph& g, const Vertex& c) { return Lattice::from_graph(g).can_refine(c); };
+  ops.can_coarsen = [](const Graph& g, const Vertex& n) { return Lattice::from_graph(g).can_coarsen(n); };
+  return ops;
+}
+
+RC_GTEST_PROP(FastProperties, EveryStateAfterEveryOperationPassesTheChecker, ()) {
+  prop_valid_after_every_op(fast_ops(), *genScenario());
+}
+
+RC_GTEST_PROP(FastProperties, RefineThenCoarsenGivesTheSameCanonicalState, ()) {
+  prop_refine_then_coarsen(fast_ops(), *genScenario());
+}
+
+RC_GTEST_PROP(FastProperties, CoarsenThenRefineGivesTheSameCanonicalState, ()) {
+  prop_coarsen_then_refine(fast_ops(), *genScenario());
+}
+
+RC_GTEST_PROP(FastProperties, VertexCountsChangeExactlyAsTheEquationsImply, ()) {
+  prop_vertex_counts(fast_ops(), *genScenario());
+}
+
+RC_GTEST_PROP(FastProperties, DecisionsEqualTheGeometricRule, ()) {
+  prop_decisions_match_geometry(fast_ops(), *genScenario(25));
+}
+
+}  // namespace
+}  // namespace bccmis::proptest
