@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   cmake ninja-build g++ clang-14 libclang-rt-14-dev llvm-14 pkg-config python3
   libgtest-dev libgmock-dev googletest librapidcheck-dev libbenchmark-dev
-  libcgal-dev libgmp-dev libmpfr-dev libcli11-dev
+  libcgal-dev libgmp-dev libmpfr-dev libcli11-dev libstb-dev
 )
 
 missing=()
