@@ -229,6 +229,9 @@ MeshError mesh_error(const Graph& g, const HeightSampler& s) {
 TessellateReport tessellate(Graph& g, const HeightSampler& s, const TessellateSettings& t,
                             const SweepObserver& observer) {
   TessellateReport report;
+  // Errors within rounding of the height scale count as zero, so a plane
+  // needs no refinement even at tolerance 0.
+  const double limit = t.tolerance + kRoundingSlack * s.vertical_scale();
   auto budget_left = [&] { return t.max_sweeps <= 0 || report.sweeps < t.max_sweeps; };
 
   if (t.coarsen) {
@@ -237,7 +240,7 @@ TessellateReport tessellate(Graph& g, const HeightSampler& s, const TessellateSe
     const CoarsenPredicate within = [&](const Graph& now, const Point& n) {
       const VertexSet B = boundary_after_coarsen(now, n);
       const int level = now.level_of(*now.nbr(n).begin()) - 1;
-      return cell_error(CellFan(n, level, ccw_around(n, B), s), s, t.error) <= t.tolerance;
+      return cell_error(CellFan(n, level, ccw_around(n, B), s), s, t.error) <= limit;
     };
     while (budget_left()) {
       const std::size_t done = coarsen_sweep(g, within);
@@ -252,7 +255,7 @@ TessellateReport tessellate(Graph& g, const HeightSampler& s, const TessellateSe
   while (budget_left()) {
     std::vector<Point> marked;
     for (const Point& c : g.C)
-      if (g.level_of(c) < g.size.L && cell_error(g, c, s, t.error) > t.tolerance) marked.push_back(c);
+      if (g.level_of(c) < g.size.L && cell_error(g, c, s, t.error) > limit) marked.push_back(c);
     if (marked.empty()) {
       report.converged = true;
       break;

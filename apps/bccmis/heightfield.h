@@ -107,6 +107,11 @@ struct MeshError {
 };
 MeshError mesh_error(const Graph& g, const HeightSampler& s);
 
+/// Cell errors up to this fraction of the vertical scale are floating-point
+/// rounding: tessellate() refines only cells whose error exceeds
+/// tolerance + kRoundingSlack * vertical_scale.
+inline constexpr double kRoundingSlack = 1e-12;
+
 /// Settings of tessellate().
 struct TessellateSettings {
   double tolerance = 0.02;   ///< refine cells whose error is above this (height units)
