@@ -321,7 +321,7 @@ TEST(FastLattice, ReserveAndShrinkKeepTheState) {
 }
 
 TEST(FastLattice, RecordsAreCompact) {
-  EXPECT_EQ(sizeof(Lattice::Center), 52u);
+  EXPECT_EQ(sizeof(Lattice::Center), 48u);
   EXPECT_EQ(sizeof(Lattice::Node), 16u);
 }
 

@@ -24,6 +24,7 @@
 #include "bccmis/fast/lattice.h"
 
 #include <algorithm>
+#include <bit>
 #include <charconv>
 #include <cstring>
 #include <limits>
@@ -74,6 +75,18 @@ std::uint64_t mix(const Point& p) {
 
 constexpr std::size_t kMaxPool = 0x7FFFFFFFu;  // indices below 2^31 (the node bit)
 
+// The level of the cell centered at p, from p alone (spec/formats.md: a
+// level-l center has both coordinates odd multiples of 2^(L-l)); empty if p
+// is no cell center of the lattice's levels or lies outside the domain.
+std::optional<int> center_level(const LatticeSize& size, const Point& p) {
+  const std::int64_t S = level0_side(size);
+  if (p.x <= 0 || p.y <= 0 || p.x >= size.W * S || p.y >= size.H * S) return std::nullopt;
+  const int tx = std::countr_zero(static_cast<std::uint64_t>(p.x));
+  const int ty = std::countr_zero(static_cast<std::uint64_t>(p.y));
+  if (tx != ty || tx > size.L) return std::nullopt;
+  return size.L - tx;
+}
+
 }  // namespace
 
 // ---- SmallPoints / outcomes --------------------------------------------------
@@ -118,7 +131,7 @@ Point Lattice::node_position(Index n) const {
   const Index x = nd.cell[q];
   const Center& cx = centers_[x];
   const Point p = cx.position();
-  const std::int64_t h = half_side(cx.level);
+  const std::int64_t h = half_side(cx.level(size_.L));
   // x fills quadrant q; if it also fills the horizontally (vertically)
   // adjacent quadrant, the node is the midpoint of its south or north (west
   // or east) side, otherwise its corner q ^ 3.
@@ -199,9 +212,9 @@ void Lattice::rehash(std::size_t slots) {
   table_shift_ = 64 - bits;
   table_used_ = 0;
   for (std::size_t c = 0; c < centers_.size(); ++c)
-    if (centers_[c].level != kDead) table_insert(static_cast<Index>(c), centers_[c].position());
+    if (centers_[c].live()) table_insert(static_cast<Index>(c), centers_[c].position());
   for (std::size_t n = 0; n < nodes_.size(); ++n)
-    if (nodes_[n].cell[3] != kFreeMark)
+    if (nodes_[n].live())
       table_insert(static_cast<Index>(n) | kNodeBit, node_position(static_cast<Index>(n)));
 }
 
@@ -246,7 +259,7 @@ Index Lattice::alloc_node() {
 
 void Lattice::free_center(Index c) {
   Center& r = centers_[c];
-  r.level = kDead;
+  r.corner[3] = kFreeMark;
   r.corner[0] = free_centers_;
   free_centers_ = c;
   ++free_center_count_;
@@ -281,7 +294,6 @@ Lattice::Lattice(const LatticeSize& size) : size_(size) {
     for (std::int64_t i = 0; i < W; ++i) {
       Center& c = centers_[cell_at(i, j)];
       c.set_position({i * S + S / 2, j * S + S / 2});
-      c.level = 0;
       for (int q = 0; q < 4; ++q) {
         c.corner[q] = node_at(i + (q & 1), j + (q >> 1));
         c.mid[q] = kNone;
@@ -313,13 +325,12 @@ Lattice Lattice::from_graph(const Graph& g) {
   lat.centers_.reserve(g.C.size());
   for (const Point& c : g.C) {
     const auto lv = g.level.find(c);
-    if (lv == g.level.end() || lv->second < 0 || lv->second > g.size.L)
+    if (lv == g.level.end() || center_level(g.size, c) != lv->second)
       throw std::invalid_argument("from_graph: center (" + std::to_string(c.x) + ", " + std::to_string(c.y) +
-                                  ") has no level in 0..L");
+                                  ") has no level in 0..L that matches its position");
     const auto ci = static_cast<Index>(lat.centers_.size());
     Center rec{};
     rec.set_position(c);
-    rec.level = static_cast<std::uint8_t>(lv->second);
     for (int k = 0; k < 4; ++k) rec.corner[k] = rec.mid[k] = kNone;
     const std::int64_t h = lat.half_side(lv->second);
     for (const Point& b : g.nbr(c)) {
@@ -371,14 +382,15 @@ std::optional<RefineRefusal> Lattice::refine_refusal(const Point& c, Index& ci) 
   if (ci == kNone) return RefineRefusal::NoSuchCell;
   const Center& cc = centers_[ci];
   // pre-refine-max-level (E5): level(c) < L
-  if (cc.level >= size_.L) return RefineRefusal::MaxLevel;
+  const int l = cc.level(size_.L);
+  if (l >= size_.L) return RefineRefusal::MaxLevel;
   // pre-refine-level with X of eq. (3) (E4): the cells across the sides of c.
   // A side with a junction has two cells of level l+1 across it; a side
   // without one has one cell of level l or l-1 (or the domain boundary).
   for (int s = 0; s < 4; ++s) {
     if (cc.mid[s] != kNone) continue;
     const Index x = nodes_[cc.corner[kSideCorner[s]]].cell[kSideQuad[s]];
-    if (x != kNone && centers_[x].level < cc.level) return RefineRefusal::CoarserNeighbor;
+    if (x != kNone && level(x) < l) return RefineRefusal::CoarserNeighbor;
   }
   return std::nullopt;
 }
@@ -394,7 +406,7 @@ RefineOutcome Lattice::refine(const Point& c) {
   // junctions, 4 children and up to 4 junctions in the table.
   ensure_room(3, 5, 8);  // keeps indices; may move the table slots
   const Center old = centers_[ci];
-  const int l = old.level;
+  const int l = old.level(size_.L);
   const std::int64_t h = half_side(l);
   const std::int64_t h2 = h / 2;
 
@@ -421,7 +433,6 @@ RefineOutcome Lattice::refine(const Point& c) {
   for (int q = 0; q < 4; ++q) {
     Center& yc = centers_[y[q]];
     yc.set_position(offset(c, qx(q) * h2, qy(q) * h2));
-    yc.level = static_cast<std::uint8_t>(l + 1);
     yc.corner[q] = old.corner[q];
     yc.corner[q ^ 3] = nc;
     yc.corner[q ^ 1] = m[hside(q)];
@@ -463,18 +474,18 @@ RefineOutcome Lattice::refine(const Point& c) {
 
 std::optional<CoarsenRefusal> Lattice::can_coarsen(const Point& n) const {
   Index ni = kNone;
-  int level = 0;
-  return coarsen_refusal(n, ni, level);
+  int coarse_level = 0;
+  return coarsen_refusal(n, ni, coarse_level);
 }
 
-std::optional<CoarsenRefusal> Lattice::coarsen_refusal(const Point& n, Index& ni, int& level) const {
+std::optional<CoarsenRefusal> Lattice::coarsen_refusal(const Point& n, Index& ni, int& coarse_level) const {
   // pre-coarsen-node: n in N
   ni = find_node(n);
   if (ni == kNone) return CoarsenRefusal::NoSuchNode;
   // pre-coarsen-refined-center (E3, E5): the level from n's position.
   const std::optional<int> l = refined_center_level(size_, n);
   if (!l) return CoarsenRefusal::NotARefinedCenter;
-  level = *l;
+  coarse_level = *l;
   // pre-coarsen-not-junction: |N(n)| = 4
   const Node& nd = nodes_[ni];
   for (int q = 0; q < 4; ++q) {
@@ -484,7 +495,7 @@ std::optional<CoarsenRefusal> Lattice::coarsen_refusal(const Point& n, Index& ni
   }
   // pre-coarsen-children-leaves (E3): every cell around n has level l+1.
   for (int q = 0; q < 4; ++q)
-    if (centers_[nd.cell[q]].level != *l + 1) return CoarsenRefusal::ChildrenRefined;
+    if (level(nd.cell[q]) != *l + 1) return CoarsenRefusal::ChildrenRefined;
   // pre-coarsen-balance (E3): no child has a junction (all four mid slots empty).
   for (int q = 0; q < 4; ++q) {
     const Center& y = centers_[nd.cell[q]];
@@ -530,7 +541,6 @@ CoarsenOutcome Lattice::coarsen(const Point& n) {
   // 2. The children go (9a-9f) and n becomes a center of level l (9d, 9e, E5).
   Center& cc = centers_[nc];
   cc.set_position(n);
-  cc.level = static_cast<std::uint8_t>(l);
   // 4. N(n) = B (12a) and N(b_i) ∪ {n} (12b), for the corners ...
   for (int q = 0; q < 4; ++q) {
     cc.corner[q] = K[q];
@@ -577,7 +587,7 @@ bool Lattice::is_node(const Point& v) const {
 int Lattice::level_of(const Point& c) const {
   const Index r = find(c);
   if (r == kNone || (r & kNodeBit)) throw std::out_of_range("bccmis::fast::Lattice::level_of: not a center");
-  return centers_[r].level;
+  return level(r);
 }
 
 namespace {
@@ -621,7 +631,7 @@ SmallPoints<8> Lattice::nbr(const Point& v) const {
     for (const Point& p : node_neighbours(*this, r & ~kNodeBit)) out.push_back(p);
     return out;
   }
-  center_neighbours(centers_[r], half_side(centers_[r].level), out);
+  center_neighbours(centers_[r], half_side(level(r)), out);
   return out;
 }
 
@@ -629,7 +639,7 @@ std::vector<Point> Lattice::cells() const {
   std::vector<Point> out;
   out.reserve(cell_count_);
   for (const Center& c : centers_)
-    if (c.level != kDead) out.push_back(c.position());
+    if (c.live()) out.push_back(c.position());
   std::sort(out.begin(), out.end(), point_less);
   return out;
 }
@@ -638,7 +648,7 @@ std::vector<Point> Lattice::nodes() const {
   std::vector<Point> out;
   out.reserve(node_count_);
   for (std::size_t n = 0; n < nodes_.size(); ++n)
-    if (nodes_[n].cell[3] != kFreeMark) out.push_back(node_position(static_cast<Index>(n)));
+    if (nodes_[n].live()) out.push_back(node_position(static_cast<Index>(n)));
   std::sort(out.begin(), out.end(), point_less);
   return out;
 }
@@ -652,17 +662,17 @@ Graph Lattice::to_graph() const {
   cs.reserve(cell_count_);
   ns.reserve(node_count_);
   for (std::size_t c = 0; c < centers_.size(); ++c)
-    if (centers_[c].level != kDead) cs.emplace_back(centers_[c].position(), static_cast<Index>(c));
+    if (centers_[c].live()) cs.emplace_back(centers_[c].position(), static_cast<Index>(c));
   for (std::size_t n = 0; n < nodes_.size(); ++n)
-    if (nodes_[n].cell[3] != kFreeMark) ns.emplace_back(node_position(static_cast<Index>(n)), static_cast<Index>(n));
+    if (nodes_[n].live()) ns.emplace_back(node_position(static_cast<Index>(n)), static_cast<Index>(n));
   const auto by_point = [](const auto& a, const auto& b) { return point_less(a.first, b.first); };
   std::sort(cs.begin(), cs.end(), by_point);
   std::sort(ns.begin(), ns.end(), by_point);
   for (const auto& [p, c] : cs) {
     g.C.insert(g.C.end(), p);
-    g.level.emplace_hint(g.level.end(), p, centers_[c].level);
+    g.level.emplace_hint(g.level.end(), p, level(c));
     SmallPoints<8> nb;
-    center_neighbours(centers_[c], half_side(centers_[c].level), nb);
+    center_neighbours(centers_[c], half_side(level(c)), nb);
     g.neighbors.emplace_hint(g.neighbors.end(), p, nb.to_set());
   }
   for (const auto& [p, n] : ns) {
@@ -696,9 +706,9 @@ std::string canonical_state(const Lattice& g) {
   cs.reserve(g.cell_count());
   ns.reserve(g.node_count());
   for (std::size_t c = 0; c < centers.size(); ++c)
-    if (centers[c].level != Lattice::kDead) cs.emplace_back(centers[c].position(), static_cast<Index>(c));
+    if (centers[c].live()) cs.emplace_back(centers[c].position(), static_cast<Index>(c));
   for (std::size_t n = 0; n < nodes.size(); ++n)
-    if (nodes[n].cell[3] != Lattice::kFreeMark)
+    if (nodes[n].live())
       ns.emplace_back(g.node_position(static_cast<Index>(n)), static_cast<Index>(n));
   const auto by_point = [](const auto& a, const auto& b) { return point_less(a.first, b.first); };
   std::sort(cs.begin(), cs.end(), by_point);
@@ -715,10 +725,10 @@ std::string canonical_state(const Lattice& g) {
     out += 'C';
     append_point(out, p);
     out += ' ';
-    append_int(out, centers[c].level);
+    append_int(out, g.level(c));
     out += " :";
     SmallPoints<8> nb;
-    center_neighbours(centers[c], g.half_side(centers[c].level), nb);
+    center_neighbours(centers[c], g.half_side(g.level(c)), nb);
     for (const Point& b : nb) append_point(out, b);
     out += '\n';
   }
@@ -776,15 +786,16 @@ std::size_t Lattice::memory_bytes() const {
 
 std::optional<std::string> Lattice::audit() const {
   auto at = [](const Point& p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; };
-  auto live_node = [&](Index n) { return n < nodes_.size() && nodes_[n].cell[3] != kFreeMark; };
-  auto live_center = [&](Index c) { return c < centers_.size() && centers_[c].level != kDead; };
+  auto live_node = [&](Index n) { return n < nodes_.size() && nodes_[n].live(); };
+  auto live_center = [&](Index c) { return c < centers_.size() && centers_[c].live(); };
   std::size_t cells = 0, nodes = 0;
   for (std::size_t ci = 0; ci < centers_.size(); ++ci) {
     const Center& c = centers_[ci];
-    if (c.level == kDead) continue;
+    if (!c.live()) continue;
     ++cells;
     const Point p = c.position();
-    if (c.level > size_.L) return "cell " + at(p) + " has level " + std::to_string(c.level) + " > L";
+    if (center_level(size_, p) != level(static_cast<Index>(ci)))
+      return "cell " + at(p) + " is not at a cell center of its level";
     for (int q = 0; q < 4; ++q) {
       if (!live_node(c.corner[q]) || nodes_[c.corner[q]].cell[q ^ 3] != ci)
         return "cell " + at(p) + ": corner " + std::to_string(q) + " does not list the cell back";
@@ -797,7 +808,7 @@ std::optional<std::string> Lattice::audit() const {
   }
   for (std::size_t ni = 0; ni < nodes_.size(); ++ni) {
     const Node& n = nodes_[ni];
-    if (n.cell[3] == kFreeMark) continue;
+    if (!n.live()) continue;
     ++nodes;
     bool any = false;
     for (int q = 0; q < 4; ++q) {

@@ -27,6 +27,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -128,7 +129,7 @@ class Lattice {
   template <class F>
   void for_each_cell(F&& f) const {
     for (const Center& c : centers_)
-      if (c.level != kDead) f(c.position(), static_cast<int>(c.level));
+      if (c.live()) f(c.position(), c.level(size_.L));
   }
 
   // ---- Conversions ------------------------------------------------------------
@@ -158,32 +159,40 @@ class Lattice {
   /// benchmarks; not part of the stable interface.
   using Index = std::uint32_t;
   static constexpr Index kNone = 0xFFFFFFFFu;
-  static constexpr std::uint8_t kDead = 0xFF;
+  static constexpr Index kFreeMark = 0xFFFFFFFEu;
 
-  /// A cell center: position, level, 4 corners (by quadrant q: bit 0 = east,
+  /// A cell center: position, 4 corners (by quadrant q: bit 0 = east,
   /// bit 1 = north) and 4 side midpoints (s: 0 south, 1 east, 2 north,
-  /// 3 west; kNone when the side has no junction). 52 bytes.
+  /// 3 west; kNone when the side has no junction). 48 bytes. The level is
+  /// not stored: a level-l center has both coordinates odd multiples of
+  /// 2^(L-l) (spec/formats.md), so l = L - (trailing zeros of x). A free slot
+  /// has corner[3] == kFreeMark and corner[0] linking the free list.
   struct Center {
-    std::uint32_t xy[4];      ///< x and y as two 32-bit halves each (keeps the record 4-aligned)
+    std::uint32_t xy[4];  ///< x and y as two 32-bit halves each (keeps the record 4-aligned)
     Index corner[4];
     Index mid[4];
-    std::uint8_t level;       ///< kDead for a free slot (then corner[0] links the free list)
-    std::uint8_t pad_[3];
     Point position() const;
     void set_position(const Point& p);
+    bool live() const { return corner[3] != kFreeMark; }
+    /// The level of this center in a lattice of maximum level L.
+    int level(int L) const {
+      return L - std::countr_zero(std::uint64_t{xy[0]} | (std::uint64_t{xy[1]} << 32));
+    }
   };
   /// A node: the leaf cell in each quadrant around it (kNone outside the
   /// domain). 16 bytes. A free slot has cell[3] == kFreeMark and cell[0]
   /// linking the free list.
   struct Node {
     Index cell[4];
+    bool live() const { return cell[3] != kFreeMark; }
   };
-  static constexpr Index kFreeMark = 0xFFFFFFFEu;
 
   const std::vector<Center>& center_pool() const { return centers_; }
   const std::vector<Node>& node_pool() const { return nodes_; }
   /// Position of a live node.
   Point node_position(Index n) const;
+  /// The level of a live center slot.
+  int level(Index c) const { return centers_[c].level(size_.L); }
   /// Half the side of a level-l cell: 2^(L-l).
   std::int64_t half_side(int level) const { return std::int64_t{1} << (size_.L - level); }
 
@@ -207,7 +216,7 @@ class Lattice {
   Index find_node(const Point& p) const;
   /// can_refine / can_coarsen that also return the index they found.
   std::optional<RefineRefusal> refine_refusal(const Point& c, Index& ci) const;
-  std::optional<CoarsenRefusal> coarsen_refusal(const Point& n, Index& ni, int& level) const;
+  std::optional<CoarsenRefusal> coarsen_refusal(const Point& n, Index& ni, int& coarse_level) const;
   void table_insert(Index ref, const Point& p);  ///< p must be absent; room must exist
   void table_erase(Index ref, const Point& p);
   void rehash(std::size_t slots);

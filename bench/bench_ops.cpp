@@ -1,0 +1,340 @@
+// Time benchmarks of the reference core and bccmis::fast::Lattice (issue 9).
+//
+// Every benchmark replays the same operation sequence through both
+// implementations, so the ratios in bench/RESULTS.md compare like with like.
+//
+//   Refine/<impl>/cells:N/order:O   ns per refine on a lattice of about N
+//   Coarsen/<impl>/cells:N/order:O  cells (a W x W lattice of level-0 cells).
+//     Why: the paper's O(1) claim. The curve over N must be flat.
+//     order:0 (sweep) refines level-0 cells row by row: the memory touched
+//     moves along the arrays, so cache misses stay rare at every size and
+//     the curve shows the operation itself. order:1 (random) picks the cells
+//     in a random permutation: every operation misses the caches once the
+//     lattice outgrows them, so the curve shows the memory hierarchy too.
+//     An iteration is a batch of B = min(N/4, 4096) operations timed with
+//     steady_clock (manual time); the inverse batch runs untimed, so the
+//     lattice stays at N..1.75N cells.
+//   Mix/<impl>/cells:N              a random balanced refine/coarsen mix
+//     (make_mix: only applied operations, near N cells). Why: what an
+//     adaptive simulation does; junctions of every kind, all levels.
+//   Uniform6x6/<impl>/level:k       refine every cell of a 6x6 lattice, level
+//     by level, to level k (36 * 4^k cells). Why: the paper's initial
+//     lattice; a sequence where every refine creates and reuses junctions.
+//   MovingFeature/<impl>            a disk circling a 16x16 lattice (L = 6);
+//     per frame, cells meeting it are refined to level L and cells it left
+//     are coarsened. Why: the cloth/contact use of §3 (Fig. 6); reports ops
+//     and time per frame.
+//
+// Flags (before Google Benchmark's own):
+//   --bccmis_smoke    tiny sizes only (ctest bench-smoke)
+//   --bccmis_verify   first replay the mix, the uniform refinement and the
+//                     moving feature through both implementations and compare
+//                     canonical states; exit 1 on a difference
+//   --bccmis_max_cells=N  skip per-operation sizes above N (default 10^7)
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <algorithm>
+#include <map>
+#include <memory>
+#include <numeric>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "workloads.h"
+
+namespace bccmis::bench {
+namespace {
+
+bool g_smoke = false;
+std::int64_t g_max_cells = 10'000'000;
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// ---- Cached lattices (building a 10^7-cell lattice once is enough) --------------------------
+
+template <class Impl>
+typename Impl::State& cached_lattice(const LatticeSize& size) {
+  static std::unique_ptr<typename Impl::State> state;
+  static LatticeSize have{0, 0, 0};
+  if (!state || !(have == size)) {
+    state.reset();
+    state = std::make_unique<typename Impl::State>(Impl::make(size));
+    have = size;
+  }
+  return *state;
+}
+
+/// Level-0 centers of the lattice in sweep (row) or random order; only the
+/// current lattice's lists are kept.
+const std::vector<Point>& cell_order(const LatticeSize& size, bool random) {
+  static std::int64_t have_w = -1;
+  static std::vector<Point> orders[2];
+  if (have_w != size.W) {
+    orders[0] = grid_centers(size, 0);
+    orders[1] = orders[0];
+    std::shuffle(orders[1].begin(), orders[1].end(), std::mt19937_64(42));
+    have_w = size.W;
+  }
+  return orders[random ? 1 : 0];
+}
+
+// ---- Refine / Coarsen: ns per operation against lattice size ---------------------------------
+
+template <class Impl>
+void run_ops(benchmark::State& st, bool time_refine) {
+  const LatticeSize size = square_lattice(st.range(0), 4);
+  const bool random = st.range(1) != 0;
+  auto& g = cached_lattice<Impl>(size);
+  const std::vector<Point>& cells = cell_order(size, random);
+  const std::size_t batch = std::max<std::size_t>(1, std::min<std::size_t>(cells.size() / 4, 4096));
+  std::size_t cursor = 0;
+  double timed = 0;
+  std::size_t ops = 0;
+  for (auto _ : st) {
+    const std::size_t begin = cursor;
+    cursor = (cursor + batch) % (cells.size() - batch + 1);
+    double t = 0;
+    std::size_t applied = 0;
+    const auto t0 = Clock::now();
+    for (std::size_t i = begin; i < begin + batch; ++i) applied += Impl::refine(g, cells[i]);
+    if (time_refine) t = seconds_since(t0);
+    const auto t1 = Clock::now();
+    for (std::size_t i = begin; i < begin + batch; ++i) applied += Impl::coarsen(g, cells[i]);
+    if (!time_refine) t = seconds_since(t1);
+    if (applied != 2 * batch) st.SkipWithError("an operation of the batch was refused");
+    st.SetIterationTime(t);
+    timed += t;
+    ops += batch;
+  }
+  st.counters["cells"] = static_cast<double>(Impl::cells(g));
+  st.counters["batch"] = static_cast<double>(batch);
+  st.counters["ns_per_op"] = ops ? timed * 1e9 / static_cast<double>(ops) : 0;
+}
+
+template <class Impl>
+void BM_Refine(benchmark::State& st) {
+  run_ops<Impl>(st, true);
+}
+template <class Impl>
+void BM_Coarsen(benchmark::State& st) {
+  run_ops<Impl>(st, false);
+}
+
+// ---- Random balanced mix ---------------------------------------------------------------------------
+
+const Mix& cached_mix(std::int64_t cells) {
+  static std::map<std::int64_t, std::unique_ptr<Mix>> cache;
+  auto& m = cache[cells];
+  if (!m) m = std::make_unique<Mix>(make_mix(cells, g_smoke ? 512 : 65536, 7));
+  return *m;
+}
+
+template <class Impl>
+typename Impl::State start_state(const Mix& mix);
+template <>
+Graph start_state<Reference>(const Mix& mix) {
+  return mix.start.to_graph();
+}
+template <>
+fast::Lattice start_state<Fast>(const Mix& mix) {
+  return mix.start;
+}
+
+template <class Impl>
+void BM_Mix(benchmark::State& st) {
+  const Mix& mix = cached_mix(st.range(0));
+  const typename Impl::State start = start_state<Impl>(mix);
+  auto g = std::make_unique<typename Impl::State>(start);
+  const std::size_t block = std::min<std::size_t>(4096, mix.ops.size());
+  std::size_t cursor = 0;
+  double timed = 0;
+  std::size_t ops = 0;
+  for (auto _ : st) {
+    if (cursor + block > mix.ops.size()) {  // back to the start (untimed)
+      *g = start;
+      cursor = 0;
+    }
+    std::size_t applied = 0;
+    const auto t0 = Clock::now();
+    for (std::size_t i = cursor; i < cursor + block; ++i) {
+      const Op& op = mix.ops[i];
+      applied += op.refine ? Impl::refine(*g, op.at) : Impl::coarsen(*g, op.at);
+    }
+    const double t = seconds_since(t0);
+    if (applied != block) st.SkipWithError("the mix diverged: an operation was refused");
+    st.SetIterationTime(t);
+    cursor += block;
+    timed += t;
+    ops += block;
+  }
+  st.counters["cells"] = static_cast<double>(Impl::cells(*g));
+  st.counters["ns_per_op"] = ops ? timed * 1e9 / static_cast<double>(ops) : 0;
+  st.SetItemsProcessed(static_cast<std::int64_t>(ops));
+}
+
+// ---- Uniform refinement of a 6x6 lattice ----------------------------------------------------------
+
+template <class Impl>
+std::size_t refine_uniformly(typename Impl::State& g, const LatticeSize& size) {
+  std::size_t n = 0;
+  for (int l = 0; l < size.L; ++l)
+    for (const Point& c : grid_centers(size, l)) n += Impl::refine(g, c);
+  return n;
+}
+
+template <class Impl>
+void BM_Uniform6x6(benchmark::State& st) {
+  const LatticeSize size{6, 6, static_cast<int>(st.range(0))};
+  // The positions are computed outside the timing, level by level.
+  std::vector<std::vector<Point>> levels;
+  for (int l = 0; l < size.L; ++l) levels.push_back(grid_centers(size, l));
+  std::size_t refines = 0;
+  for (auto _ : st) {
+    typename Impl::State g = Impl::make(size);
+    std::size_t n = 0;
+    for (const auto& level : levels)
+      for (const Point& c : level) n += Impl::refine(g, c);
+    refines += n;
+    benchmark::DoNotOptimize(g);
+    st.PauseTiming();
+    { [[maybe_unused]] typename Impl::State drop = std::move(g); }  // destruction untimed
+    st.ResumeTiming();
+  }
+  st.counters["cells"] = static_cast<double>(36) * static_cast<double>(std::int64_t{1} << (2 * size.L));
+  st.counters["refines"] = benchmark::Counter(static_cast<double>(refines), benchmark::Counter::kAvgIterations);
+  st.counters["ns_per_refine"] =
+      benchmark::Counter(static_cast<double>(refines), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+// ---- Moving feature -------------------------------------------------------------------------------
+
+template <class Impl>
+void BM_MovingFeature(benchmark::State& st) {
+  const LatticeSize size = g_smoke ? LatticeSize{4, 4, 4} : LatticeSize{16, 16, 6};
+  MovingFeature<Impl> anim(size, 0.5 * static_cast<double>(level0_side(size)), 256);
+  std::size_t ops = 0;
+  for (auto _ : st) ops += anim.frame();
+  st.counters["ops_per_frame"] = benchmark::Counter(static_cast<double>(ops), benchmark::Counter::kAvgIterations);
+  st.counters["cells"] = static_cast<double>(Impl::cells(anim.state()));
+}
+
+// ---- Registration -------------------------------------------------------------------------------
+
+void register_all() {
+  const std::vector<std::int64_t> ref_sizes =
+      g_smoke ? std::vector<std::int64_t>{1000} : std::vector<std::int64_t>{1000, 10'000, 100'000, 1'000'000};
+  std::vector<std::int64_t> fast_sizes = ref_sizes;
+  if (!g_smoke) fast_sizes.push_back(10'000'000);
+  auto per_op = [&](const char* name, void (*fn)(benchmark::State&), const std::vector<std::int64_t>& sizes) {
+    auto* b = benchmark::RegisterBenchmark(name, fn);
+    b->ArgNames({"cells", "order"})->UseManualTime()->Unit(benchmark::kMicrosecond);
+    for (const std::int64_t n : sizes)
+      if (n <= g_max_cells)
+        for (const int order : {0, 1}) b->Args({n, order});
+  };
+  per_op("Refine/reference", BM_Refine<Reference>, ref_sizes);
+  per_op("Coarsen/reference", BM_Coarsen<Reference>, ref_sizes);
+  per_op("Refine/fast", BM_Refine<Fast>, fast_sizes);
+  per_op("Coarsen/fast", BM_Coarsen<Fast>, fast_sizes);
+
+  const std::vector<std::int64_t> mix_sizes =
+      g_smoke ? std::vector<std::int64_t>{1000} : std::vector<std::int64_t>{1000, 10'000, 100'000, 1'000'000};
+  using Fn = void (*)(benchmark::State&);
+  for (const auto& [name, fn] : {std::pair<const char*, Fn>{"Mix/reference", BM_Mix<Reference>},
+                                 std::pair<const char*, Fn>{"Mix/fast", BM_Mix<Fast>}}) {
+    auto* b = benchmark::RegisterBenchmark(name, fn);
+    b->ArgName("cells")->UseManualTime()->Unit(benchmark::kMicrosecond);
+    for (const std::int64_t n : mix_sizes) b->Arg(n);
+  }
+
+  const int ref_levels = g_smoke ? 2 : 6, fast_levels = g_smoke ? 2 : 8;
+  auto* ur = benchmark::RegisterBenchmark("Uniform6x6/reference", BM_Uniform6x6<Reference>);
+  ur->ArgName("level")->Unit(benchmark::kMillisecond);
+  for (int k = g_smoke ? 2 : 1; k <= ref_levels; ++k) ur->Arg(k);
+  auto* uf = benchmark::RegisterBenchmark("Uniform6x6/fast", BM_Uniform6x6<Fast>);
+  uf->ArgName("level")->Unit(benchmark::kMillisecond);
+  for (int k = g_smoke ? 2 : 1; k <= fast_levels; ++k) uf->Arg(k);
+
+  benchmark::RegisterBenchmark("MovingFeature/reference", BM_MovingFeature<Reference>)->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("MovingFeature/fast", BM_MovingFeature<Fast>)->Unit(benchmark::kMicrosecond);
+}
+
+// ---- --bccmis_verify: the workloads give the same states in both ---------------------------------
+
+int verify() {
+  int failures = 0;
+  auto expect = [&](bool ok, const std::string& what) {
+    std::fprintf(stderr, "verify: %s: %s\n", what.c_str(), ok ? "same" : "DIFFERENT");
+    failures += !ok;
+  };
+  {
+    const Mix mix = make_mix(g_smoke ? 1000 : 20'000, g_smoke ? 512 : 20'000, 7);
+    Graph ref = mix.start.to_graph();
+    fast::Lattice fst = mix.start;
+    bool agree = canonical_state(ref) == fast::canonical_state(fst);
+    for (const Op& op : mix.ops) {
+      const bool a = op.refine ? Reference::refine(ref, op.at) : Reference::coarsen(ref, op.at);
+      const bool b = op.refine ? Fast::refine(fst, op.at) : Fast::coarsen(fst, op.at);
+      agree = agree && a && b;
+    }
+    expect(agree && canonical_state(ref) == fast::canonical_state(fst),
+           "mix of " + std::to_string(mix.ops.size()) + " operations");
+  }
+  {
+    const LatticeSize size{6, 6, g_smoke ? 2 : 4};
+    Graph ref = Reference::make(size);
+    fast::Lattice fst = Fast::make(size);
+    const std::size_t a = refine_uniformly<Reference>(ref, size), b = refine_uniformly<Fast>(fst, size);
+    expect(a == b && canonical_state(ref) == fast::canonical_state(fst),
+           "uniform 6x6 to level " + std::to_string(size.L) + " (" + std::to_string(a) + " refines)");
+  }
+  {
+    const LatticeSize size{4, 4, 4};
+    MovingFeature<Reference> ra(size, 0.5 * static_cast<double>(level0_side(size)), 64);
+    MovingFeature<Fast> fa(size, 0.5 * static_cast<double>(level0_side(size)), 64);
+    bool agree = true;
+    std::size_t ops = 0;
+    for (int f = 0; f < (g_smoke ? 16 : 128); ++f) {
+      const std::size_t a = ra.frame(), b = fa.frame();
+      ops += a;
+      agree = agree && a == b && canonical_state(ra.state()) == fast::canonical_state(fa.state());
+    }
+    expect(agree, "moving feature (" + std::to_string(ops) + " operations)");
+  }
+  return failures;
+}
+
+}  // namespace
+}  // namespace bccmis::bench
+
+int main(int argc, char** argv) {
+  using namespace bccmis::bench;
+  bool do_verify = false;
+  int kept = 1;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--bccmis_smoke") == 0) {
+      g_smoke = true;
+    } else if (std::strcmp(argv[i], "--bccmis_verify") == 0) {
+      do_verify = true;
+    } else if (std::strncmp(argv[i], "--bccmis_max_cells=", 19) == 0) {
+      g_max_cells = std::atoll(argv[i] + 19);
+    } else {
+      argv[kept++] = argv[i];
+    }
+  }
+  argc = kept;
+  if (do_verify && verify() != 0) return 1;
+  register_all();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
