@@ -1,5 +1,6 @@
 #include "bccmis/balance.h"
 
+#include <algorithm>
 #include <iterator>
 #include <stdexcept>
 #include <string>
@@ -57,11 +58,15 @@ BalancedRefineResult refine_balanced(Graph& g, const Point& c) {
 std::size_t coarsen_sweep(Graph& g, const CoarsenPredicate& allow) {
   // Only refined centers can be coarsened; the position test is cheap and
   // keeps the pass from calling the predicate on grid nodes and midpoints.
-  std::vector<Point> candidates;
+  // Finest first: merging the children of a cell can make the cell itself
+  // (one level up) or a neighbour blocked by a finer junction mergeable, so
+  // one pass usually reaches the fixpoint.
+  std::vector<std::pair<int, Point>> candidates;
   for (const Point& n : g.N)
-    if (refined_center_level(g.size, n)) candidates.push_back(n);
+    if (const std::optional<int> l = refined_center_level(g.size, n)) candidates.push_back({-*l, n});
+  std::sort(candidates.begin(), candidates.end());
   std::size_t done = 0;
-  for (const Point& n : candidates) {
+  for (const auto& [minus_level, n] : candidates) {
     if (can_coarsen(g, n) || !allow(g, n)) continue;
     if (coarsen(g, n).applied()) ++done;
   }

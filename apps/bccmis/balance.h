@@ -44,7 +44,8 @@ BalancedRefineResult refine_balanced(Graph& g, const Point& c);
 /// Called only when can_coarsen(g, n) is empty.
 using CoarsenPredicate = std::function<bool(const Graph& g, const Point& n)>;
 
-/// One pass over the nodes in sorted (x, y) order: coarsens every n for which
+/// One pass over the refined centers, finest level first, then in sorted
+/// (x, y) order: coarsens every n for which
 /// can_coarsen(g, n) is empty (re-tested at n, after the pass's earlier
 /// coarsenings) and `allow(g, n)` is true. Returns the number of coarsenings.
 std::size_t coarsen_sweep(Graph& g, const CoarsenPredicate& allow);

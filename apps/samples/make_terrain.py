@@ -8,7 +8,9 @@ terrain: five octaves of value noise (a hashed integer lattice, smoothstep
          interpolation) plus a diagonal ridge: hills, valleys and one sharp crest.
 crater:  a rim around a flat floor, a central peak, on a gentle slope.
 The values are normalized to [0, maxval]. No randomness beyond a fixed hash,
-so the files are byte-identical on every machine (tests/apps.cmake checks).
+so the files are reproducible: `--check FILE` compares (tests/apps.cmake runs it
+for terrain128.pgm, which uses only + - * / and floor; crater uses exp and
+hypot, whose last bit may differ between C libraries).
 """
 import argparse
 import math
@@ -56,7 +58,8 @@ def main():
     ap.add_argument("--size", type=int, default=128)
     ap.add_argument("--bits", type=int, choices=[8, 16], default=16)
     ap.add_argument("--plain", action="store_true", help="P2 (ASCII) instead of P5")
-    ap.add_argument("-o", "--output", required=True, help="output file, - for stdout")
+    ap.add_argument("-o", "--output", help="output file, - for stdout")
+    ap.add_argument("--check", metavar="FILE", help="compare with FILE instead of writing (exit 1 if different)")
     args = ap.parse_args()
     n = args.size
     f = terrain if args.kind == "terrain" else crater
@@ -73,6 +76,13 @@ def main():
         else:
             for x in r:
                 data += bytes([x >> 8, x & 0xFF]) if maxval > 255 else bytes([x])
+    if args.check:
+        with open(args.check, "rb") as f:
+            same = f.read() == bytes(data)
+        print(f"{args.check}: {'reproduced' if same else 'DIFFERS from the generator output'}")
+        sys.exit(0 if same else 1)
+    if not args.output:
+        ap.error("give -o FILE or --check FILE")
     if args.output == "-":
         sys.stdout.buffer.write(data)
     else:
