@@ -14,9 +14,9 @@
 #
 # GENERATE writes a large input into WORKDIR first (too big to keep in git):
 #   long_line       a 1 MiB integer token (out of range)
-#   many_lines      200,000 valid commands, then an unknown one
+#   many_lines      100,000 valid commands, then an unknown one
 #   many_comments   8 MiB of comment lines and no lattice command
-#   long_state      a state with 100,000 sorted node lines, then a bad line
+#   long_state      a state with 50,000 sorted node lines, then a bad line
 foreach(v BCCMIS MODE INPUT EXPECT)
   if(NOT DEFINED ${v})
     message(FATAL_ERROR "run_bad_input.cmake: ${v} is not set")
@@ -35,17 +35,17 @@ if(GENERATE)
     string(REPEAT "9" 1048576 digits)
     file(WRITE "${INPUT}" "lattice 2 2 1\nrefine 4 ${digits}\n")
   elseif(GENERATE STREQUAL "many_lines")
-    string(REPEAT "refine 4 4\ncoarsen 4 4\n" 100000 body)
+    string(REPEAT "refine 4 4\ncoarsen 4 4\n" 50000 body)
     file(WRITE "${INPUT}" "lattice 2 2 1\n${body}bogus 1 2\n")
   elseif(GENERATE STREQUAL "many_comments")
     string(REPEAT "# a comment line that goes on and on and on and on and on and on and on and on\n" 16 block)
     string(REPEAT "${block}" 6554 body)
     file(WRITE "${INPUT}" "${body}")
   elseif(GENERATE STREQUAL "long_state")
-    foreach(i RANGE 0 99999)
+    foreach(i RANGE 0 49999)
       string(APPEND body "N ${i} 0 :\n")
     endforeach()
-    file(WRITE "${INPUT}" "bccmis-state 1\nlattice 1 1 0\n${body}N 5 -1 :\nend 0 100001\n")
+    file(WRITE "${INPUT}" "bccmis-state 1\nlattice 1 1 0\n${body}N 5 -1 :\nend 0 50001\n")
   else()
     message(FATAL_ERROR "run_bad_input.cmake: unknown GENERATE=${GENERATE}")
   endif()
@@ -70,6 +70,7 @@ math(EXPR elapsed_ms "(${t1} - ${t0}) / 1000")
 math(EXPR limit_ms "${MAX_SECONDS} * 1000")
 
 set(fail "")
+set(rss_mb "?")
 if(NOT "${rc}" STREQUAL "2")
   string(APPEND fail "exit code '${rc}', expected 2\n")
 endif()
@@ -108,4 +109,4 @@ endif()
 if(fail)
   message(FATAL_ERROR "bccmis ${MODE} ${INPUT}\n${fail}--- stdout ---\n${out}--- stderr ---\n${err}")
 endif()
-message(STATUS "ok: exit 2 in ${elapsed_ms} ms: ${err}")
+message(STATUS "ok: exit 2 in ${elapsed_ms} ms, peak RSS ${rss_mb} MiB: ${err}")
