@@ -1,5 +1,7 @@
 # Included by tests/CMakeLists.txt: the checker's tests (issue 4).
-find_package(GTest REQUIRED)
+if(NOT TARGET GTest::gtest_main)
+  find_package(GTest REQUIRED)
+endif()
 include(GoogleTest)
 
 add_executable(invariants_test ${CMAKE_CURRENT_LIST_DIR}/invariants_test.cpp)

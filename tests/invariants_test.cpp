@@ -173,6 +173,18 @@ TEST(Layer1, Symmetry) {
   EXPECT_EQ(find_violation(g)->message, "symmetry: center (2, 2) lists node (4, 2), which does not list it");
 }
 
+TEST(Layer1, ChecksAreReportedInPriorityOrder) {
+  // An asymmetric edge (2, 2)-(0, 0) and an empty set at (0, 0) sort before
+  // the node-node edge (4, 0)-(4, 4), but bipartite comes first.
+  Graph g = state(kOneCell);
+  g.neighbors[{0, 0}].erase({2, 2});  // also leaves (0, 0) with an empty set
+  link(g, {4, 0}, {4, 4});
+  expect_violation(g, "bipartite", 1, {{4, 0}, {4, 4}});
+  // And a dangling neighbour anywhere beats both.
+  g.neighbors[{4, 4}].insert({9, 9});
+  expect_violation(g, "dangling-neighbor", 1, {{4, 4}, {9, 9}});
+}
+
 TEST(Layer1, EmptyNeighbors) {
   Graph g = state(kOneCell);
   add_node(g, {2, 0});

@@ -11,7 +11,9 @@
 //
 // The levels read are the stored ones, which the operations' level test uses;
 // layer 4 checks that they agree with the positions.
-#include <map>
+#include <algorithm>
+#include <utility>
+#include <vector>
 
 #include "bccmis/detail/lattice.h"
 #include "bccmis/detail/layers.h"
@@ -21,10 +23,20 @@ namespace bccmis::inv {
 std::optional<Violation> check_grading(const Graph& g) {
   constexpr int layer = 3;
   for (const Point& a : g.C) {
-    std::map<Point, int> shared;  // cell b -> |𝒩(a) ∩ 𝒩(b)|
+    // cell b -> |𝒩(a) ∩ 𝒩(b)|; at most 8 nodes with at most 4 cells each
+    // after layer 2, so a small flat table.
+    std::vector<std::pair<Point, int>> shared;
+    shared.reserve(32);
     for (const Point& n : g.nbr(a))
-      for (const Point& b : g.nbr(n))
-        if (b != a) ++shared[b];
+      for (const Point& b : g.nbr(n)) {
+        if (b == a) continue;
+        auto it = std::find_if(shared.begin(), shared.end(), [&b](const auto& e) { return e.first == b; });
+        if (it == shared.end())
+          shared.emplace_back(b, 1);
+        else
+          ++it->second;
+      }
+    std::sort(shared.begin(), shared.end());
     const int la = g.level.at(a);
     for (const auto& [b, count] : shared) {
       if (count < 2) continue;
