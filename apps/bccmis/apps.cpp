@@ -159,8 +159,15 @@ std::string levels_text(const Graph& g, std::string& json) {
   std::string text;
   json = "{";
   for (const auto& [l, n] : per_level) {
-    text += (text.empty() ? "" : " ") + std::to_string(l) + ":" + std::to_string(n);
-    json += (json.size() > 1 ? ", " : "") + std::string("\"") + std::to_string(l) + "\": " + std::to_string(n);
+    if (!text.empty()) text += ' ';
+    text += std::to_string(l);
+    text += ':';
+    text += std::to_string(n);
+    if (json.size() > 1) json += ", ";
+    json += '"';
+    json += std::to_string(l);
+    json += "\": ";
+    json += std::to_string(n);
   }
   json += "}";
   return text;

@@ -14,10 +14,14 @@ VertexSet edge_neighbors(const Graph& g, const Point& c) {
   // Two boundary nodes of c share a second cell exactly when they are the
   // ends of one side piece of c (a corner and a corner, or a corner and a
   // junction); that cell lies across the piece.
-  for (auto bi = B.begin(); bi != B.end(); ++bi)
-    for (auto bj = std::next(bi); bj != B.end(); ++bj)
-      for (const Point& x : g.nbr(*bi))
-        if (x != c && g.nbr(*bj).count(x) != 0) X.insert(x);
+  for (auto bi = B.begin(); bi != B.end(); ++bi) {
+    const VertexSet& Ni = g.nbr(*bi);
+    for (auto bj = std::next(bi); bj != B.end(); ++bj) {
+      const VertexSet& Nj = g.nbr(*bj);
+      for (const Point& x : Ni)
+        if (x != c && Nj.count(x) != 0) X.insert(x);
+    }
+  }
   return X;
 }
 
@@ -34,7 +38,11 @@ std::optional<Point> coarser_neighbor(const Graph& g, const Point& c) {
 // Precondition: c is a center below the maximum level. Every coarser
 // neighbour x has level(x) < level(c), so the recursion depth is at most L.
 void cascade(Graph& g, const Point& c, std::vector<Point>& refined) {
-  while (const std::optional<Point> x = coarser_neighbor(g, c)) cascade(g, *x, refined);
+  while (can_refine(g, c) == RefineRefusal::CoarserNeighbor) {
+    const std::optional<Point> x = coarser_neighbor(g, c);
+    if (!x) break;  // refine() below reports the inconsistency
+    cascade(g, *x, refined);
+  }
   const RefineResult r = refine(g, c);
   if (!r.applied())
     throw std::logic_error("refine_balanced: refine(" + std::to_string(c.x) + ", " + std::to_string(c.y) +

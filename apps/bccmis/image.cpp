@@ -26,8 +26,16 @@ std::string hex_byte(unsigned char b) {
 std::string describe(std::string_view bytes, std::size_t pos) {
   if (pos >= bytes.size()) return "end of file";
   const auto b = static_cast<unsigned char>(bytes[pos]);
-  if (b >= 0x21 && b < 0x7f) return "'" + std::string(1, static_cast<char>(b)) + "'";
-  return "byte " + hex_byte(b);
+  std::string r;
+  if (b >= 0x21 && b < 0x7f) {
+    r += '\'';
+    r += static_cast<char>(b);
+    r += '\'';
+  } else {
+    r += "byte ";
+    r += hex_byte(b);
+  }
+  return r;
 }
 
 void check_size(std::int64_t w, std::int64_t h, const ImageLimits& limits, const std::string& where) {
@@ -118,13 +126,16 @@ HeightField parse_pgm(std::string_view bytes, std::string_view file, const Image
   }
   const char kind = bytes[1];
   if (kind != '2' && kind != '5') {
-    const std::string magic = "P" + std::string(1, kind);
+    std::string magic(1, 'P');
+    if (kind >= 0x21 && kind < 0x7f)
+      magic += kind;
+    else
+      magic += hex_byte(static_cast<unsigned char>(kind));
     std::string hint;
     if (kind == '3' || kind == '6') hint = " (a colour PPM; convert it with ppmtopgm)";
     if (kind == '1' || kind == '4') hint = " (a bitmap PBM; convert it with pbmtopgm or pamdepth)";
     if (kind == '7') hint = " (a PAM; convert it with pamtopnm)";
-    cur.fail("wrong magic '" + (kind >= 0x21 && kind < 0x7f ? magic : "P" + hex_byte(static_cast<unsigned char>(kind))) +
-             "'" + hint + ": expected P2 or P5 (a PGM image)");
+    cur.fail("wrong magic '" + magic + "'" + hint + ": expected P2 or P5 (a PGM image)");
   }
   cur.advance();
   cur.advance();
