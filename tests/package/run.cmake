@@ -1,0 +1,25 @@
+# Installs bccmis into a scratch prefix, then configures, builds and runs the
+# consumer project against it. -DBUILD=<bccmis build dir> -DSRC=<tests/package>
+# -DWORK=<scratch dir> -DCXX=<compiler> -DFLAGS=<extra compile+link flags>
+file(REMOVE_RECURSE "${WORK}")
+function(run)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${ARGN}\nexit ${rc}\n${out}\n${err}")
+  endif()
+  set(last_out "${out}" PARENT_SCOPE)
+endfunction()
+run(${CMAKE_COMMAND} --install "${BUILD}" --prefix "${WORK}/prefix")
+foreach(f include/bccmis/ops.h include/bccmis/invariants.h lib/cmake/bccmis/bccmisConfig.cmake lib/pkgconfig/bccmis.pc bin/bccmis)
+  if(NOT EXISTS "${WORK}/prefix/${f}")
+    message(FATAL_ERROR "not installed: ${f}")
+  endif()
+endforeach()
+run(${CMAKE_COMMAND} -S "${SRC}" -B "${WORK}/build" -G Ninja "-DCMAKE_PREFIX_PATH=${WORK}/prefix"
+    "-DCMAKE_CXX_COMPILER=${CXX}" "-DCMAKE_CXX_FLAGS=${FLAGS}" "-DCMAKE_EXE_LINKER_FLAGS=${FLAGS}")
+run(${CMAKE_COMMAND} --build "${WORK}/build")
+run("${WORK}/build/consumer")
+if(NOT last_out MATCHES "consumer ok")
+  message(FATAL_ERROR "consumer printed: ${last_out}")
+endif()
+run("${WORK}/prefix/bin/bccmis" --version)
