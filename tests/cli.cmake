@@ -102,3 +102,9 @@ bccmis_cli_test(render_fig2 0 ARGS render --from-trace ${_examples}/fig2.trace -
 add_test(NAME cli.render_fig2_content
          COMMAND ${CMAKE_COMMAND} -DFILE=${CMAKE_CURRENT_BINARY_DIR}/cli_work/render_fig2/fig2.svg -P ${_cli}/check_svg.cmake)
 set_tests_properties(cli.render_fig2_content PROPERTIES DEPENDS cli.render_fig2 LABELS cli)
+
+# explore: the counts are known independently (tests/model: 1 + 2^4 = 17 for
+# one cell two levels deep, 2^4 = 16 for four cells one level deep).
+bccmis_cli_test(explore_112 0 ARGS explore 1 1 2 --no-progress STDOUT_REGEX "^explore 1 1 2: 17 states, 33 refine edges, 33 coarsen edges, .* ok")
+bccmis_cli_test(explore_221_json 0 ARGS explore 2 2 1 --json STDOUT_REGEX "\"states\": 16, .*\"ok\": true")
+bccmis_cli_test(explore_bad_lattice 2 ARGS explore 1 1 -1 STDERR_REGEX "L must be >= 0")

@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include "bccmis/conformance.h"
+#include "explore/explore.h"
 #include "bccmis/format.h"
 #include "bccmis/invariants.h"
 #include "bccmis/oracle.h"
@@ -288,6 +289,25 @@ int main(int argc, char** argv) {
       "Exit codes: 0 all agree, 1 disagreement (the minimal trace is printed), 2 harness error.\n"
       "Example:\n  bccmis conformance --impl './my-lattice replay' --traces spec/examples --random 200 --seed 7");
 
+  LatticeSize ex_size;
+  bool ex_json = false, ex_no_progress = false;
+  ExploreOptions ex;
+  CLI::App* explore_cmd = app.add_subcommand(
+      "explore", "Breadth-first search over every state reachable from a lattice: check each, try every operation.");
+  explore_cmd->add_option("W", ex_size.W, "Level-0 cells across")->required();
+  explore_cmd->add_option("H", ex_size.H, "Level-0 cells up")->required();
+  explore_cmd->add_option("L", ex_size.L, "Maximum level")->required();
+  explore_cmd->add_option("--depth", ex.check_depth, "Checker layers on every state (0-4)")
+      ->check(CLI::Range(0, 4))
+      ->capture_default_str();
+  explore_cmd->add_option("--max-states", ex.max_states, "Stop after this many states (0: no limit)")->capture_default_str();
+  explore_cmd->add_option("--threads", ex.threads, "Worker threads (0: one per core)")->capture_default_str();
+  explore_cmd->add_flag("--json", ex_json, "One line of JSON instead of the summary");
+  explore_cmd->add_flag("--no-progress", ex_no_progress, "No progress line on stderr");
+  explore_cmd->footer(
+      "Exit codes: 0 every state valid and every inverse exact, 1 a failure (a reproducing trace is printed), "
+      "2 bad input.\nExample:\n  bccmis explore 1 1 2        # 17 states\n  bccmis explore 2 2 2 --json");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -305,6 +325,26 @@ int main(int argc, char** argv) {
     if (*replay_cmd) return run_replay(ro);
     if (*check_cmd) return run_check(check_path, check_depth, check_quiet);
     if (*diff_cmd) return run_diff(diff_a, diff_b, diff_quiet);
+    if (*explore_cmd) {
+      try {
+        validate_lattice_size(ex_size);
+      } catch (const LatticeError& e) {
+        throw InputError(std::string("explore: ") + e.what());
+      }
+      if (!ex_no_progress && ::isatty(2)) {
+        ex.progress = [](const ExploreProgress& p) {
+          std::fprintf(stderr, "\r%lld states, %lld queued, %lld ops tried, %.1f s   ",
+                       static_cast<long long>(p.states), static_cast<long long>(p.queued),
+                       static_cast<long long>(p.ops_tried), p.seconds);
+        };
+      }
+      const ExploreResult r = explore(ex_size, ex);
+      if (ex.progress) std::fprintf(stderr, "\n");
+      std::cout << (ex_json ? to_json(r) : summary(r)) << "\n";
+      if (r.first_failure && !ex_json)
+        std::cout << "first failure: " << r.first_failure->message << "\nreproducing trace:\n" << r.first_failure->trace;
+      return r.ok() ? kExitOk : kExitViolation;
+    }
     if (*stats_cmd) {
       std::cout << format_stats(stats(load_state(stats_path, stats_from_trace)), stats_json);
       return kExitOk;
