@@ -2,13 +2,13 @@
 // cell centers; refinement replaces a cell by four cells of half size).
 //
 // In this order:
-//   level-range     0 <= level(c) <= L                                        §1
+//   level-range     0 <= level(c) <= L                                        §1 ¶8
 //   outside-domain  every vertex lies in [0, W*S] x [0, H*S]                   §1
 //   center-position a level-l center has both coordinates odd multiples of
-//                   2^(L-l), i.e. it is the center of a level-l cell            §1
-//   overlap         no cell lies inside another cell                           §1
+//                   2^(L-l), i.e. it is the center of a level-l cell            §1 ¶7
+//   overlap         no cell lies inside another cell                           §1 ¶7
 //   coverage        the cells' areas sum to W*H*S^2, so (with no overlap)
-//                   they tile the domain                                       §1
+//                   they tile the domain                                       §1 ¶7
 // Centers lying at the middle of their 4 corners and junctions lying at side
 // midpoints are part of layer 2, which derives each square from its center.
 //
@@ -49,7 +49,7 @@ std::optional<Violation> check_geometry(const Graph& g) {
       return violation(layer, "level-range", {c},
                        "center " + pos(c) + " has level " + std::to_string(l) + ", outside 0.." + std::to_string(L) +
                            " (L = " + std::to_string(L) + ")",
-                       "§1");
+                       "§1 ¶8");
   }
 
   // After layer 1 the keys of the neighbour map are exactly N ∪ C, sorted.
@@ -71,7 +71,7 @@ std::optional<Violation> check_geometry(const Graph& g) {
     else
       text += "is not the center of any cell: a level-" + std::to_string(l) +
               " center has both coordinates odd multiples of " + std::to_string(h);
-    return violation(layer, "center-position", {c}, text, "§1");
+    return violation(layer, "center-position", {c}, text, "§1 ¶7");
   }
 
   // overlap: collect the refined cells (ancestors of cells).
@@ -84,7 +84,7 @@ std::optional<Violation> check_geometry(const Graph& g) {
                          "the level-" + std::to_string(g.level.at(c)) + " cell " + square(c, domain.half(g.level.at(c))) +
                              " of center " + pos(c) + " lies inside the level-" + std::to_string(k) + " cell " +
                              square(a, domain.half(k)) + " of center " + pos(a),
-                         "§1");
+                         "§1 ¶7");
       if (!refined.insert(a).second) break;  // a and its ancestors were walked already
     }
   }
@@ -111,7 +111,7 @@ std::optional<Violation> check_geometry(const Graph& g) {
     return violation(layer, "coverage", {p},
                      sum + ": the level-" + std::to_string(k) + " square " + square(p, domain.half(k)) +
                          " centered at " + pos(p) + " contains no cell",
-                     "§1");
+                     "§1 ¶7");
   };
   for (const Point& r : refined) {
     const int k = *domain.center_level(r);
@@ -129,7 +129,7 @@ std::optional<Violation> check_geometry(const Graph& g) {
       const Point p{(2 * i + 1) * h0, (2 * j + 1) * h0};
       if (!g.C.count(p) && !refined.count(p)) return gap(p, 0);
     }
-  return violation(layer, "coverage", {}, sum, "§1");  // unreachable when no overlap
+  return violation(layer, "coverage", {}, sum, "§1 ¶7");  // unreachable when no overlap
 }
 
 }  // namespace bccmis::inv

@@ -1,4 +1,4 @@
-// Layer 3, grading (Erleben 2009, §1 ¶6 and the level test of §2.1):
+// Layer 3, grading (Erleben 2009, §1 ¶8 and the level test of §2.1):
 //   grading   two cells that share a side differ in level by at most 1.
 //
 // "Share a side" is taken from the graph, as the paper's eq. (3) does: cells a
@@ -47,7 +47,7 @@ std::optional<Violation> check_grading(const Graph& g) {
                          "cells " + pos(a) + " (level " + std::to_string(la) + ") and " + pos(b) + " (level " +
                              std::to_string(lb) + ") share a side but differ by " +
                              std::to_string(diff < 0 ? -diff : diff) + " levels; edge neighbours differ by at most 1",
-                         "§1 ¶6");
+                         "§1 ¶8");
     }
   }
   return std::nullopt;

@@ -13,7 +13,7 @@
 // then nodes, in sorted order:
 //   node-degree        |𝒩(n)| <= 4, and, for a node that no cell lists as a
 //                      side midpoint, exactly 1 (domain corner), 2 (boundary)
-//                      or 4 (interior)                                     §1
+//                      or 4 (interior)                                     §1 ¶5
 //   boundary-junction  no cell lists a midpoint of a side on the domain
 //                      boundary (no finer cell can lie beyond it)          §2.1 eq. (6a)
 //   junction-degree    a node listed as a side midpoint has exactly 3
@@ -72,7 +72,7 @@ std::optional<Violation> check_structural(const Graph& g) {
       return violation(layer, "node-degree", {n},
                        "node " + pos(n) + " has " + neighbours_text(nbrs.size()) +
                            "; a node has 1 to 4 (at most 4 cells meet at a point)",
-                       "§1");
+                       "§1 ¶5");
     const Place place = domain.place(n);
     if (place == Place::Outside) continue;  // layer 4
     std::vector<Point> as_midpoint;         // cells that list n as a side midpoint
@@ -125,7 +125,7 @@ std::optional<Violation> check_structural(const Graph& g) {
                 "coarse cell that has it as a side midpoint)";
       else
         text += std::string("a ") + kind + " has " + std::to_string(expected);
-      return violation(layer, "node-degree", {n}, text, "§1");
+      return violation(layer, "node-degree", {n}, text, "§1 ¶5");
     }
   }
   return std::nullopt;

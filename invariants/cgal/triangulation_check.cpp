@@ -173,7 +173,7 @@ std::optional<Violation> find_triangulation_violation(const Graph& g) {
       if (!handle.count(corner))
         return violation("hull-domain", {corner},
                          "the domain corner " + pos(corner) + " is not a vertex, so the triangulation does not cover the domain",
-                         "§1 ¶4");
+                         "§1 ¶6");
     if (t.dimension() == 2) {
       auto circ = t.incident_vertices(t.infinite_vertex()), done = circ;
       do {
@@ -181,7 +181,7 @@ std::optional<Violation> find_triangulation_violation(const Graph& g) {
         if (p.x != 0 && p.y != 0 && p.x != width && p.y != height)
           return violation("hull-domain", {p},
                            "the vertex " + pos(p) + " is on the convex hull of the vertices but not on the domain boundary",
-                           "§1 ¶4");
+                           "§1 ¶6");
       } while (++circ != done);
     }
   }
@@ -204,7 +204,7 @@ std::optional<Violation> find_triangulation_violation(const Graph& g) {
                      "CGAL's triangulation has " + std::to_string(faces) + " triangles; the cells' stars give " +
                          std::to_string(star) + " and Euler's formula 2V - h - 2 gives " + std::to_string(euler) +
                          " (V = " + std::to_string(V) + ", h = " + std::to_string(hull) + ")",
-                     "§1 ¶4");
+                     "§1 ¶6");
 
   // not-delaunay: every edge between two triangles is locally Delaunay.
   for (auto e = t.finite_edges_begin(); e != t.finite_edges_end(); ++e) {
@@ -221,7 +221,7 @@ std::optional<Violation> find_triangulation_violation(const Graph& g) {
                        "the edge " + pos(vertex.at(f->vertex(Triangulation::cw(i)))) + "-" +
                            pos(vertex.at(f->vertex(Triangulation::ccw(i)))) + " is not locally Delaunay: " + pos(pd) +
                            " lies strictly inside the circle through " + pos(pa) + ", " + pos(pb) + " and " + pos(pc),
-                       "§1 ¶4");
+                       "§1 ¶6");
     }
   }
   return std::nullopt;

@@ -1,5 +1,5 @@
 // Layer 5 of the checker: CGAL's exact constrained Delaunay triangulation as an
-// external referee (Erleben 2009, §1 ¶4 "the triangulation is the Delaunay
+// external referee (Erleben 2009, §1 ¶6 "the triangulation is the Delaunay
 // complex of the interlaced grid nodes" and §2 eq. (1)).
 //
 // All vertices N ∪ C are inserted into a CGAL constrained Delaunay
