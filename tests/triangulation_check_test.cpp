@@ -213,6 +213,15 @@ TEST(TriangulationCheck, RejectsAnUncoveredDomain) {
   EXPECT_EQ(v->where, (std::vector<Point>{{8, 0}}));
 }
 
+TEST(TriangulationCheck, RejectsAVertexOutsideTheDomain) {
+  Graph g = make_lattice({1, 1, 1});
+  g.N.insert({std::int64_t{1} << 62, -(std::int64_t{1} << 62)});
+  link(g, {2, 2}, {std::int64_t{1} << 62, -(std::int64_t{1} << 62)});
+  const auto v = find_triangulation_violation(g);
+  ASSERT_TRUE(v.has_value());
+  EXPECT_EQ(v->code, "hull-domain") << to_string(*v);
+}
+
 TEST(TriangulationCheck, RejectsAStarWithAMissingCorner) {
   // lattice 2 1 1: the right cell forgets its corner (8, 4), which is
   // deleted. The hull of its remaining ring (4, 0), (4, 4), (8, 0) has the

@@ -52,8 +52,8 @@ std::vector<Point> angular(const Point& c, const VertexSet& ring) {
     const bool ua = upper(a), ub = upper(b);
     if (ua != ub) return ua;
     const Int128 ax = Int128{a.x} - c.x, ay = Int128{a.y} - c.y, bx = Int128{b.x} - c.x, by = Int128{b.y} - c.y;
-    // Differences are below 2^64, so each product is below 2^128 in magnitude
-    // only for valid lattices (|coordinates| <= 2^62); that is what we check.
+    // All coordinates lie in [0, 2^62] (checked first), so differences are
+    // below 2^62 and every product and sum fits in 128 bits.
     const Int128 cross = ax * by - ay * bx;
     if (cross != 0) return cross > 0;
     return ax * ax + ay * ay < bx * bx + by * by;  // collinear: nearer first
@@ -83,6 +83,18 @@ Violation violation(std::string code, std::vector<Point> where, const std::strin
 }  // namespace
 
 std::optional<Violation> find_triangulation_violation(const Graph& g) {
+  const std::int64_t S = std::int64_t{1} << (g.size.L + 1);
+  const std::int64_t width = g.size.W * S, height = g.size.H * S;
+  // Every vertex lies in the domain (this also keeps the 128-bit angular
+  // comparisons below exact: coordinates are then at most 2^62).
+  for (const VertexSet* set : {&g.C, &g.N})
+    for (const Point& v : *set)
+      if (v.x < 0 || v.y < 0 || v.x > width || v.y > height)
+        return violation("hull-domain", {v},
+                         "the vertex " + pos(v) + " lies outside the domain [0, " + std::to_string(width) + "] x [0, " +
+                             std::to_string(height) + "]",
+                         "§1 ¶6");
+
   // The expected edges: graph edges and the hull edges of eq. (1), each with
   // a note saying where it comes from.
   std::map<Edge, std::string> expected;
@@ -167,8 +179,6 @@ std::optional<Violation> find_triangulation_violation(const Graph& g) {
   // is the domain [0, W*S] x [0, H*S]: its corners are vertices and every
   // hull vertex lies on the domain boundary.
   {
-    const std::int64_t S = std::int64_t{1} << (g.size.L + 1);
-    const std::int64_t width = g.size.W * S, height = g.size.H * S;
     for (const Point corner : {Point{0, 0}, Point{0, height}, Point{width, 0}, Point{width, height}})
       if (!handle.count(corner))
         return violation("hull-domain", {corner},

@@ -11,7 +11,8 @@
 //                        triangulation (a vertex lies on it)
 //   extra-edge           CGAL's triangulation has an edge that is neither
 //   hull-domain          the triangulated region (the vertices' convex hull)
-//                        is not the domain rectangle
+//                        is not the domain rectangle (checked first for
+//                        vertices outside the domain)
 //   triangle-count       the triangle count differs from Σ|𝒩(c)| (one star
 //                        triangle per cell boundary edge) or from Euler's
 //                        formula 2V - h - 2 (h vertices on the hull)
