@@ -72,7 +72,7 @@ TEST(Errata, E3_CenterWithARefinedChildIsNotCoarsenable) {
 TEST(Errata, E3_SiblingsWithAFinerNeighbourAreNotCoarsenable) {
   //= erleben2009#pre-coarsen-balance type=test
   // Literal: accepted; the level-0 cell (4,4) would then touch the level-2
-  // cell (9,1) along a side and list 9 boundary nodes' worth of neighbours.
+  // cells (9,1), (9,3) along its right side (a level difference of 2).
   Graph g = test::build("lattice 2 1 2\nrefine 4 4\nrefine 12 4\nrefine 10 2\n");
   ASSERT_EQ(g.nbr({4, 4}).size(), 4u);
   EXPECT_EQ(coarsen(g, {4, 4}).refused, CoarsenRefusal::FinerNeighbor);
