@@ -497,4 +497,46 @@ inline void prop_decisions_match_geometry(const Ops& ops, const Scenario& sc) {
   }
 }
 
+// ---- Replaying a trace with every per-step check ---------------------------
+
+/// Replays `trace` with `ops` and, after every refine/coarsen, checks what the
+/// properties check: the decision (ok or refusal code) equals the leaf
+/// model's, a refused call leaves the canonical state unchanged, an accepted
+/// one is undone exactly by its inverse, and the state passes the checker.
+/// Returns the first problem (with the command's line), or nothing.
+inline std::optional<std::string> check_trace(const Ops& ops, const Trace& trace) {
+  Graph g = make_lattice(trace.size);
+  model::State m = model_initial(trace.size);
+  for (const TraceCommand& cmd : trace.commands) {
+    if (cmd.kind == TraceCommand::Kind::Check) continue;
+    const OpKind op = cmd.kind == TraceCommand::Kind::Refine ? OpKind::Refine : OpKind::Coarsen;
+    const std::string where = "line " + std::to_string(cmd.line) + " (" + command_text(cmd) + "): ";
+    const std::string expected = model_decision(m, op, cmd.at);
+    const std::string before = canonical_state(g);
+    try {
+      std::string have;
+      if (op == OpKind::Refine) {
+        const RefineResult r = ops.refine(g, cmd.at);
+        have = r.refused ? std::string(code(*r.refused)) : "ok";
+      } else {
+        const CoarsenResult r = ops.coarsen(g, cmd.at);
+        have = r.refused ? std::string(code(*r.refused)) : "ok";
+      }
+      if (have != expected) return where + "the graph says " + have + ", the leaf model says " + expected;
+      if (have != "ok") {
+        if (canonical_state(g) != before) return where + "refused (" + have + ") but changed the state";
+        continue;
+      }
+      model_apply(m, op, cmd.at);
+      if (const auto v = find_violation(g)) return where + to_string(*v);
+      Graph back = g;
+      const bool undone = op == OpKind::Refine ? ops.coarsen(back, cmd.at).applied() : ops.refine(back, cmd.at).applied();
+      if (!undone || canonical_state(back) != before) return where + "the inverse operation does not restore the state";
+    } catch (const std::exception& e) {
+      return where + "threw: " + e.what();
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace bccmis::proptest

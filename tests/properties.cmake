@@ -11,8 +11,9 @@ add_executable(properties_test properties_test.cpp)
 target_include_directories(properties_test PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(properties_test PRIVATE rapidcheck_gtest GTest::gtest_main
                       bccmis::core bccmis::invariants bccmis::warnings)
+target_compile_definitions(properties_test PRIVATE BCCMIS_REGRESSIONS_DIR="${CMAKE_CURRENT_SOURCE_DIR}/regressions")
 gtest_discover_tests(properties_test DISCOVERY_MODE PRE_TEST
-  PROPERTIES LABELS property ENVIRONMENT "RC_PARAMS=seed=${BCCMIS_RC_SEED} max_success=150")
+  PROPERTIES LABELS property ENVIRONMENT "RC_PARAMS=seed=${BCCMIS_RC_SEED} max_success=300")
 
 # Model-based test: the graph against the independent quadtree-leaf model.
 add_executable(model_test model_test.cpp)
@@ -20,7 +21,7 @@ target_include_directories(model_test PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(model_test PRIVATE rapidcheck_gtest GTest::gtest_main
                       bccmis::core bccmis::invariants bccmis::warnings)
 gtest_discover_tests(model_test DISCOVERY_MODE PRE_TEST
-  PROPERTIES LABELS property ENVIRONMENT "RC_PARAMS=seed=${BCCMIS_RC_SEED} max_success=150")
+  PROPERTIES LABELS property ENVIRONMENT "RC_PARAMS=seed=${BCCMIS_RC_SEED} max_success=300")
 
 # Exhaustive exploration: the small lattices run with the properties, the
 # 66641/66642-state ones under the `exhaustive` label (release build).
@@ -29,9 +30,9 @@ if(TARGET bccmis::explore)
   target_include_directories(exhaustive_test PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
   target_link_libraries(exhaustive_test PRIVATE GTest::gtest_main
                         bccmis::explore bccmis::core bccmis::invariants bccmis::warnings)
-  gtest_discover_tests(exhaustive_test DISCOVERY_MODE PRE_TEST TEST_FILTER "-ExhaustiveLarge.*"
+  gtest_discover_tests(exhaustive_test DISCOVERY_MODE PRE_TEST NO_PRETTY_VALUES TEST_FILTER "-*ExhaustiveLarge.*"
     PROPERTIES LABELS property)
-  gtest_discover_tests(exhaustive_test DISCOVERY_MODE PRE_TEST TEST_FILTER "ExhaustiveLarge.*"
+  gtest_discover_tests(exhaustive_test DISCOVERY_MODE PRE_TEST NO_PRETTY_VALUES TEST_FILTER "*ExhaustiveLarge.*"
     PROPERTIES LABELS exhaustive TIMEOUT 1800)
 endif()
 
@@ -41,6 +42,8 @@ if(TARGET bccmis::explore)
   target_include_directories(mutants_property_test PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
   target_link_libraries(mutants_property_test PRIVATE rapidcheck_gtest GTest::gtest_main
                         bccmis::explore bccmis::core bccmis::invariants bccmis::warnings)
-  gtest_discover_tests(mutants_property_test DISCOVERY_MODE PRE_TEST
+  target_compile_definitions(mutants_property_test PRIVATE
+                             BCCMIS_REGRESSIONS_DIR="${CMAKE_CURRENT_SOURCE_DIR}/regressions")
+  gtest_discover_tests(mutants_property_test DISCOVERY_MODE PRE_TEST NO_PRETTY_VALUES
     PROPERTIES LABELS property ENVIRONMENT "RC_PARAMS=seed=${BCCMIS_RC_SEED}")
 endif()

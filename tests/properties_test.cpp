@@ -11,6 +11,10 @@
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
 #include "generators.h"
 
 namespace bccmis::proptest {
@@ -69,6 +73,23 @@ TEST(PropertyGenerators, ReachDeepStatesAndEveryDecision) {
                            "coarsen ok", "coarsen no-such-node", "coarsen not-a-refined-center",
                            "coarsen children-refined", "coarsen finer-neighbor"})
     EXPECT_EQ(codes.count(want), 1u) << want;
+}
+
+// Every trace in tests/regressions/ replays on the core with every per-step
+// check (checker, decisions against the model, refusals, inverses).
+TEST(Regressions, EveryTraceReplaysCleanlyOnTheCore) {
+  int traces = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(BCCMIS_REGRESSIONS_DIR)) {
+    if (entry.path().extension() != ".trace") continue;
+    std::ifstream in(entry.path());
+    std::stringstream text;
+    text << in.rdbuf();
+    const Trace trace = parse_trace(text.str(), entry.path().filename().string());
+    const auto problem = check_trace(Ops{}, trace);
+    EXPECT_FALSE(problem.has_value()) << entry.path().filename().string() << ": " << *problem;
+    ++traces;
+  }
+  EXPECT_GT(traces, 0) << "no traces in " << BCCMIS_REGRESSIONS_DIR;
 }
 
 }  // namespace

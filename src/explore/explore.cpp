@@ -244,9 +244,6 @@ struct Origin {
   Point at;
 };
 
-TraceCommand refine_cmd(const Point& p) { return {TraceCommand::Kind::Refine, p, 0}; }
-TraceCommand coarsen_cmd(const Point& p) { return {TraceCommand::Kind::Coarsen, p, 0}; }
-
 // What processing one state found. Workers fill these in parallel; the main
 // thread merges them in state order, so the numbering of states, the counts
 // and the first failure do not depend on the number of threads.
@@ -287,15 +284,43 @@ class StateProcessor {
     std::vector<Vertex> vertices;
     vertices.reserve(g_.N.size() + g_.C.size());
     std::set_union(g_.N.begin(), g_.N.end(), g_.C.begin(), g_.C.end(), std::back_inserter(vertices));
+    pending_.clear();
     for (const Vertex& v : vertices) {
       if (stop()) return;
-      if (options_.try_every_op || g_.is_center(v)) try_refine(v);
+      if (options_.try_every_op || g_.is_center(v)) try_op(TraceCommand::Kind::Refine, v);
       if (stop()) return;
-      if (options_.try_every_op || g_.is_node(v)) try_coarsen(v);
+      if (options_.try_every_op || g_.is_node(v)) try_op(TraceCommand::Kind::Coarsen, v);
+    }
+    if (!pending_.empty() && !stop()) {
+      encode_into(g_, grid_, scratch_);
+      if (scratch_ != *key_) fail_after_diagnosis("the state changed during refused operations", {});
     }
   }
 
  private:
+  // The outcome of one call: applied, or the refusal code.
+  struct Call {
+    bool applied = false;
+    std::string_view refusal;
+  };
+
+  static std::string op_text(TraceCommand::Kind kind, const Vertex& v) {
+    return (kind == TraceCommand::Kind::Refine ? "refine " : "coarsen ") + point_text(v);
+  }
+  static TraceCommand::Kind inverse(TraceCommand::Kind kind) {
+    return kind == TraceCommand::Kind::Refine ? TraceCommand::Kind::Coarsen : TraceCommand::Kind::Refine;
+  }
+
+  // Runs one operation on g_; exceptions propagate.
+  Call call(TraceCommand::Kind kind, const Vertex& v) {
+    if (kind == TraceCommand::Kind::Refine) {
+      const RefineResult r = refine_(g_, v);
+      return r.applied() ? Call{true, {}} : Call{false, code(*r.refused)};
+    }
+    const CoarsenResult r = coarsen_(g_, v);
+    return r.applied() ? Call{true, {}} : Call{false, code(*r.refused)};
+  }
+
   bool stop() const { return options_.stop_at_first_failure && out_->failed; }
 
   void fail(std::string message, std::vector<TraceCommand> extra) {
@@ -305,102 +330,77 @@ class StateProcessor {
     out_->extra = std::move(extra);
   }
 
+  // Refused calls are not compared with the state one by one (that would cost
+  // an encoding each, most of the explorer's time). The graph is compared
+  // once after every accepted operation's inverse and at the end of the
+  // state, and any difference is first blamed on the refused calls since the
+  // last comparison: they are replayed one at a time on a fresh copy, each
+  // compared, and the first one that changes the state is reported.
+  // Otherwise `message` is reported. Either way the graph is restored.
+  void fail_after_diagnosis(std::string message, std::vector<TraceCommand> extra) {
+    for (const auto& [kind, v] : pending_) {
+      restore();
+      Call c;
+      try {
+        c = call(kind, v);
+      } catch (const std::exception&) {
+        continue;  // not the refused call that changed the state
+      }
+      if (c.applied) continue;  // it was refused on the original state only if it is refused here too
+      encode_into(g_, grid_, scratch_);
+      if (scratch_ != *key_) {
+        message = op_text(kind, v) + " was refused (" + std::string(c.refusal) + ") but changed the state";
+        extra = {TraceCommand{kind, v, 0}};
+        break;
+      }
+    }
+    pending_.clear();
+    fail(std::move(message), std::move(extra));
+    restore();
+  }
+
   void restore() { g_ = decode(*key_, size_, grid_); }
 
-  void child(TraceCommand::Kind kind, const Vertex& v) {
+  // Runs op at v; if accepted, records the successor and undoes it with the
+  // inverse operation, which must give back the state exactly.
+  void try_op(TraceCommand::Kind kind, const Vertex& v) {
+    ++out_->ops_tried;
+    const TraceCommand cmd{kind, v, 0};
+    Call r;
+    try {
+      r = call(kind, v);
+    } catch (const std::exception& e) {
+      return fail_after_diagnosis(op_text(kind, v) + " threw: " + e.what(), {cmd});
+    }
+    if (!r.applied) {
+      ++out_->refused;
+      if (options_.try_every_op) pending_.emplace_back(kind, v);
+      return;
+    }
+    if (kind == TraceCommand::Kind::Refine)
+      ++out_->refine_edges;
+    else
+      ++out_->coarsen_edges;
     encode_into(g_, grid_, scratch_);
     if (seen_.count(std::string_view(scratch_)) == 0) out_->children.emplace_back(scratch_, Origin{i_, kind, v});
-  }
 
-  // Refine v in place; record the result; undo with coarsen and compare.
-  void try_refine(const Vertex& v) {
-    ++out_->ops_tried;
-    RefineResult r;
+    const TraceCommand::Kind back_kind = inverse(kind);
+    const TraceCommand back_cmd{back_kind, v, 0};
+    const std::string pair = op_text(kind, v) + " then " + op_text(back_kind, v);
+    Call back;
     try {
-      r = refine_(g_, v);
+      back = call(back_kind, v);
     } catch (const std::exception& e) {
-      fail("refine " + point_text(v) + " threw: " + e.what(), {refine_cmd(v)});
-      return restore();
+      return fail_after_diagnosis(op_text(back_kind, v) + " right after " + op_text(kind, v) + " threw: " + e.what(),
+                                  {cmd, back_cmd});
     }
-    if (!r.applied()) {
-      ++out_->refused;
-      if (!options_.try_every_op) return;
-      encode_into(g_, grid_, scratch_);
-      if (scratch_ != *key_) {
-        fail("refine " + point_text(v) + " was refused (" + std::string(code(*r.refused)) + ") but changed the state",
-             {refine_cmd(v)});
-        restore();
-      }
-      return;
-    }
-    ++out_->refine_edges;
-    child(TraceCommand::Kind::Refine, v);
-    CoarsenResult back;
-    try {
-      back = coarsen_(g_, v);
-    } catch (const std::exception& e) {
-      fail("coarsen " + point_text(v) + " right after refine " + point_text(v) + " threw: " + e.what(),
-           {refine_cmd(v), coarsen_cmd(v)});
-      return restore();
-    }
-    if (!back.applied()) {
-      fail("refine " + point_text(v) + " then coarsen " + point_text(v) + ": the coarsen was refused (" +
-               std::string(code(*back.refused)) + ")",
-           {refine_cmd(v), coarsen_cmd(v)});
-      return restore();
-    }
+    if (!back.applied)
+      return fail_after_diagnosis(pair + ": the " + (back_kind == TraceCommand::Kind::Refine ? "refine" : "coarsen") +
+                                      " was refused (" + std::string(back.refusal) + ")",
+                                  {cmd, back_cmd});
     encode_into(g_, grid_, scratch_);
-    if (scratch_ != *key_) {
-      fail("refine " + point_text(v) + " then coarsen " + point_text(v) + " does not restore the state",
-           {refine_cmd(v), coarsen_cmd(v)});
-      restore();
-    }
-  }
-
-  // Coarsen v in place; record the result; undo with refine and compare.
-  void try_coarsen(const Vertex& v) {
-    ++out_->ops_tried;
-    CoarsenResult r;
-    try {
-      r = coarsen_(g_, v);
-    } catch (const std::exception& e) {
-      fail("coarsen " + point_text(v) + " threw: " + e.what(), {coarsen_cmd(v)});
-      return restore();
-    }
-    if (!r.applied()) {
-      ++out_->refused;
-      if (!options_.try_every_op) return;
-      encode_into(g_, grid_, scratch_);
-      if (scratch_ != *key_) {
-        fail("coarsen " + point_text(v) + " was refused (" + std::string(code(*r.refused)) +
-                 ") but changed the state",
-             {coarsen_cmd(v)});
-        restore();
-      }
-      return;
-    }
-    ++out_->coarsen_edges;
-    child(TraceCommand::Kind::Coarsen, v);
-    RefineResult back;
-    try {
-      back = refine_(g_, v);
-    } catch (const std::exception& e) {
-      fail("refine " + point_text(v) + " right after coarsen " + point_text(v) + " threw: " + e.what(),
-           {coarsen_cmd(v), refine_cmd(v)});
-      return restore();
-    }
-    if (!back.applied()) {
-      fail("coarsen " + point_text(v) + " then refine " + point_text(v) + ": the refine was refused (" +
-               std::string(code(*back.refused)) + ")",
-           {coarsen_cmd(v), refine_cmd(v)});
-      return restore();
-    }
-    encode_into(g_, grid_, scratch_);
-    if (scratch_ != *key_) {
-      fail("coarsen " + point_text(v) + " then refine " + point_text(v) + " does not restore the state",
-           {coarsen_cmd(v), refine_cmd(v)});
-      restore();
-    }
+    if (scratch_ != *key_) return fail_after_diagnosis(pair + " does not restore the state", {cmd, back_cmd});
+    pending_.clear();  // the state was intact before this operation
   }
 
   const LatticeSize& size_;
@@ -409,6 +409,7 @@ class StateProcessor {
   const RefineFn& refine_;
   const CoarsenFn& coarsen_;
   const std::unordered_set<std::string_view>& seen_;
+  std::vector<std::pair<TraceCommand::Kind, Vertex>> pending_;  // refused calls not yet compared
   StateWork* out_ = nullptr;
   std::int64_t i_ = 0;
   const std::string* key_ = nullptr;
