@@ -17,6 +17,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "bccmis/apps.h"
 #include "bccmis/conformance.h"
 #include "explore/explore.h"
 #include "bccmis/format.h"
@@ -308,6 +309,59 @@ int main(int argc, char** argv) {
       "Exit codes: 0 every state valid and every inverse exact, 1 a failure (a reproducing trace is printed), "
       "2 bad input.\nExample:\n  bccmis explore 1 1 2        # 17 states\n  bccmis explore 2 2 2 --json");
 
+  HeightfieldOptions hf;
+  CLI::App* hf_cmd = app.add_subcommand("heightfield", "Tessellate a height-field image adaptively (the paper's §3, Fig. 4-5).");
+  hf_cmd->add_option("input", hf.input, "PGM (P2/P5, 8/16-bit) or PNG image; '-' for stdin")->required();
+  hf_cmd->add_option("-W,--width", hf.width, "Initial lattice width in level-0 cells")->capture_default_str();
+  hf_cmd->add_option("-H,--height", hf.height, "Initial lattice height in level-0 cells")->capture_default_str();
+  hf_cmd->add_option("-L,--max-level", hf.max_level, "Maximum refinement level")->capture_default_str();
+  hf_cmd->add_option("--vertical-scale", hf.vertical_scale, "Height of a full-scale pixel")->capture_default_str();
+  hf_cmd->add_option("-t,--tolerance", hf.tolerance, "Refine cells whose error is above this")->capture_default_str();
+  hf_cmd->add_option("--measure", hf.measure, "Cell error: max (every pixel, exact) or samples (the paper's)")
+      ->check(CLI::IsMember({"max", "samples"}))
+      ->capture_default_str();
+  hf_cmd->add_option("--samples", hf.samples, "Random points per cell for --measure=samples")->capture_default_str();
+  hf_cmd->add_option("--seed", hf.seed, "Seed of --measure=samples")->capture_default_str();
+  hf_cmd->add_option("--balance", hf.balance, "2:1 rule: edge (the core's) or corner")
+      ->check(CLI::IsMember({"edge", "corner"}))
+      ->capture_default_str();
+  hf_cmd->add_option("--sweeps", hf.sweeps, "Number of sweeps; 0 = until nothing changes")->capture_default_str();
+  hf_cmd->add_option("--from", hf.from, "Start from this canonical state (incremental re-tessellation)");
+  hf_cmd->add_option("--obj", hf.obj, "Write a Wavefront OBJ mesh");
+  hf_cmd->add_option("--ply", hf.ply, "Write an ASCII PLY mesh");
+  hf_cmd->add_option("--vtu", hf.vtu, "Write a VTK .vtu (level and error as cell data)");
+  hf_cmd->add_option("--svg", hf.svg, "Write an SVG top view");
+  hf_cmd->add_option("--state", hf.state, "Write the final canonical state");
+  hf_cmd->add_option("--stats", hf.stats, "Where the statistics go ('-' = stdout)")->capture_default_str();
+  hf_cmd->add_flag("--json", hf.json, "Statistics as JSON");
+  hf_cmd->add_flag("--check", hf.check, "Run the invariant checker after every sweep");
+  hf_cmd->add_option("--progress", hf.progress, "Progress lines on stderr: auto, always, never")
+      ->check(CLI::IsMember({"auto", "always", "never"}))
+      ->capture_default_str();
+  hf_cmd->add_flag("-q,--quiet", hf.quiet, "No summary line on stderr");
+  hf_cmd->footer("Example:\n  bccmis heightfield apps/samples/terrain.pgm --tolerance 0.02 --obj terrain.obj --svg terrain.svg");
+
+  AnimateOptions an;
+  CLI::App* an_cmd = app.add_subcommand("animate", "A disk moves along a path; the lattice adapts around it (the paper's Fig. 6).");
+  an_cmd->add_option("-W,--width", an.width, "Lattice width in level-0 cells")->capture_default_str();
+  an_cmd->add_option("-H,--height", an.height, "Lattice height in level-0 cells")->capture_default_str();
+  an_cmd->add_option("-L,--max-level", an.max_level, "Maximum refinement level")->capture_default_str();
+  an_cmd->add_option("--target-level", an.target_level, "Level of the cells the feature meets; -1 = L")->capture_default_str();
+  an_cmd->add_option("--radius", an.radius, "Feature radius in level-0 cell units")->capture_default_str();
+  an_cmd->add_option("--path", an.path, "Path 'x,y;x,y;...' in level-0 cell units")->capture_default_str();
+  an_cmd->add_option("--balance", an.balance, "2:1 rule: edge or corner")
+      ->check(CLI::IsMember({"edge", "corner"}))
+      ->capture_default_str();
+  an_cmd->add_option("--frames", an.frames, "Number of frames")->capture_default_str();
+  an_cmd->add_flag("--lift", an.lift, "One more frame without the feature at the end");
+  an_cmd->add_option("--svg-dir", an.svg_dir, "Write frame_NNNN.svg into this existing directory");
+  an_cmd->add_option("--state", an.state, "Write the final canonical state");
+  an_cmd->add_option("--stats", an.stats, "Where the per-frame statistics go ('-' = stdout)")->capture_default_str();
+  an_cmd->add_flag("--json", an.json, "Statistics as JSON");
+  an_cmd->add_flag("--check", an.check, "Run the invariant checker after every frame");
+  an_cmd->add_flag("-q,--quiet", an.quiet, "No summary line on stderr");
+  an_cmd->footer("Example:\n  mkdir frames && bccmis animate --frames 60 --svg-dir frames --check");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -325,6 +379,8 @@ int main(int argc, char** argv) {
     if (*replay_cmd) return run_replay(ro);
     if (*check_cmd) return run_check(check_path, check_depth, check_quiet);
     if (*diff_cmd) return run_diff(diff_a, diff_b, diff_quiet);
+    if (*hf_cmd) return run_heightfield(hf, std::cout, std::cerr);
+    if (*an_cmd) return run_animate(an, std::cout, std::cerr);
     if (*explore_cmd) {
       try {
         validate_lattice_size(ex_size);

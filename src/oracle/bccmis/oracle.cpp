@@ -213,29 +213,37 @@ std::string render_svg(const Graph& g, const std::string& title) {
       out += buf;
     }
   out += "</g>\n";
-  // Nodes, junctions, centers.
+  // Nodes, junctions, centers; markers shrink with the finest cell on screen.
+  int finest = 0;
+  for (const auto& [c, l] : g.level) finest = std::max(finest, std::clamp(l, 0, g.size.L));
+  const double cell_px = static_cast<double>(cell_side(g.size, finest)) * scale;
+  const double r_node = std::clamp(cell_px / 10, 0.5, 2.5), r_ring = std::clamp(cell_px / 5, 1.0, 5.0);
+  const double center_px = std::clamp(cell_px / 8, 0.8, 4.0);
   out += "<g>\n";
   for (const Point& n : g.N) {
     const bool junction = g.nbr(n).size() == 3;
-    std::snprintf(buf, sizeof buf, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"2.5\" fill=\"#2a7a2a\"/>\n", X(n.x), Y(n.y));
+    std::snprintf(buf, sizeof buf, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\" fill=\"#2a7a2a\"/>\n", X(n.x), Y(n.y), r_node);
     out += buf;
     if (junction) {
       std::snprintf(buf, sizeof buf,
-                    "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"5\" fill=\"none\" stroke=\"#d02020\" stroke-width=\"1.5\"/>\n",
-                    X(n.x), Y(n.y));
+                    "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\" fill=\"none\" stroke=\"#d02020\" stroke-width=\"%.2f\"/>\n",
+                    X(n.x), Y(n.y), r_ring, r_ring / 3);
       out += buf;
     }
   }
   for (const Point& c : g.C) {
-    std::snprintf(buf, sizeof buf, "<rect x=\"%.2f\" y=\"%.2f\" width=\"4\" height=\"4\" fill=\"#c03030\"/>\n", X(c.x) - 2, Y(c.y) - 2);
+    std::snprintf(buf, sizeof buf, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"#c03030\"/>\n",
+                  X(c.x) - center_px / 2, Y(c.y) - center_px / 2, center_px, center_px);
     out += buf;
   }
   out += "</g>\n";
-  std::snprintf(buf, sizeof buf,
-                "<text x=\"%.0f\" y=\"%.0f\" font-family=\"sans-serif\" font-size=\"12\">%s: %zu cells, %zu nodes. "
-                "Solid: stored edges; dashed: hull edges of eq. (1); red rings: junctions.</text>\n",
-                margin, height - 14, xml_escape(title).c_str(), g.C.size(), g.N.size());
-  out += buf;
+  std::snprintf(buf, sizeof buf, "<text x=\"%.0f\" y=\"%.0f\" font-family=\"sans-serif\" font-size=\"12\">", margin,
+                height - 22);
+  out += buf + xml_escape(title) + ": " + std::to_string(g.C.size()) + " cells, " + std::to_string(g.N.size()) +
+         " nodes.</text>\n";
+  std::snprintf(buf, sizeof buf, "<text x=\"%.0f\" y=\"%.0f\" font-family=\"sans-serif\" font-size=\"12\">", margin,
+                height - 6);
+  out += std::string(buf) + "Solid: stored edges; dashed: hull edges of eq. (1); red rings: junctions.</text>\n";
   out += "</svg>\n";
   return out;
 }
