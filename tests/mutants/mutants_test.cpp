@@ -205,6 +205,16 @@ TEST(MutantBaseline, UnbrokenCopyPassesEverything) {
   }
 }
 
+// What a failing property prints, shown on a mutant (disabled: it fails on
+// purpose). Run it with
+//   RC_PARAMS="seed=20090303" tests/mutants_property_test
+//     --gtest_also_run_disabled_tests --gtest_filter='MutantDemo.*'
+// to see the shrunk scenario, the reproducer trace and RapidCheck's
+// `RC_PARAMS="reproduce=..."` line.
+RC_GTEST_PROP(MutantDemo, DISABLED_RefineThenCoarsenOnCoarsenDifferentState, ()) {
+  prop_refine_then_coarsen(mutant_ops(Flaw::CoarsenDifferentState, "CoarsenDifferentState"), *genScenario());
+}
+
 // Each tests/regressions/mutant-<Name>.trace still reproduces its mutant
 // (and, in tests/properties_test.cpp, replays cleanly on the core).
 TEST(MutantRegressions, EachTraceStillCatchesItsMutant) {
