@@ -62,7 +62,7 @@ TEST(FastLattice, InvalidSizesThrowTheReferenceError) {
 }
 
 TEST(FastLattice, LatticesBeyondTheIndexRangeThrowLengthError) {
-  // Valid for the format (W*S <= 2^62) but 2^31 vertices of one kind.
+  // Valid for the format (W*S <= 2^62) but 2^26 or more vertices of one kind.
   EXPECT_THROW(Lattice(LatticeSize{std::int64_t{1} << 20, std::int64_t{1} << 20, 0}), std::length_error);
 }
 

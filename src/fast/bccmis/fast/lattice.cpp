@@ -73,18 +73,56 @@ std::uint64_t mix(const Point& p) {
   return h;
 }
 
-constexpr std::size_t kMaxPool = 0x7FFFFFFFu;  // indices below 2^31 (the node bit)
+constexpr std::size_t kMaxPool = (std::size_t{1} << 26) - 1;  // indices below 2^26 (the position table's reference field)
 
 // The level of the cell centered at p, from p alone (spec/formats.md: a
 // level-l center has both coordinates odd multiples of 2^(L-l)); empty if p
 // is no cell center of the lattice's levels or lies outside the domain.
 std::optional<int> center_level(const LatticeSize& size, const Point& p) {
-  const std::int64_t S = level0_side(size);
+  const std::int64_t S = std::int64_t{1} << (size.L + 1);
   if (p.x <= 0 || p.y <= 0 || p.x >= size.W * S || p.y >= size.H * S) return std::nullopt;
   const int tx = std::countr_zero(static_cast<std::uint64_t>(p.x));
   const int ty = std::countr_zero(static_cast<std::uint64_t>(p.y));
   if (tx != ty || tx > size.L) return std::nullopt;
   return size.L - tx;
+}
+
+// Where a position sits in the lattice (spec/formats.md, "Coordinates"):
+// outside the closed domain; a corner of the level-0 grid (always a node); a
+// position where a level-l cell would have its center (a center, a refined
+// center = node, or nothing); or the midpoint of a side shared by two
+// level-l cells (a node iff one of the two is refined).
+struct Site {
+  enum Kind { Outside, GridNode, CenterLike, SideMidpoint } kind = Outside;
+  int level = 0;
+  Point a, b;  ///< SideMidpoint: the centers of the two cells sharing the side
+};
+
+Site site_of(const LatticeSize& size, const Point& p) {
+  Site site;
+  const std::int64_t S = level0_side(size);
+  if (p.x < 0 || p.y < 0 || p.x > size.W * S || p.y > size.H * S) return site;
+  const int tx = std::countr_zero(static_cast<std::uint64_t>(p.x));  // 64 for 0
+  const int ty = std::countr_zero(static_cast<std::uint64_t>(p.y));
+  if (tx > size.L && ty > size.L) {
+    site.kind = Site::GridNode;
+  } else if (tx == ty) {
+    site.kind = Site::CenterLike;
+    site.level = size.L - tx;
+  } else {
+    site.kind = Site::SideMidpoint;
+    const int t = std::min(tx, ty);
+    site.level = size.L - t;
+    const std::int64_t h = std::int64_t{1} << t;
+    if (tx < ty) {  // on a horizontal side: the cells below and above
+      site.a = {p.x, p.y - h};
+      site.b = {p.x, p.y + h};
+    } else {
+      site.a = {p.x - h, p.y};
+      site.b = {p.x + h, p.y};
+    }
+  }
+  return site;
 }
 
 }  // namespace
@@ -138,84 +176,156 @@ Point Lattice::node_position(Index n) const {
   return {nd.cell[q ^ 1] == x ? p.x : p.x - qx(q) * h, nd.cell[q ^ 2] == x ? p.y : p.y - qy(q) * h};
 }
 
-// ---- Position table -------------------------------------------------------------
+// ---- Position table ----------------------------------------------------------------
+//
+// Robin Hood linear probing on 4-byte slots: bits 0-26 hold the vertex
+// reference (bit 26 = node), bits 27-31 hold 1 + the entry's displacement
+// from its home slot (saturated at 31, then recomputed from the key); 0 is an
+// empty slot. Insertion lets the entry farther from home keep a slot;
+// deletion shifts the following entries back by one. Neither needs a key,
+// and a lookup compares a key only for entries with its own home, so the
+// pools are touched about once per lookup, not once per probe.
+//
+// Only positions where a cell center can be are keys: the cells and the
+// refined centers (nodes). A grid node or a side midpoint is found from the
+// geometry (site_of): a side midpoint is a node iff one of the two cells
+// sharing the side is refined. So refine inserts its four children and
+// coarsen erases them, nothing else. The four children of a cell get homes
+// 4 slots apart in one 16-slot (64-byte) line chosen by their parent, so an
+// operation touches one line of the table for them; the spacing keeps their
+// runs apart (homes in consecutive slots would make long Robin Hood runs).
+// The load factor stays at most 0.6.
 
-std::size_t Lattice::home(const Point& p) const { return static_cast<std::size_t>(mix(p) >> table_shift_); }
+namespace {
+constexpr std::uint32_t kRefMask = (1u << 27) - 1;
+constexpr int kDistShift = 27;
+constexpr std::uint32_t kDistSaturated = 31;
+}  // namespace
+
+std::size_t Lattice::home(const Point& p) const {
+  // p is a cell center position: both coordinates odd multiples of 2^t.
+  const int t = std::countr_zero(static_cast<std::uint64_t>(p.x));
+  if (t >= size_.L) return static_cast<std::size_t>(mix(p) >> table_shift_);  // level 0: no parent
+  const std::int64_t s = std::int64_t{1} << (t + 2);  // the parent's side
+  const Point parent{(p.x & ~(s - 1)) | (s / 2), (p.y & ~(s - 1)) | (s / 2)};
+  const std::size_t q = ((p.x & (s / 2)) ? 1u : 0u) | ((p.y & (s / 2)) ? 2u : 0u);
+  return child_home(static_cast<std::size_t>(mix(parent) >> table_shift_), q);
+}
 
 Point Lattice::key_of(Index ref) const {
   return (ref & kNodeBit) ? node_position(ref & ~kNodeBit) : centers_[ref].position();
 }
 
-std::size_t Lattice::slot_of(Index ref, const Point& p) const {
+std::size_t Lattice::displacement(std::size_t i) const {
+  const std::uint32_t d = table_[i] >> kDistShift;
+  if (d != kDistSaturated) return d - 1u;
+  return (i - home(key_of(table_[i] & kRefMask))) & (table_.size() - 1);
+}
+
+void Lattice::put(std::size_t i, Index ref, std::size_t displacement) {
+  const auto d = static_cast<std::uint32_t>(std::min<std::size_t>(displacement + 1, kDistSaturated));
+  table_[i] = ref | (d << kDistShift);
+}
+
+std::size_t Lattice::slot_of(Index ref, std::size_t at) const {
   const std::size_t mask = table_.size() - 1;
-  std::size_t i = home(p);
-  while (table_[i] != ref) i = (i + 1) & mask;
+  std::size_t i = at;
+  while (table_[i] == 0 || (table_[i] & kRefMask) != ref) i = (i + 1) & mask;
   return i;
 }
 
-Index Lattice::find(const Point& p) const {
+void Lattice::replace_ref(std::size_t slot, Index ref) { table_[slot] = (table_[slot] & ~kRefMask) | ref; }
+
+void Lattice::prefetch(std::size_t at) const { __builtin_prefetch(&table_[at]); }
+
+template <class Match>
+Index Lattice::probe(const Point& p, Match match) const {
   const std::size_t mask = table_.size() - 1;
-  for (std::size_t i = home(p);; i = (i + 1) & mask) {
-    const Index r = table_[i];
-    if (r == kNone) return kNone;
-    if (key_of(r) == p) return r;
+  std::size_t i = home(p);
+  for (std::size_t d = 0;; ++d, i = (i + 1) & mask) {
+    const std::uint32_t s = table_[i];
+    if (s == 0) return kNone;
+    const std::uint32_t f = s >> kDistShift;
+    const std::size_t e = f == kDistSaturated ? displacement(i) : f - 1u;
+    if (e < d) return kNone;  // p would have displaced this entry: p is absent
+    if (e == d && match(s & kRefMask)) return s & kRefMask;
   }
 }
 
 Index Lattice::find_center(const Point& p) const {
-  const std::size_t mask = table_.size() - 1;
-  for (std::size_t i = home(p);; i = (i + 1) & mask) {
-    const Index r = table_[i];
-    if (r == kNone) return kNone;
-    if (!(r & kNodeBit) && centers_[r].position() == p) return r;
-  }
+  if (!center_level(size_, p)) return kNone;
+  return probe(p, [&](Index r) { return !(r & kNodeBit) && centers_[r].position() == p; });
 }
 
 Index Lattice::find_node(const Point& p) const {
+  if (!center_level(size_, p)) return kNone;
+  const Index r = probe(p, [&](Index q) { return (q & kNodeBit) && node_position(q & ~kNodeBit) == p; });
+  return r == kNone ? kNone : r & ~kNodeBit;
+}
+
+bool Lattice::node_exists(const Point& p) const {
+  const Site site = site_of(size_, p);
+  switch (site.kind) {
+    case Site::Outside: return false;
+    case Site::GridNode: return true;
+    case Site::CenterLike: return find_node(p) != kNone;
+    case Site::SideMidpoint: return find_node(site.a) != kNone || find_node(site.b) != kNone;
+  }
+  return false;
+}
+
+Index Lattice::locate(const Point& z) const {
+  const std::int64_t S = level0_side(size_);
+  if (z.x <= 0 || z.y <= 0 || z.x >= size_.W * S || z.y >= size_.H * S) return kNone;
+  for (int l = 0; l <= size_.L; ++l) {
+    const std::int64_t s = cell_side(size_, l);
+    const Index c = find_center({(z.x / s) * s + s / 2, (z.y / s) * s + s / 2});
+    if (c != kNone) return c;
+  }
+  return kNone;
+}
+
+void Lattice::table_insert(Index ref, std::size_t at) {
   const std::size_t mask = table_.size() - 1;
-  for (std::size_t i = home(p);; i = (i + 1) & mask) {
-    const Index r = table_[i];
-    if (r == kNone) return kNone;
-    if ((r & kNodeBit) && node_position(r & ~kNodeBit) == p) return r & ~kNodeBit;
+  std::size_t i = at;
+  for (std::size_t d = 0;; ++d, i = (i + 1) & mask) {
+    if (table_[i] == 0) {
+      put(i, ref, d);
+      ++table_used_;
+      return;
+    }
+    const std::size_t e = displacement(i);
+    if (e < d) {  // the resident is closer to home: it moves on instead
+      const Index evicted = table_[i] & kRefMask;
+      put(i, ref, d);
+      ref = evicted;
+      d = e;
+    }
   }
 }
 
-void Lattice::table_insert(Index ref, const Point& p) {
+void Lattice::table_erase(Index ref, std::size_t at) {
   const std::size_t mask = table_.size() - 1;
-  std::size_t i = home(p);
-  while (table_[i] != kNone) i = (i + 1) & mask;
-  table_[i] = ref;
-  ++table_used_;
-}
-
-void Lattice::table_erase(Index ref, const Point& p) {
-  // Backward-shift deletion (Knuth 6.4, Algorithm R): later entries of the
-  // cluster whose home is not cyclically in (hole, j] move into the hole.
-  const std::size_t mask = table_.size() - 1;
-  std::size_t hole = slot_of(ref, p);
-  for (std::size_t j = (hole + 1) & mask; table_[j] != kNone; j = (j + 1) & mask) {
-    const std::size_t k = home(key_of(table_[j]));
-    const bool stays = hole <= j ? (hole < k && k <= j) : (hole < k || k <= j);
-    if (stays) continue;
-    table_[hole] = table_[j];
-    hole = j;
-  }
-  table_[hole] = kNone;
+  std::size_t i = slot_of(ref, at);
+  for (std::size_t j = (i + 1) & mask; (table_[j] >> kDistShift) > 1; i = j, j = (j + 1) & mask)
+    put(i, table_[j] & kRefMask, displacement(j) - 1);
+  table_[i] = 0;
   --table_used_;
 }
 
 void Lattice::rehash(std::size_t slots) {
   std::size_t bits = 4;
   while ((std::size_t{1} << bits) < slots) ++bits;
-  std::vector<Index> fresh(std::size_t{1} << bits, kNone);  // may throw: nothing changed yet
+  std::vector<std::uint32_t> fresh(std::size_t{1} << bits, 0);  // may throw: nothing changed yet
   table_.swap(fresh);
   table_shift_ = 64 - bits;
   table_used_ = 0;
   for (std::size_t c = 0; c < centers_.size(); ++c)
-    if (centers_[c].live()) table_insert(static_cast<Index>(c), centers_[c].position());
+    if (centers_[c].live()) table_insert(static_cast<Index>(c), home(centers_[c].position()));
   for (std::size_t n = 0; n < nodes_.size(); ++n)
     if (nodes_[n].live())
-      table_insert(static_cast<Index>(n) | kNodeBit, node_position(static_cast<Index>(n)));
+      if (const Point p = node_position(static_cast<Index>(n)); center_level(size_, p))
+        table_insert(static_cast<Index>(n) | kNodeBit, home(p));
 }
 
 // ---- Pools ------------------------------------------------------------------------
@@ -224,14 +334,14 @@ void Lattice::ensure_room(std::size_t new_centers, std::size_t new_nodes, std::s
   auto grow = [](auto& pool, std::size_t free_count, std::size_t wanted) {
     if (free_count >= wanted) return;
     const std::size_t need = pool.size() + (wanted - free_count);
-    if (need > kMaxPool) throw std::length_error("bccmis::fast::Lattice: more than 2^31 - 1 vertices of one kind");
+    if (need > kMaxPool) throw std::length_error("bccmis::fast::Lattice: more than 2^26 - 1 vertices of one kind");
     if (need > pool.capacity()) pool.reserve(std::min(kMaxPool, std::max(need, pool.capacity() * 2)));
   };
   grow(centers_, free_center_count_, new_centers);
   grow(nodes_, free_node_count_, new_nodes);
-  // Load factor at most 0.7.
+  // Load factor at most 0.6.
   std::size_t slots = table_.size();
-  while ((table_used_ + new_keys) * 10 > slots * 7) slots *= 2;
+  while ((table_used_ + new_keys) * 5 > slots * 3) slots *= 2;
   if (slots != table_.size()) rehash(slots);
 }
 
@@ -281,7 +391,7 @@ Lattice::Lattice(const LatticeSize& size) : size_(size) {
   const std::int64_t W = size.W, H = size.H;
   if (W > static_cast<std::int64_t>(kMaxPool) / H || (W + 1) > static_cast<std::int64_t>(kMaxPool) / (H + 1))
     throw std::length_error("bccmis::fast::Lattice: lattice " + std::to_string(W) + " x " + std::to_string(H) +
-                            " needs 2^31 or more vertices of one kind");
+                            " needs 2^26 or more vertices of one kind");
   const std::int64_t S = level0_side(size);
   const auto node_at = [&](std::int64_t i, std::int64_t j) { return static_cast<Index>(j * (W + 1) + i); };
   const auto cell_at = [&](std::int64_t i, std::int64_t j) -> Index {
@@ -304,7 +414,7 @@ Lattice::Lattice(const LatticeSize& size) : size_(size) {
       for (int q = 0; q < 4; ++q) nodes_[node_at(i, j)].cell[q] = cell_at(i - 1 + (q & 1), j - 1 + (q >> 1));
   cell_count_ = centers_.size();
   node_count_ = nodes_.size();
-  rehash((cell_count_ + node_count_) * 10 / 7 + 1);
+  rehash(cell_count_ * 5 / 3 + 1);  // the keys: the cells (grid nodes are found from the geometry)
 }
 
 Lattice Lattice::from_graph(const Graph& g) {
@@ -312,7 +422,7 @@ Lattice Lattice::from_graph(const Graph& g) {
   Lattice lat;
   lat.size_ = g.size;
   if (g.C.size() > kMaxPool || g.N.size() > kMaxPool)
-    throw std::length_error("bccmis::fast::Lattice::from_graph: more than 2^31 - 1 vertices of one kind");
+    throw std::length_error("bccmis::fast::Lattice::from_graph: more than 2^26 - 1 vertices of one kind");
   std::vector<Point> node_points(g.N.begin(), g.N.end());  // sorted
   auto node_index = [&](const Point& p) -> Index {
     const auto it = std::lower_bound(node_points.begin(), node_points.end(), p);
@@ -364,7 +474,7 @@ Lattice Lattice::from_graph(const Graph& g) {
   }
   lat.cell_count_ = lat.centers_.size();
   lat.node_count_ = lat.nodes_.size();
-  lat.rehash((lat.cell_count_ + lat.node_count_) * 10 / 7 + 1);
+  lat.rehash((lat.cell_count_ + lat.cell_count_ / 3) * 5 / 3 + 1);  // cells and refined centers
   if (const auto problem = lat.audit()) throw std::invalid_argument("from_graph: " + *problem);
   return lat;
 }
@@ -386,11 +496,17 @@ std::optional<RefineRefusal> Lattice::refine_refusal(const Point& c, Index& ci) 
   if (l >= size_.L) return RefineRefusal::MaxLevel;
   // pre-refine-level with X of eq. (3) (E4): the cells across the sides of c.
   // A side with a junction has two cells of level l+1 across it; a side
-  // without one has one cell of level l or l-1 (or the domain boundary).
+  // without one has one cell of level l or l-1 (or the domain boundary). The
+  // cell across is coarser iff one of c's two corners on that side is its
+  // side midpoint, i.e. the cell fills both of that corner's outer quadrants:
+  // decided from c's corner nodes, without loading the cell across.
   for (int s = 0; s < 4; ++s) {
     if (cc.mid[s] != kNone) continue;
-    const Index x = nodes_[cc.corner[kSideCorner[s]]].cell[kSideQuad[s]];
-    if (x != kNone && level(x) < l) return RefineRefusal::CoarserNeighbor;
+    const int o0 = kOutwardQuad[s][0], o1 = kOutwardQuad[s][1];  // also the corners of c on side s
+    const Node& a = nodes_[cc.corner[o0]];
+    const Node& b = nodes_[cc.corner[o1]];
+    if ((a.cell[o0] == a.cell[o1] && a.cell[o0] != kNone) || (b.cell[o0] == b.cell[o1] && b.cell[o0] != kNone))
+      return RefineRefusal::CoarserNeighbor;
   }
   return std::nullopt;
 }
@@ -403,12 +519,17 @@ RefineOutcome Lattice::refine(const Point& c) {
 
   // Everything that can allocate happens here; the update below cannot throw.
   // 3 centers (c's slot is reused by child 0), c as a node and up to 4 new
-  // junctions, 4 children and up to 4 junctions in the table.
-  ensure_room(3, 5, 8);  // keeps indices; may move the table slots
+  // junctions; the 4 children in the table.
+  ensure_room(3, 5, 4);  // keeps indices; may move the table slots
   const Center old = centers_[ci];
   const int l = old.level(size_.L);
   const std::int64_t h = half_side(l);
   const std::int64_t h2 = h / 2;
+
+  // The table line of the children, fetched now so that the miss overlaps
+  // with the updates below.
+  const std::size_t y_base = static_cast<std::size_t>(mix(c) >> table_shift_);
+  prefetch(child_home(y_base, 0));
 
   // 1. The neighbourhood (eq. 2a-3): K = P, old.mid = J, across = X.
   Index across[4];
@@ -454,10 +575,8 @@ RefineOutcome Lattice::refine(const Point& c) {
   }
 
   // Position table: c is now a node; the children and new junctions are added.
-  table_[slot_of(ci, c)] = nc | kNodeBit;
-  for (int q = 0; q < 4; ++q) table_insert(y[q], offset(c, qx(q) * h2, qy(q) * h2));
-  for (int s = 0; s < 4; ++s)
-    if (fresh[s]) table_insert(m[s] | kNodeBit, offset(c, kSideDx[s] * h, kSideDy[s] * h));
+  replace_ref(slot_of(ci, home(c)), nc | kNodeBit);
+  for (int q = 0; q < 4; ++q) table_insert(y[q], child_home(y_base, static_cast<std::size_t>(q)));
 
   cell_count_ += 3;
   node_count_ += 1;
@@ -480,8 +599,8 @@ std::optional<CoarsenRefusal> Lattice::can_coarsen(const Point& n) const {
 
 std::optional<CoarsenRefusal> Lattice::coarsen_refusal(const Point& n, Index& ni, int& coarse_level) const {
   // pre-coarsen-node: n in N
-  ni = find_node(n);
-  if (ni == kNone) return CoarsenRefusal::NoSuchNode;
+  ni = find_node(n);  // only refined centers are in the position table
+  if (ni == kNone) return node_exists(n) ? CoarsenRefusal::NotARefinedCenter : CoarsenRefusal::NoSuchNode;
   // pre-coarsen-refined-center (E3, E5): the level from n's position.
   const std::optional<int> l = refined_center_level(size_, n);
   if (!l) return CoarsenRefusal::NotARefinedCenter;
@@ -515,6 +634,8 @@ CoarsenOutcome Lattice::coarsen(const Point& n) {
   // Coarsening frees slots and table entries and never allocates.
   const std::int64_t h = half_side(l);
   const std::int64_t h2 = h / 2;
+  const std::size_t y_base = static_cast<std::size_t>(mix(n) >> table_shift_);
+  prefetch(child_home(y_base, 0));
 
   // 1. Y = N(n) (8a); B = the corners K and side midpoints m of the children (8b).
   Index y[4], K[4], m[4], outside[4];
@@ -532,11 +653,9 @@ CoarsenOutcome Lattice::coarsen(const Point& n) {
 
   // Position table first, while every key can still be computed: the children
   // and J- leave; n becomes the center that reuses child 0's slot.
-  for (int q = 0; q < 4; ++q) table_erase(y[q], offset(n, qx(q) * h2, qy(q) * h2));
-  for (int s = 0; s < 4; ++s)
-    if (drop[s]) table_erase(m[s] | kNodeBit, offset(n, kSideDx[s] * h, kSideDy[s] * h));
+  for (int q = 0; q < 4; ++q) table_erase(y[q], child_home(y_base, static_cast<std::size_t>(q)));
   const Index nc = y[0];
-  table_[slot_of(ni | kNodeBit, n)] = nc;
+  replace_ref(slot_of(ni | kNodeBit, home(n)), nc);
 
   // 2. The children go (9a-9f) and n becomes a center of level l (9d, 9e, E5).
   Center& cc = centers_[nc];
@@ -574,19 +693,13 @@ CoarsenOutcome Lattice::coarsen(const Point& n) {
 
 // ---- Queries -------------------------------------------------------------------------
 
-bool Lattice::is_center(const Point& v) const {
-  const Index r = find(v);
-  return r != kNone && !(r & kNodeBit);
-}
+bool Lattice::is_center(const Point& v) const { return find_center(v) != kNone; }
 
-bool Lattice::is_node(const Point& v) const {
-  const Index r = find(v);
-  return r != kNone && (r & kNodeBit);
-}
+bool Lattice::is_node(const Point& v) const { return node_exists(v); }
 
 int Lattice::level_of(const Point& c) const {
-  const Index r = find(c);
-  if (r == kNone || (r & kNodeBit)) throw std::out_of_range("bccmis::fast::Lattice::level_of: not a center");
+  const Index r = find_center(c);
+  if (r == kNone) throw std::out_of_range("bccmis::fast::Lattice::level_of: not a center");
   return level(r);
 }
 
@@ -625,13 +738,26 @@ SmallPoints<4> node_neighbours(const Lattice& g, Index n) {
 
 SmallPoints<8> Lattice::nbr(const Point& v) const {
   SmallPoints<8> out;
-  const Index r = find(v);
-  if (r == kNone) return out;
-  if (r & kNodeBit) {
-    for (const Point& p : node_neighbours(*this, r & ~kNodeBit)) out.push_back(p);
+  if (const Index c = find_center(v); c != kNone) {
+    center_neighbours(centers_[c], half_side(level(c)), out);
     return out;
   }
-  center_neighbours(centers_[r], half_side(level(r)), out);
+  if (const Index n = find_node(v); n != kNone) {
+    for (const Point& p : node_neighbours(*this, n)) out.push_back(p);
+    return out;
+  }
+  if (!node_exists(v)) return out;
+  // A grid node or a junction is not in the position table: its neighbours
+  // are the distinct leaves in the four quadrants around it.
+  Index seen[4];
+  std::size_t k = 0;
+  for (int q = 0; q < 4; ++q) {
+    const Index c = locate(offset(v, qx(q), qy(q)));
+    if (c == kNone || std::find(seen, seen + k, c) != seen + k) continue;
+    seen[k++] = c;
+    out.push_back(centers_[c].position());
+  }
+  out.sort();
   return out;
 }
 
@@ -771,7 +897,7 @@ void Lattice::reserve(std::size_t cells) {
   centers_.reserve(std::min(kMaxPool, cells));
   nodes_.reserve(std::min(kMaxPool, nodes));
   std::size_t slots = table_.size();
-  while ((cells + nodes) * 10 > slots * 7) slots *= 2;
+  while ((cells + cells / 3) * 5 > slots * 3) slots *= 2;  // keys: cells and refined centers
   if (slots != table_.size()) rehash(slots);
 }
 
@@ -781,14 +907,22 @@ void Lattice::shrink_to_fit() {
 }
 
 std::size_t Lattice::memory_bytes() const {
-  return centers_.capacity() * sizeof(Center) + nodes_.capacity() * sizeof(Node) + table_.capacity() * sizeof(Index);
+  return centers_.capacity() * sizeof(Center) + nodes_.capacity() * sizeof(Node) +
+         table_.capacity() * sizeof(std::uint32_t);
 }
 
 std::optional<std::string> Lattice::audit() const {
-  auto at = [](const Point& p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; };
+  auto at = [](const Point& p) {
+    std::string out = "(";  // appended, not `"(" + ...`: GCC 12 -O3 warns falsely (-Wrestrict, PR 105329)
+    out += std::to_string(p.x);
+    out += ", ";
+    out += std::to_string(p.y);
+    out += ")";
+    return out;
+  };
   auto live_node = [&](Index n) { return n < nodes_.size() && nodes_[n].live(); };
   auto live_center = [&](Index c) { return c < centers_.size() && centers_[c].live(); };
-  std::size_t cells = 0, nodes = 0;
+  std::size_t cells = 0, nodes = 0, keyed_nodes = 0;
   for (std::size_t ci = 0; ci < centers_.size(); ++ci) {
     const Center& c = centers_[ci];
     if (!c.live()) continue;
@@ -804,7 +938,7 @@ std::optional<std::string> Lattice::audit() const {
           if (!live_node(c.mid[q]) || nodes_[c.mid[q]].cell[kInwardQuad[q][k]] != ci)
             return "cell " + at(p) + ": junction on side " + std::to_string(q) + " does not list the cell back";
     }
-    if (find(p) != ci) return "cell " + at(p) + " is not in the position table";
+    if (find_center(p) != ci) return "cell " + at(p) + " is not in the position table";
   }
   for (std::size_t ni = 0; ni < nodes_.size(); ++ni) {
     const Node& n = nodes_[ni];
@@ -823,10 +957,15 @@ std::optional<std::string> Lattice::audit() const {
     }
     if (!any) return "node " + std::to_string(ni) + " touches no cell";
     const Point p = node_position(static_cast<Index>(ni));
-    if (find(p) != (static_cast<Index>(ni) | kNodeBit)) return "node " + at(p) + " is not in the position table";
+    if (center_level(size_, p)) {
+      ++keyed_nodes;
+      if (find_node(p) != ni) return "refined center " + at(p) + " is not in the position table";
+    } else if (!node_exists(p)) {
+      return "node " + at(p) + " is not found from its position";
+    }
   }
   if (cells != cell_count_ || nodes != node_count_) return std::string("vertex counts are off");
-  if (table_used_ != cells + nodes) return std::string("the position table holds stale entries");
+  if (table_used_ != cells + keyed_nodes) return std::string("the position table holds stale entries");
   if (free_center_count_ + cells != centers_.size() || free_node_count_ + nodes != nodes_.size())
     return std::string("free-list counts are off");
   return std::nullopt;

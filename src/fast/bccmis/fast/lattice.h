@@ -13,8 +13,11 @@
 //   - centers and nodes live in two flat pools with free lists; only centers
 //     store a position (integer, as in spec/formats.md) and a level. A node's
 //     position follows from any cell around it and that cell's level.
-//   - a position -> vertex table (open addressing, 4 bytes a slot) serves the
-//     trace interface: refine(Point) and coarsen(Point).
+//   - a position -> vertex table (Robin Hood open addressing, 4 bytes a
+//     slot) over the cells and refined centers serves the trace interface:
+//     refine(Point) and coarsen(Point). Grid nodes and side midpoints are
+//     found from the geometry, so refine and coarsen only add or remove the
+//     four children, which share one 64-byte line of the table.
 //   - in steady state (a free slot for every vertex an operation creates)
 //     refine and coarsen allocate nothing; they reserve first and then only
 //     write, so a throwing allocation leaves the lattice unchanged (strong
@@ -97,7 +100,7 @@ class Lattice {
  public:
   /// The initial lattice of make_lattice(size): W x H level-0 cells. Throws
   /// LatticeError on an invalid size, std::length_error when the lattice
-  /// would need 2^31 or more vertices of one kind.
+  /// would need 2^26 or more vertices of one kind (about 6.7e7 cells).
   explicit Lattice(const LatticeSize& size);
 
   const LatticeSize& size() const { return size_; }
@@ -199,26 +202,43 @@ class Lattice {
  private:
   Lattice() = default;
 
-  // Position table: open addressing with linear probing; a slot holds a
-  // vertex reference (kNodeBit | index for nodes, index for centers) or
-  // kNone. Deletion shifts back (no tombstones); keys are recomputed from
-  // the pools, so every vertex in the table must be live and consistent.
-  static constexpr Index kNodeBit = 0x80000000u;
+  // Position table: Robin Hood open addressing over the cells and refined
+  // centers; a slot holds a vertex reference (kNodeBit | index for nodes,
+  // index for centers) and its displacement from home (see lattice.cpp).
+  // Keys are recomputed from the pools, so every vertex in the table must be
+  // live and consistent.
+  static constexpr Index kNodeBit = 1u << 26;
   std::size_t home(const Point& p) const;
+  /// Home of child q of the cell whose hash base is `base`: one 16-slot line.
+  std::size_t child_home(std::size_t base, std::size_t q) const {
+    return ((base & ~std::size_t{15}) + 4 * q + (base & 3)) & (table_.size() - 1);
+  }
   Point key_of(Index ref) const;
-  /// The slot holding `ref`, which is stored under position p.
-  std::size_t slot_of(Index ref, const Point& p) const;
-  /// The reference stored under p, or kNone.
-  Index find(const Point& p) const;
-  /// The center (node) index stored under p, or kNone; skips entries of the
-  /// other kind without computing their keys.
+  std::size_t displacement(std::size_t slot) const;
+  void put(std::size_t slot, Index ref, std::size_t displacement);
+  template <class Match>
+  Index probe(const Point& p, Match match) const;
+  /// The slot holding `ref`, whose key has home slot `at`.
+  std::size_t slot_of(Index ref, std::size_t at) const;
+  /// Stores another reference in a slot, keeping its displacement.
+  void replace_ref(std::size_t slot, Index ref);
+  void prefetch(std::size_t at) const;
+  /// The center at p, or kNone.
   Index find_center(const Point& p) const;
+  /// The refined center (a node) at p, or kNone. Other nodes (grid nodes,
+  /// side midpoints) are not in the table: see node_exists.
   Index find_node(const Point& p) const;
+  /// Whether p is a node (any kind), from the table and the geometry.
+  bool node_exists(const Point& p) const;
+  /// The leaf cell strictly containing point z, or kNone outside the domain.
+  Index locate(const Point& z) const;
   /// can_refine / can_coarsen that also return the index they found.
   std::optional<RefineRefusal> refine_refusal(const Point& c, Index& ci) const;
   std::optional<CoarsenRefusal> coarsen_refusal(const Point& n, Index& ni, int& coarse_level) const;
-  void table_insert(Index ref, const Point& p);  ///< p must be absent; room must exist
-  void table_erase(Index ref, const Point& p);
+  /// Inserts ref whose key has home slot `at` (the key must be absent and
+  /// there must be room); erases ref whose key has home slot `at`.
+  void table_insert(Index ref, std::size_t at);
+  void table_erase(Index ref, std::size_t at);
   void rehash(std::size_t slots);
 
   /// Makes room for `new_centers` more centers, `new_nodes` more nodes and
@@ -239,7 +259,7 @@ class Lattice {
   std::size_t free_node_count_ = 0;
   std::size_t cell_count_ = 0;
   std::size_t node_count_ = 0;
-  std::vector<Index> table_;
+  std::vector<std::uint32_t> table_;
   std::size_t table_shift_ = 64;  ///< home = hash >> table_shift_
   std::size_t table_used_ = 0;
 };
