@@ -10,12 +10,18 @@ add_executable(apps_tests
 target_link_libraries(apps_tests PRIVATE bccmis::apps bccmis::core bccmis::invariants bccmis::oracle
                       GTest::gtest_main bccmis::warnings)
 target_compile_definitions(apps_tests PRIVATE BCCMIS_APPS_SAMPLES="${PROJECT_SOURCE_DIR}/apps/samples")
-gtest_discover_tests(apps_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
+# The 66k-state corner-balance counts run under `exhaustive` (release build,
+# excluded from the default test presets), like tests/exhaustive_test.cpp.
+gtest_discover_tests(apps_tests DISCOVERY_MODE PRE_TEST TEST_FILTER "-*Exhaustive.*"
+  TEST_LIST apps_tests_UNIT PROPERTIES LABELS unit)
+gtest_discover_tests(apps_tests DISCOVERY_MODE PRE_TEST TEST_FILTER "*Exhaustive.*"
+  TEST_LIST apps_tests_EXHAUSTIVE PROPERTIES LABELS exhaustive TIMEOUT 1800)
 # gtest_discover_tests flattens a list-valued LABELS ("unit;apps" becomes the
-# label "unit" and a stray property "apps"), so the second label is added by a
+# label "unit" and a stray property "apps"), so the `apps` label is added by a
 # test include file that runs after the discovered tests are defined.
 file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/apps_tests_labels.cmake
-     "if(apps_tests_TESTS)\n  set_tests_properties(\${apps_tests_TESTS} PROPERTIES LABELS \"unit;apps\")\nendif()\n")
+     "if(apps_tests_UNIT)\n  set_tests_properties(\${apps_tests_UNIT} PROPERTIES LABELS \"unit;apps\")\nendif()\n"
+     "if(apps_tests_EXHAUSTIVE)\n  set_tests_properties(\${apps_tests_EXHAUSTIVE} PROPERTIES LABELS \"exhaustive;apps\")\nendif()\n")
 set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${CMAKE_CURRENT_BINARY_DIR}/apps_tests_labels.cmake)
 
 # The committed sample is what its generator script writes.

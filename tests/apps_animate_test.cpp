@@ -25,8 +25,9 @@ double distance_to_cell(const Graph& g, const Point& c, double x, double y) {
   return std::hypot(std::max(std::abs(x - cx) - h, 0.0), std::max(std::abs(y - cy) - h, 0.0));
 }
 
-TEST(Animate, ManyFramesStayValidAndDependOnlyOnTheFeature) {
+void many_frames(Balance mode) {
   AnimateOptions o;
+  o.balance = std::string(name(mode));
   o.width = 6;
   o.height = 5;
   o.max_level = 4;
@@ -40,6 +41,9 @@ TEST(Animate, ManyFramesStayValidAndDependOnlyOnTheFeature) {
     ++frames;
     operations += fr.refinements + fr.coarsenings;
     ASSERT_TRUE(is_valid(g)) << "frame " << fr.frame << ": " << to_string(*find_violation(g));
+    if (mode == Balance::Corner) {
+      ASSERT_FALSE(find_corner_imbalance(g)) << "frame " << fr.frame;
+    }
     EXPECT_EQ(fr.cells, g.C.size());
     // Refined to the target where the disk is ...
     for (const Point& c : g.C) {
@@ -56,13 +60,17 @@ TEST(Animate, ManyFramesStayValidAndDependOnlyOnTheFeature) {
     // History independence: a fresh lattice adapted to this disk alone.
     Graph fresh = make_lattice(g.size);
     const Disk d{fr.x * S, fr.y * S, o.radius * S};
-    adapt_to_disks(fresh, std::span<const Disk>(&d, 1), 4);
+    adapt_to_disks(fresh, std::span<const Disk>(&d, 1), 4, mode);
     EXPECT_EQ(canonical_state(fresh), canonical_state(g)) << "frame " << fr.frame;
   });
   EXPECT_EQ(frames, 60);
   EXPECT_GT(operations, 500u);
   EXPECT_GT(last.C.size(), 30u);
 }
+
+TEST(Animate, ManyFramesStayValidAndDependOnlyOnTheFeature) { many_frames(Balance::Edge); }
+
+TEST(Animate, CornerBalanceManyFramesStayValidAndDependOnlyOnTheFeature) { many_frames(Balance::Corner); }
 
 TEST(Animate, LiftReturnsToTheInitialLattice) {
   AnimateOptions o;

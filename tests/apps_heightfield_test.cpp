@@ -366,6 +366,35 @@ TEST(Heightfield, RandomSampleMeasureIsDeterministicAndOrderFree) {
   EXPECT_GT(exact.max_abs, 0.0);
 }
 
+TEST(Heightfield, CornerBalanceKeepsItsRuleAndTheTolerance) {
+  const HeightField terrain = read_height_field(BCCMIS_APPS_SAMPLES "/terrain128.pgm");
+  const LatticeSize size{6, 6, 5};
+  const HeightSampler s(terrain, size, 1.0);
+  TessellateSettings t;
+  t.tolerance = 0.03;
+  Graph edge = make_lattice(size);
+  tessellate(edge, s, t);
+  t.balance = Balance::Corner;
+  Graph corner = make_lattice(size);
+  tessellate(corner, s, t, [](int, const Graph& g, std::size_t) {
+    ASSERT_TRUE(is_valid(g));
+    ASSERT_FALSE(find_corner_imbalance(g));
+  });
+  EXPECT_TRUE(find_corner_imbalance(edge).has_value()) << "this field needs the corner rule somewhere";
+  EXPECT_GT(corner.C.size(), edge.C.size());
+  for (const Point& c : corner.C)
+    if (corner.level_of(c) < size.L) {
+      EXPECT_LE(cell_error(corner, c, s, {}), 0.03 + 1e-12);
+    }
+  // Coarsening from it keeps the corner rule too.
+  t.tolerance = 0.1;
+  t.coarsen = true;
+  const TessellateReport r = tessellate(corner, s, t);
+  EXPECT_GT(r.coarsenings, 0u);
+  EXPECT_TRUE(is_valid(corner));
+  EXPECT_FALSE(find_corner_imbalance(corner));
+}
+
 TEST(Heightfield, MaxSweepsStopsEarly) {
   const HeightField terrain = read_height_field(BCCMIS_APPS_SAMPLES "/terrain128.pgm");
   const LatticeSize size{6, 6, 5};
@@ -510,6 +539,23 @@ TEST_F(RunHeightfield, BadInputExitsTwoWithAMessage) {
   o.from = path("bad.state");
   EXPECT_EQ(run(o), 2);
   EXPECT_NE(err_.str().find("bad.state: not a valid lattice state: "), std::string::npos) << err_.str();
+
+  // --balance corner needs a corner-balanced state.
+  HeightfieldOptions edge;
+  edge.input = BCCMIS_APPS_SAMPLES "/terrain128.pgm";
+  edge.state = path("edge.state");
+  edge.stats = path("edge.stats");
+  ASSERT_EQ(run(edge), 0) << err_.str();
+  o.from = edge.state;
+  o.balance = "corner";
+  EXPECT_EQ(run(o), 2);
+  EXPECT_NE(err_.str().find("edge.state: not corner-balanced (--balance corner): corner balance: cell ("),
+            std::string::npos)
+      << err_.str();
+  o.balance = "diagonal";
+  EXPECT_EQ(run(o), 2);
+  EXPECT_EQ(err_.str(), "bccmis heightfield: balance 'diagonal' is unknown: use edge or corner\n");
+  o.balance = "edge";
 
   o.from.clear();
   o.state = path("no/such/dir/x.state");

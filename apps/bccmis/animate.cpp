@@ -17,7 +17,7 @@ bool cell_meets_disk(const LatticeSize& size, const Point& center, int level, co
   return dx * dx + dy * dy <= d.radius * d.radius;
 }
 
-AdaptReport adapt_to_disks(Graph& g, std::span<const Disk> disks, int target_level) {
+AdaptReport adapt_to_disks(Graph& g, std::span<const Disk> disks, int target_level, Balance balance) {
   const int target = std::clamp(target_level, 0, g.size.L);
   auto needs_refinement = [&](const Point& c, int level) {
     if (level >= target) return false;
@@ -32,12 +32,12 @@ AdaptReport adapt_to_disks(Graph& g, std::span<const Disk> disks, int target_lev
       if (needs_refinement(c, g.level_of(c))) marked.push_back(c);
     if (marked.empty()) break;
     for (const Point& c : marked)
-      if (g.is_center(c)) report.refinements += refine_balanced(g, c).refined.size();
+      if (g.is_center(c)) report.refinements += refine_balanced(g, c, balance).refined.size();
   }
   report.coarsenings = coarsen_where(g, [&](const Graph& now, const Point& n) {
     const int merged_level = now.level_of(*now.nbr(n).begin()) - 1;
     return !needs_refinement(n, merged_level);
-  });
+  }, balance);
   return report;
 }
 

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "bccmis/balance.h"
 #include "bccmis/graph.h"
 
 namespace bccmis {
@@ -39,7 +40,8 @@ struct AdaptReport {
 /// every cell meeting a disk has at least the target level, whatever the
 /// lattice was before (so it depends only on the disks). With no disks the
 /// lattice returns to the initial one. target_level is clamped to [0, L].
-AdaptReport adapt_to_disks(Graph& g, std::span<const Disk> disks, int target_level);
+/// `balance` is the 2:1 rule kept (corner mode needs a corner-balanced g).
+AdaptReport adapt_to_disks(Graph& g, std::span<const Disk> disks, int target_level, Balance balance = Balance::Edge);
 
 /// A polyline in level-0 cell units: `x,y;x,y;...` (at least one point;
 /// spaces allowed around numbers). Throws std::invalid_argument naming the

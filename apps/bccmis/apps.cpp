@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "bccmis/animate.h"
+#include "bccmis/balance.h"
 #include "bccmis/format.h"
 #include "bccmis/heightfield.h"
 #include "bccmis/image.h"
@@ -148,9 +149,27 @@ void check_outputs(const std::vector<const std::string*>& paths) {
                        "give them a file with --stats FILE");
 }
 
-void run_check(const Graph& g, const std::string& when) {
+std::string pos(const Point& p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; }
+
+// The corner rule's violation as one line, or empty.
+std::optional<std::string> corner_violation(const Graph& g) {
+  const auto bad = find_corner_imbalance(g);
+  if (!bad) return std::nullopt;
+  return "corner balance: cell " + pos(bad->first) + " (level " + std::to_string(g.level_of(bad->first)) +
+         ") touches cell " + pos(bad->second) + " (level " + std::to_string(g.level_of(bad->second)) + ")";
+}
+
+void run_check(const Graph& g, Balance balance, const std::string& when) {
   if (const std::optional<Violation> v = find_violation(g))
     throw CheckFailure("invariant violated " + when + ": " + to_string(*v));
+  if (balance == Balance::Corner)
+    if (const auto why = corner_violation(g)) throw CheckFailure("invariant violated " + when + ": " + *why);
+}
+
+Balance balance_option(const std::string& text) {
+  const std::optional<Balance> b = parse_balance(text);
+  if (!b) throw InputError("balance '" + text + "' is unknown: use edge or corner");
+  return *b;
 }
 
 std::string levels_text(const Graph& g, std::string& json) {
@@ -213,6 +232,7 @@ int run_heightfield(const HeightfieldOptions& o, std::ostream& out, std::ostream
     require(std::isfinite(o.vertical_scale) && o.vertical_scale > 0, "vertical scale must be a number > 0");
     require(o.samples >= 1 && o.samples <= 100000, "samples must be in 1..100000");
     require(o.sweeps >= 0, "sweeps must be >= 0 (0: until nothing changes)");
+    const Balance balance = balance_option(o.balance);
     require(o.progress == "auto" || o.progress == "always" || o.progress == "never",
             "progress '" + o.progress + "' is unknown: use auto, always or never");
     check_outputs({&o.obj, &o.ply, &o.vtu, &o.svg, &o.state, &o.stats});
@@ -231,6 +251,9 @@ int run_heightfield(const HeightfieldOptions& o, std::ostream& out, std::ostream
       check_lattice_limits(g.size, from_name);
       if (const std::optional<Violation> v = find_violation(g))
         throw InputError(from_name + ": not a valid lattice state: " + to_string(*v));
+      if (balance == Balance::Corner)
+        if (const auto why = corner_violation(g))
+          throw InputError(from_name + ": not corner-balanced (--balance corner): " + *why);
     } else {
       const LatticeSize size{o.width, o.height, o.max_level};
       check_lattice_limits(size, "options");
@@ -246,15 +269,16 @@ int run_heightfield(const HeightfieldOptions& o, std::ostream& out, std::ostream
     settings.error = {*measure, o.samples, o.seed};
     settings.max_sweeps = o.sweeps;
     settings.coarsen = !o.from.empty();
+    settings.balance = balance;
     const auto t0 = Clock::now();
     const TessellateReport report = tessellate(g, sampler, settings, [&](int sweep, const Graph& now, std::size_t ops) {
       if (progress)
         err << tool << ": sweep " << sweep << ": " << ops << " operations, " << now.C.size() << " cells, "
             << fmt(seconds_since(t0), "%.2f") << " s" << std::endl;
-      if (o.check) run_check(now, "after sweep " + std::to_string(sweep));
+      if (o.check) run_check(now, balance, "after sweep " + std::to_string(sweep));
     });
     const double tessellate_seconds = seconds_since(t0);
-    if (o.check) run_check(g, "at the end");
+    if (o.check) run_check(g, balance, "at the end");
     const MeshError error = mesh_error(g, sampler);
 
     // Outputs.
@@ -280,6 +304,7 @@ int run_heightfield(const HeightfieldOptions& o, std::ostream& out, std::ostream
                        " maxval " + std::to_string(field.maxval));
     r.add("lattice", std::to_string(g.size.W) + " " + std::to_string(g.size.H) + " " + std::to_string(g.size.L));
     if (!o.from.empty()) r.add("from", o.from);
+    r.add("balance", o.balance);
     r.add("measure", o.measure);
     if (*measure == ErrorMeasure::RandomSamples) {
       r.add("samples", std::int64_t{o.samples});
@@ -328,6 +353,8 @@ Graph animate(const AnimateOptions& o, const FrameObserver& after_frame, std::ve
                                 std::to_string(o.max_level) + " (or -1 for the max level)");
   if (!std::isfinite(o.radius) || o.radius < 0) throw std::invalid_argument("radius must be a number >= 0");
   if (o.frames < 1 || o.frames > 100000) throw std::invalid_argument("frames must be in 1..100000");
+  const std::optional<Balance> balance = parse_balance(o.balance);
+  if (!balance) throw std::invalid_argument("balance '" + o.balance + "' is unknown: use edge or corner");
   const std::vector<std::array<double, 2>> path = parse_path(o.path);
   const int target = o.target_level < 0 ? o.max_level : o.target_level;
   const double S = static_cast<double>(level0_side(size));
@@ -341,13 +368,13 @@ Graph animate(const AnimateOptions& o, const FrameObserver& after_frame, std::ve
     const auto t0 = Clock::now();
     AdaptReport a;
     if (fr.lifted) {
-      a = adapt_to_disks(g, {}, target);
+      a = adapt_to_disks(g, {}, target, *balance);
     } else {
       const auto p = point_on_path(path, o.frames == 1 ? 0.0 : static_cast<double>(k) / (o.frames - 1));
       fr.x = p[0];
       fr.y = p[1];
       const Disk d{p[0] * S, p[1] * S, o.radius * S};
-      a = adapt_to_disks(g, std::span<const Disk>(&d, 1), target);
+      a = adapt_to_disks(g, std::span<const Disk>(&d, 1), target, *balance);
     }
     fr.seconds = seconds_since(t0);
     fr.refinements = a.refinements;
@@ -394,7 +421,7 @@ int run_animate(const AnimateOptions& o, std::ostream& out, std::ostream& err) {
     std::size_t refinements = 0, coarsenings = 0;
     double seconds = 0;
     auto after = [&](const FrameReport& fr, const Graph& g) {
-      if (o.check) run_check(g, "after frame " + std::to_string(fr.frame));
+      if (o.check) run_check(g, balance_option(o.balance), "after frame " + std::to_string(fr.frame));
       refinements += fr.refinements;
       coarsenings += fr.coarsenings;
       seconds += fr.seconds;

@@ -56,6 +56,10 @@ struct HeightfieldOptions {
   /// seed: seed of the "samples" measure; the points of a cell depend only on
   /// the seed and the cell. Default 1.
   std::uint64_t seed = 1;
+  /// balance: the 2:1 level rule, "edge" (cells sharing a side piece; the
+  /// core's rule) or "corner" (cells touching at a corner point too; needs a
+  /// corner-balanced `from` state). Default "edge".
+  std::string balance = "edge";
   /// sweeps: stop after this many sweeps (>= 0); 0 means until nothing changes. Default 0.
   int sweeps = 0;
   /// from: a canonical state to start from instead of the initial lattice
@@ -77,7 +81,8 @@ struct HeightfieldOptions {
   std::string stats = "-";
   /// json: statistics as one JSON object instead of `name value` lines. Default false.
   bool json = false;
-  /// check: run the invariant checker after every sweep; exit 1 on a violation. Default false.
+  /// check: run the invariant checker (and, with corner balance, the corner
+  /// check) after every sweep; exit 1 on a violation. Default false.
   bool check = false;
   /// progress: per-sweep progress lines on `err`: "auto" (when `err` is
   /// std::cerr on a terminal and the image has at least 65536 pixels),
@@ -107,6 +112,8 @@ struct AnimateOptions {
   /// domain is [0, W] x [0, H]); it moves at constant speed along it.
   /// Default "1,4;4,7;7,4;4,1;1,4" (a diamond loop in the default 8x8 lattice).
   std::string path = "1,4;4,7;7,4;4,1;1,4";
+  /// balance: the 2:1 level rule, "edge" or "corner" (see HeightfieldOptions::balance). Default "edge".
+  std::string balance = "edge";
   /// frames: number of frames (1..100000); frame k is at fraction k/(frames-1) of the path. Default 40.
   int frames = 40;
   /// lift: after the last frame, one more frame without the feature (the
@@ -122,7 +129,8 @@ struct AnimateOptions {
   std::string stats = "-";
   /// json: statistics as one JSON object. Default false.
   bool json = false;
-  /// check: run the invariant checker after every frame; exit 1 on a violation. Default false.
+  /// check: run the invariant checker (and, with corner balance, the corner
+  /// check) after every frame; exit 1 on a violation. Default false.
   bool check = false;
   /// quiet: no one-line summary on `err` at the end. Default false.
   bool quiet = false;

@@ -243,7 +243,7 @@ TessellateReport tessellate(Graph& g, const HeightSampler& s, const TessellateSe
       return cell_error(CellFan(n, level, ccw_around(n, B), s), s, t.error) <= limit;
     };
     while (budget_left()) {
-      const std::size_t done = coarsen_sweep(g, within);
+      const std::size_t done = coarsen_sweep(g, within, t.balance);
       if (done == 0) break;
       report.coarsenings += done;
       ++report.sweeps;
@@ -265,7 +265,7 @@ TessellateReport tessellate(Graph& g, const HeightSampler& s, const TessellateSe
       // A cascade earlier in this sweep may have refined c already; its
       // children are measured in the next sweep.
       if (!g.is_center(c)) continue;
-      done += refine_balanced(g, c).refined.size();
+      done += refine_balanced(g, c, t.balance).refined.size();
     }
     report.refinements += done;
     ++report.sweeps;

@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "bccmis/balance.h"
 #include "bccmis/graph.h"
 #include "bccmis/image.h"
 
@@ -118,6 +119,7 @@ struct TessellateSettings {
   ErrorSettings error;
   int max_sweeps = 0;        ///< stop after this many sweeps; 0: until nothing changes
   bool coarsen = false;      ///< first merge cells whose merged error is within tolerance (re-tessellation)
+  Balance balance = Balance::Edge;  ///< the 2:1 rule the cascade and the merges keep
 };
 
 /// What tessellate() did.
