@@ -197,5 +197,41 @@ TEST(Png, BrokenFilesAreImageErrors) {
   EXPECT_EQ(error_of(png, "t.png", small), "t.png: image of 4x4 pixels exceeds the limit of 3 pixels per side");
 }
 
+TEST(Images, MutatedFilesParseOrFailCleanly) {
+  // Flipped, dropped and inserted bytes: every result is a parse or an
+  // ImageError (the sanitizer builds check that nothing else goes wrong).
+  std::vector<std::string> seeds = {"P2\n# c\n3 2\n9\n0 1 2\n3 4 9\n", std::string("P5\n2 2\n300\n\x00\x01\x01\x2c\x00\x00\x00\x05", 20),
+                                    std::string("P5 2 1 255\n\x07\x08", 13)};
+  if (png_supported()) seeds.push_back(make_png(3, 3, 1, 16, {1, 2, 3, 4, 5, 6, 7, 8, 9}));
+  std::uint64_t state = 12345;
+  auto next = [&] {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return state >> 33;
+  };
+  int parsed = 0, rejected = 0;
+  for (const std::string& seed : seeds)
+    for (int k = 0; k < 400; ++k) {
+      std::string m = seed;
+      for (int edits = 1 + static_cast<int>(next() % 3); edits > 0 && !m.empty(); --edits) {
+        const std::size_t at = next() % m.size();
+        switch (next() % 3) {
+          case 0: m[at] = static_cast<char>(next()); break;
+          case 1: m.erase(at, 1); break;
+          default: m.insert(at, 1, static_cast<char>(next())); break;
+        }
+      }
+      try {
+        const HeightField f = parse_height_field(m, "m");
+        EXPECT_EQ(f.values.size(), static_cast<std::size_t>(f.width * f.height));
+        for (const double v : f.values) EXPECT_TRUE(v >= 0 && v <= 1);
+        ++parsed;
+      } catch (const ImageError&) {
+        ++rejected;
+      }
+    }
+  EXPECT_GT(parsed, 0);
+  EXPECT_GT(rejected, 0);
+}
+
 }  // namespace
 }  // namespace bccmis
