@@ -339,7 +339,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"auto", "always", "never"}))
       ->capture_default_str();
   hf_cmd->add_flag("-q,--quiet", hf.quiet, "No summary line on stderr");
-  hf_cmd->footer("Example:\n  bccmis heightfield apps/samples/terrain.pgm --tolerance 0.02 --obj terrain.obj --svg terrain.svg");
+  hf_cmd->footer("Example:\n  bccmis heightfield apps/samples/terrain128.pgm --tolerance 0.02 --obj terrain.obj --svg terrain.svg");
 
   AnimateOptions an;
   CLI::App* an_cmd = app.add_subcommand("animate", "A disk moves along a path; the lattice adapts around it (the paper's Fig. 6).");
