@@ -44,6 +44,6 @@ if(TARGET bccmis::explore)
                         bccmis::explore bccmis::core bccmis::invariants bccmis::warnings)
   target_compile_definitions(mutants_property_test PRIVATE
                              BCCMIS_REGRESSIONS_DIR="${CMAKE_CURRENT_SOURCE_DIR}/regressions")
-  gtest_discover_tests(mutants_property_test DISCOVERY_MODE PRE_TEST NO_PRETTY_VALUES
+  gtest_discover_tests(mutants_property_test DISCOVERY_MODE PRE_TEST NO_PRETTY_VALUES TEST_FILTER "-MutantDemo.*"
     PROPERTIES LABELS property ENVIRONMENT "RC_PARAMS=seed=${BCCMIS_RC_SEED}")
 endif()
