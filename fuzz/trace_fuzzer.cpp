@@ -29,7 +29,7 @@ constexpr std::size_t kMaxCommands = 400;
 
 TraceLimits limits() {
   TraceLimits l;
-  l.max_initial_cells = 64;
+  l.max_vertices = 200;
   return l;
 }
 
@@ -51,8 +51,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     fuzz::check_parse_error(kTarget, e, kFile, text);
     return 0;
   }
-  if (trace.size.W * trace.size.H > limits().max_initial_cells)
-    fuzz::fail(kTarget, "the parser accepted a lattice above TraceLimits::max_initial_cells", &trace);
+  if (initial_vertex_count(trace.size) > limits().max_vertices)
+    fuzz::fail(kTarget, "the parser accepted a lattice above TraceLimits::max_vertices", &trace);
 
   // Round trip through the printer.
   try {

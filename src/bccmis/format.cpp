@@ -1,6 +1,8 @@
 #include "bccmis/format.h"
 
+#include <algorithm>
 #include <charconv>
+#include <cstdint>
 #include <limits>
 #include <optional>
 
@@ -296,8 +298,16 @@ Graph parse_state(std::string_view text, std::string_view file) {
 
 // ---- Traces -----------------------------------------------------------------
 
+std::int64_t initial_vertex_count(const LatticeSize& size) {
+  const std::int64_t big = INT64_MAX / 4;
+  if (size.W <= 0 || size.H <= 0) return 0;
+  if (size.W > big / size.H) return INT64_MAX;  // (W+1)(H+1) + WH < 4 W H for W, H >= 2
+  return (size.W + 1) * (size.H + 1) + size.W * size.H;
+}
+
 Trace parse_trace(std::string_view text, std::string_view file, const TraceLimits& limits) {
   Trace trace;
+  trace.file = std::string(file);
   bool have_lattice = false;
   const std::vector<std::string_view> lines = split_lines(text);
   for (std::size_t i = 0; i < lines.size(); ++i) {
@@ -315,9 +325,10 @@ Trace parse_trace(std::string_view text, std::string_view file, const TraceLimit
       if (have_lattice) lp.fail(t[0].column, "second 'lattice' command (the first is on line " + std::to_string(trace.lattice_line) + ")");
       arity(3, "lattice W H L");
       trace.size = lp.lattice(t[1], t[2], t[3], t[0].column, false);
-      if (trace.size.W > limits.max_initial_cells / trace.size.H)
+      if (const std::int64_t v = initial_vertex_count(trace.size); v > limits.max_vertices)
         lp.fail(t[0].column, "lattice of " + std::to_string(trace.size.W) + " x " + std::to_string(trace.size.H) +
-                                 " cells exceeds the limit of " + std::to_string(limits.max_initial_cells) + " initial cells");
+                                 " cells exceeds the limit of " + std::to_string(limits.max_vertices) + " vertices (it has " +
+                                 (v == INT64_MAX ? std::string("more than 2^63") : std::to_string(v)) + ")");
       trace.lattice_line = line_no;
       have_lattice = true;
       continue;
@@ -336,9 +347,11 @@ Trace parse_trace(std::string_view text, std::string_view file, const TraceLimit
     if (!have_lattice) lp.fail(t[0].column, "'" + std::string(cmd) + "' before the 'lattice W H L' command");
     trace.commands.push_back(c);
   }
-  if (!have_lattice)
-    throw ParseError(std::string(file), static_cast<int>(lines.size()), 1,
-                     "no 'lattice W H L' command (a trace starts with one)");
+  if (!have_lattice) {
+    // Point at the last line of the file (not past a final newline).
+    const int last = static_cast<int>(lines.size()) - (lines.size() > 1 && lines.back().empty() ? 1 : 0);
+    throw ParseError(std::string(file), std::max(last, 1), 1, "no 'lattice W H L' command (a trace starts with one)");
+  }
   return trace;
 }
 

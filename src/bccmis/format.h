@@ -44,15 +44,21 @@ struct TraceCommand {
 };
 
 struct Trace {
+  std::string file;  ///< the name given to parse_trace, for messages
   LatticeSize size;
   int lattice_line = 0;
   std::vector<TraceCommand> commands;
 };
 
-/// Limits that keep a hostile trace from exhausting memory.
+/// Limits that keep a hostile trace from exhausting memory (about 250 bytes
+/// per vertex in the reference, so the default bounds a replay near 250 MB).
 struct TraceLimits {
-  std::int64_t max_initial_cells = 4'000'000;  ///< W*H of the `lattice` command
+  std::int64_t max_vertices = 1'000'000;  ///< |N| + |C| of the initial lattice (callers check growth)
 };
+
+/// The number of vertices |N| + |C| of the initial W x H lattice, saturated
+/// at INT64_MAX.
+std::int64_t initial_vertex_count(const LatticeSize& size);
 
 /// Parses a trace; throws ParseError on the first malformed line.
 Trace parse_trace(std::string_view text, std::string_view file = "<trace>",

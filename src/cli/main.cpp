@@ -59,13 +59,31 @@ std::string read_input(const std::string& path) {
 }
 
 /// Writes `content` to `path` atomically: a temporary file in the same
-/// directory, flushed, then renamed over the target. "-" means stdout.
+/// directory, flushed, then renamed over the target. "-" means stdout. A
+/// target that exists and is not a regular file (a device such as /dev/null,
+/// a FIFO) is written directly: renaming over it would replace it. A symbolic
+/// link is followed, so the file it points to is replaced, not the link.
 void write_output(const std::string& path, const std::string& content) {
   if (path == "-") {
     std::cout << content << std::flush;
     return;
   }
-  const std::filesystem::path target(path);
+  std::error_code ec;
+  const auto st = std::filesystem::status(path, ec);
+  if (!ec && std::filesystem::exists(st) && !std::filesystem::is_regular_file(st)) {
+    if (std::filesystem::is_directory(st)) throw InputError(path + ": is a directory, cannot write the output there");
+    std::ofstream out(path, std::ios::binary);
+    out << content;
+    out.flush();
+    if (!out) throw InputError(path + ": write error");
+    return;
+  }
+  std::filesystem::path target(path);
+  for (int hops = 0; std::filesystem::is_symlink(std::filesystem::symlink_status(target, ec)); ++hops) {
+    const std::filesystem::path next = std::filesystem::read_symlink(target, ec);
+    if (ec || hops == 40) throw InputError(path + ": cannot resolve the symbolic link");
+    target = next.is_absolute() ? next : target.parent_path() / next;
+  }
   const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
   std::string tmpl = (dir / ("." + target.filename().string() + ".tmp-XXXXXX")).string();
   const int fd = ::mkstemp(tmpl.data());
@@ -85,7 +103,7 @@ void write_output(const std::string& path, const std::string& content) {
     throw InputError(path + ": write error");
   }
   ::chmod(tmpl.c_str(), 0644);
-  if (std::rename(tmpl.c_str(), path.c_str()) != 0) {
+  if (std::rename(tmpl.c_str(), target.c_str()) != 0) {
     ::unlink(tmpl.c_str());
     throw InputError(path + ": cannot replace the file");
   }
@@ -121,14 +139,17 @@ struct ReplayOptions {
   std::string check = "every";
   int depth = 4;
   bool quiet = false;
+  std::int64_t max_vertices = TraceLimits{}.max_vertices;
 };
 
 int run_replay(const ReplayOptions& o) {
   const std::string name = display_name(o.trace);
-  const Trace trace = parse_trace(read_input(o.trace), name);
+  TraceLimits limits;
+  limits.max_vertices = o.max_vertices;
+  const Trace trace = parse_trace(read_input(o.trace), name, limits);
   std::string log;
   std::size_t refines = 0, coarsens = 0, refused = 0, checks = 0;
-  std::optional<std::string> failure;
+  std::optional<std::string> failure, limit_error;
   const Graph g = [&] {
     // A violation stops the replay at the command that caused it.
     struct Stop {};
@@ -137,6 +158,12 @@ int run_replay(const ReplayOptions& o) {
       if (c.kind == TraceCommand::Kind::Refine) ++refines;
       if (c.kind == TraceCommand::Kind::Coarsen) ++coarsens;
       if (decision.find(" refused ") != std::string_view::npos) ++refused;
+      if (const auto v = static_cast<std::int64_t>(now.N.size() + now.C.size()); v > o.max_vertices) {
+        limit_error = name + ":" + std::to_string(c.line) + ":1: after '" + command_text(c) + "' the lattice has " +
+                      std::to_string(v) + " vertices, above the limit of " + std::to_string(o.max_vertices) +
+                      " (--max-vertices)";
+        throw Stop{};
+      }
       const bool explicit_check = c.kind == TraceCommand::Kind::Check;
       if (explicit_check || o.check == "every") {
         ++checks;
@@ -153,6 +180,10 @@ int run_replay(const ReplayOptions& o) {
     }
     return result;
   }();
+  if (limit_error) {
+    std::cerr << "bccmis: " << *limit_error << "\n";
+    return kExitInput;
+  }
   if (failure) {
     std::cerr << "bccmis replay: " << *failure << "\n";
     if (!o.log_file.empty()) write_output(o.log_file, log);
@@ -236,6 +267,9 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, max_depth))
       ->capture_default_str();
   replay_cmd->add_flag("-q,--quiet", ro.quiet, "No summary on stderr");
+  replay_cmd->add_option("--max-vertices", ro.max_vertices, "Refuse a trace whose lattice grows beyond this many vertices (exit 2)")
+      ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 40))
+      ->capture_default_str();
   replay_cmd->footer(
       "Example:\n  bccmis replay spec/examples/fig2.trace\n  bccmis replay run.trace --check=end --log run.log --state run.state");
 
