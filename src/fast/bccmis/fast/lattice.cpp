@@ -30,6 +30,10 @@
 #include <limits>
 #include <stdexcept>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 namespace bccmis::fast {
 
 namespace {
@@ -127,6 +131,21 @@ Site site_of(const LatticeSize& size, const Point& p) {
 
 }  // namespace
 
+// ---- Huge pages -------------------------------------------------------------
+
+void detail::advise_huge_pages(void* p, std::size_t bytes) noexcept {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr std::uintptr_t kHuge = std::uintptr_t{2} << 20;
+  if (bytes < 2 * kHuge) return;
+  const auto begin = (reinterpret_cast<std::uintptr_t>(p) + kHuge - 1) & ~(kHuge - 1);
+  const auto end = (reinterpret_cast<std::uintptr_t>(p) + bytes) & ~(kHuge - 1);
+  if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);  // advice only: errors ignored
+#else
+  (void)p;
+  (void)bytes;
+#endif
+}
+
 // ---- SmallPoints / outcomes --------------------------------------------------
 
 RefineResult RefineOutcome::to_result() const {
@@ -196,15 +215,13 @@ Point Lattice::node_position(Index n) const {
 // runs apart (homes in consecutive slots would make long Robin Hood runs).
 // The load factor stays at most 0.6.
 
-namespace {
-constexpr std::uint32_t kRefMask = (1u << 27) - 1;
-constexpr int kDistShift = 27;
-constexpr std::uint32_t kDistSaturated = 31;
-}  // namespace
 
 std::size_t Lattice::home(const Point& p) const {
+  return home_at(p, std::countr_zero(static_cast<std::uint64_t>(p.x)));
+}
+
+std::size_t Lattice::home_at(const Point& p, int t) const {
   // p is a cell center position: both coordinates odd multiples of 2^t.
-  const int t = std::countr_zero(static_cast<std::uint64_t>(p.x));
   if (t >= size_.L) return static_cast<std::size_t>(mix(p) >> table_shift_);  // level 0: no parent
   const std::int64_t s = std::int64_t{1} << (t + 2);  // the parent's side
   const Point parent{(p.x & ~(s - 1)) | (s / 2), (p.y & ~(s - 1)) | (s / 2)};
@@ -218,14 +235,13 @@ Point Lattice::key_of(Index ref) const {
 
 std::size_t Lattice::displacement(std::size_t i) const {
   const std::uint32_t d = table_[i] >> kDistShift;
-  if (d != kDistSaturated) return d - 1u;
+  if (d != kDistSaturated) [[likely]]
+    return d - 1u;
   return (i - home(key_of(table_[i] & kRefMask))) & (table_.size() - 1);
 }
 
-void Lattice::put(std::size_t i, Index ref, std::size_t displacement) {
-  const auto d = static_cast<std::uint32_t>(std::min<std::size_t>(displacement + 1, kDistSaturated));
-  table_[i] = ref | (d << kDistShift);
-}
+
+void Lattice::put(std::size_t i, Index ref, std::size_t displacement) { table_[i] = encode(ref, displacement); }
 
 std::size_t Lattice::slot_of(Index ref, std::size_t at) const {
   const std::size_t mask = table_.size() - 1;
@@ -239,27 +255,36 @@ void Lattice::replace_ref(std::size_t slot, Index ref) { table_[slot] = (table_[
 void Lattice::prefetch(std::size_t at) const { __builtin_prefetch(&table_[at]); }
 
 template <class Match>
-Index Lattice::probe(const Point& p, Match match) const {
+Index Lattice::probe(std::size_t i, Match match) const {
+  const std::uint32_t* t = table_.data();
   const std::size_t mask = table_.size() - 1;
-  std::size_t i = home(p);
   for (std::size_t d = 0;; ++d, i = (i + 1) & mask) {
-    const std::uint32_t s = table_[i];
+    const std::uint32_t s = t[i];
     if (s == 0) return kNone;
     const std::uint32_t f = s >> kDistShift;
-    const std::size_t e = f == kDistSaturated ? displacement(i) : f - 1u;
+    const std::size_t e = f != kDistSaturated ? f - 1u : displacement(i);
     if (e < d) return kNone;  // p would have displaced this entry: p is absent
     if (e == d && match(s & kRefMask)) return s & kRefMask;
   }
 }
 
+int Lattice::center_tz(const Point& p) const {
+  if (p.x <= 0 || p.y <= 0 || p.x >= extent_x_ || p.y >= extent_y_) return -1;
+  const int t = std::countr_zero(static_cast<std::uint64_t>(p.x));
+  if (t != std::countr_zero(static_cast<std::uint64_t>(p.y)) || t > size_.L) return -1;
+  return t;
+}
+
 Index Lattice::find_center(const Point& p) const {
-  if (!center_level(size_, p)) return kNone;
-  return probe(p, [&](Index r) { return !(r & kNodeBit) && centers_[r].position() == p; });
+  const int t = center_tz(p);
+  if (t < 0) return kNone;
+  return probe(home_at(p, t), [&](Index r) { return !(r & kNodeBit) && centers_[r].position() == p; });
 }
 
 Index Lattice::find_node(const Point& p) const {
-  if (!center_level(size_, p)) return kNone;
-  const Index r = probe(p, [&](Index q) { return (q & kNodeBit) && node_position(q & ~kNodeBit) == p; });
+  const int t = center_tz(p);
+  if (t < 0) return kNone;
+  const Index r = probe(home_at(p, t), [&](Index q) { return (q & kNodeBit) && node_position(q & ~kNodeBit) == p; });
   return r == kNone ? kNone : r & ~kNodeBit;
 }
 
@@ -285,38 +310,46 @@ Index Lattice::locate(const Point& z) const {
   return kNone;
 }
 
-void Lattice::table_insert(Index ref, std::size_t at) {
+void Lattice::table_insert_probe(Index ref, std::size_t at) {
+  std::uint32_t* t = table_.data();
   const std::size_t mask = table_.size() - 1;
+  ++table_used_;
   std::size_t i = at;
   for (std::size_t d = 0;; ++d, i = (i + 1) & mask) {
-    if (table_[i] == 0) {
-      put(i, ref, d);
-      ++table_used_;
+    const std::uint32_t s = t[i];
+    if (s == 0) {
+      t[i] = encode(ref, d);
       return;
     }
-    const std::size_t e = displacement(i);
+    const std::uint32_t f = s >> kDistShift;
+    const std::size_t e = f != kDistSaturated ? f - 1u : displacement(i);
     if (e < d) {  // the resident is closer to home: it moves on instead
-      const Index evicted = table_[i] & kRefMask;
-      put(i, ref, d);
-      ref = evicted;
+      t[i] = encode(ref, d);
+      ref = s & kRefMask;
       d = e;
     }
   }
 }
 
-void Lattice::table_erase(Index ref, std::size_t at) {
+void Lattice::table_erase_probe(Index ref, std::size_t at) {
+  std::uint32_t* t = table_.data();
   const std::size_t mask = table_.size() - 1;
-  std::size_t i = slot_of(ref, at);
-  for (std::size_t j = (i + 1) & mask; (table_[j] >> kDistShift) > 1; i = j, j = (j + 1) & mask)
-    put(i, table_[j] & kRefMask, displacement(j) - 1);
-  table_[i] = 0;
+  std::size_t i = at;
+  while (t[i] == 0 || (t[i] & kRefMask) != ref) i = (i + 1) & mask;
+  for (std::size_t j = (i + 1) & mask;; i = j, j = (j + 1) & mask) {
+    const std::uint32_t s = t[j];
+    const std::uint32_t f = s >> kDistShift;
+    if (f <= 1) break;  // empty, or at its home
+    t[i] = f != kDistSaturated ? s - (1u << kDistShift) : encode(s & kRefMask, displacement(j) - 1);
+  }
+  t[i] = 0;
   --table_used_;
 }
 
 void Lattice::rehash(std::size_t slots) {
   std::size_t bits = 4;
   while ((std::size_t{1} << bits) < slots) ++bits;
-  std::vector<std::uint32_t> fresh(std::size_t{1} << bits, 0);  // may throw: nothing changed yet
+  detail::Array<std::uint32_t> fresh(std::size_t{1} << bits, 0);  // may throw: nothing changed yet
   table_.swap(fresh);
   table_shift_ = 64 - bits;
   table_used_ = 0;
@@ -330,7 +363,7 @@ void Lattice::rehash(std::size_t slots) {
 
 // ---- Pools ------------------------------------------------------------------------
 
-void Lattice::ensure_room(std::size_t new_centers, std::size_t new_nodes, std::size_t new_keys) {
+void Lattice::grow(std::size_t new_centers, std::size_t new_nodes, std::size_t new_keys) {
   auto grow = [](auto& pool, std::size_t free_count, std::size_t wanted) {
     if (free_count >= wanted) return;
     const std::size_t need = pool.size() + (wanted - free_count);
@@ -345,49 +378,12 @@ void Lattice::ensure_room(std::size_t new_centers, std::size_t new_nodes, std::s
   if (slots != table_.size()) rehash(slots);
 }
 
-Index Lattice::alloc_center() {
-  if (free_centers_ != kNone) {
-    const Index c = free_centers_;
-    free_centers_ = centers_[c].corner[0];
-    --free_center_count_;
-    return c;
-  }
-  centers_.emplace_back();  // capacity reserved by ensure_room
-  return static_cast<Index>(centers_.size() - 1);
-}
-
-Index Lattice::alloc_node() {
-  if (free_nodes_ != kNone) {
-    const Index n = free_nodes_;
-    free_nodes_ = nodes_[n].cell[0];
-    --free_node_count_;
-    return n;
-  }
-  nodes_.emplace_back();
-  return static_cast<Index>(nodes_.size() - 1);
-}
-
-void Lattice::free_center(Index c) {
-  Center& r = centers_[c];
-  r.corner[3] = kFreeMark;
-  r.corner[0] = free_centers_;
-  free_centers_ = c;
-  ++free_center_count_;
-}
-
-void Lattice::free_node(Index n) {
-  Node& r = nodes_[n];
-  r.cell[0] = free_nodes_;
-  r.cell[1] = r.cell[2] = kNone;
-  r.cell[3] = kFreeMark;
-  free_nodes_ = n;
-  ++free_node_count_;
-}
-
 // ---- Construction ------------------------------------------------------------------
 
 Lattice::Lattice(const LatticeSize& size) : size_(size) {
   validate_lattice_size(size);
+  extent_x_ = size.W * level0_side(size);
+  extent_y_ = size.H * level0_side(size);
   const std::int64_t W = size.W, H = size.H;
   if (W > static_cast<std::int64_t>(kMaxPool) / H || (W + 1) > static_cast<std::int64_t>(kMaxPool) / (H + 1))
     throw std::length_error("bccmis::fast::Lattice: lattice " + std::to_string(W) + " x " + std::to_string(H) +
@@ -421,6 +417,8 @@ Lattice Lattice::from_graph(const Graph& g) {
   validate_lattice_size(g.size);
   Lattice lat;
   lat.size_ = g.size;
+  lat.extent_x_ = g.size.W * level0_side(g.size);
+  lat.extent_y_ = g.size.H * level0_side(g.size);
   if (g.C.size() > kMaxPool || g.N.size() > kMaxPool)
     throw std::length_error("bccmis::fast::Lattice::from_graph: more than 2^26 - 1 vertices of one kind");
   std::vector<Point> node_points(g.N.begin(), g.N.end());  // sorted
@@ -601,10 +599,11 @@ std::optional<CoarsenRefusal> Lattice::coarsen_refusal(const Point& n, Index& ni
   // pre-coarsen-node: n in N
   ni = find_node(n);  // only refined centers are in the position table
   if (ni == kNone) return node_exists(n) ? CoarsenRefusal::NotARefinedCenter : CoarsenRefusal::NoSuchNode;
-  // pre-coarsen-refined-center (E3, E5): the level from n's position.
-  const std::optional<int> l = refined_center_level(size_, n);
-  if (!l) return CoarsenRefusal::NotARefinedCenter;
-  coarse_level = *l;
+  // pre-coarsen-refined-center (E3, E5): the level from n's position. n is in
+  // the table, so it sits where a cell center can be (bccmis::refined_center_level).
+  const int l = size_.L - center_tz(n);  // n is in the table: center_tz(n) >= 0
+  if (l >= size_.L) return CoarsenRefusal::NotARefinedCenter;
+  coarse_level = l;
   // pre-coarsen-not-junction: |N(n)| = 4
   const Node& nd = nodes_[ni];
   for (int q = 0; q < 4; ++q) {
@@ -614,7 +613,7 @@ std::optional<CoarsenRefusal> Lattice::coarsen_refusal(const Point& n, Index& ni
   }
   // pre-coarsen-children-leaves (E3): every cell around n has level l+1.
   for (int q = 0; q < 4; ++q)
-    if (level(nd.cell[q]) != *l + 1) return CoarsenRefusal::ChildrenRefined;
+    if (level(nd.cell[q]) != l + 1) return CoarsenRefusal::ChildrenRefined;
   // pre-coarsen-balance (E3): no child has a junction (all four mid slots empty).
   for (int q = 0; q < 4; ++q) {
     const Center& y = centers_[nd.cell[q]];
@@ -689,6 +688,46 @@ CoarsenOutcome Lattice::coarsen(const Point& n) {
       --node_count_;
     }
   return out;
+}
+
+// ---- Batches: the same operations, with look-ahead prefetching --------------------
+
+void Lattice::prefetch_slot(const Point& p) const {
+  const int t = center_tz(p);
+  if (t >= 0) prefetch(home_at(p, t));
+}
+
+void Lattice::prefetch_record(const Point& p, bool node) const {
+  if (node) {
+    if (const Index n = find_node(p); n != kNone) __builtin_prefetch(&nodes_[n]);
+  } else if (const Index c = find_center(p); c != kNone) {
+    __builtin_prefetch(&centers_[c]);
+  }
+}
+
+namespace {
+constexpr std::size_t kSlotAhead = 16;   // operations between the table prefetch and the operation
+constexpr std::size_t kRecordAhead = 6;  // ... and between the record prefetch and the operation
+}  // namespace
+
+std::size_t Lattice::refine_each(std::span<const Point> cells) {
+  std::size_t applied = 0;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (i + kSlotAhead < cells.size()) prefetch_slot(cells[i + kSlotAhead]);
+    if (i + kRecordAhead < cells.size()) prefetch_record(cells[i + kRecordAhead], false);
+    applied += refine(cells[i]).applied();
+  }
+  return applied;
+}
+
+std::size_t Lattice::coarsen_each(std::span<const Point> nodes) {
+  std::size_t applied = 0;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    if (i + kSlotAhead < nodes.size()) prefetch_slot(nodes[i + kSlotAhead]);
+    if (i + kRecordAhead < nodes.size()) prefetch_record(nodes[i + kRecordAhead], true);
+    applied += coarsen(nodes[i]).applied();
+  }
+  return applied;
 }
 
 // ---- Queries -------------------------------------------------------------------------

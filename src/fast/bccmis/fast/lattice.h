@@ -34,7 +34,10 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
+#include <new>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -45,6 +48,33 @@
 #include "bccmis/ops.h"
 
 namespace bccmis::fast {
+
+namespace detail {
+/// The allocator of the pools and the position table: 64-byte aligned (a
+/// table line of 16 slots is one cache line), and arrays of 4 MiB and up ask
+/// the kernel for transparent huge pages (madvise, Linux): they are accessed
+/// at random once they outgrow the caches, and 2 MiB pages cut the TLB
+/// misses that otherwise cost as much as the cache misses.
+void advise_huge_pages(void* p, std::size_t bytes) noexcept;
+template <class T>
+struct HugePageAllocator {
+  using value_type = T;
+  static constexpr std::align_val_t kAlign{64};
+  HugePageAllocator() = default;
+  template <class U>
+  HugePageAllocator(const HugePageAllocator<U>&) noexcept {}
+  T* allocate(std::size_t n) {
+    if (n > std::size_t(-1) / sizeof(T)) throw std::bad_array_new_length();
+    T* p = static_cast<T*>(::operator new(n * sizeof(T), kAlign));
+    advise_huge_pages(p, n * sizeof(T));
+    return p;
+  }
+  void deallocate(T* p, std::size_t) noexcept { ::operator delete(p, kAlign); }
+  friend bool operator==(const HugePageAllocator&, const HugePageAllocator&) { return true; }
+};
+template <class T>
+using Array = std::vector<T, HugePageAllocator<T>>;
+}  // namespace detail
 
 /// Up to N points, sorted by (x, y) like the reference's std::set; no heap.
 template <std::size_t N>
@@ -113,6 +143,13 @@ class Lattice {
   RefineOutcome refine(const Point& c);
   /// §2.2: merge the four cells around node n. A refused call changes nothing.
   CoarsenOutcome coarsen(const Point& n);
+
+  /// refine (coarsen) each position in order, exactly as that many calls
+  /// would; returns how many were applied. Looks ahead in the list and
+  /// prefetches the position table and the records of the coming
+  /// operations, so long lists on large lattices wait less for memory.
+  std::size_t refine_each(std::span<const Point> cells);
+  std::size_t coarsen_each(std::span<const Point> nodes);
 
   // ---- Queries (the reference's Graph accessors, by position) ---------------
 
@@ -190,8 +227,8 @@ class Lattice {
     bool live() const { return cell[3] != kFreeMark; }
   };
 
-  const std::vector<Center>& center_pool() const { return centers_; }
-  const std::vector<Node>& node_pool() const { return nodes_; }
+  const detail::Array<Center>& center_pool() const { return centers_; }
+  const detail::Array<Node>& node_pool() const { return nodes_; }
   /// Position of a live node.
   Point node_position(Index n) const;
   /// The level of a live center slot.
@@ -208,7 +245,20 @@ class Lattice {
   // Keys are recomputed from the pools, so every vertex in the table must be
   // live and consistent.
   static constexpr Index kNodeBit = 1u << 26;
+  static constexpr std::uint32_t kRefMask = (1u << 27) - 1;  ///< a slot's reference bits
+  static constexpr int kDistShift = 27;                       ///< a slot's 1 + displacement bits
+  static constexpr std::uint32_t kDistSaturated = 31;
+  /// A slot holding ref at `displacement` from its home.
+  static constexpr std::uint32_t encode(Index ref, std::size_t displacement) {
+    return ref | (static_cast<std::uint32_t>(displacement < kDistSaturated - 1 ? displacement + 1 : kDistSaturated)
+                  << kDistShift);
+  }
   std::size_t home(const Point& p) const;
+  /// home(p) for a cell center position whose coordinates have t trailing zeros.
+  std::size_t home_at(const Point& p, int t) const;
+  /// The trailing zeros t of a position where a cell center can be (then
+  /// its level is L - t), or -1 for any other position.
+  int center_tz(const Point& p) const;
   /// Home of child q of the cell whose hash base is `base`: one 16-slot line.
   std::size_t child_home(std::size_t base, std::size_t q) const {
     return ((base & ~std::size_t{15}) + 4 * q + (base & 3)) & (table_.size() - 1);
@@ -216,13 +266,18 @@ class Lattice {
   Point key_of(Index ref) const;
   std::size_t displacement(std::size_t slot) const;
   void put(std::size_t slot, Index ref, std::size_t displacement);
+  /// Probes from slot `at` for the entry whose home is `at` and that `match`es.
   template <class Match>
-  Index probe(const Point& p, Match match) const;
+  Index probe(std::size_t at, Match match) const;
   /// The slot holding `ref`, whose key has home slot `at`.
   std::size_t slot_of(Index ref, std::size_t at) const;
   /// Stores another reference in a slot, keeping its displacement.
   void replace_ref(std::size_t slot, Index ref);
   void prefetch(std::size_t at) const;
+  /// Look-ahead for refine_each / coarsen_each: the table line of p (far
+  /// ahead), then the record it names (near ahead).
+  void prefetch_slot(const Point& p) const;
+  void prefetch_record(const Point& p, bool node) const;
   /// The center at p, or kNone.
   Index find_center(const Point& p) const;
   /// The refined center (a node) at p, or kNone. Other nodes (grid nodes,
@@ -236,30 +291,89 @@ class Lattice {
   std::optional<RefineRefusal> refine_refusal(const Point& c, Index& ci) const;
   std::optional<CoarsenRefusal> coarsen_refusal(const Point& n, Index& ni, int& coarse_level) const;
   /// Inserts ref whose key has home slot `at` (the key must be absent and
-  /// there must be room); erases ref whose key has home slot `at`.
-  void table_insert(Index ref, std::size_t at);
-  void table_erase(Index ref, std::size_t at);
+  /// there must be room); erases ref whose key has home slot `at`. The
+  /// common cases (an empty home; ref at home with nothing displaced behind
+  /// it) are inline, the Robin Hood probing out of line.
+  void table_insert(Index ref, std::size_t at) {
+    if (table_[at] == 0) {
+      table_[at] = ref | (1u << kDistShift);  // displacement 0
+      ++table_used_;
+      return;
+    }
+    table_insert_probe(ref, at);
+  }
+  void table_erase(Index ref, std::size_t at) {
+    const std::size_t next = (at + 1) & (table_.size() - 1);
+    if (table_[at] == (ref | (1u << kDistShift)) && (table_[next] >> kDistShift) <= 1) {
+      table_[at] = 0;
+      --table_used_;
+      return;
+    }
+    table_erase_probe(ref, at);
+  }
+  void table_insert_probe(Index ref, std::size_t at);
+  void table_erase_probe(Index ref, std::size_t at);
   void rehash(std::size_t slots);
 
   /// Makes room for `new_centers` more centers, `new_nodes` more nodes and
   /// `new_keys` more table entries, so that the update that follows cannot
-  /// allocate (and so cannot throw).
-  void ensure_room(std::size_t new_centers, std::size_t new_nodes, std::size_t new_keys);
-  Index alloc_center();
-  Index alloc_node();
-  void free_center(Index c);
-  void free_node(Index n);
+  /// allocate (and so cannot throw). Load factor at most 0.6.
+  void ensure_room(std::size_t new_centers, std::size_t new_nodes, std::size_t new_keys) {
+    if (free_center_count_ + (centers_.capacity() - centers_.size()) >= new_centers &&
+        free_node_count_ + (nodes_.capacity() - nodes_.size()) >= new_nodes &&
+        (table_used_ + new_keys) * 5 <= table_.size() * 3)
+      return;
+    grow(new_centers, new_nodes, new_keys);
+  }
+  void grow(std::size_t new_centers, std::size_t new_nodes, std::size_t new_keys);
+  // Pop a free slot or append (capacity reserved by ensure_room); push a slot.
+  Index alloc_center() {
+    if (free_centers_ == kNone) {
+      centers_.emplace_back();
+      return static_cast<Index>(centers_.size() - 1);
+    }
+    const Index c = free_centers_;
+    free_centers_ = centers_[c].corner[0];
+    --free_center_count_;
+    return c;
+  }
+  Index alloc_node() {
+    if (free_nodes_ == kNone) {
+      nodes_.emplace_back();
+      return static_cast<Index>(nodes_.size() - 1);
+    }
+    const Index n = free_nodes_;
+    free_nodes_ = nodes_[n].cell[0];
+    --free_node_count_;
+    return n;
+  }
+  void free_center(Index c) {
+    Center& r = centers_[c];
+    r.corner[3] = kFreeMark;
+    r.corner[0] = free_centers_;
+    free_centers_ = c;
+    ++free_center_count_;
+  }
+  void free_node(Index n) {
+    Node& r = nodes_[n];
+    r.cell[0] = free_nodes_;
+    r.cell[1] = r.cell[2] = kNone;
+    r.cell[3] = kFreeMark;
+    free_nodes_ = n;
+    ++free_node_count_;
+  }
 
   LatticeSize size_;
-  std::vector<Center> centers_;
-  std::vector<Node> nodes_;
+  std::int64_t extent_x_ = 0, extent_y_ = 0;  ///< the domain: W*S by H*S
+  detail::Array<Center> centers_;
+  detail::Array<Node> nodes_;
   Index free_centers_ = kNone;
   Index free_nodes_ = kNone;
   std::size_t free_center_count_ = 0;
   std::size_t free_node_count_ = 0;
   std::size_t cell_count_ = 0;
   std::size_t node_count_ = 0;
-  std::vector<std::uint32_t> table_;
+  detail::Array<std::uint32_t> table_;
   std::size_t table_shift_ = 64;  ///< home = hash >> table_shift_
   std::size_t table_used_ = 0;
 };
