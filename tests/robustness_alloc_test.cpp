@@ -194,12 +194,10 @@ TEST(AllocationFailure, Square2x2) { run_walks({2, 2, 3}, 3, 40, 8, false); }
 TEST(AllocationFailure, Interior3x3) { run_walks({3, 3, 2}, 4, 40, 10, false); }
 TEST(AllocationFailure, Deep1x2) { run_walks({1, 2, 4}, 5, 60, 15, false); }
 
-// Disabled: checked_refine/checked_coarsen give only the basic guarantee. When
-// an allocation fails in the checker that runs AFTER the operation, the
-// operation stays applied and std::bad_alloc propagates (first failure:
-// lattice 2 2 2, checked refine 4 4, allocation #309). Reported with issue 6;
-// enable once checked.cpp restores the graph when its post-check throws.
-TEST(AllocationFailure, DISABLED_CheckedOperations) { run_walks({2, 2, 2}, 6, 12, 6, true); }
+// The checked wrappers too: an allocation that fails in the checker after the
+// operation (first seen at lattice 2 2 2, checked refine 4 4, allocation #309)
+// must leave the graph as it was passed in.
+TEST(AllocationFailure, CheckedOperations) { run_walks({2, 2, 2}, 6, 12, 6, true); }
 
 }  // namespace
 }  // namespace bccmis

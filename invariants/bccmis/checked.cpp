@@ -42,13 +42,34 @@ void expect_change(const VertexSet& before, const VertexSet& after, const Vertex
   throw ViolationError(inv::violation(0, code, points(plus, minus), text, section), "after " + op);
 }
 
+// The checks after an operation (defined below the wrappers, in call order).
+void check_refine_result(const Graph& before, const Graph& g, const RefineResult& r, const Vertex& c,
+                         const std::string& op);
+void check_coarsen_result(const Graph& before, const Graph& g, const CoarsenResult& r, const Vertex& n,
+                          const std::string& op);
+
 }  // namespace
 
 RefineResult checked_refine(Graph& g, const Vertex& c) {
   const std::string op = "refine " + inv::pos(c);
   validate(g, "before " + op);
-  const Graph before = g;
+  Graph before = g;
   RefineResult r = refine(g, c);
+  try {
+    check_refine_result(before, g, r, c, op);
+  } catch (...) {
+    // Strong guarantee: whatever failed after the operation (a violation, an
+    // allocation in the checker), the caller gets the graph it passed in.
+    g = std::move(before);  // a move of std::map/std::set members: no allocation
+    throw;
+  }
+  return r;
+}
+
+namespace {
+
+void check_refine_result(const Graph& before, const Graph& g, const RefineResult& r, const Vertex& c,
+                         const std::string& op) {
   if (!r.applied()) {
     if (!(g == before))
       throw ViolationError(inv::violation(0, "refused-changed", {c},
@@ -56,7 +77,7 @@ RefineResult checked_refine(Graph& g, const Vertex& c) {
                                               ") but changed the state",
                                           "§2.1 ¶1"),
                            "after " + op);
-    return r;
+    return;
   }
   validate(g, "after " + op);
   if (r.Y.size() != 4 || r.J_plus.size() > 4)
@@ -71,14 +92,30 @@ RefineResult checked_refine(Graph& g, const Vertex& c) {
   VertexSet gained = r.J_plus;
   gained.insert(c);
   expect_change(before.N, g.N, gained, {}, "N", op, "refine-count", "§2.1 eq. (4h), (5b)");
-  return r;
 }
+
+}  // namespace
 
 CoarsenResult checked_coarsen(Graph& g, const Vertex& n) {
   const std::string op = "coarsen " + inv::pos(n);
   validate(g, "before " + op);
-  const Graph before = g;
+  Graph before = g;
   CoarsenResult r = coarsen(g, n);
+  try {
+    check_coarsen_result(before, g, r, n, op);
+  } catch (...) {
+    // Strong guarantee: whatever failed after the operation (a violation, an
+    // allocation in the checker), the caller gets the graph it passed in.
+    g = std::move(before);  // a move of std::map/std::set members: no allocation
+    throw;
+  }
+  return r;
+}
+
+namespace {
+
+void check_coarsen_result(const Graph& before, const Graph& g, const CoarsenResult& r, const Vertex& n,
+                          const std::string& op) {
   if (!r.applied()) {
     if (!(g == before))
       throw ViolationError(inv::violation(0, "refused-changed", {n},
@@ -86,7 +123,7 @@ CoarsenResult checked_coarsen(Graph& g, const Vertex& n) {
                                               ") but changed the state",
                                           "§2.2 ¶1"),
                            "after " + op);
-    return r;
+    return;
   }
   validate(g, "after " + op);
   if (r.Y.size() != 4 || r.J_minus.size() > 4)
@@ -101,7 +138,8 @@ CoarsenResult checked_coarsen(Graph& g, const Vertex& n) {
   VertexSet lost = r.J_minus;
   lost.insert(n);
   expect_change(before.N, g.N, {}, lost, "N", op, "coarsen-count", "§2.2 eq. (9d), (10c)");
-  return r;
 }
+
+}  // namespace
 
 }  // namespace bccmis
