@@ -21,8 +21,9 @@
 //   reference        bccmis::Graph after the same operations (std::set / std::map)
 //   fast             bccmis::fast::Lattice after the same operations (pools as grown)
 //   fast_shrunk      the same after shrink_to_fit()
-//   surface_mesh3    CGAL::Surface_mesh<Epick::Point_3> (z = 0), reserved exactly
-//   surface_mesh2    CGAL::Surface_mesh<Epick::Point_2>, reserved exactly
+//   surface_mesh3        CGAL::Surface_mesh<Epick::Point_3> (z = 0), reserved exactly
+//   surface_mesh3_grown  the same built without reserve (arrays as grown by add_face)
+//   surface_mesh2        CGAL::Surface_mesh<Epick::Point_2>, reserved exactly
 #include <benchmark/benchmark.h>
 #include <malloc.h>
 
@@ -193,7 +194,7 @@ void BM_Fast(benchmark::State& st, bool shrink) {
   }
 }
 
-void BM_SurfaceMesh(benchmark::State& st, bool point3) {
+void BM_SurfaceMesh(benchmark::State& st, bool point3, bool reserve) {
   const StateSpec& spec = state_spec(st.range(0) != 0, st.range(1));
   fast::Lattice g(spec.size);
   for (const Point& c : spec.refines) g.refine(c);
@@ -201,7 +202,7 @@ void BM_SurfaceMesh(benchmark::State& st, bool point3) {
   for (auto _ : st) {
     const std::size_t h0 = heap_bytes();
     std::size_t heap = 0;
-    const HalfedgeMeshStats s = surface_mesh_of(t, point3, [&] {
+    const HalfedgeMeshStats s = surface_mesh_of(t, point3, reserve, [&] {
       heap = heap_bytes() - h0;
       return live_bytes();
     });
@@ -226,8 +227,9 @@ void register_all() {
   add("Memory/reference", BM_Reference);
   add("Memory/fast", [](benchmark::State& st) { BM_Fast(st, false); });
   add("Memory/fast_shrunk", [](benchmark::State& st) { BM_Fast(st, true); });
-  add("Memory/surface_mesh3", [](benchmark::State& st) { BM_SurfaceMesh(st, true); });
-  add("Memory/surface_mesh2", [](benchmark::State& st) { BM_SurfaceMesh(st, false); });
+  add("Memory/surface_mesh3", [](benchmark::State& st) { BM_SurfaceMesh(st, true, true); });
+  add("Memory/surface_mesh3_grown", [](benchmark::State& st) { BM_SurfaceMesh(st, true, false); });
+  add("Memory/surface_mesh2", [](benchmark::State& st) { BM_SurfaceMesh(st, false, true); });
 }
 
 }  // namespace

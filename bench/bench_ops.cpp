@@ -34,6 +34,11 @@
 //                     moving feature through both implementations and compare
 //                     canonical states; exit 1 on a difference
 //   --bccmis_max_cells=N  skip per-operation sizes above N (default 10^7)
+//   --bccmis_instructions=IMPL,CELLS,ORDER  run no benchmark: one untimed
+//                     round, then 4 batches of 4096 refines and coarsens
+//                     (IMPL reference|fast, ORDER 0 sweep|1 random), for
+//                     valgrind --tool=callgrind --toggle-collect=... to count
+//                     the instructions per operation (bench/RESULTS.md)
 #include <benchmark/benchmark.h>
 
 #include <ctime>
@@ -50,6 +55,13 @@
 #include <vector>
 
 #include "workloads.h"
+
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#define BCCMIS_BENCH_HAVE_CALLGRIND 1
+#else
+#define BCCMIS_BENCH_HAVE_CALLGRIND 0
+#endif
 
 namespace bccmis::bench {
 namespace {
@@ -365,6 +377,26 @@ int verify() {
   return failures;
 }
 
+template <class Impl>
+int instructions_run(std::int64_t cells, bool random) {
+  const LatticeSize size = square_lattice(cells, 4);
+  auto g = Impl::make(size);
+  const std::vector<Point>& order = cell_order(size, random);
+  const std::size_t batch = std::min<std::size_t>(order.size() / 4, 4096);
+  std::size_t applied = 0;
+  for (std::size_t round = 0; round < 5; ++round) {
+    const std::size_t begin = round * batch % (order.size() - batch + 1);
+    for (std::size_t i = begin; i < begin + batch; ++i) applied += Impl::refine(g, order[i]);
+    for (std::size_t i = begin; i < begin + batch; ++i) applied += Impl::coarsen(g, order[i]);
+#if BCCMIS_BENCH_HAVE_CALLGRIND
+    if (round == 0) CALLGRIND_ZERO_STATS;  // the first round grows the pools: not counted
+#endif
+  }
+  std::printf("%zu operations applied (%zu refines and %zu coarsens measured after the first round)\n", applied,
+              4 * batch, 4 * batch);
+  return applied == 10 * batch ? 0 : 1;
+}
+
 }  // namespace
 }  // namespace bccmis::bench
 
@@ -379,6 +411,13 @@ int main(int argc, char** argv) {
       do_verify = true;
     } else if (std::strncmp(argv[i], "--bccmis_max_cells=", 19) == 0) {
       g_max_cells = std::atoll(argv[i] + 19);
+    } else if (std::strncmp(argv[i], "--bccmis_instructions=", 22) == 0) {
+      char impl[16] = {};
+      long long cells = 0;
+      int order = 0;
+      if (std::sscanf(argv[i] + 22, "%15[a-z],%lld,%d", impl, &cells, &order) != 3) return 2;
+      return std::strcmp(impl, "fast") == 0 ? instructions_run<Fast>(cells, order != 0)
+                                            : instructions_run<Reference>(cells, order != 0);
     } else {
       argv[kept++] = argv[i];
     }

@@ -11,13 +11,15 @@ namespace {
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 
 template <class P, class Make>
-HalfedgeMeshStats build(const Triangulation& t, Make make_point, const std::function<std::size_t()>& live_bytes) {
+HalfedgeMeshStats build(const Triangulation& t, Make make_point, bool reserve,
+                        const std::function<std::size_t()>& live_bytes) {
   HalfedgeMeshStats s;
   const std::size_t before = live_bytes();
   {
     CGAL::Surface_mesh<P> mesh;
     // Euler: E = V + F - 1 for a triangulated disk.
-    mesh.reserve(static_cast<typename CGAL::Surface_mesh<P>::size_type>(t.points.size()),
+    if (reserve)
+      mesh.reserve(static_cast<typename CGAL::Surface_mesh<P>::size_type>(t.points.size()),
                  static_cast<typename CGAL::Surface_mesh<P>::size_type>(t.points.size() + t.triangles.size()),
                  static_cast<typename CGAL::Surface_mesh<P>::size_type>(t.triangles.size()));
     std::vector<typename CGAL::Surface_mesh<P>::Vertex_index> v;
@@ -39,10 +41,13 @@ HalfedgeMeshStats build(const Triangulation& t, Make make_point, const std::func
 
 }  // namespace
 
-HalfedgeMeshStats surface_mesh_of(const Triangulation& t, bool point3, const std::function<std::size_t()>& live_bytes) {
+HalfedgeMeshStats surface_mesh_of(const Triangulation& t, bool point3, bool reserve,
+                                  const std::function<std::size_t()>& live_bytes) {
   if (point3)
-    return build<K::Point_3>(t, [](const std::array<double, 2>& p) { return K::Point_3(p[0], p[1], 0); }, live_bytes);
-  return build<K::Point_2>(t, [](const std::array<double, 2>& p) { return K::Point_2(p[0], p[1]); }, live_bytes);
+    return build<K::Point_3>(
+        t, [](const std::array<double, 2>& p) { return K::Point_3(p[0], p[1], 0); }, reserve, live_bytes);
+  return build<K::Point_2>(t, [](const std::array<double, 2>& p) { return K::Point_2(p[0], p[1]); }, reserve,
+                           live_bytes);
 }
 
 }  // namespace bccmis::bench

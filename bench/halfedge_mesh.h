@@ -24,9 +24,11 @@ struct HalfedgeMeshStats {
 };
 
 /// Builds CGAL::Surface_mesh<Epick::Point_3> (z = 0) when `point3`, else
-/// Surface_mesh<Epick::Point_2>, after reserving exactly the element counts
-/// (the smallest a Surface_mesh of this triangulation can be), and measures
-/// it with `live_bytes` while it is alive.
-HalfedgeMeshStats surface_mesh_of(const Triangulation& t, bool point3, const std::function<std::size_t()>& live_bytes);
+/// Surface_mesh<Epick::Point_2>, and measures it with `live_bytes` while it
+/// is alive. With `reserve` the element counts are reserved exactly first
+/// (the smallest a Surface_mesh of this triangulation can be); without, the
+/// property arrays grow as add_vertex / add_face push (as built in practice).
+HalfedgeMeshStats surface_mesh_of(const Triangulation& t, bool point3, bool reserve,
+                                  const std::function<std::size_t()>& live_bytes);
 
 }  // namespace bccmis::bench

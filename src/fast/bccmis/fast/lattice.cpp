@@ -210,10 +210,10 @@ Point Lattice::node_position(Index n) const {
 // geometry (site_of): a side midpoint is a node iff one of the two cells
 // sharing the side is refined. So refine inserts its four children and
 // coarsen erases them, nothing else. The four children of a cell get homes
-// 4 slots apart in one 16-slot (64-byte) line chosen by their parent, so an
-// operation touches one line of the table for them; the spacing keeps their
-// runs apart (homes in consecutive slots would make long Robin Hood runs).
-// The load factor stays at most 0.6.
+// 4 slots apart in one 16-slot (64-byte, aligned) line chosen by their
+// parent's hash, so an operation touches one line of the table for them; the
+// spacing keeps their runs apart (homes in consecutive slots make long Robin
+// Hood runs). The load factor stays at most 0.6.
 
 
 std::size_t Lattice::home(const Point& p) const {

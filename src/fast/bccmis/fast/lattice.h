@@ -259,9 +259,11 @@ class Lattice {
   /// The trailing zeros t of a position where a cell center can be (then
   /// its level is L - t), or -1 for any other position.
   int center_tz(const Point& p) const;
-  /// Home of child q of the cell whose hash base is `base`: one 16-slot line.
+  /// Home of child q of the cell whose hash is `base`: slots base+1, +5, +9,
+  /// +13 within base's 16-slot line (never base itself, the home of a
+  /// level-0 parent).
   std::size_t child_home(std::size_t base, std::size_t q) const {
-    return ((base & ~std::size_t{15}) + 4 * q + (base & 3)) & (table_.size() - 1);
+    return ((base & ~std::size_t{15}) | ((base + 1 + 4 * q) & 15)) & (table_.size() - 1);
   }
   Point key_of(Index ref) const;
   std::size_t displacement(std::size_t slot) const;
