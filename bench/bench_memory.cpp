@@ -8,7 +8,7 @@
 //   bytes_per_cell       what operator new handed out (malloc_usable_size of
 //                        every live block: the global operator new of this
 //                        executable is replaced to count it)
-//   heap_bytes_per_cell  glibc's in-use heap (mallinfo2().uordblks), which
+//   heap_bytes_per_cell  glibc's in-use heap (mallinfo2: uordblks + hblkhd), which
 //                        adds the allocator's per-block headers: what the
 //                        process actually pays for many small std::set nodes
 // Each is the growth over the state before the structure was built.
@@ -84,7 +84,10 @@ namespace {
 bool g_smoke = false;
 
 std::size_t live_bytes() { return g_live_bytes.load(); }
-std::size_t heap_bytes() { return mallinfo2().uordblks; }
+std::size_t heap_bytes() {
+  const struct mallinfo2 m = mallinfo2();
+  return m.uordblks + m.hblkhd;  // small blocks in the arenas + large blocks mmapped on their own
+}
 
 /// Bytes held by what `build` returns, while it is alive.
 struct Measured {
@@ -171,6 +174,7 @@ void BM_Reference(benchmark::State& st) {
     report(st, m, g->C.size());
     st.PauseTiming();
     g.reset();
+    malloc_trim(0);  // consolidate the freed std::set nodes now, not in the next benchmark's first malloc
     st.ResumeTiming();
   }
 }

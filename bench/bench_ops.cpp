@@ -23,6 +23,8 @@
 //   Uniform6x6/<impl>/level:k       refine every cell of a 6x6 lattice, level
 //     by level, to level k (36 * 4^k cells). Why: the paper's initial
 //     lattice; a sequence where every refine creates and reuses junctions.
+//   LoadLatency/bytes:B             ns per dependent load in a B-byte buffer
+//     (pointer chase): what one cache miss costs on this machine.
 //   MovingFeature/<impl>            a disk circling a 16x16 lattice (L = 6);
 //     per frame, cells meeting it are refined to level L and cells it left
 //     are coarsened. Why: the cloth/contact use of §3 (Fig. 6); reports ops
@@ -289,6 +291,29 @@ void BM_MovingFeature(benchmark::State& st) {
   st.counters["cells"] = static_cast<double>(Impl::cells(anim.state()));
 }
 
+// ---- The machine: latency of a dependent load ---------------------------------------------------
+
+// A random cyclic permutation of 64-byte lines (huge pages advised, like the
+// lattice's arrays): ns per load when each load's address depends on the
+// previous one. What one cache miss costs at each working-set size bounds
+// the per-operation time of any structure that misses once per operation.
+void BM_LoadLatency(benchmark::State& st) {
+  const auto bytes = static_cast<std::size_t>(st.range(0));
+  const std::size_t lines = bytes / 64;
+  fast::detail::Array<std::uint64_t> next(lines * 8);
+  std::vector<std::uint64_t> order(lines);
+  std::iota(order.begin(), order.end(), 0);
+  std::shuffle(order.begin(), order.end(), std::mt19937_64(3));
+  for (std::size_t i = 0; i < lines; ++i) next[order[i] * 8] = order[(i + 1) % lines] * 8;
+  std::uint64_t at = 0;
+  for (auto _ : st) {
+    for (int k = 0; k < 1024; ++k) at = next[at];
+    benchmark::DoNotOptimize(at);
+  }
+  st.counters["ns_per_load"] =
+      benchmark::Counter(1024.0 * static_cast<double>(st.iterations()), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
 // ---- Registration -------------------------------------------------------------------------------
 
 void register_all() {
@@ -330,6 +355,12 @@ void register_all() {
 
   benchmark::RegisterBenchmark("MovingFeature/reference", BM_MovingFeature<Reference>)->Unit(benchmark::kMicrosecond);
   benchmark::RegisterBenchmark("MovingFeature/fast", BM_MovingFeature<Fast>)->Unit(benchmark::kMicrosecond);
+
+  auto* lat = benchmark::RegisterBenchmark("LoadLatency", BM_LoadLatency);
+  lat->ArgName("bytes")->Unit(benchmark::kMicrosecond);
+  for (const std::int64_t b : g_smoke ? std::vector<std::int64_t>{1 << 16}
+                                      : std::vector<std::int64_t>{1 << 16, 1 << 20, 1 << 22, 1 << 24, 1 << 26, 1 << 28})
+    lat->Arg(b);
 }
 
 // ---- --bccmis_verify: the workloads give the same states in both ---------------------------------

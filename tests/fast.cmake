@@ -28,3 +28,12 @@ if(TARGET bccmis::fast)
   gtest_discover_tests(fast_differential_test DISCOVERY_MODE PRE_TEST
     PROPERTIES LABELS property ENVIRONMENT "RC_PARAMS=seed=${BCCMIS_FAST_RC_SEED} max_success=100")
 endif()
+
+# The conformance harness (src/oracle, `bccmis conformance`) against the fast
+# implementation: the bundled traces, then random traces with shrinking.
+if(TARGET bccmis AND TARGET bccmis_fast_replay)
+  add_test(NAME fast.conformance
+           COMMAND bccmis conformance --impl $<TARGET_FILE:bccmis_fast_replay>
+                   --traces ${PROJECT_SOURCE_DIR}/spec/examples --random 300 --seed 20090303 --max-ops 40)
+  set_tests_properties(fast.conformance PROPERTIES LABELS conformance TIMEOUT 300)
+endif()

@@ -368,7 +368,8 @@ void Lattice::grow(std::size_t new_centers, std::size_t new_nodes, std::size_t n
     if (free_count >= wanted) return;
     const std::size_t need = pool.size() + (wanted - free_count);
     if (need > kMaxPool) throw std::length_error("bccmis::fast::Lattice: more than 2^26 - 1 vertices of one kind");
-    if (need > pool.capacity()) pool.reserve(std::min(kMaxPool, std::max(need, pool.capacity() * 2)));
+    // Grow by half: amortized O(1), at most 1.5x the size in capacity.
+    if (need > pool.capacity()) pool.reserve(std::min(kMaxPool, std::max(need, pool.capacity() + pool.capacity() / 2)));
   };
   grow(centers_, free_center_count_, new_centers);
   grow(nodes_, free_node_count_, new_nodes);
