@@ -33,6 +33,8 @@ foreach(trace ${_traces})
   get_filename_component(stem ${trace} NAME_WE)
   bccmis_cli_test(golden.${stem} 0 ARGS replay --check=every --quiet ${trace}
                   STDOUT_FILE ${_examples}/${stem}.expected LABEL golden)
+  bccmis_cli_test(golden.fast.${stem} 0 ARGS replay --impl=fast --check=every --quiet ${trace}
+                  STDOUT_FILE ${_examples}/${stem}.expected LABEL golden)
 endforeach()
 bccmis_cli_test(golden.fig2_stdin 0 ARGS replay --quiet - STDIN_FILE ${_examples}/fig2.trace
                 STDOUT_FILE ${_examples}/fig2.expected LABEL golden)

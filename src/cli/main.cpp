@@ -19,6 +19,7 @@
 
 #include "bccmis/apps.h"
 #include "bccmis/conformance.h"
+#include "bccmis/fast/lattice_interface.h"
 #include "explore/explore.h"
 #include "bccmis/format.h"
 #include "bccmis/invariants.h"
@@ -140,6 +141,7 @@ struct ReplayOptions {
   int depth = 4;
   bool quiet = false;
   std::int64_t max_vertices = TraceLimits{}.max_vertices;
+  std::string impl = "reference";
 };
 
 int run_replay(const ReplayOptions& o) {
@@ -154,11 +156,12 @@ int run_replay(const ReplayOptions& o) {
     // A violation stops the replay at the command that caused it.
     struct Stop {};
     Graph result;
-    auto after = [&](const TraceCommand& c, const Graph& now, std::string_view decision) {
+    // `vertices` is |N| + |C|; `graph()` gives the state as a reference Graph.
+    auto observe = [&](const TraceCommand& c, std::size_t vertices, const auto& graph, std::string_view decision) {
       if (c.kind == TraceCommand::Kind::Refine) ++refines;
       if (c.kind == TraceCommand::Kind::Coarsen) ++coarsens;
       if (decision.find(" refused ") != std::string_view::npos) ++refused;
-      if (const auto v = static_cast<std::int64_t>(now.N.size() + now.C.size()); v > o.max_vertices) {
+      if (const auto v = static_cast<std::int64_t>(vertices); v > o.max_vertices) {
         limit_error = name + ":" + std::to_string(c.line) + ":1: after '" + command_text(c) + "' the lattice has " +
                       std::to_string(v) + " vertices, above the limit of " + std::to_string(o.max_vertices) +
                       " (--max-vertices)";
@@ -167,15 +170,27 @@ int run_replay(const ReplayOptions& o) {
       const bool explicit_check = c.kind == TraceCommand::Kind::Check;
       if (explicit_check || o.check == "every") {
         ++checks;
-        if (auto v = check_graph(now, o.depth)) {
+        if (auto v = check_graph(graph(), o.depth)) {
           failure = name + ":" + std::to_string(c.line) + ": invariant violated after '" + command_text(c) +
                     "': " + to_string(*v);
           throw Stop{};
         }
       }
     };
+    auto after = [&](const TraceCommand& c, const Graph& now, std::string_view decision) {
+      observe(c, now.N.size() + now.C.size(), [&]() -> const Graph& { return now; }, decision);
+    };
+    auto after_fast = [&](const TraceCommand& c, const LatticeInterface& now, std::string_view decision) {
+      observe(c, now.cell_count() + now.node_count(), [&] { return now.to_graph(); }, decision);
+    };
+    std::unique_ptr<LatticeInterface> fast_result;
     try {
-      result = replay(trace, log, after);
+      if (o.impl == "fast") {
+        fast_result = replay(Impl::Fast, trace, log, after_fast);
+        result = fast_result->to_graph();
+      } else {
+        result = replay(trace, log, after);
+      }
     } catch (const Stop&) {
     }
     return result;
@@ -267,6 +282,9 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, max_depth))
       ->capture_default_str();
   replay_cmd->add_flag("-q,--quiet", ro.quiet, "No summary on stderr");
+  replay_cmd->add_option("--impl", ro.impl, "Implementation to replay with: reference (the transcription) or fast")
+      ->check(CLI::IsMember({"reference", "fast"}))
+      ->capture_default_str();
   replay_cmd->add_option("--max-vertices", ro.max_vertices, "Refuse a trace whose lattice grows beyond this many vertices (exit 2)")
       ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 40))
       ->capture_default_str();
