@@ -10,9 +10,10 @@
 //     that occupies that quadrant: at most 4 neighbours (a junction is the side
 //     midpoint of one cell, which then occupies two quadrants). The paper's
 //     set operations become a fixed number of slot writes: O(1).
-//   - centers and nodes live in two flat pools with free lists; only centers
-//     store a position (integer, as in spec/formats.md) and a level. A node's
-//     position follows from any cell around it and that cell's level.
+//   - centers (48 bytes) and nodes (16 bytes) live in two flat pools with
+//     free lists. Only centers store a position (integer, spec/formats.md);
+//     a cell's level follows from its position, and a node's position from
+//     any cell around it.
 //   - a position -> vertex table (Robin Hood open addressing, 4 bytes a
 //     slot) over the cells and refined centers serves the trace interface:
 //     refine(Point) and coarsen(Point). Grid nodes and side midpoints are
