@@ -110,5 +110,21 @@ TEST(Errata, E5_RefinedCenterLevelFromPosition) {
   EXPECT_EQ(refined_center_level(s, {-4, 4}), std::nullopt);
 }
 
+TEST(Errata, E6_TheGraphStoresTwoThirdsOfTheEdges) {
+  // Counted by hand for a uniform W x H lattice: every cell has 4 diagonal
+  // (stored) edges; the hull edges of eq. (1) are the W(H+1) horizontal and
+  // H(W+1) vertical grid edges. The paper says the stored edges are a third.
+  for (const LatticeSize s : {LatticeSize{1, 1, 0}, LatticeSize{4, 3, 1}, LatticeSize{10, 10, 0}}) {
+    const Graph g = make_lattice(s);
+    std::size_t stored = 0;
+    for (const Vertex& c : g.C) stored += g.nbr(c).size();
+    const auto W = static_cast<std::size_t>(s.W), H = static_cast<std::size_t>(s.H);
+    EXPECT_EQ(stored, 4 * W * H);
+    const std::size_t hull = W * (H + 1) + H * (W + 1);
+    EXPECT_EQ(3 * stored, 2 * (stored + hull - W - H));  // exactly 2/3 of the edges off the boundary
+    EXPECT_GT(stored, (stored + hull) / 2);                     // far more than one third
+  }
+}
+
 }  // namespace
 }  // namespace bccmis
