@@ -110,3 +110,6 @@ set_tests_properties(cli.render_fig2_content PROPERTIES DEPENDS cli.render_fig2 
 bccmis_cli_test(explore_112 0 ARGS explore 1 1 2 --no-progress STDOUT_REGEX "^explore 1 1 2: 17 states, 33 refine edges, 33 coarsen edges, .* ok")
 bccmis_cli_test(explore_221_json 0 ARGS explore 2 2 1 --json STDOUT_REGEX "\"states\": 16, .*\"ok\": true")
 bccmis_cli_test(explore_bad_lattice 2 ARGS explore 1 1 -1 STDERR_REGEX "L must be >= 0")
+# replay --json: fig3 by hand (spec/examples/fig3.expected): three decisions, 6 cells, 13 nodes.
+bccmis_cli_test(replay_json 0 ARGS replay --json ${_examples}/fig3.trace
+  STDOUT_REGEX "\"decisions\": \\[\"refine 10 2 ok\", \"refine 6 2 ok\", \"coarsen 6 2 ok\"\\].*\"cells\": 6, \"nodes\": 13, \"state\": \"bccmis-state 1\\\\nlattice 3 1 1\\\\n")

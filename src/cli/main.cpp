@@ -142,7 +142,29 @@ struct ReplayOptions {
   bool quiet = false;
   std::int64_t max_vertices = TraceLimits{}.max_vertices;
   std::string impl = "reference";
+  bool json = false;
 };
+
+/// A JSON string literal.
+std::string json_string(std::string_view text) {
+  std::string r = "\"";
+  for (char ch : text) {
+    switch (ch) {
+      case '"': r += "\\\""; break;
+      case '\\': r += "\\\\"; break;
+      case '\n': r += "\\n"; break;
+      default:
+        if (static_cast<unsigned char>(ch) < 0x20) {
+          char buf[8];
+          std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(ch)));
+          r += buf;
+        } else {
+          r += ch;
+        }
+    }
+  }
+  return r + "\"";
+}
 
 int run_replay(const ReplayOptions& o) {
   const std::string name = display_name(o.trace);
@@ -212,6 +234,26 @@ int run_replay(const ReplayOptions& o) {
     }
   }
   const std::string state = canonical_state(g);
+  if (o.json) {
+    // One JSON object on stdout: the decisions, the canonical state and the counts.
+    std::string out = "{\"trace\": " + json_string(name) + ", \"impl\": " + json_string(o.impl) + ", \"decisions\": [";
+    std::size_t start = 0;
+    bool first = true;
+    while (start < log.size()) {
+      const std::size_t nl = log.find('\n', start);
+      out += (first ? "" : ", ") + json_string(std::string_view(log).substr(start, nl - start));
+      first = false;
+      start = nl + 1;
+    }
+    out += "], \"refines\": " + std::to_string(refines) + ", \"coarsens\": " + std::to_string(coarsens) +
+           ", \"refused\": " + std::to_string(refused) + ", \"checks\": " + std::to_string(checks) +
+           ", \"cells\": " + std::to_string(g.C.size()) + ", \"nodes\": " + std::to_string(g.N.size()) +
+           ", \"state\": " + json_string(state) + "}\n";
+    if (!o.log_file.empty()) write_output(o.log_file, log);
+    if (!o.state_file.empty()) write_output(o.state_file, state);
+    write_output("-", out);
+    return kExitOk;
+  }
   if (o.log_file.empty() && o.state_file.empty()) {
     write_output("-", log + state);
   } else {
@@ -282,6 +324,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, max_depth))
       ->capture_default_str();
   replay_cmd->add_flag("-q,--quiet", ro.quiet, "No summary on stderr");
+  replay_cmd->add_flag("--json", ro.json, "Print one JSON object (decisions, counts, canonical state) instead of the text");
   replay_cmd->add_option("--impl", ro.impl, "Implementation to replay with: reference (the transcription) or fast")
       ->check(CLI::IsMember({"reference", "fast"}))
       ->capture_default_str();
