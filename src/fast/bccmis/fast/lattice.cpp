@@ -240,9 +240,6 @@ std::size_t Lattice::displacement(std::size_t i) const {
   return (i - home(key_of(table_[i] & kRefMask))) & (table_.size() - 1);
 }
 
-
-void Lattice::put(std::size_t i, Index ref, std::size_t displacement) { table_[i] = encode(ref, displacement); }
-
 std::size_t Lattice::slot_of(Index ref, std::size_t at) const {
   const std::size_t mask = table_.size() - 1;
   std::size_t i = at;

@@ -268,7 +268,6 @@ class Lattice {
   }
   Point key_of(Index ref) const;
   std::size_t displacement(std::size_t slot) const;
-  void put(std::size_t slot, Index ref, std::size_t displacement);
   /// Probes from slot `at` for the entry whose home is `at` and that `match`es.
   template <class Match>
   Index probe(std::size_t at, Match match) const;
