@@ -42,8 +42,13 @@ struct Domain {
     if (on_x || on_y) return Place::Boundary;
     return Place::Interior;
   }
-  /// Half-side 2^(L-level) of a level-`level` cell; 0 <= level <= L.
-  std::int64_t half(int level) const { return std::int64_t{1} << (L - level); }
+  /// Half-side 2^(L-level) of a level-`level` cell; 0 for a level outside
+  /// 0..L (a corrupt stored level: the geometry checks then report it, and
+  /// the shift never goes out of range).
+  std::int64_t half(int level) const {
+    if (level < 0 || level > L) return 0;
+    return std::int64_t{1} << (L - level);
+  }
 
   /// The level of the cell whose center is at p, judged from p alone: p lies
   /// strictly inside the domain and both coordinates are odd multiples of the
