@@ -7,6 +7,9 @@ packages=(
   cmake ninja-build g++ clang-14 libclang-rt-14-dev llvm-14 pkg-config python3
   libgtest-dev libgmock-dev googletest librapidcheck-dev libbenchmark-dev
   libcgal-dev libgmp-dev libmpfr-dev libcli11-dev libstb-dev
+  # optional components: the p4est bridge (p4est is built with OpenMPI, whose
+  # headers libp4est-dev does not pull in) and the browser test of the viewer
+  libp4est-dev libopenmpi-dev openmpi-bin chromium
 )
 
 missing=()
