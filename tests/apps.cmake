@@ -6,8 +6,9 @@ add_executable(apps_tests
   ${CMAKE_CURRENT_LIST_DIR}/apps_balance_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/apps_image_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/apps_heightfield_test.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/apps_animate_test.cpp)
-target_link_libraries(apps_tests PRIVATE bccmis::apps bccmis::core bccmis::invariants bccmis::oracle
+  ${CMAKE_CURRENT_LIST_DIR}/apps_animate_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/apps_fast_test.cpp)
+target_link_libraries(apps_tests PRIVATE bccmis::apps bccmis::fast bccmis::core bccmis::invariants bccmis::oracle
                       GTest::gtest_main bccmis::warnings)
 target_compile_definitions(apps_tests PRIVATE BCCMIS_APPS_SAMPLES="${PROJECT_SOURCE_DIR}/apps/samples")
 # The 66k-state corner-balance counts run under `exhaustive` (release build,
@@ -30,5 +31,9 @@ if(Python3_FOUND)
   add_test(NAME apps.sample_terrain_reproducible
            COMMAND Python3::Interpreter ${PROJECT_SOURCE_DIR}/apps/samples/make_terrain.py terrain --size 128 --bits 16
                    --check ${PROJECT_SOURCE_DIR}/apps/samples/terrain128.pgm)
-  set_tests_properties(apps.sample_terrain_reproducible PROPERTIES LABELS "unit;apps")
+  add_test(NAME apps.sample_terrain256_reproducible
+           COMMAND Python3::Interpreter ${PROJECT_SOURCE_DIR}/apps/samples/make_terrain.py terrain --size 256 --bits 16
+                   --check ${PROJECT_SOURCE_DIR}/apps/samples/terrain256.pgm)
+  set_tests_properties(apps.sample_terrain_reproducible apps.sample_terrain256_reproducible
+                       PROPERTIES LABELS "unit;apps")
 endif()

@@ -9,6 +9,8 @@
 #include <sstream>
 #include <string>
 
+#include <unistd.h>
+
 #include "bccmis/animate.h"
 #include "bccmis/apps.h"
 #include "bccmis/format.h"
@@ -131,7 +133,7 @@ TEST(Animate, PathParsingAndArcLength) {
 }
 
 TEST(RunAnimate, WritesFramesStatsAndState) {
-  const auto dir = std::filesystem::temp_directory_path() / "bccmis_apps_run_animate";
+  const auto dir = std::filesystem::temp_directory_path() / ("bccmis_apps_run_animate_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   AnimateOptions o;

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include "bccmis/apps.h"
 #include "bccmis/format.h"
 #include "bccmis/heightfield.h"
@@ -413,7 +415,8 @@ class RunHeightfield : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = std::filesystem::temp_directory_path() /
-           ("bccmis_apps_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+           ("bccmis_apps_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+            std::to_string(::getpid()));  // unique: two builds' suites may run at once
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
   }
@@ -495,6 +498,55 @@ TEST_F(RunHeightfield, IncrementalCoarseningFromAState) {
   EXPECT_NE(out_.str().find("refinements 0\n"), std::string::npos) << out_.str();
   EXPECT_NE(out_.str().find("within_tolerance true"), std::string::npos);
   EXPECT_LE(parse_state(slurp(again.state)).C.size(), after.C.size());
+}
+
+TEST_F(RunHeightfield, FastImplWritesTheSameOutputs) {
+  // From the initial lattice and, with coarsening, from a state: the fast
+  // implementation's files equal the reference's byte for byte, and so do
+  // the statistics apart from the impl line and the times.
+  auto without_varying = [](const std::string& stats) {
+    std::string kept;
+    std::istringstream in(stats);
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind("impl ", 0) != 0 && line.find("_seconds ") == std::string::npos) kept += line + "\n";
+    return kept;
+  };
+  std::map<std::string, std::string> first_stats;
+  for (const std::string from : {"", "fine.state"}) {
+    std::map<std::string, std::string> files;
+    for (const std::string impl : {"reference", "fast"}) {
+      SCOPED_TRACE("impl " + impl + ", from '" + from + "'");
+      HeightfieldOptions o;
+      o.input = BCCMIS_APPS_SAMPLES "/terrain128.pgm";
+      o.impl = impl;
+      o.tolerance = from.empty() ? 0.01 : 0.05;
+      o.measure = "samples";
+      if (!from.empty()) o.from = path(from);
+      const std::string stem = (from.empty() ? "fine" : "coarse") + std::string(impl == "fast" ? "-fast" : "");
+      o.state = path(stem + ".state");
+      o.obj = path(stem + ".obj");
+      o.check = true;
+      ASSERT_EQ(run(o), 0) << err_.str();
+      EXPECT_NE(out_.str().find("impl " + impl + "\n"), std::string::npos) << out_.str();
+      const std::string stats = without_varying(out_.str());
+      if (impl == "reference") {
+        first_stats[from] = stats;
+        files[".state"] = slurp(o.state);
+        files[".obj"] = slurp(o.obj);
+      } else {
+        EXPECT_EQ(stats, first_stats[from]);
+        EXPECT_EQ(slurp(o.state), files[".state"]);
+        EXPECT_EQ(slurp(o.obj), files[".obj"]);
+      }
+    }
+  }
+  EXPECT_NE(first_stats[""], first_stats["fine.state"]);
+
+  HeightfieldOptions bad;
+  bad.input = BCCMIS_APPS_SAMPLES "/terrain128.pgm";
+  bad.impl = "quick";
+  EXPECT_EQ(run(bad), 2);
+  EXPECT_EQ(err_.str(), "bccmis heightfield: impl 'quick' is unknown: use reference or fast\n");
 }
 
 TEST_F(RunHeightfield, BadInputExitsTwoWithAMessage) {

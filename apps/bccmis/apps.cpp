@@ -13,6 +13,8 @@
 
 #include "bccmis/animate.h"
 #include "bccmis/balance.h"
+#include "bccmis/fast/lattice.h"
+#include "bccmis/fast/lattice_interface.h"
 #include "bccmis/format.h"
 #include "bccmis/heightfield.h"
 #include "bccmis/image.h"
@@ -236,6 +238,8 @@ int run_heightfield(const HeightfieldOptions& o, std::ostream& out, std::ostream
     require(o.progress == "auto" || o.progress == "always" || o.progress == "never",
             "progress '" + o.progress + "' is unknown: use auto, always or never");
     check_outputs({&o.obj, &o.ply, &o.vtu, &o.svg, &o.state, &o.stats});
+    const std::optional<Impl> impl = parse_impl(o.impl);
+    require(impl.has_value(), "impl '" + o.impl + "' is unknown: use reference or fast");
 
     const std::string input_name = o.input == "-" ? "<stdin>" : o.input;
     const HeightField field = parse_height_field(read_input(o.input), input_name);
@@ -271,13 +275,28 @@ int run_heightfield(const HeightfieldOptions& o, std::ostream& out, std::ostream
     settings.coarsen = !o.from.empty();
     settings.balance = balance;
     const auto t0 = Clock::now();
-    const TessellateReport report = tessellate(g, sampler, settings, [&](int sweep, const Graph& now, std::size_t ops) {
+    auto after_sweep = [&](int sweep, std::size_t cells, std::size_t ops, const auto& graph_of_now) {
       if (progress)
-        err << tool << ": sweep " << sweep << ": " << ops << " operations, " << now.C.size() << " cells, "
+        err << tool << ": sweep " << sweep << ": " << ops << " operations, " << cells << " cells, "
             << fmt(seconds_since(t0), "%.2f") << " s" << std::endl;
-      if (o.check) run_check(now, balance, "after sweep " + std::to_string(sweep));
-    });
-    const double tessellate_seconds = seconds_since(t0);
+      if (o.check) run_check(graph_of_now(), balance, "after sweep " + std::to_string(sweep));
+    };
+    TessellateReport report;
+    double tessellate_seconds = 0;
+    if (*impl == Impl::Reference) {
+      report = tessellate(g, sampler, settings, [&](int sweep, const Graph& now, std::size_t ops) {
+        after_sweep(sweep, now.C.size(), ops, [&]() -> const Graph& { return now; });
+      });
+      tessellate_seconds = seconds_since(t0);
+    } else {
+      fast::Lattice lattice = fast::Lattice::from_graph(g);
+      const auto t1 = Clock::now();
+      report = tessellate(lattice, sampler, settings, [&](int sweep, const fast::Lattice& now, std::size_t ops) {
+        after_sweep(sweep, now.cell_count(), ops, [&] { return now.to_graph(); });
+      });
+      tessellate_seconds = seconds_since(t1);
+      g = lattice.to_graph();
+    }
     if (o.check) run_check(g, balance, "at the end");
     const MeshError error = mesh_error(g, sampler);
 
@@ -304,6 +323,7 @@ int run_heightfield(const HeightfieldOptions& o, std::ostream& out, std::ostream
                        " maxval " + std::to_string(field.maxval));
     r.add("lattice", std::to_string(g.size.W) + " " + std::to_string(g.size.H) + " " + std::to_string(g.size.L));
     if (!o.from.empty()) r.add("from", o.from);
+    r.add("impl", o.impl);
     r.add("balance", o.balance);
     r.add("measure", o.measure);
     if (*measure == ErrorMeasure::RandomSamples) {

@@ -62,6 +62,11 @@ struct HeightfieldOptions {
   std::string balance = "edge";
   /// sweeps: stop after this many sweeps (>= 0); 0 means until nothing changes. Default 0.
   int sweeps = 0;
+  /// impl: the lattice implementation that runs the tessellation,
+  /// "reference" (src/bccmis, std::set) or "fast" (src/fast, flat arrays).
+  /// Both make the same decisions, so every output is the same; only
+  /// tessellate_seconds differs. Default "reference".
+  std::string impl = "reference";
   /// from: a canonical state to start from instead of the initial lattice
   /// (incremental re-tessellation: cells whose merged error is within the
   /// tolerance are coarsened first, then refinement sweeps run). Default "" (none).

@@ -26,6 +26,10 @@
 
 namespace bccmis {
 
+namespace fast {
+class Lattice;
+}
+
 /// Which neighbours the 2:1 level rule covers.
 enum class Balance {
   Edge,    ///< `edge`: cells sharing a piece of side (the core's rule)
@@ -71,6 +75,9 @@ struct BalancedRefineResult {
 /// (tests/apps_balance_test.cpp checks this against a geometric closure). A
 /// refused call changes nothing. In corner mode g must be corner-balanced.
 BalancedRefineResult refine_balanced(Graph& g, const Point& c, Balance b = Balance::Edge);
+/// The same cascade on the fast implementation (src/fast): the same cells
+/// refined in the same order.
+BalancedRefineResult refine_balanced(fast::Lattice& g, const Point& c, Balance b = Balance::Edge);
 
 /// Decides whether the four cells around refined center n may be merged.
 /// Called only when can_coarsen_under(g, n, mode) is empty.

@@ -6,9 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "bccmis/balance.h"
-#include "bccmis/ops.h"
-#include "bccmis/oracle.h"
+#include "bccmis/detail/generic.h"
 
 namespace bccmis {
 
@@ -48,18 +46,6 @@ struct SplitMix64 {
   }
   double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }  // [0, 1)
 };
-
-// Counter-clockwise order around c, starting at angle -pi (exclusive). The
-// boundary nodes are at multiples of 45 degrees from c, so atan2 of the exact
-// integer differences separates them.
-std::vector<Point> ccw_around(const Point& c, const VertexSet& boundary) {
-  std::vector<Point> ring(boundary.begin(), boundary.end());
-  auto angle = [&](const Point& p) {
-    return std::atan2(static_cast<double>(p.y - c.y), static_cast<double>(p.x - c.x));
-  };
-  std::sort(ring.begin(), ring.end(), [&](const Point& a, const Point& b) { return angle(a) < angle(b); });
-  return ring;
-}
 
 }  // namespace
 
@@ -163,9 +149,7 @@ double CellFan::at(double x, double y) const {
   return zc_ + sa * (z_[best] - zc_) + sb * (z_[(best + 1) % k] - zc_);
 }
 
-CellFan cell_fan(const Graph& g, const Point& c, const HeightSampler& s) {
-  return CellFan(c, g.level_of(c), boundary_in_angular_order(g, c), s);
-}
+CellFan cell_fan(const Graph& g, const Point& c, const HeightSampler& s) { return detail::cell_fan(g, c, s); }
 
 double cell_error(const CellFan& fan, const HeightSampler& s, const ErrorSettings& e) {
   const Point c = fan.center();
@@ -228,50 +212,12 @@ MeshError mesh_error(const Graph& g, const HeightSampler& s) {
 
 TessellateReport tessellate(Graph& g, const HeightSampler& s, const TessellateSettings& t,
                             const SweepObserver& observer) {
-  TessellateReport report;
-  // Errors within rounding of the height scale count as zero, so a plane
-  // needs no refinement even at tolerance 0.
-  const double limit = t.tolerance + kRoundingSlack * s.vertical_scale();
-  auto budget_left = [&] { return t.max_sweeps <= 0 || report.sweeps < t.max_sweeps; };
+  return detail::tessellate(g, s, t, observer);
+}
 
-  if (t.coarsen) {
-    // Merge four cells when the merged cell, with the boundary it would have,
-    // interpolates the field within tolerance.
-    const CoarsenPredicate within = [&](const Graph& now, const Point& n) {
-      const VertexSet B = boundary_after_coarsen(now, n);
-      const int level = now.level_of(*now.nbr(n).begin()) - 1;
-      return cell_error(CellFan(n, level, ccw_around(n, B), s), s, t.error) <= limit;
-    };
-    while (budget_left()) {
-      const std::size_t done = coarsen_sweep(g, within, t.balance);
-      if (done == 0) break;
-      report.coarsenings += done;
-      ++report.sweeps;
-      if (observer) observer(report.sweeps, g, done);
-    }
-  }
-
-  report.converged = false;
-  while (budget_left()) {
-    std::vector<Point> marked;
-    for (const Point& c : g.C)
-      if (g.level_of(c) < g.size.L && cell_error(g, c, s, t.error) > limit) marked.push_back(c);
-    if (marked.empty()) {
-      report.converged = true;
-      break;
-    }
-    std::size_t done = 0;
-    for (const Point& c : marked) {
-      // A cascade earlier in this sweep may have refined c already; its
-      // children are measured in the next sweep.
-      if (!g.is_center(c)) continue;
-      done += refine_balanced(g, c, t.balance).refined.size();
-    }
-    report.refinements += done;
-    ++report.sweeps;
-    if (observer) observer(report.sweeps, g, done);
-  }
-  return report;
+TessellateReport tessellate(fast::Lattice& g, const HeightSampler& s, const TessellateSettings& t,
+                            const FastSweepObserver& observer) {
+  return detail::tessellate(g, s, t, observer);
 }
 
 }  // namespace bccmis

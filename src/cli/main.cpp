@@ -420,6 +420,9 @@ int main(int argc, char** argv) {
   hf_cmd->add_option("--balance", hf.balance, "2:1 rule: edge (the core's) or corner")
       ->check(CLI::IsMember({"edge", "corner"}))
       ->capture_default_str();
+  hf_cmd->add_option("--impl", hf.impl, "Lattice implementation: reference or fast (same output, faster)")
+      ->check(CLI::IsMember({"reference", "fast"}))
+      ->capture_default_str();
   hf_cmd->add_option("--sweeps", hf.sweeps, "Number of sweeps; 0 = until nothing changes")->capture_default_str();
   hf_cmd->add_option("--from", hf.from, "Start from this canonical state (incremental re-tessellation)");
   hf_cmd->add_option("--obj", hf.obj, "Write a Wavefront OBJ mesh");

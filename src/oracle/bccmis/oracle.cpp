@@ -30,20 +30,6 @@ std::string kind(const Graph& g, const Point& p) {
   return "node " + pos(p);
 }
 
-// Counter-clockwise order of directions in atan2 order, (-pi, pi]: first the
-// directions with y < 0 or along +x, then the others; within each half, u
-// comes before v iff v is counter-clockwise of u. The boundary nodes of a
-// cell lie at its corners and side midpoints, so their directions from the
-// center are multiples of 45 degrees and the signs of the components decide
-// the order exactly (no overflow for any coordinates).
-bool angle_less(const Point& u0, const Point& v0) {
-  auto sgn = [](std::int64_t a) { return static_cast<int>(a > 0) - static_cast<int>(a < 0); };
-  const int ux = sgn(u0.x), uy = sgn(u0.y), vx = sgn(v0.x), vy = sgn(v0.y);
-  auto half = [](int x, int y) { return (y < 0 || (y == 0 && x > 0)) ? 0 : 1; };
-  if (half(ux, uy) != half(vx, vy)) return half(ux, uy) < half(vx, vy);
-  return ux * vy - uy * vx > 0;
-}
-
 std::string xml_escape(const std::string& s) {
   std::string r;
   for (char ch : s) {
@@ -59,6 +45,20 @@ std::string xml_escape(const std::string& s) {
 }
 
 }  // namespace
+
+// Counter-clockwise order of directions in atan2 order, (-pi, pi]: first the
+// directions with y < 0 or along +x, then the others; within each half, u
+// comes before v iff v is counter-clockwise of u. The boundary nodes of a
+// cell lie at its corners and side midpoints, so their directions from the
+// center are multiples of 45 degrees and the signs of the components decide
+// the order exactly (no overflow for any coordinates).
+bool angle_less(const Point& u0, const Point& v0) {
+  auto sgn = [](std::int64_t a) { return static_cast<int>(a > 0) - static_cast<int>(a < 0); };
+  const int ux = sgn(u0.x), uy = sgn(u0.y), vx = sgn(v0.x), vy = sgn(v0.y);
+  auto half = [](int x, int y) { return (y < 0 || (y == 0 && x > 0)) ? 0 : 1; };
+  if (half(ux, uy) != half(vx, vy)) return half(ux, uy) < half(vx, vy);
+  return ux * vy - uy * vx > 0;
+}
 
 std::vector<std::string> diff_states(const Graph& a, const Graph& b) {
   std::vector<std::string> out;
