@@ -24,7 +24,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <exception>
-#include <iterator>
 #include <optional>
 #include <span>
 #include <string>
@@ -42,27 +41,7 @@ using namespace bccmis;
 constexpr std::size_t kMaxOps = 128;
 constexpr std::string_view kTarget = "fuzz_differential";
 
-class Bytes {
- public:
-  Bytes(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
-  bool empty() const { return pos_ >= size_; }
-  std::uint8_t next() { return pos_ < size_ ? data_[pos_++] : 0; }
-  std::size_t index(std::size_t n) {
-    std::size_t k = next();
-    if (n > 256) k |= std::size_t{next()} << 8;
-    return k % n;
-  }
-
- private:
-  const std::uint8_t* data_;
-  std::size_t size_;
-  std::size_t pos_ = 0;
-};
-
-template <class Set>
-typename Set::value_type nth(const Set& s, std::size_t k) {
-  return *std::next(s.begin(), static_cast<std::ptrdiff_t>(k));
-}
+using fuzz::Bytes;
 
 std::string decision(const std::optional<RefineRefusal>& r) { return r ? std::string(code(*r)) : "ok"; }
 std::string decision(const std::optional<CoarsenRefusal>& r) { return r ? std::string(code(*r)) : "ok"; }
@@ -196,44 +175,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   lattice.H = 1 + in.next() % 4;
   lattice.L = in.next() % 6;
   Twin twin(lattice);
-  const std::int64_t S = level0_side(lattice);
   for (std::size_t op = 0; op < kMaxOps && !in.empty(); ++op) {
     const std::uint8_t s = in.next();
     const bool batch = (s & 0x80) != 0;
-    const Graph& g = twin.graph();
-    switch (s & 7) {
-      case 0:
-      case 1:
-      case 2:
-        twin.refine(nth(g.C, in.index(g.C.size())), batch);
-        break;
-      case 3:
-      case 4: {
-        std::vector<Point> refined;
-        for (const Point& n : g.N)
-          if (refined_center_level(g.size, n)) refined.push_back(n);
-        if (refined.empty()) break;
-        twin.coarsen(refined[in.index(refined.size())], batch);
-        break;
-      }
-      case 5:
-        twin.coarsen(nth(g.N, in.index(g.N.size())), batch);
-        break;
-      default: {
-        auto coordinate = [&](std::int64_t extent) -> std::int64_t {
-          const std::uint8_t b = in.next();
-          if (b == 0xff) return INT64_MAX;
-          if (b == 0xfe) return INT64_MIN;
-          return static_cast<std::int64_t>(b) % (extent + 3) - 1;
-        };
-        const Point p{coordinate(lattice.W * S), coordinate(lattice.H * S)};
-        if ((s & 7) == 6)
-          twin.refine(p, batch);
-        else
-          twin.coarsen(p, batch);
-        break;
-      }
-    }
+    fuzz::decode_operation(
+        in, s, twin.graph(), [&](const Point& c) { twin.refine(c, batch); },
+        [&](const Point& n) { twin.coarsen(n, batch); });
     if (s & 0x40) twin.reseat((s & 0x20) != 0);
   }
   twin.compare_queries();

@@ -25,7 +25,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <exception>
-#include <iterator>
 #include <optional>
 #include <string>
 #include <vector>
@@ -44,28 +43,7 @@ using namespace bccmis;
 constexpr std::size_t kMaxOps = 96;
 constexpr std::string_view kTarget = "fuzz_refine_coarsen";
 
-class Bytes {
- public:
-  Bytes(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
-  bool empty() const { return pos_ >= size_; }
-  std::uint8_t next() { return pos_ < size_ ? data_[pos_++] : 0; }
-  /// An index below `n` (n > 0): one byte, or two when n > 256.
-  std::size_t index(std::size_t n) {
-    std::size_t k = next();
-    if (n > 256) k |= std::size_t{next()} << 8;
-    return k % n;
-  }
-
- private:
-  const std::uint8_t* data_;
-  std::size_t size_;
-  std::size_t pos_ = 0;
-};
-
-template <class Set>
-typename Set::value_type nth(const Set& s, std::size_t k) {
-  return *std::next(s.begin(), static_cast<std::ptrdiff_t>(k));
-}
+using fuzz::Bytes;
 
 class Run {
  public:
@@ -169,46 +147,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   lattice.H = 1 + in.next() % 3;
   lattice.L = in.next() % 5;
   Run run(lattice);
-  const std::int64_t S = level0_side(lattice);
   for (std::size_t op = 0; op < kMaxOps && !in.empty(); ++op) {
     const std::uint8_t s = in.next();
     const bool invert = (s & 0x80) != 0;
-    const Graph& g = run.graph();
-    switch (s & 7) {
-      case 0:
-      case 1:
-      case 2:
-        run.refine_at(nth(g.C, in.index(g.C.size())), invert);
-        break;
-      case 3:
-      case 4: {
-        std::vector<Vertex> refined;
-        for (const Vertex& n : g.N)
-          if (refined_center_level(g.size, n)) refined.push_back(n);
-        if (refined.empty()) break;
-        run.coarsen_at(refined[in.index(refined.size())], invert);
-        break;
-      }
-      case 5:
-        run.coarsen_at(nth(g.N, in.index(g.N.size())), invert);
-        break;
-      default: {
-        // Raw positions: a little beyond the domain on every side, and an
-        // occasional extreme value.
-        auto coordinate = [&](std::int64_t extent) -> std::int64_t {
-          const std::uint8_t b = in.next();
-          if (b == 0xff) return INT64_MAX;
-          if (b == 0xfe) return INT64_MIN;
-          return static_cast<std::int64_t>(b) % (extent + 3) - 1;
-        };
-        const Vertex p{coordinate(lattice.W * S), coordinate(lattice.H * S)};
-        if ((s & 7) == 6)
-          run.refine_at(p, invert);
-        else
-          run.coarsen_at(p, invert);
-        break;
-      }
-    }
+    fuzz::decode_operation(
+        in, s, run.graph(), [&](const Vertex& c) { run.refine_at(c, invert); },
+        [&](const Vertex& n) { run.coarsen_at(n, invert); });
   }
   run.coarsen_everything();
   return 0;
