@@ -46,7 +46,7 @@ using fuzz::Bytes;
 std::string decision(const std::optional<RefineRefusal>& r) { return r ? std::string(code(*r)) : "ok"; }
 std::string decision(const std::optional<CoarsenRefusal>& r) { return r ? std::string(code(*r)) : "ok"; }
 
-std::string text(const Point& p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; }
+std::string text(const Point& p) { return bccmis::to_string(p); }
 
 class Twin {
  public:

@@ -43,8 +43,13 @@ void PrintTo(const Expected& e, std::ostream* os) {
 }
 
 std::string name_of(const testing::TestParamInfo<Expected>& info) {
-  return "W" + std::to_string(info.param.W) + "_H" + std::to_string(info.param.H) + "_L" +
-         std::to_string(info.param.L);
+  std::string name = "W";
+  name += std::to_string(info.param.W);
+  name += "_H";
+  name += std::to_string(info.param.H);
+  name += "_L";
+  name += std::to_string(info.param.L);
+  return name;
 }
 
 void expect_explored_counts(const Expected& e) {

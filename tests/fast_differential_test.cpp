@@ -37,7 +37,10 @@ std::string codes(const std::optional<CoarsenRefusal>& r) { return r ? std::stri
 
 std::string set_text(const VertexSet& s) {
   std::string out = "{";
-  for (const Point& p : s) out += " " + point_text(p);
+  for (const Point& p : s) {
+    out += ' ';
+    out += point_text(p);
+  }
   return out + " }";
 }
 

@@ -31,7 +31,7 @@ std::string read_file(const fs::path& p) {
   return os.str();
 }
 
-std::string text(const Point& p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; }
+std::string text(const Point& p) { return to_string(p); }
 
 /// Both printers of the fast lattice agree with the reference's printer of g.
 void expect_same_state(const Graph& g, const Lattice& lat, const std::string& where) {

@@ -177,7 +177,7 @@ inline Projection project(const model::State& m) {
 }
 
 inline std::string point_text(const Point& p) {
-  return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
+  return to_string(p);
 }
 
 /// Empty when g's centers (position, level) are exactly the model's leaves and

@@ -76,7 +76,7 @@ void link(Graph& g, Point a, Point b) {
 
 void add_node(Graph& g, Point n) { g.N.insert(n); }
 
-std::string pos(Point p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; }
+std::string pos(Point p) { return to_string(p); }
 
 // Asserts that g's first violation has this code, layer and where, that the
 // message starts with the code and names every position in where.

@@ -151,7 +151,7 @@ void check_outputs(const std::vector<const std::string*>& paths) {
                        "give them a file with --stats FILE");
 }
 
-std::string pos(const Point& p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; }
+std::string pos(const Point& p) { return to_string(p); }
 
 // The corner rule's violation as one line, or empty.
 std::optional<std::string> corner_violation(const Graph& g) {

@@ -28,7 +28,7 @@ using VertexHandle = Triangulation::Vertex_handle;
 
 __extension__ using Int128 = __int128;
 
-std::string pos(const Point& p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; }
+std::string pos(const Point& p) { return to_string(p); }
 
 // An int64 as an exact number (doubles are exact up to 2^53).
 K::FT exact(std::int64_t v) {

@@ -170,10 +170,16 @@ std::vector<Token> state_tokens(std::string_view line, const LineParser& lp) {
   return tokens;
 }
 
-std::string point_text(const Point& p) { return std::to_string(p.x) + " " + std::to_string(p.y); }
+// Built by appending (see to_string(Point) in graph.cpp).
+std::string point_text(const Point& p) {
+  std::string t = std::to_string(p.x);
+  t += ' ';
+  t += std::to_string(p.y);
+  return t;
+}
 
 // A position in an error message.
-std::string shown(const Point& p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; }
+std::string shown(const Point& p) { return to_string(p); }
 
 }  // namespace
 
@@ -184,16 +190,23 @@ std::string canonical_state(const Graph& g) {
                     std::to_string(g.size.H) + " " + std::to_string(g.size.L) + "\n";
   auto neighbours = [&](const Vertex& v) {
     out += " :";
-    for (const Vertex& w : g.nbr(v)) out += " " + point_text(w);
+    for (const Vertex& w : g.nbr(v)) {
+      out += ' ';
+      out += point_text(w);
+    }
     out += "\n";
   };
   for (const Vertex& c : g.C) {
     auto it = g.level.find(c);
-    out += "C " + point_text(c) + " " + (it == g.level.end() ? std::string("?") : std::to_string(it->second));
+    out += "C ";
+    out += point_text(c);
+    out += ' ';
+    out += it == g.level.end() ? std::string("?") : std::to_string(it->second);
     neighbours(c);
   }
   for (const Vertex& n : g.N) {
-    out += "N " + point_text(n);
+    out += "N ";
+    out += point_text(n);
     neighbours(n);
   }
   out += "end " + std::to_string(g.C.size()) + " " + std::to_string(g.N.size()) + "\n";

@@ -4,6 +4,17 @@
 
 namespace bccmis {
 
+// Built by appending: g++ 12 at -O3 gives a false -Wrestrict (GCC bug 105651)
+// on `"literal" + std::string` once inlined.
+std::string to_string(const Point& p) {
+  std::string t = "(";
+  t += std::to_string(p.x);
+  t += ", ";
+  t += std::to_string(p.y);
+  t += ')';
+  return t;
+}
+
 void validate_lattice_size(const LatticeSize& size) {
   if (size.W < 1) throw LatticeError("lattice width W must be >= 1, got " + std::to_string(size.W));
   if (size.H < 1) throw LatticeError("lattice height H must be >= 1, got " + std::to_string(size.H));

@@ -34,6 +34,9 @@ struct Point {
 using Vertex = Point;
 using VertexSet = std::set<Vertex>;
 
+/// "(x, y)": how messages name a position.
+std::string to_string(const Point& p);
+
 /// The size of a lattice: W x H level-0 cells, at most L refinements deep.
 /// Level-0 cells have side S = 2^(L+1); a level-l cell has side 2^(L+1-l), so
 /// every center, corner and side midpoint down to level L is an integer point.

@@ -213,7 +213,7 @@ Graph decode(const std::string& key, const LatticeSize& size, const Grid& grid) 
   return g;
 }
 
-std::string point_text(const Point& p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; }
+std::string point_text(const Point& p) { return to_string(p); }
 
 std::string json_string(std::string_view s) {
   std::string out = "\"";

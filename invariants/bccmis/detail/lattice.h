@@ -19,7 +19,7 @@ namespace bccmis::inv {
 
 /// "(x, y)"
 inline std::string pos(const Point& p) {
-  return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
+  return to_string(p);
 }
 
 /// Where a point lies relative to the domain [0, W*S] x [0, H*S].
@@ -78,8 +78,16 @@ inline Role role_of(const Point& c, std::int64_t h, const Point& n) {
 
 /// "[x0, x1] x [y0, y1]" for the cell centered at c with half-side h.
 inline std::string square(const Point& c, std::int64_t h) {
-  return "[" + std::to_string(c.x - h) + ", " + std::to_string(c.x + h) + "] x [" +
-         std::to_string(c.y - h) + ", " + std::to_string(c.y + h) + "]";
+  std::string t = "[";  // appended, not `"[" + ...` (see to_string(Point))
+  t += std::to_string(c.x - h);
+  t += ", ";
+  t += std::to_string(c.x + h);
+  t += "] x [";
+  t += std::to_string(c.y - h);
+  t += ", ";
+  t += std::to_string(c.y + h);
+  t += ']';
+  return t;
 }
 
 }  // namespace bccmis::inv

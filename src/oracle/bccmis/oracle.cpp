@@ -9,11 +9,14 @@ namespace bccmis {
 
 namespace {
 
-std::string pos(const Point& p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; }
+std::string pos(const Point& p) { return to_string(p); }
 
 std::string list(const VertexSet& s) {
   std::string r;
-  for (const Point& p : s) r += (r.empty() ? "" : " ") + pos(p);
+  for (const Point& p : s) {
+    if (!r.empty()) r += ' ';
+    r += pos(p);
+  }
   return r.empty() ? "none" : r;
 }
 
