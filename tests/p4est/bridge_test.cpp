@@ -9,7 +9,7 @@
 #include "bccmis/invariants.h"
 #include "p4est/p4est_test_util.h"
 
-namespace bccmis::p4est {
+namespace bccmis::p4est_bridge {
 namespace {
 
 using testing::p4est_targets;
@@ -204,10 +204,10 @@ TEST(Import, FaceBalanceIsEdgeBalance) {
 }
 
 }  // namespace
-}  // namespace bccmis::p4est
+}  // namespace bccmis::p4est_bridge
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
-  ::testing::AddGlobalTestEnvironment(new bccmis::p4est::testing::SessionEnvironment);
+  ::testing::AddGlobalTestEnvironment(new bccmis::p4est_bridge::testing::SessionEnvironment);
   return RUN_ALL_TESTS();
 }

@@ -9,7 +9,7 @@
 #include "bccmis/invariants.h"
 #include "p4est/p4est_test_util.h"
 
-namespace bccmis::p4est {
+namespace bccmis::p4est_bridge {
 namespace {
 
 constexpr std::uint64_t kSeed = 20091001;
@@ -48,10 +48,10 @@ TEST(Differential, CornerModeMatchesP4estFullBalance) {
 }
 
 }  // namespace
-}  // namespace bccmis::p4est
+}  // namespace bccmis::p4est_bridge
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
-  ::testing::AddGlobalTestEnvironment(new bccmis::p4est::testing::SessionEnvironment);
+  ::testing::AddGlobalTestEnvironment(new bccmis::p4est_bridge::testing::SessionEnvironment);
   return RUN_ALL_TESTS();
 }

@@ -14,7 +14,7 @@
 #include "bccmis/balance.h"
 #include "bccmis/p4est/bridge.h"
 
-namespace bccmis::p4est::testing {
+namespace bccmis::p4est_bridge::testing {
 
 /// MPI (singleton), libsc and p4est, set up once for the whole test program.
 class SessionEnvironment : public ::testing::Environment {
@@ -105,4 +105,4 @@ inline std::vector<Leaf> forest_leaves(const Brick& brick, const p4est_t* forest
   return out;
 }
 
-}  // namespace bccmis::p4est::testing
+}  // namespace bccmis::p4est_bridge::testing

@@ -28,14 +28,14 @@ namespace {
 using namespace bccmis;
 
 struct Targets {
-  const p4est::Brick* brick;
+  const p4est_bridge::Brick* brick;
   std::vector<Point> points;  // strictly inside level-L cells (odd coordinates)
 };
 
 // Refine a quadrant that contains a target point, down to level L.
 int refine_at_targets(p4est_t* forest, p4est_topidx_t tree, p4est_quadrant_t* q) {
   const auto* t = static_cast<const Targets*>(forest->user_pointer);
-  const p4est::Leaf leaf = t->brick->to_leaf({tree, q->x, q->y, q->level});
+  const p4est_bridge::Leaf leaf = t->brick->to_leaf({tree, q->x, q->y, q->level});
   const std::int64_t h = cell_side(t->brick->size(), leaf.level) / 2;
   for (const Point& p : t->points)
     if (p.x > leaf.center.x - h && p.x < leaf.center.x + h && p.y > leaf.center.y - h && p.y < leaf.center.y + h)
@@ -55,10 +55,10 @@ Graph reference(const LatticeSize& size, const std::vector<Point>& points, Balan
   return g;
 }
 
-bool run(const p4est::Brick& brick, const std::vector<Point>& points, p4est_connect_type_t connect, int rank,
+bool run(const p4est_bridge::Brick& brick, const std::vector<Point>& points, p4est_connect_type_t connect, int rank,
          int ranks) {
   Targets targets{&brick, points};
-  p4est::ForestPtr forest(p4est_new_ext(sc_MPI_COMM_WORLD, brick.connectivity(), 0, 0, 1, 0, nullptr, &targets));
+  p4est_bridge::ForestPtr forest(p4est_new_ext(sc_MPI_COMM_WORLD, brick.connectivity(), 0, 0, 1, 0, nullptr, &targets));
   p4est_refine_ext(forest.get(), 1, brick.size().L, refine_at_targets, nullptr, nullptr);
   p4est_partition(forest.get(), 0, nullptr);
   p4est_balance(forest.get(), connect, nullptr);
@@ -67,7 +67,7 @@ bool run(const p4est::Brick& brick, const std::vector<Point>& points, p4est_conn
   const long local = static_cast<long>(forest->local_num_quadrants);
   std::vector<long> counts(static_cast<std::size_t>(ranks));
   MPI_Gather(&local, 1, MPI_LONG, counts.data(), 1, MPI_LONG, 0, sc_MPI_COMM_WORLD);
-  const std::vector<p4est::Quadrant> all = p4est::gather_quadrants(forest.get(), 0);
+  const std::vector<p4est_bridge::Quadrant> all = p4est_bridge::gather_quadrants(forest.get(), 0);
   if (rank != 0) return true;
 
   bool ok = true;
@@ -79,7 +79,7 @@ bool run(const p4est::Brick& brick, const std::vector<Point>& points, p4est_conn
   }
   std::printf("%s\n", ok ? "" : "  (a rank holds no leaf: not distributed)");
   try {
-    const Graph g = p4est::import_quadrants(brick, all);
+    const Graph g = p4est_bridge::import_quadrants(brick, all);
     std::printf("  imported and checked: %zu cells, %zu nodes\n", g.C.size(), g.N.size());
     const Balance b = connect == P4EST_CONNECT_FACE ? Balance::Edge : Balance::Corner;
     if (b == Balance::Corner)
@@ -88,7 +88,7 @@ bool run(const p4est::Brick& brick, const std::vector<Point>& points, p4est_conn
         ok = false;
       }
     const Graph expected = reference(brick.size(), points, b);
-    if (p4est::leaves(g) != p4est::leaves(expected)) {
+    if (p4est_bridge::leaves(g) != p4est_bridge::leaves(expected)) {
       std::printf("  FAIL: leaf set differs from bccmis refine_balanced (%s): %zu vs %zu leaves\n",
                   std::string(name(b)).c_str(), g.C.size(), expected.C.size());
       ok = false;
@@ -105,7 +105,7 @@ bool run(const p4est::Brick& brick, const std::vector<Point>& points, p4est_conn
 }  // namespace
 
 int main(int argc, char** argv) {
-  p4est::Session session(&argc, &argv);
+  p4est_bridge::Session session(&argc, &argv);
   int rank = 0, ranks = 1;
   MPI_Comm_rank(sc_MPI_COMM_WORLD, &rank);
   MPI_Comm_size(sc_MPI_COMM_WORLD, &ranks);
@@ -113,7 +113,7 @@ int main(int argc, char** argv) {
   for (int k = 1; k + 1 < argc; ++k)
     if (std::string(argv[k]) == "--expect-ranks") expected_ranks = std::atoi(argv[k + 1]);
   const LatticeSize size{5, 3, 7};
-  const p4est::Brick brick(size);
+  const p4est_bridge::Brick brick(size);
   // Points strictly inside level-L cells (odd coordinates): one per region of
   // the brick, so refinement crosses tree boundaries.
   const std::int64_t S = level0_side(size);

@@ -10,7 +10,7 @@
 #include "bccmis/invariants.h"
 #include "bccmis/ops.h"
 
-namespace bccmis::p4est {
+namespace bccmis::p4est_bridge {
 
 namespace {
 
@@ -53,7 +53,7 @@ Session::Session(int* argc, char*** argv) {
     MPI_Finalized(&finalized);
     if (finalized) {
       --g_sessions;
-      throw std::logic_error("bccmis::p4est::Session: MPI was finalized already (one Session span per process)");
+      throw std::logic_error("bccmis::p4est_bridge::Session: MPI was finalized already (one Session span per process)");
     }
     // Without mpirun, OpenMPI starts a singleton (about 0.4 s).
     MPI_Init(argc, argv);
@@ -79,16 +79,16 @@ void ForestDeleter::operator()(p4est_t* p) const noexcept { p4est_destroy(p); }
 Brick::Brick(const LatticeSize& size) : size_(size) {
   validate_lattice_size(size);
   if (size.L > P4EST_QMAXLEVEL)
-    throw std::invalid_argument("bccmis::p4est: L = " + std::to_string(size.L) + " exceeds P4EST_QMAXLEVEL = " +
+    throw std::invalid_argument("bccmis::p4est_bridge: L = " + std::to_string(size.L) + " exceeds P4EST_QMAXLEVEL = " +
                                 std::to_string(P4EST_QMAXLEVEL));
   if (size.W > std::numeric_limits<std::int32_t>::max() / size.H)
-    throw std::invalid_argument("bccmis::p4est: W x H = " + std::to_string(size.W) + " x " + std::to_string(size.H) +
+    throw std::invalid_argument("bccmis::p4est_bridge: W x H = " + std::to_string(size.W) + " x " + std::to_string(size.H) +
                                 " trees exceed p4est's tree index");
   shift_ = P4EST_QMAXLEVEL - size.L;
   conn_.reset(p4est_connectivity_new_brick(static_cast<int>(size.W), static_cast<int>(size.H), 0, 0));
   const auto trees = static_cast<std::size_t>(size.W * size.H);
   if (static_cast<std::size_t>(conn_->num_trees) != trees)
-    throw std::logic_error("bccmis::p4est: the brick has " + std::to_string(conn_->num_trees) + " trees, expected " +
+    throw std::logic_error("bccmis::p4est_bridge: the brick has " + std::to_string(conn_->num_trees) + " trees, expected " +
                            std::to_string(trees));
   // The brick's tree numbering, read from its vertex coordinates: tree t's
   // corners are tree_to_vertex[4t + k], k = 0..3 in p4est's z-order
@@ -107,7 +107,7 @@ Brick::Brick(const LatticeSize& size) : size_(size) {
                          corner[3][0] == i + 1 && corner[3][1] == j + 1;
     if (!z_order || i < 0 || j < 0 || i >= size.W || j >= size.H ||
         tree_of_cell_[static_cast<std::size_t>(j * size.W + i)] != -1)
-      throw std::logic_error("bccmis::p4est: brick tree " + std::to_string(t) +
+      throw std::logic_error("bccmis::p4est_bridge: brick tree " + std::to_string(t) +
                              " is not a unit square of the W x H grid in z-order corners");
     tree_of_cell_[static_cast<std::size_t>(j * size.W + i)] = static_cast<std::int32_t>(t);
     cell_of_tree_[t] = j * size.W + i;
@@ -129,14 +129,14 @@ Quadrant Brick::to_quadrant(const Leaf& leaf) const {
 
 Leaf Brick::to_leaf(const Quadrant& q) const {
   if (q.tree < 0 || static_cast<std::size_t>(q.tree) >= cell_of_tree_.size())
-    throw ImportError("bccmis::p4est: " + describe(q) + ": no such tree in the " + std::to_string(size_.W) + " x " +
+    throw ImportError("bccmis::p4est_bridge: " + describe(q) + ": no such tree in the " + std::to_string(size_.W) + " x " +
                       std::to_string(size_.H) + " brick");
   if (q.level < 0 || q.level > size_.L)
-    throw ImportError("bccmis::p4est: " + describe(q) + ": level " + std::to_string(q.level) +
+    throw ImportError("bccmis::p4est_bridge: " + describe(q) + ": level " + std::to_string(q.level) +
                       (q.level < 0 ? " is negative" : " is deeper than the lattice's L = " + std::to_string(size_.L)));
   const std::int64_t len = std::int64_t{1} << (P4EST_MAXLEVEL - q.level);
   if (q.x < 0 || q.y < 0 || q.x >= P4EST_ROOT_LEN || q.y >= P4EST_ROOT_LEN || q.x % len != 0 || q.y % len != 0)
-    throw ImportError("bccmis::p4est: " + describe(q) + ": not a level-" + std::to_string(q.level) +
+    throw ImportError("bccmis::p4est_bridge: " + describe(q) + ": not a level-" + std::to_string(q.level) +
                       " quadrant inside its tree");
   const std::int64_t S = level0_side(size_);
   const std::int64_t cell = cell_of_tree_[static_cast<std::size_t>(q.tree)];
@@ -188,7 +188,7 @@ ForestPtr make_forest(const Brick& brick, std::span<const Leaf> leaves, sc_MPI_C
   long bad = 0;
   MPI_Allreduce(&local_bad, &bad, 1, MPI_LONG, MPI_SUM, comm);
   if (bad != 0 || static_cast<std::size_t>(forest->global_num_quadrants) != ctx.sorted.size())
-    throw ImportError("bccmis::p4est: the " + std::to_string(ctx.sorted.size()) +
+    throw ImportError("bccmis::p4est_bridge: the " + std::to_string(ctx.sorted.size()) +
                       " leaves do not tile the lattice (the forest refined to them has " +
                       std::to_string(forest->global_num_quadrants) + " leaves, " + std::to_string(bad) +
                       " of them not requested)");
@@ -196,7 +196,7 @@ ForestPtr make_forest(const Brick& brick, std::span<const Leaf> leaves, sc_MPI_C
 }
 
 ForestPtr export_forest(const Brick& brick, const Graph& g, sc_MPI_Comm comm) {
-  if (!(g.size == brick.size())) throw std::invalid_argument("bccmis::p4est: the graph and the brick differ in size");
+  if (!(g.size == brick.size())) throw std::invalid_argument("bccmis::p4est_bridge: the graph and the brick differ in size");
   const std::vector<Leaf> all = leaves(g);
   return make_forest(brick, all, comm);
 }
@@ -246,19 +246,19 @@ Graph import_leaves(const LatticeSize& size, std::span<const Leaf> input) {
   std::vector<Leaf> sorted(input.begin(), input.end());
   std::sort(sorted.begin(), sorted.end());
   for (std::size_t k = 1; k < sorted.size(); ++k)
-    if (sorted[k] == sorted[k - 1]) throw ImportError("bccmis::p4est: " + describe(sorted[k]) + " is listed twice");
+    if (sorted[k] == sorted[k - 1]) throw ImportError("bccmis::p4est_bridge: " + describe(sorted[k]) + " is listed twice");
   // Every proper ancestor of a leaf is a refined cell of the lattice.
   std::vector<Leaf> refined;
   for (const Leaf& leaf : sorted) {
     if (leaf.level < 0 || leaf.level > size.L)
-      throw ImportError("bccmis::p4est: " + describe(leaf) + ": level outside 0.." + std::to_string(size.L));
+      throw ImportError("bccmis::p4est_bridge: " + describe(leaf) + ": level outside 0.." + std::to_string(size.L));
     for (int k = 0; k < leaf.level; ++k) refined.push_back(ancestor(size, leaf, k));
   }
   std::sort(refined.begin(), refined.end());
   refined.erase(std::unique(refined.begin(), refined.end()), refined.end());
   for (const Leaf& leaf : sorted)
     if (std::binary_search(refined.begin(), refined.end(), leaf))
-      throw ImportError("bccmis::p4est: leaves overlap: " + describe(leaf) + " is a leaf and contains other leaves");
+      throw ImportError("bccmis::p4est_bridge: leaves overlap: " + describe(leaf) + " is a leaf and contains other leaves");
   // Refine coarsest first. Before level k, every refined cell coarser than k
   // is refined, so a cell coarser than k is a leaf of the input. refine(c)
   // (eq. 3, erratum E4) refuses exactly when an edge-neighbour of c is such
@@ -269,20 +269,20 @@ Graph import_leaves(const LatticeSize& size, std::span<const Leaf> input) {
   for (const Leaf& c : refined) {
     const RefineResult r = refine(g, c.center);
     if (r.refused == RefineRefusal::CoarserNeighbor)
-      throw ImportError("bccmis::p4est: the forest is not face balanced (2:1 across faces): " + describe(c) +
+      throw ImportError("bccmis::p4est_bridge: the forest is not face balanced (2:1 across faces): " + describe(c) +
                         " holds leaves of level " + std::to_string(c.level + 1) +
                         " or finer, but an edge-neighbour is a leaf coarser than level " + std::to_string(c.level));
     if (!r.applied())
-      throw ImportError("bccmis::p4est: " + describe(c) + " cannot be refined: " + std::string(code(*r.refused)));
+      throw ImportError("bccmis::p4est_bridge: " + describe(c) + " cannot be refined: " + std::string(code(*r.refused)));
   }
   if (g.C.size() != sorted.size()) {
     for (const auto& [c, l] : g.level)
       if (!std::binary_search(sorted.begin(), sorted.end(), Leaf{c, l}))
-        throw ImportError("bccmis::p4est: the leaves do not cover the lattice: nothing covers " +
+        throw ImportError("bccmis::p4est_bridge: the leaves do not cover the lattice: nothing covers " +
                           describe(Leaf{c, l}));
   }
   if (const std::optional<Violation> v = find_violation(g))
-    throw ImportError("bccmis::p4est: the imported lattice fails the checker: " + to_string(*v));
+    throw ImportError("bccmis::p4est_bridge: the imported lattice fails the checker: " + to_string(*v));
   return g;
 }
 
@@ -295,13 +295,13 @@ Graph import_quadrants(const Brick& brick, std::span<const Quadrant> quadrants) 
 
 Graph import_forest(const Brick& brick, const p4est_t* forest) {
   if (forest->global_num_quadrants != forest->local_num_quadrants)
-    throw ImportError("bccmis::p4est: import_forest needs the whole forest on this rank (" +
+    throw ImportError("bccmis::p4est_bridge: import_forest needs the whole forest on this rank (" +
                       std::to_string(forest->local_num_quadrants) + " of " +
                       std::to_string(forest->global_num_quadrants) + " quadrants); use gather_quadrants");
   if (forest->connectivity->num_trees != brick.connectivity()->num_trees)
-    throw ImportError("bccmis::p4est: the forest's connectivity is not the brick's");
+    throw ImportError("bccmis::p4est_bridge: the forest's connectivity is not the brick's");
   const std::vector<Quadrant> qs = local_quadrants(forest);
   return import_quadrants(brick, qs);
 }
 
-}  // namespace bccmis::p4est
+}  // namespace bccmis::p4est_bridge

@@ -1,4 +1,4 @@
-// bccmis::p4est: exchange leaf sets between a bccmis lattice and a p4est
+// bccmis::p4est_bridge: exchange leaf sets between a bccmis lattice and a p4est
 // forest of quadtrees (issue 10; spec/p4est.md).
 //
 // A W x H lattice of depth L is a p4est forest on the W x H brick
@@ -39,7 +39,9 @@
 
 #include "bccmis/graph.h"
 
-namespace bccmis::p4est {
+// (Not `bccmis::p4est`: under `using namespace bccmis` that name would clash
+// with p4est's own `struct p4est`.)
+namespace bccmis::p4est_bridge {
 
 /// A leaf of a bccmis lattice: a cell center and its level.
 struct Leaf {
@@ -149,4 +151,4 @@ Graph import_leaves(const LatticeSize& size, std::span<const Leaf> leaves);
 /// after p4est_partition to one rank); throws ImportError otherwise.
 Graph import_forest(const Brick& brick, const p4est_t* forest);
 
-}  // namespace bccmis::p4est
+}  // namespace bccmis::p4est_bridge
