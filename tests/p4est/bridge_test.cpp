@@ -183,6 +183,18 @@ TEST(Import, RefusesOverlapsGapsAndDuplicates) {
   overlap.push_back({qs.front().tree, 0, 0, 0});  // a whole tree over its own leaves
   EXPECT_NE(import_error(brick, overlap).find("leaves overlap"), std::string::npos);
   EXPECT_THROW(make_forest(brick, std::vector<Leaf>{{{8, 8}, 0}}, sc_MPI_COMM_WORLD), ImportError);
+  // A leaf list in bccmis coordinates with a center off the level's grid.
+  std::vector<Leaf> shifted = leaves(import_quadrants(brick, qs));
+  shifted.front().center.x += 2;
+  const auto leaf_error = [&](const std::vector<Leaf>& ls) {
+    try {
+      import_leaves(size, ls);
+    } catch (const ImportError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(leaf_error(shifted).find("is not a cell of the lattice"), std::string::npos) << leaf_error(shifted);
 }
 
 // Face balance is the core's edge balance, not corner balance: a forest

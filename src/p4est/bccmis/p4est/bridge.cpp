@@ -59,7 +59,6 @@ Session::Session(int* argc, char*** argv) {
     MPI_Init(argc, argv);
     g_owns_mpi = true;
   }
-  owns_mpi_ = g_owns_mpi;
   sc_init(sc_MPI_COMM_WORLD, 0, 0, nullptr, SC_LP_ERROR);
   p4est_init(nullptr, SC_LP_ERROR);
 }
@@ -249,9 +248,14 @@ Graph import_leaves(const LatticeSize& size, std::span<const Leaf> input) {
     if (sorted[k] == sorted[k - 1]) throw ImportError("bccmis::p4est_bridge: " + describe(sorted[k]) + " is listed twice");
   // Every proper ancestor of a leaf is a refined cell of the lattice.
   std::vector<Leaf> refined;
+  const std::int64_t width = size.W * level0_side(size), height = size.H * level0_side(size);
   for (const Leaf& leaf : sorted) {
     if (leaf.level < 0 || leaf.level > size.L)
       throw ImportError("bccmis::p4est_bridge: " + describe(leaf) + ": level outside 0.." + std::to_string(size.L));
+    const std::int64_t s = cell_side(size, leaf.level);
+    const Point& c = leaf.center;
+    if (c.x <= 0 || c.y <= 0 || c.x >= width || c.y >= height || (c.x - s / 2) % s != 0 || (c.y - s / 2) % s != 0)
+      throw ImportError("bccmis::p4est_bridge: " + describe(leaf) + " is not a cell of the lattice");
     for (int k = 0; k < leaf.level; ++k) refined.push_back(ancestor(size, leaf, k));
   }
   std::sort(refined.begin(), refined.end());

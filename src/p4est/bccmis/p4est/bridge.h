@@ -77,9 +77,6 @@ class Session {
   ~Session();
   Session(const Session&) = delete;
   Session& operator=(const Session&) = delete;
-
- private:
-  bool owns_mpi_ = false;
 };
 
 struct ConnectivityDeleter {
@@ -144,7 +141,8 @@ std::vector<Quadrant> gather_quadrants(const p4est_t* forest, int root = 0);
 /// (invariants/) finds a violation in the result.
 Graph import_quadrants(const Brick& brick, std::span<const Quadrant> quadrants);
 
-/// The same from leaves in bccmis coordinates.
+/// The same from leaves in bccmis coordinates (also refused: a center that
+/// is not the center of a level-l cell of the lattice).
 Graph import_leaves(const LatticeSize& size, std::span<const Leaf> leaves);
 
 /// import_quadrants of a forest held entirely by this rank (one rank, or
