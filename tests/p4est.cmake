@@ -1,0 +1,35 @@
+# Included by tests/CMakeLists.txt: the p4est bridge (issue 10), label p4est.
+# Every test process starts MPI as a singleton (no mpirun needed, ~0.4 s).
+# Under AddressSanitizer, LeakSanitizer reports OpenMPI's dlclose'd plugins
+# (docs: /work/shared/notes/dependencies.md §7), so leaks are not checked here.
+if(NOT TARGET bccmis::p4est)
+  return()
+endif()
+find_package(GTest REQUIRED)
+include(GoogleTest)
+
+# One variable only: gtest_discover_tests flattens list-valued properties.
+set(_bccmis_p4est_env "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1")
+foreach(name bridge_test differential_test)
+  add_executable(p4est_${name} ${CMAKE_CURRENT_LIST_DIR}/p4est/${name}.cpp)
+  target_include_directories(p4est_${name} PRIVATE ${CMAKE_CURRENT_LIST_DIR})
+  target_link_libraries(p4est_${name} PRIVATE bccmis::p4est bccmis::apps bccmis::invariants bccmis::core
+                        GTest::gtest bccmis::warnings)
+  gtest_discover_tests(p4est_${name} DISCOVERY_MODE PRE_TEST TEST_PREFIX p4est.
+    PROPERTIES LABELS p4est ENVIRONMENT "${_bccmis_p4est_env}")
+endforeach()
+
+# The distributed run on two ranks, when mpirun exists; on one rank (a
+# singleton, no mpirun) otherwise, which still gathers, imports and checks.
+find_program(BCCMIS_MPIRUN NAMES mpirun mpiexec HINTS ${MPIEXEC_EXECUTABLE})
+if(BCCMIS_MPIRUN)
+  set(_bccmis_p4est_dist p4est.distributed_2_ranks)
+  add_test(NAME ${_bccmis_p4est_dist}
+           COMMAND ${BCCMIS_MPIRUN} -np 2 --allow-run-as-root --oversubscribe $<TARGET_FILE:bccmis_p4est_distributed> --expect-ranks 2)
+else()
+  message(STATUS "bccmis: mpirun not found, the p4est distributed run uses one rank")
+  set(_bccmis_p4est_dist p4est.distributed_1_rank)
+  add_test(NAME ${_bccmis_p4est_dist} COMMAND bccmis_p4est_distributed)
+endif()
+set_tests_properties(${_bccmis_p4est_dist} PROPERTIES LABELS p4est TIMEOUT 120
+                     ENVIRONMENT "${_bccmis_p4est_env}" FAIL_REGULAR_EXPRESSION "FAIL")
