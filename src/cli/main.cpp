@@ -24,6 +24,7 @@
 #include "bccmis/format.h"
 #include "bccmis/invariants.h"
 #include "bccmis/oracle.h"
+#include "bccmis/view.h"
 #if BCCMIS_HAVE_TRIANGULATION_CHECK
 #include "bccmis/triangulation_check.h"
 #endif
@@ -294,6 +295,61 @@ int run_diff(const std::string& a, const std::string& b, bool quiet) {
   return d.empty() ? kExitOk : kExitViolation;
 }
 
+struct ViewCliOptions {
+  std::string trace;
+  std::vector<std::string> states;
+  std::string output;
+  std::string check = "every";
+  int depth = 4;
+  std::int64_t step = -1;
+  std::string title;
+  bool quiet = false;
+};
+
+/// `bccmis view`: the page for a trace, or for a sequence of states.
+int run_view(const ViewCliOptions& v) {
+  ViewOptions o;
+  if (v.check == "every") o.check = [depth = v.depth](const Graph& g) { return check_graph(g, depth); };
+  if (v.step >= 0) o.open_step = static_cast<std::size_t>(v.step);
+  ViewResult r;
+  if (!v.states.empty()) {
+    if (!v.trace.empty()) throw InputError("view: give a trace or --states, not both");
+    std::vector<std::string> files = v.states;
+    std::error_code ec;
+    if (files.size() == 1 && std::filesystem::is_directory(files[0], ec)) {
+      const std::string dir = files[0];
+      files.clear();
+      for (const auto& e : std::filesystem::directory_iterator(dir))
+        if (e.path().extension() == ".state") files.push_back(e.path().string());
+      std::sort(files.begin(), files.end());
+      if (files.empty()) throw InputError(dir + ": no *.state files in the directory");
+    }
+    std::vector<std::pair<std::string, Graph>> states;
+    for (const std::string& f : files) states.emplace_back(display_name(f), parse_state(read_input(f), display_name(f)));
+    o.title = v.title.empty() ? "states: " + display_name(files.front()) + (files.size() > 1 ? " ... " + display_name(files.back()) : "")
+                              : v.title;
+    try {
+      r = view_states(states, o);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(std::string("view: ") + e.what());
+    }
+  } else {
+    if (v.trace.empty()) throw InputError("view: give a trace file or --states (see 'bccmis view --help')");
+    const std::string name = display_name(v.trace);
+    o.title = v.title.empty() ? name : v.title;
+    r = view_trace(parse_trace(read_input(v.trace), name), o);
+  }
+  write_output(v.output, r.html);
+  if (r.first_violation) {
+    std::cerr << "bccmis view: invariant violated at step " << *r.first_violation << " (the page opens there): "
+              << r.violation << "\n";
+    return kExitViolation;
+  }
+  if (!v.quiet && v.output != "-")
+    std::cerr << "bccmis view: " << v.output << ": " << r.steps << " steps, " << r.html.size() << " bytes\n";
+  return kExitOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -368,6 +424,35 @@ int main(int argc, char** argv) {
   render_cmd->add_option("-o,--output", render_out, "SVG file to write (atomically); '-' for stdout")->required();
   render_cmd->add_flag("--from-trace", render_from_trace, "The input is a trace: replay it first");
   render_cmd->footer("Example:\n  bccmis render --from-trace spec/examples/fig2.trace -o fig2.svg");
+
+  ViewCliOptions vo;
+  CLI::App* view_cmd = app.add_subcommand(
+      "view", "Write one self-contained HTML page that steps through a trace (or a sequence of states).");
+  view_cmd->add_option("trace", vo.trace, "Trace file ('-' for stdin)");
+  view_cmd->add_option("--states", vo.states,
+                       "Instead of a trace: canonical state files, one per step, or one directory of *.state files "
+                       "(taken in name order)");
+  view_cmd->add_option("-o,--output", vo.output, "HTML file to write (atomically); '-' for stdout")->required();
+  view_cmd->add_option("--check", vo.check, "Check every state (the page opens at the first violation): every, none")
+      ->check(CLI::IsMember({"every", "none"}))
+      ->capture_default_str();
+  view_cmd->add_option("--depth", vo.depth, "Checker layers to run: 1-4, or 5 for the CGAL triangulation layer")
+      ->check(CLI::Range(1, max_depth))
+      ->capture_default_str();
+  view_cmd->add_option("--step", vo.step, "Open the page at this step (default: the first violation, else step 0)")
+      ->check(CLI::Range(std::int64_t{0}, std::int64_t{1} << 40));
+  view_cmd->add_option("--title", vo.title, "Title of the page (default: the input's name)");
+  view_cmd->add_flag("-q,--quiet", vo.quiet, "No summary on stderr");
+  view_cmd->footer(
+      "Step k shows the state after the k-th command (step 0: the initial lattice) and what the command\n"
+      "touched: the refined cell c, its children Y and new junctions J+; for coarsening the removed Y and\n"
+      "J-; or the refusal code. With --states, step k is the k-th state file and the page marks what\n"
+      "changed. Every state is checked; the page opens at the first violation with the offending\n"
+      "vertices marked. Controls: slider, buttons, arrow keys; the URL fragment #step=K opens step K.\n"
+      "Exit codes: 0 page written, 1 page written and a state violates an invariant, 2 bad input.\n"
+      "The embedded model is specified in spec/viewer.md.\n"
+      "Example:\n  bccmis view spec/examples/fig2.trace -o fig2.html\n"
+      "  bccmis view --states my-impl-states/ -o states.html   # 0000.state, 0001.state, ...");
 
   ConformanceOptions co;
   std::string co_traces;
@@ -473,6 +558,7 @@ int main(int argc, char** argv) {
   try {
     if (*replay_cmd) return run_replay(ro);
     if (*check_cmd) return run_check(check_path, check_depth, check_quiet);
+    if (*view_cmd) return run_view(vo);
     if (*diff_cmd) return run_diff(diff_a, diff_b, diff_quiet);
     if (*hf_cmd) return run_heightfield(hf, std::cout, std::cerr);
     if (*an_cmd) return run_animate(an, std::cout, std::cerr);
