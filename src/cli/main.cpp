@@ -309,7 +309,8 @@ struct ViewCliOptions {
 /// `bccmis view`: the page for a trace, or for a sequence of states.
 int run_view(const ViewCliOptions& v) {
   ViewOptions o;
-  if (v.check == "every") o.check = [depth = v.depth](const Graph& g) { return check_graph(g, depth); };
+  if (v.check != "none") o.check = [depth = v.depth](const Graph& g) { return check_graph(g, depth); };
+  o.check_last_only = v.check == "end";
   if (v.step >= 0) o.open_step = static_cast<std::size_t>(v.step);
   ViewResult r;
   if (!v.states.empty()) {
@@ -433,8 +434,8 @@ int main(int argc, char** argv) {
                        "Instead of a trace: canonical state files, one per step, or one directory of *.state files "
                        "(taken in name order)");
   view_cmd->add_option("-o,--output", vo.output, "HTML file to write (atomically); '-' for stdout")->required();
-  view_cmd->add_option("--check", vo.check, "Check every state (the page opens at the first violation): every, none")
-      ->check(CLI::IsMember({"every", "none"}))
+  view_cmd->add_option("--check", vo.check, "When to run the invariant checker: every (each state; the page opens at the first violation), end, none")
+      ->check(CLI::IsMember({"every", "end", "none"}))
       ->capture_default_str();
   view_cmd->add_option("--depth", vo.depth, "Checker layers to run: 1-4, or 5 for the CGAL triangulation layer")
       ->check(CLI::Range(1, max_depth))

@@ -11,6 +11,7 @@ namespace bccmis {
 
 namespace {
 
+constexpr std::size_t kVerifyEvery = 64;
 constexpr std::string_view kPlaceholder = "{\"format\": \"placeholder\"}";
 
 /// A JSON string literal that is also safe inside an HTML <script> element:
@@ -116,7 +117,9 @@ std::string violation_json(const Violation& v) {
 /// Accumulates the model: the initial state, then one step per call.
 class ModelBuilder {
  public:
-  ModelBuilder(const Graph& initial, const ViewOptions& o, std::string label) : o_(o), prev_(initial) {
+  /// `total`: the number of steps including step 0 (for ViewOptions::check_last_only).
+  ModelBuilder(const Graph& initial, const ViewOptions& o, std::string label, std::size_t total)
+      : o_(o), prev_(initial), total_(total) {
     if (o.title.empty()) throw std::invalid_argument("view: empty title");
     steps_ = "[";
     Step s;
@@ -135,7 +138,33 @@ class ModelBuilder {
     VertexSet Y, J;        ///< refine: Y and J+; coarsen: removed Y and J-
   };
 
+  /// A step whose changes are anywhere: compares every vertex.
   void add(const Step& s, const Graph& now) { finish(s, now, changed_positions(prev_, now)); }
+
+  /// A refine or coarsen step: every edge the operation adds or removes has an
+  /// end in `seeds` (c or n, Y, J+ or J-) or in their neighbour sets before or
+  /// after, so only the two-ring of the seeds in both states is compared.
+  /// Every `kVerifyEvery` steps the whole mirror is compared with `now`.
+  void add_local(const Step& s, const Graph& now, VertexSet seeds) {
+    VertexSet region = seeds;
+    for (int ring = 0; ring < 2; ++ring) {
+      VertexSet next = region;
+      for (const Point& p : region)
+        for (const Graph* g : {static_cast<const Graph*>(&prev_), &now}) next.insert(g->nbr(p).begin(), g->nbr(p).end());
+      region = std::move(next);
+    }
+    std::vector<Point> changed;
+    for (const Point& p : region)
+      if (!same_record(prev_, now, p)) changed.push_back(p);
+    finish(s, now, changed);
+    if (count_ % kVerifyEvery == 0 && !(prev_ == now))
+      throw std::logic_error("view: a step changed a vertex outside the two-ring of what it touched");
+  }
+
+  /// Throws std::logic_error unless the mirror the deltas built equals `now`.
+  void verify(const Graph& now) const {
+    if (!(prev_ == now)) throw std::logic_error("view: the deltas do not rebuild the final state");
+  }
 
   /// A side state for step `step` (which must already have been added with `now` = the state there).
   void set_side(const ViewSide& side, const Graph& main_state) {
@@ -195,7 +224,7 @@ class ModelBuilder {
     if (!set.empty()) j += ",\"set\":[" + set + "]";
     if (!del.empty()) j += ",\"del\":[" + del + "]";
     j += ",\"n\":[" + std::to_string(now.C.size()) + "," + std::to_string(now.N.size()) + "]";
-    if (o_.check)
+    if (o_.check && (!o_.check_last_only || count_ + 1 == total_))
       if (const auto v = o_.check(now)) {
         j += ",\"v\":" + violation_json(*v);
         if (!first_violation_) {
@@ -220,6 +249,7 @@ class ModelBuilder {
 
   const ViewOptions& o_;
   Graph prev_;
+  std::size_t total_;
   std::string steps_, side_;
   std::size_t count_ = 0;
   std::optional<std::size_t> first_violation_;
@@ -235,7 +265,7 @@ std::string lattice_label(const LatticeSize& s) {
 ViewResult view_trace(const Trace& trace, const ViewOptions& o) {
   Graph g = make_lattice(trace.size);
   const Graph initial = g;
-  ModelBuilder model(initial, o, lattice_label(trace.size));
+  ModelBuilder model(initial, o, lattice_label(trace.size), trace.commands.size() + 1);
   std::optional<Graph> side_main;
   if (o.side && o.side->step == 0) side_main = g;
   std::size_t step = 0;
@@ -262,7 +292,10 @@ ViewResult view_trace(const Trace& trace, const ViewOptions& o) {
     } else {
       s.op = "check";
     }
-    model.add(s, g);
+    VertexSet seeds = s.Y;
+    seeds.insert(s.J.begin(), s.J.end());
+    if (s.at) seeds.insert(*s.at);
+    model.add_local(s, g, std::move(seeds));
     ++step;
     if (o.side && o.side->step == step) side_main = g;
   }
@@ -270,6 +303,7 @@ ViewResult view_trace(const Trace& trace, const ViewOptions& o) {
     if (!side_main) throw std::invalid_argument("view: the side state's step is past the end of the trace");
     model.set_side(*o.side, *side_main);
   }
+  model.verify(g);
   return model.result(initial);
 }
 
@@ -280,7 +314,7 @@ ViewResult view_states(const std::vector<std::pair<std::string, Graph>>& states,
     if (!(g.size == initial.size))
       throw std::invalid_argument(name + ": " + lattice_label(g.size) + " differs from the first state's " +
                                   lattice_label(initial.size));
-  ModelBuilder model(initial, o, states.front().first);
+  ModelBuilder model(initial, o, states.front().first, states.size());
   for (std::size_t i = 1; i < states.size(); ++i) {
     ModelBuilder::Step s;
     s.label = states[i].first;

@@ -33,6 +33,7 @@ struct ViewSide {
 struct ViewOptions {
   std::string title;
   ViewChecker check;
+  bool check_last_only = false;  ///< run `check` on the last state only (and on the side state)
   /// For view_trace: a second state beside the reference state of side->step;
   /// the positions where the two differ are marked in both panels.
   std::optional<ViewSide> side;
