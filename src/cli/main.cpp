@@ -467,9 +467,14 @@ int main(int argc, char** argv) {
   conf_cmd->add_option("--timeout", co.timeout_seconds, "Seconds per run of the implementation")
       ->check(CLI::Range(0.01, 86400.0))
       ->capture_default_str();
+  std::string co_view;
+  conf_cmd->add_option("--view", co_view,
+                       "On a disagreement, write a viewer page (bccmis view) for the minimal trace: the reference "
+                       "and the implementation's state side by side at the first disagreement");
   conf_cmd->footer(
       "Exit codes: 0 all agree, 1 disagreement (the minimal trace is printed), 2 harness error.\n"
-      "Example:\n  bccmis conformance --impl './my-lattice replay' --traces spec/examples --random 200 --seed 7");
+      "Example:\n  bccmis conformance --impl './my-lattice replay' --traces spec/examples --random 200 --seed 7\n"
+      "  bccmis conformance --impl './my-lattice replay' --random 200 --view disagreement.html");
 
   LatticeSize ex_size;
   bool ex_json = false, ex_no_progress = false;
@@ -600,6 +605,11 @@ int main(int argc, char** argv) {
           if (e.path().extension() == ".trace") co.trace_files.push_back(e.path().string());
         std::sort(co.trace_files.begin(), co.trace_files.end());
       }
+      if (!co_view.empty())
+        co.write_view = [&](const std::string& html) {
+          write_output(co_view, html);
+          std::cout << "viewer page of the disagreement: " << co_view << "\n";
+        };
       return run_conformance(co, std::cout);
     }
   } catch (const ParseError& e) {

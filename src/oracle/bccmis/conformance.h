@@ -21,6 +21,10 @@ struct ConformanceOptions {
   std::uint64_t seed = 1;              ///< seed of the random traces
   int max_ops = 30;                    ///< operations per random trace
   double timeout_seconds = 10;         ///< per run of the implementation
+  /// If set, called with a viewer page (bccmis view) for the minimal trace of
+  /// the first disagreement: the reference replay, with the implementation's
+  /// state beside the reference state at the first disagreement.
+  std::function<void(const std::string& html)> write_view;
 };
 
 /// The output of one run of the implementation.
@@ -50,6 +54,9 @@ Trace random_trace(std::mt19937_64& rng, int max_ops);
 /// Delta debugging: a smallest trace (no single command can be dropped) for
 /// which `disagrees` still holds. `disagrees(trace)` must hold for the input.
 Trace shrink(const Trace& trace, const std::function<bool(const Trace&)>& disagrees);
+
+/// The viewer page for a disagreement on `trace` (see ConformanceOptions::write_view).
+std::string disagreement_page(const Trace& trace, const ConformanceOptions& options);
 
 /// Runs the harness; reports to `out` (progress and the verdict). Returns the
 /// exit code: 0 all agree, 1 a disagreement (minimal trace printed), 2 harness
