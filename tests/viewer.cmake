@@ -66,3 +66,17 @@ bccmis_cli_test(view.conformance 1
   ARGS conformance --impl "sh ${CMAKE_CURRENT_SOURCE_DIR}/conformance/missing_boundary_junction.sh $<TARGET_FILE:bccmis>"
        --random 50 --seed 1 --view disagreement.html
   STDOUT_REGEX "viewer page of the disagreement: disagreement.html" LABEL viewer)
+# --from-log: another implementation's output on a trace.
+set(_fig2 ${PROJECT_SOURCE_DIR}/spec/examples/fig2.trace)
+bccmis_cli_test(view.from_log_agrees 0 ARGS view ${_fig2} --from-log ${CMAKE_CURRENT_SOURCE_DIR}/cli/fig2.log -o agree.html
+                LABEL viewer)
+bccmis_cli_test(view.from_log_expected 0 ARGS view ${_fig2} --from-log ${PROJECT_SOURCE_DIR}/spec/examples/fig2.expected
+                -o agree.html LABEL viewer)
+bccmis_cli_test(view.from_log_decision 1 ARGS view ${_fig2} --from-log ${_viewer}/fig2_wrong_decision.log -o decision.html
+  STDERR_REGEX "fig2_wrong_decision.log disagrees with the reference at step 3 \\(the page opens there\\): decision 2: reference 'refine 6 2 ok', implementation 'refine 6 2 refused coarser-neighbor'"
+  LABEL viewer)
+bccmis_cli_test(view.from_log_state 1 ARGS view ${_fig2} --from-log ${_viewer}/fig2_wrong_state.out -o state.html
+  STDERR_REGEX "disagrees with the reference at step 4 .*final states differ.*neighbours of \\(7, 3\\): only in A: \\(8, 2\\)"
+  LABEL viewer)
+bccmis_cli_test(view.from_log_with_states 2 ARGS view --states ${_states} --from-log ${_viewer}/fig2_wrong_state.out -o x.html
+                STDERR_REGEX "--from-log needs a trace" LABEL viewer)

@@ -302,6 +302,7 @@ struct ViewCliOptions {
   std::string check = "every";
   int depth = 4;
   std::int64_t step = -1;
+  std::string from_log;
   std::string title;
   bool quiet = false;
 };
@@ -315,6 +316,7 @@ int run_view(const ViewCliOptions& v) {
   ViewResult r;
   if (!v.states.empty()) {
     if (!v.trace.empty()) throw InputError("view: give a trace or --states, not both");
+    if (!v.from_log.empty()) throw InputError("view: --from-log needs a trace, not --states");
     std::vector<std::string> files = v.states;
     std::error_code ec;
     if (files.size() == 1 && std::filesystem::is_directory(files[0], ec)) {
@@ -338,9 +340,25 @@ int run_view(const ViewCliOptions& v) {
     if (v.trace.empty()) throw InputError("view: give a trace file or --states (see 'bccmis view --help')");
     const std::string name = display_name(v.trace);
     o.title = v.title.empty() ? name : v.title;
-    r = view_trace(parse_trace(read_input(v.trace), name), o);
+    const Trace trace = parse_trace(read_input(v.trace), name);
+    if (!v.from_log.empty()) {
+      // Another implementation's output on the trace (spec/conformance.md).
+      ImplRun run;
+      run.out = read_input(v.from_log);
+      o.side = implementation_side(trace, run, {}, false);
+      if (o.side) {
+        o.side->title = display_name(v.from_log);
+        if (!o.open_step) o.open_step = o.side->step;
+      }
+    }
+    r = view_trace(trace, o);
   }
   write_output(v.output, r.html);
+  if (o.side) {
+    std::cerr << "bccmis view: " << display_name(v.from_log) << " disagrees with the reference at step " << o.side->step
+              << " (the page opens there): " << o.side->message << "\n";
+    return kExitViolation;
+  }
   if (r.first_violation) {
     std::cerr << "bccmis view: invariant violated at step " << *r.first_violation << " (the page opens there): "
               << r.violation << "\n";
@@ -442,6 +460,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   view_cmd->add_option("--step", vo.step, "Open the page at this step (default: the first violation, else step 0)")
       ->check(CLI::Range(std::int64_t{0}, std::int64_t{1} << 40));
+  view_cmd->add_option("--from-log", vo.from_log,
+                       "Another implementation's output on the trace (decision log, optionally followed by its "
+                       "canonical state, spec/conformance.md): mark the first disagreement with the reference");
   view_cmd->add_option("--title", vo.title, "Title of the page (default: the input's name)");
   view_cmd->add_flag("-q,--quiet", vo.quiet, "No summary on stderr");
   view_cmd->footer(
@@ -450,10 +471,14 @@ int main(int argc, char** argv) {
       "J-; or the refusal code. With --states, step k is the k-th state file and the page marks what\n"
       "changed. Every state is checked; the page opens at the first violation with the offending\n"
       "vertices marked. Controls: slider, buttons, arrow keys; the URL fragment #step=K opens step K.\n"
-      "Exit codes: 0 page written, 1 page written and a state violates an invariant, 2 bad input.\n"
+      "With --from-log, the page opens at the first decision that differs from the log (or, when they\n"
+      "all agree, at the last step with the log's final state beside the reference's, differences marked).\n"
+      "Exit codes: 0 page written, 1 page written and a state violates an invariant or the log\n"
+      "disagrees, 2 bad input.\n"
       "The embedded model is specified in spec/viewer.md.\n"
       "Example:\n  bccmis view spec/examples/fig2.trace -o fig2.html\n"
-      "  bccmis view --states my-impl-states/ -o states.html   # 0000.state, 0001.state, ...");
+      "  bccmis view --states my-impl-states/ -o states.html   # 0000.state, 0001.state, ...\n"
+      "  ./my-lattice run.trace > run.out; bccmis view run.trace --from-log run.out -o run.html");
 
   ConformanceOptions co;
   std::string co_traces;

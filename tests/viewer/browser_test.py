@@ -11,7 +11,8 @@ page's scripts ran (the page writes its counts into <body data-...>):
      last/Home) and every state it reaches matches `bccmis stats`;
   3. a state sequence with an invalid state opens at that step with the
      offending vertices marked and the message shown;
-  4. a conformance page shows both states at the first disagreement;
+  4. a conformance page, and a --from-log page, show both states at the
+     first disagreement;
   5. a 1,000-step page on a 2,600-cell lattice steps and jumps in time;
 and saves a screenshot. Exits 77 (ctest SKIP_RETURN_CODE) without Chromium.
 """
@@ -162,6 +163,19 @@ def main():
     side_cells = len(re.findall(r'<rect [^>]*class="cell l', dom.split('id="side"', 1)[1]))
     expect("the implementation's panel draws its cells", side_cells, sum(1 for r in model["side"]["state"] if r[2] >= 0))
     expect("the difference is shown", "only in A: node" in dom, True)
+    # 4b. --from-log: another implementation's output whose final state is wrong.
+    print("4b. view --from-log with a wrong final state")
+    lpage = os.path.join(a.workdir, "from_log.html")
+    view([os.path.join(a.source_dir, "spec", "examples", "fig2.trace"), "--from-log",
+          os.path.join(here, "fig2_wrong_state.out"), "-o", lpage], expect_exit=1)
+    model = viewlib.extract_model(open(lpage, encoding="utf-8").read())
+    dom = browser.dump(lpage)
+    attrs = body(dom)
+    expect("opens at the last step", int(attrs["step"]), 4)
+    expect("the differing positions are marked", int(attrs["diffmarks"]), len(model["side"]["marks"]) // 2)
+    side_dom = dom.split('id="side"', 1)[1]
+    expect("the log's state is drawn (cells)", len(re.findall(r'class="cell l', side_dom)), 9)
+    expect("its violation is marked", len(re.findall(r'class="violation"', side_dom)), len(model["side"]["v"]["where"]) // 2)
     # 5. A 1,000-step page on a few-thousand-cell lattice.
     print("5. 1,000 steps on a 40 x 40 lattice")
     big = make_trace("big.trace", 40, 40, 3, 1000, 1)
