@@ -80,3 +80,6 @@ bccmis_cli_test(view.from_log_state 1 ARGS view ${_fig2} --from-log ${_viewer}/f
   LABEL viewer)
 bccmis_cli_test(view.from_log_with_states 2 ARGS view --states ${_states} --from-log ${_viewer}/fig2_wrong_state.out -o x.html
                 STDERR_REGEX "--from-log needs a trace" LABEL viewer)
+bccmis_cli_test(view.too_large 2 ARGS view ${_viewer}/too_large.trace -o x.html
+                STDERR_REGEX "too_large.trace: view: lattice 1 1 60 is too large for the page: its coordinates exceed 2\\^53"
+                LABEL viewer)

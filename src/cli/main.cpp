@@ -351,7 +351,11 @@ int run_view(const ViewCliOptions& v) {
         if (!o.open_step) o.open_step = o.side->step;
       }
     }
-    r = view_trace(trace, o);
+    try {
+      r = view_trace(trace, o);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(name + ": view: " + e.what());
+    }
   }
   write_output(v.output, r.html);
   if (o.side) {

@@ -1,6 +1,7 @@
 #include "bccmis/view.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <stdexcept>
 
@@ -12,6 +13,7 @@ namespace bccmis {
 namespace {
 
 constexpr std::size_t kVerifyEvery = 64;
+constexpr std::int64_t kMaxPageCoordinate = std::int64_t{1} << 53;
 constexpr std::string_view kPlaceholder = "{\"format\": \"placeholder\"}";
 
 /// A JSON string literal that is also safe inside an HTML <script> element:
@@ -120,7 +122,13 @@ class ModelBuilder {
   /// `total`: the number of steps including step 0 (for ViewOptions::check_last_only).
   ModelBuilder(const Graph& initial, const ViewOptions& o, std::string label, std::size_t total)
       : o_(o), prev_(initial), total_(total) {
-    if (o.title.empty()) throw std::invalid_argument("view: empty title");
+    // JavaScript numbers are exact integers up to 2^53 only.
+    const std::int64_t side = level0_side(initial.size);
+    if (initial.size.W > kMaxPageCoordinate / side || initial.size.H > kMaxPageCoordinate / side)
+      throw std::invalid_argument("lattice " + std::to_string(initial.size.W) + " " + std::to_string(initial.size.H) +
+                                  " " + std::to_string(initial.size.L) +
+                                  " is too large for the page: its coordinates exceed 2^53, where JavaScript numbers "
+                                  "stop being exact integers");
     steps_ = "[";
     Step s;
     s.label = std::move(label);
