@@ -8,11 +8,13 @@ one step per trace command, labelled with it; the decisions equal the
 decision log of `bccmis replay`; the counts of every step equal those of
 the state rebuilt from the deltas; at sampled steps (every step of a short
 trace) the rebuilt state is byte-identical to `bccmis replay` of the trace
-prefix and the counts equal `bccmis stats`. With --budget, the page must
-not be larger than BYTES.
+prefix and the counts equal `bccmis stats`; the page loads nothing from
+elsewhere (no src, href, link, import, url(), fetch). With --budget, the
+page must not be larger than BYTES.
 """
 import argparse
 import os
+import re
 import sys
 import time
 
@@ -70,6 +72,11 @@ def main():
         st = cli.stats(k)
         if steps[k]["n"] != [st["cells"], st["nodes"]]:
             errors.append("step %d: model counts %s, bccmis stats %s" % (k, steps[k]["n"], [st["cells"], st["nodes"]]))
+    # Self-contained: nothing is loaded from elsewhere.
+    for pattern in (r"<script[^>]*\bsrc=", r"<link\b", r"@import", r"url\(", r"\bhref=", r"\bfetch\(", r"XMLHttpRequest",
+                    r"<img\b", r"<iframe\b"):
+        if re.search(pattern, html):
+            errors.append("the page is not self-contained: it matches %r" % pattern)
     size = len(html.encode("utf-8"))
     print("%s: %d steps, final %d cells and %d nodes, page %d bytes (%.0f bytes per step), written in %.2f s; "
           "%d steps compared with bccmis replay and stats" %
