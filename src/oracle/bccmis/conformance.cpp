@@ -12,7 +12,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "bccmis/invariants.h"
 #include "bccmis/oracle.h"
+#include "bccmis/view.h"
 
 namespace bccmis {
 
@@ -253,6 +255,75 @@ Trace shrink(const Trace& trace, const std::function<bool(const Trace&)>& disagr
   return best;
 }
 
+std::optional<ViewSide> implementation_side(const Trace& trace, const ImplRun& full,
+                                            const std::function<std::optional<ImplRun>(const Trace&)>& rerun,
+                                            bool require_state) {
+  ViewSide side;
+  side.title = "implementation";
+  if (!require_state && full.out.find("bccmis-state ") == std::string::npos) {
+    // Decisions only: compare them with the reference's final state appended.
+    ImplRun with_state = full;
+    std::string log;
+    with_state.out += canonical_state(replay(trace, log));
+    side.message = compare_run(trace, with_state);
+  } else {
+    side.message = compare_run(trace, full);
+  }
+  if (side.message.empty()) return std::nullopt;
+  side.step = trace.commands.size();
+  if (full.timed_out || full.signal != 0 || full.exit_code != 0) return side;
+  std::string log;
+  replay(trace, log);
+  std::vector<std::string> want, got;
+  std::string want_state, impl_state;
+  split_output(log, want, want_state);
+  split_output(full.out, got, impl_state);
+  std::size_t i = 0;
+  while (i < want.size() && i < got.size() && want[i] == got[i]) ++i;
+  if (i < want.size() || i < got.size()) {
+    // The first differing decision decides the step; the implementation's
+    // state there comes from a run on the trace up to that command.
+    std::size_t ops = 0;
+    for (std::size_t j = 0; j < trace.commands.size(); ++j) {
+      if (trace.commands[j].kind == TraceCommand::Kind::Check) continue;
+      if (ops++ == i) {
+        side.step = j + 1;
+        side.marks.push_back(trace.commands[j].at);
+        break;
+      }
+    }
+    impl_state.clear();
+    if (rerun) {
+      Trace prefix = trace;
+      prefix.commands.resize(side.step);
+      const std::optional<ImplRun> part = rerun(prefix);
+      std::vector<std::string> ignored;
+      if (part && !part->timed_out && part->signal == 0 && part->exit_code == 0) split_output(part->out, ignored, impl_state);
+    }
+  }
+  if (!impl_state.empty()) {
+    try {
+      side.state = parse_state(impl_state, "<implementation state>");
+    } catch (const ParseError& e) {
+      side.message += std::string("\nthe implementation's state does not parse: ") + e.what();
+    }
+  }
+  return side;
+}
+
+std::string disagreement_page(const Trace& trace, const ConformanceOptions& o) {
+  auto run = [&](const Trace& t) {
+    TempFile file(format_trace(t));
+    return run_implementation(o.impl, file.path(), o.timeout_seconds);
+  };
+  ViewOptions vo;
+  vo.title = "conformance: first disagreement of '" + o.impl + "' with the reference";
+  vo.check = [](const Graph& g) { return find_violation(g, 4); };
+  vo.side = implementation_side(trace, run(trace), [&](const Trace& t) { return std::optional<ImplRun>(run(t)); }, true);
+  if (vo.side) vo.open_step = vo.side->step;
+  return view_trace(trace, vo).html;
+}
+
 int run_conformance(const ConformanceOptions& o, std::ostream& out) {
   if (o.impl.empty()) {
     out << "conformance: no implementation command (--impl)\n";
@@ -297,6 +368,7 @@ int run_conformance(const ConformanceOptions& o, std::ostream& out) {
     out << "minimal trace (" << ops << (ops == 1 ? " operation" : " operations") << "):\n"
         << format_trace(minimal) << "difference on the minimal trace: " << run_trace(minimal) << "\n";
     out << "reference output for it:\n" << reference_output(minimal);
+    if (o.write_view) o.write_view(disagreement_page(minimal, o));
     out << agreed << " of " << work.size() << " traces agreed before the first disagreement\n";
     return 1;
   }

@@ -5,12 +5,14 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <ostream>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "bccmis/format.h"
+#include "bccmis/view.h"
 
 namespace bccmis {
 
@@ -21,6 +23,10 @@ struct ConformanceOptions {
   std::uint64_t seed = 1;              ///< seed of the random traces
   int max_ops = 30;                    ///< operations per random trace
   double timeout_seconds = 10;         ///< per run of the implementation
+  /// If set, called with a viewer page (bccmis view) for the minimal trace of
+  /// the first disagreement: the reference replay, with the implementation's
+  /// state beside the reference state at the first disagreement.
+  std::function<void(const std::string& html)> write_view;
 };
 
 /// The output of one run of the implementation.
@@ -50,6 +56,21 @@ Trace random_trace(std::mt19937_64& rng, int max_ops);
 /// Delta debugging: a smallest trace (no single command can be dropped) for
 /// which `disagrees` still holds. `disagrees(trace)` must hold for the input.
 Trace shrink(const Trace& trace, const std::function<bool(const Trace&)>& disagrees);
+
+/// The viewer's side panel for an implementation whose output on `trace` was
+/// `full` (decision log, then canonical state): empty when it agrees with the
+/// reference; otherwise the step of the first differing decision (or the last
+/// step when only the states differ), its position marked, and the
+/// implementation's state there: from `full`, or for a differing decision
+/// from `rerun` on the trace up to that command (if given; may return empty).
+/// Without `require_state`, an output without a canonical state is a decision
+/// log only, and only the decisions are compared.
+std::optional<ViewSide> implementation_side(const Trace& trace, const ImplRun& full,
+                                            const std::function<std::optional<ImplRun>(const Trace&)>& rerun,
+                                            bool require_state);
+
+/// The viewer page for a disagreement on `trace` (see ConformanceOptions::write_view).
+std::string disagreement_page(const Trace& trace, const ConformanceOptions& options);
 
 /// Runs the harness; reports to `out` (progress and the verdict). Returns the
 /// exit code: 0 all agree, 1 a disagreement (minimal trace printed), 2 harness
