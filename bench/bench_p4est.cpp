@@ -12,6 +12,8 @@
 //   Batch/bccmis_fast/leaves:N   MovingFeature<Fast>'s constructor: for each
 //     level-L cell meeting the disk, refine its leaf down to level L with the
 //     balancing cascade (local operations only).
+//   Batch/bccmis_fast_reserved/leaves:N  the same after reserve(N) (the leaf
+//     count known in advance: the pools and the position table never grow).
 //   Batch/p4est/leaves:N         p4est_new, p4est_refine (recursive, cells
 //     meeting the disk, to level L), p4est_balance(P4EST_CONNECT_FACE).
 //   Step/bccmis_fast/leaves:N    one frame: coarsen near the old disk (finest
@@ -152,11 +154,16 @@ std::vector<p4est_bridge::Leaf> leaves_of(const p4est_bridge::Brick& brick, cons
 
 // ---- Benchmarks ---------------------------------------------------------------------------------
 
-template <class Feature>
+template <class Feature, bool kReserve = false>
 void batch_bccmis(benchmark::State& state, Workload w) {
   std::size_t leaves = 0, bytes = 0;
   for (auto _ : state) {
-    Feature feature(w.size, w.radius, kFramesPerTurn);
+    Feature feature = [&] {
+      if constexpr (kReserve)
+        return Feature(w.size, w.radius, kFramesPerTurn, static_cast<std::size_t>(w.leaves));
+      else
+        return Feature(w.size, w.radius, kFramesPerTurn);
+    }();
     leaves = feature.state().cell_count();
     bytes = feature.state().memory_bytes();
     benchmark::DoNotOptimize(leaves);
@@ -205,6 +212,8 @@ void register_all() {
   for (const Workload& w : workloads()) {
     const std::string n = "/leaves:" + std::to_string(w.leaves);
     benchmark::RegisterBenchmark(("Batch/bccmis_fast" + n).c_str(), batch_bccmis<LocalFeature<Fast>>, w)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("Batch/bccmis_fast_reserved" + n).c_str(), batch_bccmis<LocalFeature<Fast>, true>, w)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("Batch/bccmis_fast_pointwise" + n).c_str(), batch_bccmis<MovingFeature<Fast>>, w)
         ->Unit(benchmark::kMillisecond);

@@ -29,8 +29,13 @@ template <class Impl>
 class LocalFeature {
  public:
   using State = typename Impl::State;
-  LocalFeature(const LatticeSize& size, double radius, int frames_per_turn)
+  /// `reserve_cells` > 0: room for that many cells before the build (the
+  /// fast lattice's reserve(); the pools and the position table then never
+  /// grow during the build).
+  LocalFeature(const LatticeSize& size, double radius, int frames_per_turn, std::size_t reserve_cells = 0)
       : size_(size), g_(Impl::make(size)), radius_(radius), frames_(frames_per_turn) {
+    if constexpr (requires(State& s) { s.reserve(reserve_cells); })
+      if (reserve_cells > 0) g_.reserve(reserve_cells);
     side_ = static_cast<double>(level0_side(size));
     disk_ = position(0);
     for (int l = 0; l < size_.L; ++l)
