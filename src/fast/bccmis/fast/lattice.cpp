@@ -24,6 +24,7 @@
 #include "bccmis/fast/lattice.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <charconv>
 #include <cstring>
@@ -350,12 +351,28 @@ void Lattice::rehash(std::size_t slots) {
   table_.swap(fresh);
   table_shift_ = 64 - bits;
   table_used_ = 0;
+  // The keys are visited in pool order, so their homes are random slots: a
+  // cache miss each on a large table. Each home is computed and its line
+  // prefetched kAhead keys before the insertion; the insertions keep the
+  // pool order, so the table is the same as without the look-ahead.
+  constexpr std::size_t kAhead = 16;
+  std::array<std::pair<Index, std::size_t>, kAhead> queue{};
+  std::size_t queued = 0;
+  auto insert_later = [&](Index ref, std::size_t at) {
+    __builtin_prefetch(&table_[at], 1);
+    std::pair<Index, std::size_t>& entry = queue[queued % kAhead];
+    if (queued >= kAhead) table_insert(entry.first, entry.second);
+    entry = {ref, at};
+    ++queued;
+  };
   for (std::size_t c = 0; c < centers_.size(); ++c)
-    if (centers_[c].live()) table_insert(static_cast<Index>(c), home(centers_[c].position()));
+    if (centers_[c].live()) insert_later(static_cast<Index>(c), home(centers_[c].position()));
   for (std::size_t n = 0; n < nodes_.size(); ++n)
     if (nodes_[n].live())
       if (const Point p = node_position(static_cast<Index>(n)); center_level(size_, p))
-        table_insert(static_cast<Index>(n) | kNodeBit, home(p));
+        insert_later(static_cast<Index>(n) | kNodeBit, home(p));
+  for (std::size_t k = queued > kAhead ? queued - kAhead : 0; k < queued; ++k)
+    table_insert(queue[k % kAhead].first, queue[k % kAhead].second);
 }
 
 // ---- Pools ------------------------------------------------------------------------
