@@ -48,6 +48,13 @@ bccmis_cli_test(view.states_violation 1 ARGS view --states ${_states} -o states.
                 STDERR_REGEX "invariant violated at step 2 \\(the page opens there\\): symmetry: node \\(2, 4\\)" LABEL viewer)
 bccmis_cli_test(view.states_files 0 ARGS view --states ${_states}/0000.state ${_states}/0001.state ${_states}/0003.state
                 -o states.html STDERR_REGEX "states.html: 2 steps" LABEL viewer)
+# The same limit and message as `bccmis replay --max-vertices`: Fig. 2 ends
+# with 9 cells and 17 nodes (spec/examples/fig2.expected), 26 vertices.
+bccmis_cli_test(view.max_vertices 2 ARGS view ${PROJECT_SOURCE_DIR}/spec/examples/fig2.trace -o x.html --max-vertices 25
+                STDERR_REGEX "fig2.trace:9:1: after 'refine 6 2' the lattice has 26 vertices, above the limit of 25 \\(--max-vertices\\)"
+                LABEL viewer)
+bccmis_cli_test(view.max_vertices_initial 2 ARGS view ${PROJECT_SOURCE_DIR}/spec/examples/fig2.trace -o x.html --max-vertices 5
+                STDERR_REGEX "fig2.trace:6:1: lattice of 3 x 1 cells exceeds the limit of 5 vertices \\(it has 11\\)" LABEL viewer)
 bccmis_cli_test(view.no_input 2 ARGS view -o x.html STDERR_REGEX "give a trace file or --states" LABEL viewer)
 bccmis_cli_test(view.both_inputs 2 ARGS view ${PROJECT_SOURCE_DIR}/spec/examples/fig2.trace --states ${_states} -o x.html
                 STDERR_REGEX "not both" LABEL viewer)

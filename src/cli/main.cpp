@@ -304,6 +304,7 @@ struct ViewCliOptions {
   std::int64_t step = -1;
   std::string from_log;
   std::string title;
+  std::int64_t max_vertices = TraceLimits{}.max_vertices;
   bool quiet = false;
 };
 
@@ -340,7 +341,10 @@ int run_view(const ViewCliOptions& v) {
     if (v.trace.empty()) throw InputError("view: give a trace file or --states (see 'bccmis view --help')");
     const std::string name = display_name(v.trace);
     o.title = v.title.empty() ? name : v.title;
-    const Trace trace = parse_trace(read_input(v.trace), name);
+    TraceLimits limits;
+    limits.max_vertices = v.max_vertices;
+    o.max_vertices = v.max_vertices;
+    const Trace trace = parse_trace(read_input(v.trace), name, limits);
     if (!v.from_log.empty()) {
       // Another implementation's output on the trace (spec/conformance.md).
       ImplRun run;
@@ -353,6 +357,8 @@ int run_view(const ViewCliOptions& v) {
     }
     try {
       r = view_trace(trace, o);
+    } catch (const ViewLimitError& e) {
+      throw InputError(name + ":" + std::to_string(e.line) + ":1: " + e.what());
     } catch (const std::invalid_argument& e) {
       throw InputError(name + ": view: " + e.what());
     }
@@ -468,6 +474,10 @@ int main(int argc, char** argv) {
                        "Another implementation's output on the trace (decision log, optionally followed by its "
                        "canonical state, spec/conformance.md): mark the first disagreement with the reference");
   view_cmd->add_option("--title", vo.title, "Title of the page (default: the input's name)");
+  view_cmd->add_option("--max-vertices", vo.max_vertices,
+                       "Refuse a trace whose lattice grows beyond this many vertices (exit 2), as replay does")
+      ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 40))
+      ->capture_default_str();
   view_cmd->add_flag("-q,--quiet", vo.quiet, "No summary on stderr");
   view_cmd->footer(
       "Step k shows the state after the k-th command (step 0: the initial lattice) and what the command\n"

@@ -300,6 +300,10 @@ ViewResult view_trace(const Trace& trace, const ViewOptions& o) {
     } else {
       s.op = "check";
     }
+    if (const auto vertices = static_cast<std::int64_t>(g.N.size() + g.C.size()); vertices > o.max_vertices)
+      throw ViewLimitError(c.line, "after '" + s.label + "' the lattice has " + std::to_string(vertices) +
+                                       " vertices, above the limit of " + std::to_string(o.max_vertices) +
+                                       " (--max-vertices)");
     VertexSet seeds = s.Y;
     seeds.insert(s.J.begin(), s.J.end());
     if (s.at) seeds.insert(*s.at);

@@ -6,6 +6,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <stdexcept>
 #include <functional>
 #include <optional>
 #include <string>
@@ -38,6 +40,15 @@ struct ViewOptions {
   /// the positions where the two differ are marked in both panels.
   std::optional<ViewSide> side;
   std::optional<std::size_t> open_step;  ///< the step the page opens at (default: first violation, else 0)
+  /// view_trace stops with ViewLimitError when a command leaves the lattice
+  /// with more vertices (|N| + |C|) than this (as `bccmis replay --max-vertices`).
+  std::int64_t max_vertices = TraceLimits{}.max_vertices;
+};
+
+/// Thrown by view_trace when the lattice outgrows ViewOptions::max_vertices.
+struct ViewLimitError : std::runtime_error {
+  ViewLimitError(int trace_line, const std::string& message) : std::runtime_error(message), line(trace_line) {}
+  int line;  ///< the trace line of the command that outgrew the limit
 };
 
 struct ViewResult {
