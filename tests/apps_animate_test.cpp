@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
 
@@ -176,6 +177,52 @@ TEST(RunAnimate, WritesFramesStatsAndState) {
   EXPECT_EQ(out.str().rfind("{\"lattice\": \"4 4 3\", \"frames\": [", 0), 0u) << out.str();
   EXPECT_NE(out.str().find("\"total\": {\"frames\": 6"), std::string::npos);
   std::filesystem::remove_all(dir);
+}
+
+TEST(RunAnimate, FastImplMakesTheSameFramesAndState) {
+  // Every frame's report (operations, cells, nodes) and the final state are
+  // the reference's; the lattices given to the observer are equal frame by
+  // frame. Corner mode too.
+  for (const char* balance : {"edge", "corner"}) {
+    SCOPED_TRACE(balance);
+    AnimateOptions o;
+    o.width = 5;
+    o.height = 4;
+    o.max_level = 4;
+    o.radius = 0.3;
+    o.path = "0.5,0.5;4.5,3.5;1,3";
+    o.frames = 12;
+    o.lift = true;
+    o.balance = balance;
+    std::vector<std::string> states[2];
+    std::vector<FrameReport> reports[2];
+    Graph finals[2];
+    for (int i = 0; i < 2; ++i) {
+      o.impl = i == 0 ? "reference" : "fast";
+      finals[i] = animate(o, [&](const FrameReport&, const Graph& g) { states[i].push_back(canonical_state(g)); },
+                          &reports[i]);
+    }
+    ASSERT_EQ(reports[0].size(), 13u);
+    ASSERT_EQ(reports[1].size(), reports[0].size());
+    std::size_t operations = 0;
+    for (std::size_t k = 0; k < reports[0].size(); ++k) {
+      const FrameReport &a = reports[0][k], &b = reports[1][k];
+      EXPECT_EQ(b.refinements, a.refinements) << "frame " << k;
+      EXPECT_EQ(b.coarsenings, a.coarsenings) << "frame " << k;
+      EXPECT_EQ(b.cells, a.cells) << "frame " << k;
+      EXPECT_EQ(b.nodes, a.nodes) << "frame " << k;
+      EXPECT_EQ(states[1][k], states[0][k]) << "frame " << k;
+      operations += a.refinements + a.coarsenings;
+    }
+    EXPECT_GT(operations, 100u) << "the feature should move the lattice";
+    EXPECT_EQ(finals[1], finals[0]);
+    EXPECT_EQ(finals[0], make_lattice({5, 4, 4})) << "lifted: back to the initial lattice";
+  }
+  AnimateOptions bad;
+  bad.impl = "quick";
+  std::ostringstream out, err;
+  EXPECT_EQ(run_animate(bad, out, err), 2);
+  EXPECT_EQ(err.str(), "bccmis animate: impl 'quick' is unknown: use reference or fast\n");
 }
 
 TEST(RunAnimate, BadOptionsExitTwo) {

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "bccmis/balance.h"
+#include "bccmis/detail/generic.h"
 
 namespace bccmis {
 
@@ -18,27 +18,11 @@ bool cell_meets_disk(const LatticeSize& size, const Point& center, int level, co
 }
 
 AdaptReport adapt_to_disks(Graph& g, std::span<const Disk> disks, int target_level, Balance balance) {
-  const int target = std::clamp(target_level, 0, g.size.L);
-  auto needs_refinement = [&](const Point& c, int level) {
-    if (level >= target) return false;
-    for (const Disk& d : disks)
-      if (cell_meets_disk(g.size, c, level, d)) return true;
-    return false;
-  };
-  AdaptReport report;
-  for (;;) {
-    std::vector<Point> marked;
-    for (const Point& c : g.C)
-      if (needs_refinement(c, g.level_of(c))) marked.push_back(c);
-    if (marked.empty()) break;
-    for (const Point& c : marked)
-      if (g.is_center(c)) report.refinements += refine_balanced(g, c, balance).refined.size();
-  }
-  report.coarsenings = coarsen_where(g, [&](const Graph& now, const Point& n) {
-    const int merged_level = now.level_of(*now.nbr(n).begin()) - 1;
-    return !needs_refinement(n, merged_level);
-  }, balance);
-  return report;
+  return detail::adapt_to_disks(g, disks, target_level, balance);
+}
+
+AdaptReport adapt_to_disks(fast::Lattice& g, std::span<const Disk> disks, int target_level, Balance balance) {
+  return detail::adapt_to_disks(g, disks, target_level, balance);
 }
 
 std::vector<std::array<double, 2>> parse_path(std::string_view text) {

@@ -42,6 +42,10 @@ struct AdaptReport {
 /// lattice returns to the initial one. target_level is clamped to [0, L].
 /// `balance` is the 2:1 rule kept (corner mode needs a corner-balanced g).
 AdaptReport adapt_to_disks(Graph& g, std::span<const Disk> disks, int target_level, Balance balance = Balance::Edge);
+/// The same adaptation on the fast implementation (src/fast): the same
+/// operations in the same order.
+AdaptReport adapt_to_disks(fast::Lattice& g, std::span<const Disk> disks, int target_level,
+                           Balance balance = Balance::Edge);
 
 /// A polyline in level-0 cell units: `x,y;x,y;...` (at least one point;
 /// spaces allowed around numbers). Throws std::invalid_argument naming the

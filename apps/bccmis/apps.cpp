@@ -379,32 +379,48 @@ Graph animate(const AnimateOptions& o, const FrameObserver& after_frame, std::ve
   const int target = o.target_level < 0 ? o.max_level : o.target_level;
   const double S = static_cast<double>(level0_side(size));
 
-  Graph g = make_lattice(size);
+  const std::optional<Impl> impl = parse_impl(o.impl);
+  if (!impl) throw std::invalid_argument("impl '" + o.impl + "' is unknown: use reference or fast");
+
   const int total = o.frames + (o.lift ? 1 : 0);
-  for (int k = 0; k < total; ++k) {
-    FrameReport fr;
-    fr.frame = k;
-    fr.lifted = k >= o.frames;
-    const auto t0 = Clock::now();
-    AdaptReport a;
-    if (fr.lifted) {
-      a = adapt_to_disks(g, {}, target, *balance);
-    } else {
-      const auto p = point_on_path(path, o.frames == 1 ? 0.0 : static_cast<double>(k) / (o.frames - 1));
-      fr.x = p[0];
-      fr.y = p[1];
-      const Disk d{p[0] * S, p[1] * S, o.radius * S};
-      a = adapt_to_disks(g, std::span<const Disk>(&d, 1), target, *balance);
+  // The frames on either lattice; `as_graph` gives the observer its view.
+  auto run = [&](auto& g, auto cells, auto nodes, auto as_graph) {
+    for (int k = 0; k < total; ++k) {
+      FrameReport fr;
+      fr.frame = k;
+      fr.lifted = k >= o.frames;
+      const auto t0 = Clock::now();
+      AdaptReport a;
+      if (fr.lifted) {
+        a = adapt_to_disks(g, {}, target, *balance);
+      } else {
+        const auto p = point_on_path(path, o.frames == 1 ? 0.0 : static_cast<double>(k) / (o.frames - 1));
+        fr.x = p[0];
+        fr.y = p[1];
+        const Disk d{p[0] * S, p[1] * S, o.radius * S};
+        a = adapt_to_disks(g, std::span<const Disk>(&d, 1), target, *balance);
+      }
+      fr.seconds = seconds_since(t0);
+      fr.refinements = a.refinements;
+      fr.coarsenings = a.coarsenings;
+      fr.cells = cells(g);
+      fr.nodes = nodes(g);
+      if (reports) reports->push_back(fr);
+      if (after_frame) after_frame(fr, as_graph(g));
     }
-    fr.seconds = seconds_since(t0);
-    fr.refinements = a.refinements;
-    fr.coarsenings = a.coarsenings;
-    fr.cells = g.C.size();
-    fr.nodes = g.N.size();
-    if (reports) reports->push_back(fr);
-    if (after_frame) after_frame(fr, g);
+  };
+  if (*impl == Impl::Reference) {
+    Graph g = make_lattice(size);
+    run(
+        g, [](const Graph& x) { return x.C.size(); }, [](const Graph& x) { return x.N.size(); },
+        [](const Graph& x) -> const Graph& { return x; });
+    return g;
   }
-  return g;
+  fast::Lattice f(size);
+  run(
+      f, [](const fast::Lattice& x) { return x.cell_count(); }, [](const fast::Lattice& x) { return x.node_count(); },
+      [](const fast::Lattice& x) { return x.to_graph(); });
+  return f.to_graph();
 }
 
 namespace {
@@ -436,15 +452,11 @@ int run_animate(const AnimateOptions& o, std::ostream& out, std::ostream& err) {
       std::error_code ec;
       require(std::filesystem::is_directory(o.svg_dir, ec), o.svg_dir + ": not an existing directory");
     }
-    std::string table;
-    std::string frames_json;
-    std::size_t refinements = 0, coarsenings = 0;
-    double seconds = 0;
-    auto after = [&](const FrameReport& fr, const Graph& g) {
+    // The observer (and with --impl fast its copy of the lattice) only when
+    // a frame needs the lattice: the check and the pictures.
+    FrameObserver after;
+    if (o.check || !o.svg_dir.empty()) after = [&](const FrameReport& fr, const Graph& g) {
       if (o.check) run_check(g, balance_option(o.balance), "after frame " + std::to_string(fr.frame));
-      refinements += fr.refinements;
-      coarsenings += fr.coarsenings;
-      seconds += fr.seconds;
       if (!o.svg_dir.empty()) {
         char name[32];
         std::snprintf(name, sizeof name, "frame_%04d.svg", fr.frame);
@@ -453,6 +465,17 @@ int run_animate(const AnimateOptions& o, std::ostream& out, std::ostream& err) {
                                                   ", " + fmt(fr.y, "%.3f") + ")";
         write_output((std::filesystem::path(o.svg_dir) / name).string(), frame_svg(g, fr, o.radius, title), out);
       }
+    };
+    std::vector<FrameReport> reports;
+    const Graph g = animate(o, after, &reports);
+    std::string table;
+    std::string frames_json;
+    std::size_t refinements = 0, coarsenings = 0;
+    double seconds = 0;
+    for (const FrameReport& fr : reports) {
+      refinements += fr.refinements;
+      coarsenings += fr.coarsenings;
+      seconds += fr.seconds;
       if (o.json) {
         frames_json += std::string(frames_json.empty() ? "" : ",\n  ") + "{\"frame\": " + std::to_string(fr.frame) +
                        ", \"lifted\": " + (fr.lifted ? "true" : "false") + ", \"x\": " + fmt(fr.x, "%.9g") +
@@ -466,8 +489,7 @@ int run_animate(const AnimateOptions& o, std::ostream& out, std::ostream& err) {
                       fr.refinements, fr.coarsenings, fr.cells, fr.nodes, fr.seconds, fr.lifted ? " lifted" : "");
         table += line;
       }
-    };
-    const Graph g = animate(o, after);
+    }
     if (!o.state.empty()) write_output(o.state, canonical_state(g), out);
     const std::size_t frames = static_cast<std::size_t>(o.frames) + (o.lift ? 1 : 0);
     std::string stats;

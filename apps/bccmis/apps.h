@@ -124,6 +124,10 @@ struct AnimateOptions {
   /// lift: after the last frame, one more frame without the feature (the
   /// lattice returns to the initial one). Default false.
   bool lift = false;
+  /// impl: the lattice implementation, "reference" or "fast" (see
+  /// HeightfieldOptions::impl): the same frames, operations and states.
+  /// Default "reference".
+  std::string impl = "reference";
   /// svg_dir: write frame_0000.svg, frame_0001.svg, ... into this existing
   /// directory (render_svg, the feature drawn as a circle). Default "" (none).
   std::string svg_dir;
@@ -158,7 +162,8 @@ struct FrameReport {
   double seconds = 0;          ///< wall time of the frame's adaptation
 };
 
-/// Called after every frame with its report and the lattice.
+/// Called after every frame with its report and the lattice (with the fast
+/// implementation, a reference copy of it, made only when an observer is set).
 using FrameObserver = std::function<void(const FrameReport& report, const Graph& g)>;
 
 /// The animation of `options` (its output fields are ignored). Throws

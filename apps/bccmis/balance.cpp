@@ -62,9 +62,7 @@ std::size_t coarsen_sweep(Graph& g, const CoarsenPredicate& allow, Balance b) {
 }
 
 std::size_t coarsen_where(Graph& g, const CoarsenPredicate& allow, Balance b) {
-  std::size_t total = 0;
-  while (const std::size_t done = coarsen_sweep(g, allow, b)) total += done;
-  return total;
+  return detail::coarsen_where(g, allow, b);
 }
 
 VertexSet boundary_after_coarsen(const Graph& g, const Point& n) { return detail::boundary_after_coarsen(g, n); }

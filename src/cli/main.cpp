@@ -581,6 +581,9 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"edge", "corner"}))
       ->capture_default_str();
   an_cmd->add_option("--frames", an.frames, "Number of frames")->capture_default_str();
+  an_cmd->add_option("--impl", an.impl, "Lattice implementation: reference or fast (same output, faster)")
+      ->check(CLI::IsMember({"reference", "fast"}))
+      ->capture_default_str();
   an_cmd->add_flag("--lift", an.lift, "One more frame without the feature at the end");
   an_cmd->add_option("--svg-dir", an.svg_dir, "Write frame_NNNN.svg into this existing directory");
   an_cmd->add_option("--state", an.state, "Write the final canonical state");

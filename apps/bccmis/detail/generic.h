@@ -2,9 +2,9 @@
 // height-field tessellation written once over the lattice type, so that the
 // reference Graph and bccmis::fast::Lattice run the same application code.
 //
-// balance.cpp and heightfield.cpp instantiate the templates for Graph (the
-// public functions of balance.h and heightfield.h), lattice_fast.cpp for
-// fast::Lattice. A lattice is reached only through the overloads in the
+// balance.cpp, animate.cpp and heightfield.cpp instantiate the templates for
+// Graph and for fast::Lattice (the overloads in balance.h, animate.h and
+// heightfield.h). A lattice is reached only through the overloads in the
 // `access` section below: the same queries and operations under the same
 // names, with the same (x, y)-sorted neighbour order, so both instantiations
 // make the same decisions in the same order (tests/apps_fast_test.cpp
@@ -14,11 +14,13 @@
 #include <algorithm>
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "bccmis/animate.h"
 #include "bccmis/balance.h"
 #include "bccmis/fast/lattice.h"
 #include "bccmis/graph.h"
@@ -163,6 +165,14 @@ std::size_t coarsen_sweep(Lat& g, const Allow& allow, Balance b) {
   return done;
 }
 
+/// coarsen_where of balance.h.
+template <class Lat, class Allow>
+std::size_t coarsen_where(Lat& g, const Allow& allow, Balance b) {
+  std::size_t total = 0;
+  while (const std::size_t done = coarsen_sweep(g, allow, b)) total += done;
+  return total;
+}
+
 template <class Lat>
 VertexSet boundary_after_coarsen(const Lat& g, const Point& n) {
   const auto& Y = nbr_of(g, n);
@@ -178,6 +188,38 @@ VertexSet boundary_after_coarsen(const Lat& g, const Point& n) {
       if (corner || outside >= 2) B.insert(p);
     }
   return B;
+}
+
+// ---- moving feature (animate.h) --------------------------------------------------------
+
+/// adapt_to_disks of animate.h.
+template <class Lat>
+AdaptReport adapt_to_disks(Lat& g, std::span<const Disk> disks, int target_level, Balance balance) {
+  const LatticeSize size = size_of(g);
+  const int target = std::clamp(target_level, 0, size.L);
+  auto needs_refinement = [&](const Point& c, int level) {
+    if (level >= target) return false;
+    for (const Disk& d : disks)
+      if (cell_meets_disk(size, c, level, d)) return true;
+    return false;
+  };
+  AdaptReport report;
+  for (;;) {
+    std::vector<Point> marked;
+    for (const Point& c : cells_of(g))
+      if (needs_refinement(c, g.level_of(c))) marked.push_back(c);
+    if (marked.empty()) break;
+    for (const Point& c : marked)
+      if (g.is_center(c)) report.refinements += refine_balanced(g, c, balance).refined.size();
+  }
+  report.coarsenings = coarsen_where(
+      g,
+      [&](const Lat& now, const Point& n) {
+        const int merged_level = now.level_of(*nbr_of(now, n).begin()) - 1;
+        return !needs_refinement(n, merged_level);
+      },
+      balance);
+  return report;
 }
 
 // ---- height field (heightfield.h) ------------------------------------------------------
