@@ -128,47 +128,11 @@ class LocalFeature {
     }
   }
 
-  // As MovingFeature: locate, refine_to, refine_balanced (edge cascade);
-  // locate searches from level L up (the leaves the frame visits are fine).
-  Point locate(const Point& p, int& level) const {
-    for (int l = size_.L;; --l) {
-      const std::int64_t s = cell_side(size_, l);
-      const Point c{(p.x / s) * s + s / 2, (p.y / s) * s + s / 2};
-      if (Impl::is_center(g_, c) || l == 0) {
-        level = l;
-        return c;
-      }
-    }
-  }
-
-  void refine_to(const Point& p, int target) {
-    for (;;) {
-      int level = 0;
-      const Point c = locate(p, level);
-      if (level >= target) return;
-      if (!refine_balanced(c, level)) return;
-    }
-  }
-
-  bool refine_balanced(const Point& c, int level) {
-    const auto why = Impl::can_refine(g_, c);
-    if (why == RefineRefusal::CoarserNeighbor) {
-      const std::int64_t h = cell_side(size_, level) / 2;
-      const std::int64_t W = size_.W * level0_side(size_), H = size_.H * level0_side(size_);
-      for (const Point q : {Point{c.x + h + 1, c.y}, Point{c.x - h - 1, c.y}, Point{c.x, c.y + h + 1},
-                            Point{c.x, c.y - h - 1}}) {
-        if (q.x < 0 || q.y < 0 || q.x >= W || q.y >= H) continue;
-        int nl = 0;
-        const Point x = locate(q, nl);
-        if (nl < level && Impl::is_center(g_, x)) refine_balanced(x, nl);
-      }
-    } else if (why) {
-      return false;
-    }
-    const bool ok = Impl::refine(g_, c);
-    ops_ += ok;
-    return ok;
-  }
+  // LeafRefiner (workloads.h), locating from level L up: the leaves a frame
+  // visits are fine.
+  LeafRefiner<Impl> refiner() { return LeafRefiner<Impl>(g_, size_, LeafRefiner<Impl>::Search::FinestFirst, ops_); }
+  void refine_to(const Point& p, int target) { refiner().refine_to(p, target); }
+  bool refine_balanced(const Point& c, int level) { return refiner().refine_balanced(c, level); }
 
   LatticeSize size_;
   State g_;

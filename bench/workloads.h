@@ -153,6 +153,71 @@ inline Mix make_mix(std::int64_t cells, std::size_t count, std::uint64_t seed) {
 /// Only the neighbourhood of the old and new disk is visited, so a frame
 /// costs O(ops), not O(lattice). Same semantics as apps/ adapt_to_disks,
 /// written once for both implementations.
+/// The leaf-locating refinement both moving-feature workloads use (this
+/// file's MovingFeature, local_feature.h's LocalFeature): cells are found by
+/// position, and a coarser edge-neighbour in the way is refined first.
+/// `Search` is the order in which locate tries the levels: from level 0 down
+/// (cheap when the leaves are coarse) or from level L up (when they are fine).
+template <class Impl>
+class LeafRefiner {
+ public:
+  using State = typename Impl::State;
+  enum class Search { CoarsestFirst, FinestFirst };
+
+  LeafRefiner(State& g, const LatticeSize& size, Search search, std::size_t& ops)
+      : g_(g), size_(size), search_(search), ops_(ops) {}
+
+  /// The leaf cell containing p (strictly inside a level-L cell), and its level.
+  Point locate(const Point& p, int& level) const {
+    const bool up = search_ == Search::FinestFirst;
+    for (int l = up ? size_.L : 0;; l += up ? -1 : 1) {
+      const std::int64_t s = cell_side(size_, l);
+      const Point c{(p.x / s) * s + s / 2, (p.y / s) * s + s / 2};
+      if (Impl::is_center(g_, c) || l == (up ? 0 : size_.L)) {
+        level = l;
+        return c;
+      }
+    }
+  }
+
+  /// Refines the leaves containing p until the one there has level `target`.
+  void refine_to(const Point& p, int target) {
+    for (;;) {
+      int level = 0;
+      const Point c = locate(p, level);
+      if (level >= target) return;
+      if (!refine_balanced(c, level)) return;
+    }
+  }
+
+  /// Refines c, first refining any coarser edge-neighbour (recursively).
+  bool refine_balanced(const Point& c, int level) {
+    const auto why = Impl::can_refine(g_, c);
+    if (why == RefineRefusal::CoarserNeighbor) {
+      const std::int64_t h = cell_side(size_, level) / 2;
+      const std::int64_t W = size_.W * level0_side(size_), H = size_.H * level0_side(size_);
+      for (const Point q : {Point{c.x + h + 1, c.y}, Point{c.x - h - 1, c.y}, Point{c.x, c.y + h + 1},
+                            Point{c.x, c.y - h - 1}}) {
+        if (q.x < 0 || q.y < 0 || q.x >= W || q.y >= H) continue;
+        int nl = 0;
+        const Point x = locate(q, nl);
+        if (nl < level && Impl::is_center(g_, x)) refine_balanced(x, nl);
+      }
+    } else if (why) {
+      return false;
+    }
+    const bool ok = Impl::refine(g_, c);
+    ops_ += ok;
+    return ok;
+  }
+
+ private:
+  State& g_;
+  LatticeSize size_;
+  Search search_;
+  std::size_t& ops_;
+};
+
 template <class Impl>
 class MovingFeature {
  public:
@@ -230,46 +295,8 @@ class MovingFeature {
     return out;
   }
 
-  /// The leaf cell containing p (strictly inside a level-L cell), and its level.
-  Point locate(const Point& p, int& level) const {
-    for (int l = 0;; ++l) {
-      const std::int64_t s = cell_side(size_, l);
-      const Point c{(p.x / s) * s + s / 2, (p.y / s) * s + s / 2};
-      if (Impl::is_center(g_, c) || l == size_.L) {
-        level = l;
-        return c;
-      }
-    }
-  }
-
   void refine_to(const Point& p, int target) {
-    for (;;) {
-      int level = 0;
-      const Point c = locate(p, level);
-      if (level >= target) return;
-      if (!refine_balanced(c, level)) return;
-    }
-  }
-
-  /// Refines c, first refining any coarser edge-neighbour (recursively).
-  bool refine_balanced(const Point& c, int level) {
-    const auto why = Impl::can_refine(g_, c);
-    if (why == RefineRefusal::CoarserNeighbor) {
-      const std::int64_t h = cell_side(size_, level) / 2;
-      const std::int64_t W = size_.W * level0_side(size_), H = size_.H * level0_side(size_);
-      for (const Point q : {Point{c.x + h + 1, c.y}, Point{c.x - h - 1, c.y}, Point{c.x, c.y + h + 1},
-                            Point{c.x, c.y - h - 1}}) {
-        if (q.x < 0 || q.y < 0 || q.x >= W || q.y >= H) continue;
-        int nl = 0;
-        const Point x = locate(q, nl);
-        if (nl < level && Impl::is_center(g_, x)) refine_balanced(x, nl);
-      }
-    } else if (why) {
-      return false;
-    }
-    const bool ok = Impl::refine(g_, c);
-    ops_ += ok;
-    return ok;
+    LeafRefiner<Impl>(g_, size_, LeafRefiner<Impl>::Search::CoarsestFirst, ops_).refine_to(p, target);
   }
 
   LatticeSize size_;
