@@ -1,14 +1,15 @@
-// bccmis apps, internal: the balance cascade, the coarsening sweep and the
-// height-field tessellation written once over the lattice type, so that the
-// reference Graph and bccmis::fast::Lattice run the same application code.
+// bccmis apps, internal: the balance cascade, the coarsening sweep, the
+// moving-feature adaptation and the height-field tessellation written once
+// over the lattice type, so that the reference Graph and bccmis::fast::Lattice
+// run the same application code.
 //
 // balance.cpp, animate.cpp and heightfield.cpp instantiate the templates for
 // Graph and for fast::Lattice (the overloads in balance.h, animate.h and
 // heightfield.h). A lattice is reached only through the overloads in the
 // `access` section below: the same queries and operations under the same
 // names, with the same (x, y)-sorted neighbour order, so both instantiations
-// make the same decisions in the same order (tests/apps_fast_test.cpp
-// compares their states and reports).
+// make the same decisions in the same order (tests/apps_fast_test.cpp and
+// RunAnimate.FastImplMakesTheSameFramesAndState compare states and reports).
 #pragma once
 
 #include <algorithm>
