@@ -189,5 +189,16 @@ TEST(Lattice, RejectsSizesOutOfRange) {
   EXPECT_THROW(validate_lattice_size({(std::int64_t{1} << 61) + 1, 1, 0}), LatticeError);
 }
 
+// Expected literals written by hand from RFC 8259 §7.
+TEST(Json, StringLiteralEscapesWhatJsonRequires) {
+  EXPECT_EQ(json_string(""), "\"\"");
+  EXPECT_EQ(json_string("plain é"), "\"plain é\"");
+  EXPECT_EQ(json_string("a\"b\\c"), "\"a\\\"b\\\\c\"");
+  EXPECT_EQ(json_string("l1\nl2\tx\ry"), "\"l1\\nl2\\tx\\ry\"");
+  EXPECT_EQ(json_string(std::string_view("\x01\x1f\0", 3)), "\"\\u0001\\u001f\\u0000\"");
+  EXPECT_EQ(json_string("</script>&"), "\"</script>&\"");
+  EXPECT_EQ(json_string("</script>&", true), "\"\\u003c/script\\u003e\\u0026\"");
+}
+
 }  // namespace
 }  // namespace bccmis

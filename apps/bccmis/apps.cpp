@@ -53,23 +53,6 @@ std::string fmt(double v, const char* f = "%.6g") {
   return buf;
 }
 
-std::string json_string(std::string_view s) {
-  std::string r = "\"";
-  for (const char ch : s) {
-    if (ch == '"' || ch == '\\') {
-      r += '\\';
-      r += ch;
-    } else if (static_cast<unsigned char>(ch) < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(ch)));
-      r += buf;
-    } else {
-      r += ch;
-    }
-  }
-  return r + "\"";
-}
-
 // Ordered name/value statistics printed as `name value` lines or one JSON object.
 class Record {
  public:

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdio>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -182,6 +183,32 @@ std::string point_text(const Point& p) {
 std::string shown(const Point& p) { return to_string(p); }
 
 }  // namespace
+
+// ---- JSON ---------------------------------------------------------------------
+
+std::string json_string(std::string_view text, bool html_safe) {
+  std::string r = "\"";
+  for (const char ch : text) {
+    const auto u = static_cast<unsigned char>(ch);
+    switch (ch) {
+      case '"': r += "\\\""; break;
+      case '\\': r += "\\\\"; break;
+      case '\n': r += "\\n"; break;
+      case '\t': r += "\\t"; break;
+      case '\r': r += "\\r"; break;
+      default:
+        if (u < 0x20 || (html_safe && (ch == '<' || ch == '>' || ch == '&'))) {
+          char buf[8];
+          std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(u));
+          r += buf;
+        } else {
+          r += ch;
+        }
+    }
+  }
+  r += '"';
+  return r;
+}
 
 // ---- Canonical state ---------------------------------------------------------
 

@@ -76,6 +76,13 @@ std::string command_text(const TraceCommand& cmd);
 /// `coarsen 8 8 refused not-a-refined-center`.
 std::string decision_line(const TraceCommand& cmd, std::string_view refusal_code);
 
+/// `text` as a JSON string literal (RFC 8259), quotes included: `"`, `\`,
+/// newline, tab and carriage return get their short escapes, other control
+/// bytes \u00XX. With `html_safe`, `<`, `>` and `&` are \u escapes too, so the
+/// literal can stand inside an HTML <script> element (no "</script>").
+/// Other bytes are copied as they are (UTF-8 stays UTF-8).
+std::string json_string(std::string_view text, bool html_safe = false);
+
 /// Replays `trace` from its initial lattice. For every refine and coarsen it
 /// appends one decision-log line to `log`; after every command it calls
 /// `after` (if set) with the command, the graph and the command's decision

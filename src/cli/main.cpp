@@ -146,27 +146,6 @@ struct ReplayOptions {
   bool json = false;
 };
 
-/// A JSON string literal.
-std::string json_string(std::string_view text) {
-  std::string r = "\"";
-  for (char ch : text) {
-    switch (ch) {
-      case '"': r += "\\\""; break;
-      case '\\': r += "\\\\"; break;
-      case '\n': r += "\\n"; break;
-      default:
-        if (static_cast<unsigned char>(ch) < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(ch)));
-          r += buf;
-        } else {
-          r += ch;
-        }
-    }
-  }
-  return r + "\"";
-}
-
 int run_replay(const ReplayOptions& o) {
   const std::string name = display_name(o.trace);
   TraceLimits limits;

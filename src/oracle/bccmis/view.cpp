@@ -16,25 +16,6 @@ constexpr std::size_t kVerifyEvery = 64;
 constexpr std::int64_t kMaxPageCoordinate = std::int64_t{1} << 53;
 constexpr std::string_view kPlaceholder = "{\"format\": \"placeholder\"}";
 
-/// A JSON string literal that is also safe inside an HTML <script> element:
-/// '<', '>' and '&' are written as \u escapes, so no "</script>" can appear.
-std::string js_string(std::string_view text) {
-  std::string r = "\"";
-  for (char ch : text) {
-    const auto u = static_cast<unsigned char>(ch);
-    if (ch == '"') r += "\\\"";
-    else if (ch == '\\') r += "\\\\";
-    else if (u < 0x20 || ch == '<' || ch == '>' || ch == '&') {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(u));
-      r += buf;
-    } else {
-      r += ch;
-    }
-  }
-  return r + "\"";
-}
-
 void append_point(std::string& out, const Point& p) {
   out += std::to_string(p.x);
   out += ',';
@@ -112,7 +93,7 @@ std::string state_json(const Graph& g) {
 }
 
 std::string violation_json(const Violation& v) {
-  return "{\"code\":" + js_string(v.code) + ",\"message\":" + js_string(to_string(v)) +
+  return "{\"code\":" + json_string(v.code, true) + ",\"message\":" + json_string(to_string(v), true) +
          ",\"layer\":" + std::to_string(v.layer) + ",\"where\":" + points_json(v.where) + "}";
 }
 
@@ -176,8 +157,8 @@ class ModelBuilder {
 
   /// A side state for step `step` (which must already have been added with `now` = the state there).
   void set_side(const ViewSide& side, const Graph& main_state) {
-    side_ = "{\"step\":" + std::to_string(side.step) + ",\"title\":" + js_string(side.title) +
-            ",\"message\":" + js_string(side.message);
+    side_ = "{\"step\":" + std::to_string(side.step) + ",\"title\":" + json_string(side.title, true) +
+            ",\"message\":" + json_string(side.message, true);
     std::vector<Point> marks = side.marks;
     if (side.state) {
       const std::vector<Point> diff = changed_positions(main_state, *side.state);
@@ -197,7 +178,7 @@ class ModelBuilder {
     r.first_violation = first_violation_;
     r.violation = violation_;
     const std::size_t open = o_.open_step ? std::min(*o_.open_step, count_ - 1) : first_violation_.value_or(0);
-    r.json = "{\"format\":\"bccmis-view 1\",\"title\":" + js_string(o_.title) + ",\"lattice\":[" +
+    r.json = "{\"format\":\"bccmis-view 1\",\"title\":" + json_string(o_.title, true) + ",\"lattice\":[" +
              std::to_string(initial.size.W) + "," + std::to_string(initial.size.H) + "," +
              std::to_string(initial.size.L) + "],\"open\":" + std::to_string(open) +
              ",\"init\":" + state_json(initial) + ",\"steps\":" + steps_ + "]" +
@@ -212,10 +193,10 @@ class ModelBuilder {
  private:
   void finish(const Step& s, const Graph& now, const std::vector<Point>& changed) {
     std::string j = count_ ? "," : "";
-    j += "{\"label\":" + js_string(s.label) + ",\"op\":\"" + s.op + "\"";
+    j += "{\"label\":" + json_string(s.label, true) + ",\"op\":\"" + s.op + "\"";
     if (s.line) j += ",\"line\":" + std::to_string(s.line);
     if (s.at) j += ",\"at\":" + points_json(std::vector<Point>{*s.at});
-    if (!s.decision.empty()) j += ",\"decision\":" + js_string(s.decision);
+    if (!s.decision.empty()) j += ",\"decision\":" + json_string(s.decision, true);
     if (s.level >= 0) j += ",\"level\":" + std::to_string(s.level);
     if (!s.Y.empty()) j += ",\"Y\":" + points_json(s.Y);
     if (!s.J.empty()) j += ",\"J\":" + points_json(s.J);
