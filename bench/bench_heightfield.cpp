@@ -35,6 +35,7 @@
 #include "bccmis/format.h"
 #include "bccmis/heightfield.h"
 #include "bccmis/image.h"
+#include "bench_main.h"
 
 namespace bccmis::bench {
 namespace {
@@ -181,19 +182,15 @@ void register_all() {
 int main(int argc, char** argv) {
   using namespace bccmis::bench;
   bool do_verify = false;
-  int kept = 1;
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--bccmis_smoke") == 0) {
-      g_smoke = true;
-    } else if (std::strcmp(argv[i], "--bccmis_verify") == 0) {
-      do_verify = true;
-    } else if (std::strncmp(argv[i], "--bccmis_image=", 15) == 0) {
-      g_image = argv[i] + 15;
-    } else {
-      argv[kept++] = argv[i];
+  take_flags(argc, argv, [&](std::string_view a) {
+    if (a == "--bccmis_smoke") return g_smoke = true;
+    if (a == "--bccmis_verify") return do_verify = true;
+    if (a.starts_with("--bccmis_image=")) {
+      g_image = a.substr(15);
+      return true;
     }
-  }
-  argc = kept;
+    return false;
+  });
   try {
     if (do_verify && verify() != 0) return 1;
   } catch (const std::exception& e) {
@@ -201,9 +198,5 @@ int main(int argc, char** argv) {
     return 2;
   }
   register_all();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return run_benchmarks(argc, argv);
 }

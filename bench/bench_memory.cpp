@@ -37,6 +37,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_main.h"
 #include "halfedge_mesh.h"
 #include "workloads.h"
 
@@ -240,18 +241,8 @@ void register_all() {
 }  // namespace bccmis::bench
 
 int main(int argc, char** argv) {
-  int kept = 1;
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--bccmis_smoke") == 0)
-      bccmis::bench::g_smoke = true;
-    else
-      argv[kept++] = argv[i];
-  }
-  argc = kept;
-  bccmis::bench::register_all();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  using namespace bccmis::bench;
+  take_flags(argc, argv, [](std::string_view a) { return a == "--bccmis_smoke" && (g_smoke = true); });
+  register_all();
+  return run_benchmarks(argc, argv);
 }

@@ -56,6 +56,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_main.h"
 #include "workloads.h"
 
 #if __has_include(<valgrind/callgrind.h>)
@@ -434,31 +435,29 @@ int instructions_run(std::int64_t cells, bool random) {
 int main(int argc, char** argv) {
   using namespace bccmis::bench;
   bool do_verify = false;
-  int kept = 1;
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--bccmis_smoke") == 0) {
-      g_smoke = true;
-    } else if (std::strcmp(argv[i], "--bccmis_verify") == 0) {
-      do_verify = true;
-    } else if (std::strncmp(argv[i], "--bccmis_max_cells=", 19) == 0) {
-      g_max_cells = std::atoll(argv[i] + 19);
-    } else if (std::strncmp(argv[i], "--bccmis_instructions=", 22) == 0) {
-      char impl[16] = {};
-      long long cells = 0;
-      int order = 0;
-      if (std::sscanf(argv[i] + 22, "%15[a-z],%lld,%d", impl, &cells, &order) != 3) return 2;
-      return std::strcmp(impl, "fast") == 0 ? instructions_run<Fast>(cells, order != 0)
-                                            : instructions_run<Reference>(cells, order != 0);
-    } else {
-      argv[kept++] = argv[i];
+  std::string instructions;
+  take_flags(argc, argv, [&](std::string_view a) {
+    if (a == "--bccmis_smoke") return g_smoke = true;
+    if (a == "--bccmis_verify") return do_verify = true;
+    if (a.starts_with("--bccmis_max_cells=")) {
+      g_max_cells = std::atoll(a.data() + 19);
+      return true;
     }
+    if (a.starts_with("--bccmis_instructions=")) {
+      instructions = a.substr(22);
+      return true;
+    }
+    return false;
+  });
+  if (!instructions.empty()) {
+    char impl[16] = {};
+    long long cells = 0;
+    int order = 0;
+    if (std::sscanf(instructions.c_str(), "%15[a-z],%lld,%d", impl, &cells, &order) != 3) return 2;
+    return std::strcmp(impl, "fast") == 0 ? instructions_run<Fast>(cells, order != 0)
+                                          : instructions_run<Reference>(cells, order != 0);
   }
-  argc = kept;
   if (do_verify && verify() != 0) return 1;
   register_all();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return run_benchmarks(argc, argv);
 }

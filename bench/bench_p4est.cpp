@@ -46,6 +46,7 @@
 
 #include "bccmis/fast/lattice.h"
 #include "bccmis/p4est/bridge.h"
+#include "bench_main.h"
 #include "local_feature.h"
 #include "workloads.h"
 
@@ -284,22 +285,13 @@ int verify() {
 int main(int argc, char** argv) {
   using namespace bccmis::bench;
   bool do_verify = false;
-  int kept = 1;
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--bccmis_smoke") == 0)
-      g_smoke = true;
-    else if (std::strcmp(argv[i], "--bccmis_verify") == 0)
-      do_verify = true;
-    else
-      argv[kept++] = argv[i];
-  }
-  argc = kept;
+  take_flags(argc, argv, [&](std::string_view a) {
+    if (a == "--bccmis_smoke") return g_smoke = true;
+    if (a == "--bccmis_verify") return do_verify = true;
+    return false;
+  });
   bccmis::p4est_bridge::Session session(&argc, &argv);
   if (do_verify && verify() != 0) return 1;
   register_all();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return run_benchmarks(argc, argv);
 }

@@ -170,11 +170,7 @@ class Twin {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 3) return 0;
   Bytes in(data, size);
-  LatticeSize lattice;
-  lattice.W = 1 + in.next() % 4;
-  lattice.H = 1 + in.next() % 4;
-  lattice.L = in.next() % 6;
-  Twin twin(lattice);
+  Twin twin(fuzz::decode_lattice(in, 4, 6));
   for (std::size_t op = 0; op < kMaxOps && !in.empty(); ++op) {
     const std::uint8_t s = in.next();
     const bool batch = (s & 0x80) != 0;

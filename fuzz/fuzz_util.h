@@ -89,6 +89,16 @@ class Bytes {
   std::size_t pos_ = 0;
 };
 
+/// A lattice from three bytes: W = 1 + b0 % max_side, H = 1 + b1 % max_side,
+/// L = b2 % levels.
+inline LatticeSize decode_lattice(Bytes& in, int max_side, int levels) {
+  LatticeSize size;
+  size.W = 1 + in.next() % max_side;
+  size.H = 1 + in.next() % max_side;
+  size.L = in.next() % levels;
+  return size;
+}
+
 /// The k-th element of a sorted set.
 template <class Set>
 typename Set::value_type nth(const Set& s, std::size_t k) {

@@ -142,11 +142,7 @@ class Run {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 3) return 0;
   Bytes in(data, size);
-  LatticeSize lattice;
-  lattice.W = 1 + in.next() % 3;
-  lattice.H = 1 + in.next() % 3;
-  lattice.L = in.next() % 5;
-  Run run(lattice);
+  Run run(fuzz::decode_lattice(in, 3, 5));
   for (std::size_t op = 0; op < kMaxOps && !in.empty(); ++op) {
     const std::uint8_t s = in.next();
     const bool invert = (s & 0x80) != 0;
