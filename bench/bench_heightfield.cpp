@@ -25,7 +25,6 @@
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
-#include <cstring>
 #include <ctime>
 #include <iostream>
 #include <string>
@@ -162,18 +161,22 @@ int verify() {
   return 0;
 }
 
+template <class Impl>
+void register_impl(const std::string& impl) {
+  benchmark::RegisterBenchmark(("Heightfield/" + impl).c_str(), BM_Heightfield<Impl>)
+      ->ArgName("measure")
+      ->Arg(0)
+      ->Arg(1)
+      ->UseManualTime()
+      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark(("HeightfieldOps/" + impl).c_str(), BM_HeightfieldOps<Impl>)
+      ->UseManualTime()
+      ->Unit(benchmark::kMicrosecond);
+}
+
 void register_all() {
-  for (const char* name : {"Heightfield/reference", "Heightfield/fast"}) {
-    auto* b = std::strstr(name, "fast") ? benchmark::RegisterBenchmark(name, BM_Heightfield<Fast>)
-                                        : benchmark::RegisterBenchmark(name, BM_Heightfield<Reference>);
-    b->ArgName("measure")->Arg(0)->Arg(1)->UseManualTime()->Unit(benchmark::kMillisecond);
-  }
-  benchmark::RegisterBenchmark("HeightfieldOps/reference", BM_HeightfieldOps<Reference>)
-      ->UseManualTime()
-      ->Unit(benchmark::kMicrosecond);
-  benchmark::RegisterBenchmark("HeightfieldOps/fast", BM_HeightfieldOps<Fast>)
-      ->UseManualTime()
-      ->Unit(benchmark::kMicrosecond);
+  register_impl<Reference>("reference");
+  register_impl<Fast>("fast");
 }
 
 }  // namespace
