@@ -1,6 +1,5 @@
 #include "bccmis/balance.h"
 
-#include <iterator>
 
 #include "bccmis/detail/generic.h"
 
@@ -14,34 +13,19 @@ std::optional<Balance> parse_balance(std::string_view text) {
 
 std::string_view name(Balance b) { return b == Balance::Edge ? "edge" : "corner"; }
 
-VertexSet edge_neighbors(const Graph& g, const Point& c) {
+namespace {
+
+VertexSet neighbors_under(const Graph& g, const Point& c, Balance b) {
   VertexSet X;
-  if (!g.is_center(c)) return X;
-  const VertexSet& B = g.nbr(c);
-  // Two boundary nodes of c share a second cell exactly when they are the
-  // ends of one side piece of c (a corner and a corner, or a corner and a
-  // junction); that cell lies across the piece.
-  for (auto bi = B.begin(); bi != B.end(); ++bi) {
-    const VertexSet& Ni = g.nbr(*bi);
-    for (auto bj = std::next(bi); bj != B.end(); ++bj) {
-      const VertexSet& Nj = g.nbr(*bj);
-      for (const Point& x : Ni)
-        if (x != c && Nj.count(x) != 0) X.insert(x);
-    }
-  }
+  if (g.is_center(c)) detail::for_each_neighbor(g, c, b, [&](const Point& x) { X.insert(x); });
   return X;
 }
 
-VertexSet touching_neighbors(const Graph& g, const Point& c) {
-  // A cell touching c meets c's boundary at a corner of c or along a side
-  // piece whose ends are boundary nodes of c, so it lists one of them.
-  VertexSet T;
-  if (!g.is_center(c)) return T;
-  for (const Point& b : g.nbr(c))
-    for (const Point& x : g.nbr(b))
-      if (x != c) T.insert(x);
-  return T;
-}
+}  // namespace
+
+VertexSet edge_neighbors(const Graph& g, const Point& c) { return neighbors_under(g, c, Balance::Edge); }
+
+VertexSet touching_neighbors(const Graph& g, const Point& c) { return neighbors_under(g, c, Balance::Corner); }
 
 std::optional<RefineRefusal> can_refine_under(const Graph& g, const Point& c, Balance b) {
   return detail::can_refine_under(g, c, b);

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <iterator>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -65,31 +66,40 @@ inline bool coarsen_at(fast::Lattice& g, const Point& n) { return g.coarsen(n).a
 
 // ---- balance (balance.h) ------------------------------------------------------------
 
+/// Calls f(x) for every neighbour x of center c under mode b (x may repeat):
+/// edge, the cells across a side piece of c (eq. 3's X, erratum E4): two
+/// boundary nodes of c share a second cell exactly when they are the ends of
+/// one side piece of c (a corner and a corner, or a corner and a junction);
+/// corner, every cell touching c: it meets c's boundary at a corner of c or
+/// along a side piece whose ends are boundary nodes of c, so it lists one.
+template <class Lat, class F>
+void for_each_neighbor(const Lat& g, const Point& c, Balance b, const F& f) {
+  const auto& B = nbr_of(g, c);  // the set itself (reference) or a copy kept alive (fast)
+  if (b == Balance::Corner) {
+    for (const Point& p : B)
+      for (const Point& x : nbr_of(g, p))
+        if (x != c) f(x);
+    return;
+  }
+  for (auto bi = B.begin(); bi != B.end(); ++bi) {
+    const auto& Ni = nbr_of(g, *bi);
+    for (auto bj = std::next(bi); bj != B.end(); ++bj) {
+      const auto& Nj = nbr_of(g, *bj);
+      for (const Point& x : Ni)
+        if (x != c && holds(Nj, x)) f(x);
+    }
+  }
+}
+
 /// The smallest (by (x, y)) neighbour of c under mode b that is coarser than
 /// c, i.e. the first coarser element of edge_neighbors / touching_neighbors.
 template <class Lat>
 std::optional<Point> coarser_neighbor(const Lat& g, const Point& c, Balance b) {
   const int l = g.level_of(c);
   std::optional<Point> best;
-  auto consider = [&](const Point& x) {
-    if (x != c && g.level_of(x) < l && (!best || x < *best)) best = x;
-  };
-  const auto& B = nbr_of(g, c);  // the set itself (reference) or a copy kept alive (fast)
-  if (b == Balance::Corner) {
-    for (const Point& p : B)
-      for (const Point& x : nbr_of(g, p)) consider(x);
-    return best;
-  }
-  // Edge: x lies across a side piece of c iff two boundary nodes of c both
-  // list it (balance.cpp, edge_neighbors).
-  for (auto bi = B.begin(); bi != B.end(); ++bi) {
-    const auto& Ni = nbr_of(g, *bi);
-    for (auto bj = std::next(bi); bj != B.end(); ++bj) {
-      const auto& Nj = nbr_of(g, *bj);
-      for (const Point& x : Ni)
-        if (holds(Nj, x)) consider(x);
-    }
-  }
+  for_each_neighbor(g, c, b, [&](const Point& x) {
+    if (g.level_of(x) < l && (!best || x < *best)) best = x;
+  });
   return best;
 }
 
