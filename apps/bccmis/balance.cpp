@@ -1,6 +1,5 @@
 #include "bccmis/balance.h"
 
-
 #include "bccmis/detail/generic.h"
 
 namespace bccmis {
