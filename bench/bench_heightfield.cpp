@@ -3,10 +3,10 @@
 // paper's random-sample error measure. The paper reports 1-5 s.
 //
 //   Heightfield/<impl>/measure:M   one whole tessellation (tessellate() of
-//     apps/bccmis/heightfield.h) from the initial lattice, M = 0 the paper's
+//     src/bccmis/apps/heightfield.h) from the initial lattice, M = 0 the paper's
 //     measure (16 random samples per cell), M = 1 the exact max over every
 //     pixel. Both implementations run the same application code
-//     (apps/bccmis/detail/generic.h) and make the same decisions, so the
+//     (src/bccmis/apps/detail/generic.h) and make the same decisions, so the
 //     difference is the lattice: graph queries (neighbours, levels, the
 //     cascade's checks) and the operations.
 //   HeightfieldOps/<impl>           only the lattice work of that result:
@@ -32,8 +32,8 @@
 
 #include "bccmis/fast/lattice.h"
 #include "bccmis/format.h"
-#include "bccmis/heightfield.h"
-#include "bccmis/image.h"
+#include "bccmis/apps/heightfield.h"
+#include "bccmis/apps/image.h"
 #include "bench_main.h"
 
 namespace bccmis::bench {

@@ -18,9 +18,13 @@ install(TARGETS bccmis_core bccmis_invariants bccmis_all bccmis_warnings
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS bccmis RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/bccmis/ ${PROJECT_SOURCE_DIR}/invariants/bccmis/
+# The core's headers and the checker's (bccmis/invariants/); the other modules
+# are not installed.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/bccmis/
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/bccmis
-        FILES_MATCHING PATTERN "*.h")
+        FILES_MATCHING PATTERN "*.h"
+        PATTERN "fast" EXCLUDE PATTERN "oracle" EXCLUDE PATTERN "explore" EXCLUDE
+        PATTERN "apps" EXCLUDE PATTERN "p4est" EXCLUDE PATTERN "cgal" EXCLUDE)
 install(EXPORT bccmisTargets NAMESPACE bccmis:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/bccmis)
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/bccmisConfig.cmake.in
                               ${PROJECT_BINARY_DIR}/bccmisConfig.cmake

@@ -32,13 +32,13 @@ mkdir -p "$OUT"
 work=$(mktemp -d "${WORK:-/tmp}/bccmis-fuzz-build.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 
-includes=(-I"$root/src" -I"$root/invariants" -I"$root/src/fast" -I"$here")
+includes=(-I"$root/src" -I"$here")
 # The libraries the targets link: the reference core, the checker (layers
 # 1-4) and the fast implementation. Compiled once, with the service's flags.
 # (fuzz_conformance also needs the oracle library, whose page template CMake
 # generates: it is built by the CMake fuzz preset only.)
 objects=()
-for source in "$root"/src/bccmis/*.cpp "$root"/invariants/bccmis/*.cpp "$root"/src/fast/bccmis/fast/*.cpp; do
+for source in "$root"/src/bccmis/*.cpp "$root"/src/bccmis/invariants/*.cpp "$root"/src/bccmis/fast/*.cpp; do
   object="$work/$(basename "$(dirname "$source")")_$(basename "$source" .cpp).o"
   # shellcheck disable=SC2086  # CXXFLAGS is a list of flags
   $CXX $CXXFLAGS -std=c++20 "${includes[@]}" -c "$source" -o "$object"

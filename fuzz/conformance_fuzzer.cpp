@@ -31,9 +31,9 @@
 #include <string>
 #include <string_view>
 
-#include "bccmis/conformance.h"
+#include "bccmis/oracle/conformance.h"
 #include "bccmis/format.h"
-#include "bccmis/view.h"
+#include "bccmis/oracle/view.h"
 #include "fuzz_util.h"
 
 namespace {

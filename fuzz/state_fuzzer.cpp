@@ -22,9 +22,9 @@
 #include <string_view>
 #include <vector>
 
-#include "bccmis/checked.h"
+#include "bccmis/invariants/checked.h"
 #include "bccmis/format.h"
-#include "bccmis/invariants.h"
+#include "bccmis/invariants/invariants.h"
 #include "bccmis/ops.h"
 #include "fuzz_util.h"
 

@@ -16,7 +16,7 @@
 #include <string_view>
 
 #include "bccmis/format.h"
-#include "bccmis/invariants.h"
+#include "bccmis/invariants/invariants.h"
 #include "fuzz_util.h"
 
 namespace {

@@ -9,4 +9,4 @@ bash scripts/setup.sh >&2
 cmake --preset release >/dev/null
 cmake --build --preset release --target bccmis >&2
 trace="${1:-spec/examples/fig2.trace}"
-./build/release/src/cli/bccmis replay --check=every --depth=5 "$trace"
+./build/release/tools/bccmis/bccmis replay --check=every --depth=5 "$trace"

@@ -1,4 +1,4 @@
-// Moving-feature adaptivity (apps/bccmis/animate.h, apps.h): the checker
+// Moving-feature adaptivity (src/bccmis/apps/animate.h, apps.h): the checker
 // after every frame, history independence, the lattice far from the feature
 // back at level 0, the lift back to the initial lattice, run_animate outputs.
 #include <gtest/gtest.h>
@@ -12,10 +12,10 @@
 
 #include <unistd.h>
 
-#include "bccmis/animate.h"
-#include "bccmis/apps.h"
+#include "bccmis/apps/animate.h"
+#include "bccmis/apps/apps.h"
 #include "bccmis/format.h"
-#include "bccmis/invariants.h"
+#include "bccmis/invariants/invariants.h"
 
 namespace bccmis {
 namespace {

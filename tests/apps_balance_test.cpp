@@ -1,5 +1,5 @@
 // refine_balanced, coarsen_where, edge_neighbors and boundary_after_coarsen
-// (apps/bccmis/balance.h), checked against an independent geometric closure
+// (src/bccmis/apps/balance.h), checked against an independent geometric closure
 // on quadtree cells (level, i, j) that never looks at the graph's sets.
 #include <gtest/gtest.h>
 
@@ -13,9 +13,9 @@
 #include <tuple>
 #include <vector>
 
-#include "bccmis/balance.h"
+#include "bccmis/apps/balance.h"
 #include "bccmis/format.h"
-#include "bccmis/invariants.h"
+#include "bccmis/invariants/invariants.h"
 #include "bccmis/ops.h"
 
 namespace bccmis {

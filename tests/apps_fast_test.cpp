@@ -1,4 +1,4 @@
-// The applications on the fast implementation (apps/bccmis/detail/generic.h):
+// The applications on the fast implementation (src/bccmis/apps/detail/generic.h):
 // refine_balanced and tessellate on bccmis::fast::Lattice make the reference's
 // decisions. The reference instantiation is checked on its own by
 // apps_balance_test.cpp (against a geometric closure) and
@@ -13,12 +13,12 @@
 #include <tuple>
 #include <vector>
 
-#include "bccmis/balance.h"
+#include "bccmis/apps/balance.h"
 #include "bccmis/fast/lattice.h"
 #include "bccmis/format.h"
-#include "bccmis/heightfield.h"
-#include "bccmis/image.h"
-#include "bccmis/invariants.h"
+#include "bccmis/apps/heightfield.h"
+#include "bccmis/apps/image.h"
+#include "bccmis/invariants/invariants.h"
 
 namespace bccmis {
 namespace {

@@ -1,4 +1,4 @@
-// Height-field tessellation (apps/bccmis/heightfield.h, mesh.h, apps.h) on
+// Height-field tessellation (src/bccmis/apps/heightfield.h, mesh.h, apps.h) on
 // synthetic fields with known answers, the mesh's watertightness and area,
 // the output formats parsed back, and run_heightfield end to end.
 #include <gtest/gtest.h>
@@ -15,11 +15,11 @@
 
 #include <unistd.h>
 
-#include "bccmis/apps.h"
+#include "bccmis/apps/apps.h"
 #include "bccmis/format.h"
-#include "bccmis/heightfield.h"
-#include "bccmis/invariants.h"
-#include "bccmis/mesh.h"
+#include "bccmis/apps/heightfield.h"
+#include "bccmis/invariants/invariants.h"
+#include "bccmis/apps/mesh.h"
 
 namespace bccmis {
 namespace {

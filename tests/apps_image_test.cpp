@@ -1,4 +1,4 @@
-// The height-field readers (apps/bccmis/image.h): our PGM reader on P2/P5,
+// The height-field readers (src/bccmis/apps/image.h): our PGM reader on P2/P5,
 // 8/16-bit, odd maxvals and comments, its error messages, and PNG through
 // stb_image on files written by a minimal encoder in this test.
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "bccmis/image.h"
+#include "bccmis/apps/image.h"
 
 namespace bccmis {
 namespace {

@@ -1,6 +1,6 @@
 // Exhaustive exploration (issue 5): every state reachable from the initial
 // lattice by refine and coarsen, for small lattices, with the full checker on
-// every state and every operation tried on every vertex (src/explore).
+// every state and every operation tried on every vertex (src/bccmis/explore).
 //
 // The counts must equal the independent leaf model's (tests/model/leaf_model.h):
 //   states       == count_balanced_leaf_sets (enumeration of 2:1 edge-balanced
@@ -25,7 +25,7 @@
 
 #include "bccmis/format.h"
 #include "bccmis/ops.h"
-#include "explore/explore.h"
+#include "bccmis/explore/explore.h"
 #include "model/leaf_model.h"
 
 namespace bccmis {

@@ -29,7 +29,7 @@ if(TARGET bccmis::fast)
     PROPERTIES LABELS property ENVIRONMENT "RC_PARAMS=seed=${BCCMIS_FAST_RC_SEED} max_success=100")
 endif()
 
-# The conformance harness (src/oracle, `bccmis conformance`) against the fast
+# The conformance harness (src/bccmis/oracle, `bccmis conformance`) against the fast
 # implementation: the bundled traces, then random traces with shrinking.
 if(TARGET bccmis AND TARGET bccmis_fast_replay)
   add_test(NAME fast.conformance

@@ -16,7 +16,7 @@
 #include "bccmis/fast/lattice.h"
 #include "bccmis/fast/lattice_interface.h"
 #include "bccmis/format.h"
-#include "bccmis/invariants.h"
+#include "bccmis/invariants/invariants.h"
 #include "bccmis/ops.h"
 
 namespace bccmis::fast {

@@ -34,7 +34,7 @@
 
 #include "bccmis/format.h"
 #include "bccmis/graph.h"
-#include "bccmis/invariants.h"
+#include "bccmis/invariants/invariants.h"
 #include "bccmis/ops.h"
 #include "model/leaf_model.h"
 

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "bccmis/checked.h"
+#include "bccmis/invariants/checked.h"
 #include "bccmis/format.h"
-#include "bccmis/invariants.h"
+#include "bccmis/invariants/invariants.h"
 
 namespace bccmis {
 namespace {

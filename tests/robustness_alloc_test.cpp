@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "bccmis/checked.h"
+#include "bccmis/invariants/checked.h"
 #include "bccmis/format.h"
 #include "bccmis/graph.h"
 #include "bccmis/ops.h"

@@ -1,4 +1,4 @@
-// Layer 5: the CGAL cross-check (invariants/cgal, issue 4). Label `cgal`.
+// Layer 5: the CGAL cross-check (src/bccmis/invariants/cgal, issue 4). Label `cgal`.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "bccmis/format.h"
-#include "bccmis/invariants.h"
+#include "bccmis/invariants/invariants.h"
 #include "bccmis/ops.h"
-#include "bccmis/triangulation_check.h"
+#include "bccmis/invariants/cgal/triangulation_check.h"
 
 namespace bccmis {
 namespace {

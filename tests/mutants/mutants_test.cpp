@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "explore/explore.h"
+#include "bccmis/explore/explore.h"
 #include "generators.h"
 #include "mutants/mutant_ops.h"
 

@@ -6,7 +6,7 @@
 
 #include <random>
 
-#include "bccmis/invariants.h"
+#include "bccmis/invariants/invariants.h"
 #include "p4est/p4est_test_util.h"
 
 namespace bccmis::p4est_bridge {

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "bccmis/balance.h"
+#include "bccmis/apps/balance.h"
 #include "bccmis/p4est/bridge.h"
 
 namespace bccmis::p4est_bridge::testing {

@@ -2,7 +2,7 @@
 #include <iostream>
 
 #include "bccmis/format.h"
-#include "bccmis/invariants.h"
+#include "bccmis/invariants/invariants.h"
 #include "bccmis/ops.h"
 
 int main() {

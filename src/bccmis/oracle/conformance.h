@@ -1,0 +1,80 @@
+// bccmis conformance harness: runs an external implementation on traces and
+// compares its decision log and final state with the reference, shrinking
+// the first disagreement to a minimal trace (spec/conformance.md).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <ostream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "bccmis/format.h"
+#include "bccmis/oracle/view.h"
+
+namespace bccmis {
+
+struct ConformanceOptions {
+  std::string impl;                    ///< shell command; the trace file path is appended
+  std::vector<std::string> trace_files;///< bundled traces to run first
+  int random = 0;                      ///< number of random traces
+  std::uint64_t seed = 1;              ///< seed of the random traces
+  int max_ops = 30;                    ///< operations per random trace
+  double timeout_seconds = 10;         ///< per run of the implementation
+  /// If set, called with a viewer page (bccmis view) for the minimal trace of
+  /// the first disagreement: the reference replay, with the implementation's
+  /// state beside the reference state at the first disagreement.
+  std::function<void(const std::string& html)> write_view;
+};
+
+/// The output of one run of the implementation.
+struct ImplRun {
+  int exit_code = 0;       ///< exit status when it exited normally
+  int signal = 0;          ///< terminating signal, 0 if none
+  bool timed_out = false;
+  std::string out, err;
+};
+
+/// Runs `command 'trace_file'` under /bin/sh with a timeout.
+ImplRun run_implementation(const std::string& command, const std::string& trace_file, double timeout_seconds);
+
+/// What the reference prints for a trace (`bccmis replay`, no checks): the
+/// decision log followed by the canonical state.
+std::string reference_output(const Trace& trace);
+
+/// Compares an implementation's run with the reference output. Empty when
+/// they agree; otherwise a description of the first difference: the first
+/// differing decision, or the semantic diff of the final states, or the
+/// crash / timeout / exit status.
+std::string compare_run(const Trace& trace, const ImplRun& run);
+
+/// A random trace biased toward legal operations (seeded, deterministic).
+Trace random_trace(std::mt19937_64& rng, int max_ops);
+
+/// Delta debugging: a smallest trace (no single command can be dropped) for
+/// which `disagrees` still holds. `disagrees(trace)` must hold for the input.
+Trace shrink(const Trace& trace, const std::function<bool(const Trace&)>& disagrees);
+
+/// The viewer's side panel for an implementation whose output on `trace` was
+/// `full` (decision log, then canonical state): empty when it agrees with the
+/// reference; otherwise the step of the first differing decision (or the last
+/// step when only the states differ), its position marked, and the
+/// implementation's state there: from `full`, or for a differing decision
+/// from `rerun` on the trace up to that command (if given; may return empty).
+/// Without `require_state`, an output without a canonical state is a decision
+/// log only, and only the decisions are compared.
+std::optional<ViewSide> implementation_side(const Trace& trace, const ImplRun& full,
+                                            const std::function<std::optional<ImplRun>(const Trace&)>& rerun,
+                                            bool require_state);
+
+/// The viewer page for a disagreement on `trace` (see ConformanceOptions::write_view).
+std::string disagreement_page(const Trace& trace, const ConformanceOptions& options);
+
+/// Runs the harness; reports to `out` (progress and the verdict). Returns the
+/// exit code: 0 all agree, 1 a disagreement (minimal trace printed), 2 harness
+/// error (bad options, unreadable trace).
+int run_conformance(const ConformanceOptions& options, std::ostream& out);
+
+}  // namespace bccmis

@@ -1,0 +1,254 @@
+#include "bccmis/oracle/oracle.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <set>
+#include <utility>
+
+namespace bccmis {
+
+namespace {
+
+std::string pos(const Point& p) { return to_string(p); }
+
+std::string list(const VertexSet& s) {
+  std::string r;
+  for (const Point& p : s) {
+    if (!r.empty()) r += ' ';
+    r += pos(p);
+  }
+  return r.empty() ? "none" : r;
+}
+
+std::string lattice_text(const LatticeSize& s) {
+  return std::to_string(s.W) + " " + std::to_string(s.H) + " " + std::to_string(s.L);
+}
+
+// Which kind a position has in g, for messages.
+std::string kind(const Graph& g, const Point& p) {
+  if (g.is_center(p)) {
+    auto it = g.level.find(p);
+    return "center " + pos(p) + (it == g.level.end() ? "" : " level " + std::to_string(it->second));
+  }
+  return "node " + pos(p);
+}
+
+std::string xml_escape(const std::string& s) {
+  std::string r;
+  for (char ch : s) {
+    switch (ch) {
+      case '&': r += "&amp;"; break;
+      case '<': r += "&lt;"; break;
+      case '>': r += "&gt;"; break;
+      case '"': r += "&quot;"; break;
+      default: r += ch;
+    }
+  }
+  return r;
+}
+
+}  // namespace
+
+// Counter-clockwise order of directions in atan2 order, (-pi, pi]: first the
+// directions with y < 0 or along +x, then the others; within each half, u
+// comes before v iff v is counter-clockwise of u. The boundary nodes of a
+// cell lie at its corners and side midpoints, so their directions from the
+// center are multiples of 45 degrees and the signs of the components decide
+// the order exactly (no overflow for any coordinates).
+bool angle_less(const Point& u0, const Point& v0) {
+  auto sgn = [](std::int64_t a) { return static_cast<int>(a > 0) - static_cast<int>(a < 0); };
+  const int ux = sgn(u0.x), uy = sgn(u0.y), vx = sgn(v0.x), vy = sgn(v0.y);
+  auto half = [](int x, int y) { return (y < 0 || (y == 0 && x > 0)) ? 0 : 1; };
+  if (half(ux, uy) != half(vx, vy)) return half(ux, uy) < half(vx, vy);
+  return ux * vy - uy * vx > 0;
+}
+
+std::vector<std::string> diff_states(const Graph& a, const Graph& b) {
+  std::vector<std::string> out;
+  if (!(a.size == b.size))
+    out.push_back("lattice: A is " + lattice_text(a.size) + ", B is " + lattice_text(b.size));
+  VertexSet all;
+  for (const Graph* g : {&a, &b}) {
+    all.insert(g->N.begin(), g->N.end());
+    all.insert(g->C.begin(), g->C.end());
+  }
+  for (const Point& p : all) {
+    const bool in_a = a.is_center(p) || a.is_node(p);
+    const bool in_b = b.is_center(p) || b.is_node(p);
+    if (!in_b) {
+      out.push_back("only in A: " + kind(a, p));
+      continue;
+    }
+    if (!in_a) {
+      out.push_back("only in B: " + kind(b, p));
+      continue;
+    }
+    if (a.is_center(p) != b.is_center(p)) {
+      out.push_back(pos(p) + ": " + (a.is_center(p) ? "a center" : "a node") + " in A, " +
+                    (b.is_center(p) ? "a center" : "a node") + " in B");
+      continue;
+    }
+    if (a.is_center(p) && a.level.count(p) && b.level.count(p) && a.level.at(p) != b.level.at(p))
+      out.push_back(pos(p) + ": level " + std::to_string(a.level.at(p)) + " in A, " +
+                    std::to_string(b.level.at(p)) + " in B");
+    const VertexSet& na = a.nbr(p);
+    const VertexSet& nb = b.nbr(p);
+    if (na != nb) {
+      VertexSet only_a, only_b;
+      std::set_difference(na.begin(), na.end(), nb.begin(), nb.end(), std::inserter(only_a, only_a.end()));
+      std::set_difference(nb.begin(), nb.end(), na.begin(), na.end(), std::inserter(only_b, only_b.end()));
+      out.push_back("neighbours of " + pos(p) + ": only in A: " + list(only_a) + "; only in B: " + list(only_b));
+    }
+  }
+  return out;
+}
+
+std::vector<Point> boundary_in_angular_order(const Graph& g, const Point& c) {
+  std::vector<Point> b(g.nbr(c).begin(), g.nbr(c).end());
+  std::sort(b.begin(), b.end(), [&](const Point& p, const Point& q) {
+    return angle_less({p.x - c.x, p.y - c.y}, {q.x - c.x, q.y - c.y});
+  });
+  return b;
+}
+
+Stats stats(const Graph& g) {
+  Stats s;
+  s.cells = g.C.size();
+  s.nodes = g.N.size();
+  for (const auto& [c, l] : g.level) ++s.cells_per_level[l];
+  for (const Point& n : g.N)
+    if (g.nbr(n).size() == 3) ++s.junctions;
+  std::set<std::pair<Point, Point>> hull;
+  std::size_t entries = 0;
+  for (const auto& [v, nbrs] : g.neighbors) entries += nbrs.size();
+  for (const Point& c : g.C) {
+    s.graph_edges += g.nbr(c).size();
+    s.triangles += g.nbr(c).size();
+    const std::vector<Point> ring = boundary_in_angular_order(g, c);
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      Point p = ring[i], q = ring[(i + 1) % ring.size()];
+      if (q < p) std::swap(p, q);
+      hull.insert({p, q});
+    }
+  }
+  s.hull_edges = hull.size();
+  // libstdc++ red-black tree nodes: 32 bytes of header plus the value, rounded
+  // to 8. Point = 16 bytes; a std::set header = 48 bytes.
+  const std::size_t set_node = 32 + 16, nbr_map_node = 32 + 16 + 48, level_node = 32 + 16 + 8;
+  s.reference_bytes = set_node * (g.N.size() + g.C.size()) + nbr_map_node * g.neighbors.size() +
+                      set_node * entries + level_node * g.level.size();
+  return s;
+}
+
+std::string format_stats(const Stats& s, bool json) {
+  std::string out;
+  if (json) {
+    out = "{\"cells\": " + std::to_string(s.cells) + ", \"cells_per_level\": {";
+    bool first = true;
+    for (const auto& [l, n] : s.cells_per_level) {
+      out += (first ? "" : ", ") + std::string("\"") + std::to_string(l) + "\": " + std::to_string(n);
+      first = false;
+    }
+    out += "}, \"nodes\": " + std::to_string(s.nodes) + ", \"junctions\": " + std::to_string(s.junctions) +
+           ", \"graph_edges\": " + std::to_string(s.graph_edges) + ", \"hull_edges\": " + std::to_string(s.hull_edges) +
+           ", \"triangles\": " + std::to_string(s.triangles) +
+           ", \"reference_bytes_estimate\": " + std::to_string(s.reference_bytes) + "}\n";
+    return out;
+  }
+  out += "cells " + std::to_string(s.cells) + "\n";
+  for (const auto& [l, n] : s.cells_per_level) out += "cells_level_" + std::to_string(l) + " " + std::to_string(n) + "\n";
+  out += "nodes " + std::to_string(s.nodes) + "\n";
+  out += "junctions " + std::to_string(s.junctions) + "\n";
+  out += "graph_edges " + std::to_string(s.graph_edges) + "\n";
+  out += "hull_edges " + std::to_string(s.hull_edges) + "\n";
+  out += "triangles " + std::to_string(s.triangles) + "\n";
+  out += "reference_bytes_estimate " + std::to_string(s.reference_bytes) + "\n";
+  return out;
+}
+
+std::string render_svg(const Graph& g, const std::string& title) {
+  const double S = static_cast<double>(level0_side(g.size));
+  const double w = static_cast<double>(g.size.W) * S, h = static_cast<double>(g.size.H) * S;
+  const double scale = 760.0 / std::max(w, h), margin = 20.0;
+  const double width = w * scale + 2 * margin, height = h * scale + 2 * margin + 40;
+  char buf[256];
+  auto X = [&](std::int64_t x) { return margin + static_cast<double>(x) * scale; };
+  auto Y = [&](std::int64_t y) { return margin + (h - static_cast<double>(y)) * scale; };
+  std::string out;
+  std::snprintf(buf, sizeof buf,
+                "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\">\n",
+                width, height, width, height);
+  out += buf;
+  out += "<title>" + xml_escape(title) + "</title>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  // Cells shaded by level.
+  static const char* shades[] = {"#f2f2f2", "#dde8f5", "#c2d6ee", "#a3c1e5", "#84abdb", "#6796d0", "#4c81c4"};
+  out += "<g stroke=\"none\">\n";
+  for (const Point& c : g.C) {
+    auto it = g.level.find(c);
+    const int l = it == g.level.end() ? 0 : it->second;
+    const double half = static_cast<double>(cell_side(g.size, std::clamp(l, 0, g.size.L))) / 2 * scale;
+    std::snprintf(buf, sizeof buf, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"%s\"/>\n",
+                  X(c.x) - half, Y(c.y) - half, 2 * half, 2 * half, shades[std::clamp(l, 0, 6)]);
+    out += buf;
+  }
+  out += "</g>\n";
+  // Hull edges of eq. (1), dashed.
+  std::set<std::pair<Point, Point>> hull;
+  for (const Point& c : g.C) {
+    const std::vector<Point> ring = boundary_in_angular_order(g, c);
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      Point p = ring[i], q = ring[(i + 1) % ring.size()];
+      if (q < p) std::swap(p, q);
+      hull.insert({p, q});
+    }
+  }
+  out += "<g stroke=\"#2060b0\" stroke-width=\"1.2\" stroke-dasharray=\"4 3\">\n";
+  for (const auto& [p, q] : hull) {
+    std::snprintf(buf, sizeof buf, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\"/>\n", X(p.x), Y(p.y), X(q.x), Y(q.y));
+    out += buf;
+  }
+  out += "</g>\n";
+  // Graph edges (node-center), solid.
+  out += "<g stroke=\"#333333\" stroke-width=\"0.8\">\n";
+  for (const Point& c : g.C)
+    for (const Point& n : g.nbr(c)) {
+      std::snprintf(buf, sizeof buf, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\"/>\n", X(c.x), Y(c.y), X(n.x), Y(n.y));
+      out += buf;
+    }
+  out += "</g>\n";
+  // Nodes, junctions, centers; markers shrink with the finest cell on screen.
+  int finest = 0;
+  for (const auto& [c, l] : g.level) finest = std::max(finest, std::clamp(l, 0, g.size.L));
+  const double cell_px = static_cast<double>(cell_side(g.size, finest)) * scale;
+  const double r_node = std::clamp(cell_px / 10, 0.5, 2.5), r_ring = std::clamp(cell_px / 5, 1.0, 5.0);
+  const double center_px = std::clamp(cell_px / 8, 0.8, 4.0);
+  out += "<g>\n";
+  for (const Point& n : g.N) {
+    const bool junction = g.nbr(n).size() == 3;
+    std::snprintf(buf, sizeof buf, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\" fill=\"#2a7a2a\"/>\n", X(n.x), Y(n.y), r_node);
+    out += buf;
+    if (junction) {
+      std::snprintf(buf, sizeof buf,
+                    "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\" fill=\"none\" stroke=\"#d02020\" stroke-width=\"%.2f\"/>\n",
+                    X(n.x), Y(n.y), r_ring, r_ring / 3);
+      out += buf;
+    }
+  }
+  for (const Point& c : g.C) {
+    std::snprintf(buf, sizeof buf, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"#c03030\"/>\n",
+                  X(c.x) - center_px / 2, Y(c.y) - center_px / 2, center_px, center_px);
+    out += buf;
+  }
+  out += "</g>\n";
+  std::snprintf(buf, sizeof buf, "<text x=\"%.0f\" y=\"%.0f\" font-family=\"sans-serif\" font-size=\"12\">", margin,
+                height - 22);
+  out += buf + xml_escape(title) + ": " + std::to_string(g.C.size()) + " cells, " + std::to_string(g.N.size()) +
+         " nodes.</text>\n";
+  std::snprintf(buf, sizeof buf, "<text x=\"%.0f\" y=\"%.0f\" font-family=\"sans-serif\" font-size=\"12\">", margin,
+                height - 6);
+  out += std::string(buf) + "Solid: stored edges; dashed: hull edges of eq. (1); red rings: junctions.</text>\n";
+  out += "</svg>\n";
+  return out;
+}
+
+}  // namespace bccmis

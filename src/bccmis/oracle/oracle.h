@@ -1,0 +1,46 @@
+// bccmis oracle utilities: semantic state diff, statistics, SVG pictures.
+// Used by the CLI (tools/bccmis) and the conformance harness.
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "bccmis/graph.h"
+
+namespace bccmis {
+
+/// The semantic difference of two states, by position: one line per
+/// difference (lattice size, vertex only in A or only in B, vertex of another
+/// kind, different level, different neighbour sets). Empty iff A == B.
+std::vector<std::string> diff_states(const Graph& a, const Graph& b);
+
+/// Counts describing a state (the `bccmis stats` output).
+struct Stats {
+  std::map<int, std::size_t> cells_per_level;
+  std::size_t cells = 0, nodes = 0, junctions = 0;
+  std::size_t graph_edges = 0;   ///< stored node-center edges (each counted once)
+  std::size_t hull_edges = 0;    ///< edges of eq. (1): sides of cells between consecutive boundary nodes
+  std::size_t triangles = 0;     ///< one per (cell, hull edge) pair
+  std::size_t reference_bytes = 0;  ///< estimate of the reference std::set/std::map storage
+};
+Stats stats(const Graph& g);
+
+/// Stats as text, one `name value` line each (or JSON).
+std::string format_stats(const Stats& s, bool json);
+
+/// Directions from a cell's center to its boundary nodes (multiples of 45
+/// degrees) in counter-clockwise order, starting just above -pi: true iff u
+/// comes before v. Exact (compares signs only).
+bool angle_less(const Point& u, const Point& v);
+
+/// The boundary nodes of cell c in counter-clockwise order around c, starting
+/// from the lower-left corner: the hull of eq. (1) is the polygon through them.
+std::vector<Point> boundary_in_angular_order(const Graph& g, const Point& c);
+
+/// An SVG picture: cells shaded by level, graph edges (solid), hull edges of
+/// eq. (1) (dashed), nodes (dots) and junctions (rings).
+std::string render_svg(const Graph& g, const std::string& title);
+
+}  // namespace bccmis
