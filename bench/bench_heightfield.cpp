@@ -7,7 +7,7 @@
 //     measure (16 random samples per cell), M = 1 the exact max over every
 //     pixel. Both implementations run the same application code
 //     (src/bccmis/apps/detail/generic.h) and make the same decisions, so the
-//     difference is the lattice: graph queries (neighbours, levels, the
+//     difference is the lattice: graph queries (neighbors, levels, the
 //     cascade's checks) and the operations.
 //   HeightfieldOps/<impl>           only the lattice work of that result:
 //     the refinements that reach its final leaf set, coarsest level first,

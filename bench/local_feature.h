@@ -2,7 +2,7 @@
 // leaf sets after every frame), with work proportional to what changes:
 //
 //   - batch build, level by level: refine the level-l cells meeting the disk
-//     (refine_balanced cascade where a coarser edge-neighbour is in the way),
+//     (refine_balanced cascade where a coarser edge-neighbor is in the way),
 //     l = 0 .. L-1, enumerating only the cells that meet the disk, row by row;
 //   - a frame visits the crescents only: for coarsening, the level-l cells
 //     within R + 1.5 s_l of the old disk that do not meet the new disk (finest

@@ -150,12 +150,12 @@ inline Mix make_mix(std::int64_t cells, std::size_t count, std::uint64_t seed) {
 /// A disk moving around a circle; each frame the lattice is adapted so that
 /// every cell meeting the disk has the maximum level L, and cells the disk
 /// has left are coarsened again (finest first, where the operations allow).
-/// Only the neighbourhood of the old and new disk is visited, so a frame
+/// Only the neighborhood of the old and new disk is visited, so a frame
 /// costs O(ops), not O(lattice). Same semantics as apps/ adapt_to_disks,
 /// written once for both implementations.
 /// The leaf-locating refinement both moving-feature workloads use (this
 /// file's MovingFeature, local_feature.h's LocalFeature): cells are found by
-/// position, and a coarser edge-neighbour in the way is refined first.
+/// position, and a coarser edge-neighbor in the way is refined first.
 /// `Search` is the order in which locate tries the levels: from level 0 down
 /// (cheap when the leaves are coarse) or from level L up (when they are fine).
 template <class Impl>
@@ -190,7 +190,7 @@ class LeafRefiner {
     }
   }
 
-  /// Refines c, first refining any coarser edge-neighbour (recursively).
+  /// Refines c, first refining any coarser edge-neighbor (recursively).
   bool refine_balanced(const Point& c, int level) {
     const auto why = Impl::can_refine(g_, c);
     if (why == RefineRefusal::CoarserNeighbor) {

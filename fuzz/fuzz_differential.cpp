@@ -66,7 +66,7 @@ class Twin {
       const std::size_t applied = guarded([&] { return lat_.refine_each(std::span<const Point>(&c, 1)); });
       if ((applied == 1) != want.applied()) fail(what + ": refine_each applied " + std::to_string(applied));
     } else {
-      const fast::RefineOutcome got = guarded([&] { return lat_.refine(c); });
+      const fast::RefineResult got = guarded([&] { return lat_.refine(c); });
       if (decision(got.refused) != decision(want.refused))
         fail(what + ": fast says " + decision(got.refused) + ", reference " + decision(want.refused));
       if (got.Y.to_set() != want.Y) fail(what + ": Y differs");
@@ -84,7 +84,7 @@ class Twin {
       const std::size_t applied = guarded([&] { return lat_.coarsen_each(std::span<const Point>(&n, 1)); });
       if ((applied == 1) != want.applied()) fail(what + ": coarsen_each applied " + std::to_string(applied));
     } else {
-      const fast::CoarsenOutcome got = guarded([&] { return lat_.coarsen(n); });
+      const fast::CoarsenResult got = guarded([&] { return lat_.coarsen(n); });
       if (decision(got.refused) != decision(want.refused))
         fail(what + ": fast says " + decision(got.refused) + ", reference " + decision(want.refused));
       if (got.Y.to_set() != want.Y) fail(what + ": Y differs");

@@ -49,7 +49,7 @@ class Run {
  public:
   explicit Run(const LatticeSize& size) : g_(make_lattice(size)) { trace_.size = size; }
 
-  void refine_at(const Vertex& c, bool invert) {
+  void refine_at(const Point& c, bool invert) {
     // checked_* already rejects a refusal that changes the graph; the copy is
     // only needed to compare after an inversion.
     std::optional<Graph> before;
@@ -64,7 +64,7 @@ class Run {
     expect_state(*before, "coarsen(refine(g, c), c) != g (paper §3)");
   }
 
-  void coarsen_at(const Vertex& n, bool invert) {
+  void coarsen_at(const Point& n, bool invert) {
     // checked_* already rejects a refusal that changes the graph; the copy is
     // only needed to compare after an inversion.
     std::optional<Graph> before;
@@ -83,10 +83,10 @@ class Run {
   /// graph must be the initial lattice.
   void coarsen_everything() {
     for (int l = g_.size.L - 1; l >= 0; --l) {
-      std::vector<Vertex> todo;
-      for (const Vertex& n : g_.N)
+      std::vector<Point> todo;
+      for (const Point& n : g_.N)
         if (refined_center_level(g_.size, n) == l) todo.push_back(n);
-      for (const Vertex& n : todo) {
+      for (const Point& n : todo) {
         record(TraceCommand::Kind::Coarsen, n);
         const CoarsenResult r = guarded([&] { return coarsen(g_, n); });
         if (!r.applied())
@@ -99,7 +99,7 @@ class Run {
   const Graph& graph() const { return g_; }
 
  private:
-  void record(TraceCommand::Kind kind, const Vertex& at) {
+  void record(TraceCommand::Kind kind, const Point& at) {
     TraceCommand c;
     c.kind = kind;
     c.at = at;
@@ -147,8 +147,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::uint8_t s = in.next();
     const bool invert = (s & 0x80) != 0;
     fuzz::decode_operation(
-        in, s, run.graph(), [&](const Vertex& c) { run.refine_at(c, invert); },
-        [&](const Vertex& n) { run.coarsen_at(n, invert); });
+        in, s, run.graph(), [&](const Point& c) { run.refine_at(c, invert); },
+        [&](const Point& n) { run.coarsen_at(n, invert); });
   }
   run.coarsen_everything();
   return 0;

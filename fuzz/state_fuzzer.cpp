@@ -49,12 +49,12 @@ void check_violation_text(const Violation& v, std::string_view state) {
   if (v.code.empty() || s.empty()) fail_with_state("violation without code or text", state);
 }
 
-std::string position(const Vertex& v) { return std::to_string(v.x) + " " + std::to_string(v.y); }
+std::string position(const Point& v) { return std::to_string(v.x) + " " + std::to_string(v.y); }
 
 // Applies op (refine or coarsen at v) and, if applied, its inverse; the state
 // must come back.
 template <class Op, class Inverse>
-void round_trip(Graph g, const Vertex& v, std::string_view state, const char* name, Op op, Inverse inverse) {
+void round_trip(Graph g, const Point& v, std::string_view state, const char* name, Op op, Inverse inverse) {
   try {
     if (!op(g, v).applied()) {
       if (canonical_state(g) != state) fail_with_state(std::string("refused ") + name + " changed the state", state);
@@ -107,11 +107,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // A valid state: one refine and one coarsen, each inverted at once.
   const std::size_t pick = size * 2654435761u;
   if (!g.C.empty()) {
-    const Vertex c = *std::next(g.C.begin(), static_cast<std::ptrdiff_t>(pick % g.C.size()));
+    const Point c = *std::next(g.C.begin(), static_cast<std::ptrdiff_t>(pick % g.C.size()));
     round_trip(g, c, text, "refine", checked_refine, checked_coarsen);
   }
-  std::vector<Vertex> refined;
-  for (const Vertex& n : g.N)
+  std::vector<Point> refined;
+  for (const Point& n : g.N)
     if (refined_center_level(g.size, n)) refined.push_back(n);
   if (!refined.empty())
     round_trip(g, refined[pick % refined.size()], text, "coarsen", checked_coarsen, checked_refine);

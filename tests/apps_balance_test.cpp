@@ -29,7 +29,7 @@ using QCell = std::tuple<int, std::int64_t, std::int64_t>;
 struct Closure {
   LatticeSize size;
   std::set<QCell> split;
-  bool corner = false;  ///< the diagonal neighbours count too (corner balance)
+  bool corner = false;  ///< the diagonal neighbors count too (corner balance)
 
   bool inside(const QCell& q) const {
     const auto [l, i, j] = q;
@@ -38,9 +38,9 @@ struct Closure {
   }
 
   /// Splits q and everything a balanced quadtree with q split must split:
-  /// q's ancestors, and the parents of q's four same-level side neighbours
+  /// q's ancestors, and the parents of q's four same-level side neighbors
   /// (otherwise a child of q would touch a leaf two levels coarser); in
-  /// corner mode the parents of the four diagonal neighbours too.
+  /// corner mode the parents of the four diagonal neighbors too.
   void require(const QCell& q) {
     std::vector<QCell> work{q};
     while (!work.empty()) {
@@ -90,7 +90,7 @@ std::set<std::pair<int, Point>> leaves_of(const Graph& g) {
   return out;
 }
 
-Point pick(const VertexSet& s, std::mt19937_64& rng) {
+Point pick(const PointSet& s, std::mt19937_64& rng) {
   auto it = s.begin();
   std::advance(it, static_cast<long>(rng() % s.size()));
   return *it;
@@ -110,10 +110,10 @@ TEST(RefineBalanced, RefusesOnlyMissingCellsAndMaxLevel) {
   EXPECT_EQ(g, once);
 }
 
-TEST(RefineBalanced, CascadesThroughCoarserNeighbours) {
+TEST(RefineBalanced, CascadesThroughCoarserNeighbors) {
   // 2x1 lattice, L = 3 (S = 16): the left cell A = (8, 8) is refined, then
   // its upper-left child (4, 12). Refining the level-2 cell (6, 14) needs its
-  // right neighbour (12, 12) (level 1) refined first, which needs the right
+  // right neighbor (12, 12) (level 1) refined first, which needs the right
   // cell B = (24, 8) (level 0) refined first: a chain of two.
   Graph g = make_lattice({2, 1, 3});
   ASSERT_TRUE(refine(g, {8, 8}).applied());
@@ -207,13 +207,13 @@ TEST(RefineBalanced, CornerModeAlsoRefinesDiagonalCoarserCells) {
 // ---- edge_neighbors --------------------------------------------------------------
 
 // Cells whose squares share a piece of side of positive length with c's.
-VertexSet touching_sides(const Graph& g, const Point& c) {
+PointSet touching_sides(const Graph& g, const Point& c) {
   auto box = [&](const Point& p) {
     const std::int64_t h = cell_side(g.size, g.level_of(p)) / 2;
     return std::array<std::int64_t, 4>{p.x - h, p.x + h, p.y - h, p.y + h};
   };
   const auto a = box(c);
-  VertexSet out;
+  PointSet out;
   for (const Point& d : g.C) {
     if (d == c) continue;
     const auto b = box(d);
@@ -286,7 +286,7 @@ TEST(CoarsenWhere, BoundaryAfterCoarsenPredictsCoarsen) {
     const Graph g = random_state({2, 2, 4}, 40, rng);
     for (const Point& n : g.N) {
       if (can_coarsen(g, n)) continue;
-      const VertexSet predicted = boundary_after_coarsen(g, n);
+      const PointSet predicted = boundary_after_coarsen(g, n);
       Graph h = g;
       ASSERT_TRUE(coarsen(h, n).applied());
       EXPECT_EQ(predicted, h.nbr(n)) << n.x << " " << n.y;

@@ -489,7 +489,7 @@ TEST_F(RunHeightfield, IncrementalCoarseningFromAState) {
   EXPECT_EQ(out_.str().find("coarsenings 0\n"), std::string::npos);
 
   // The same tolerance again: a fresh run's one-way sweeps can leave cells
-  // that a merge would now fit (their neighbours gained junctions), so a
+  // that a merge would now fit (their neighbors gained junctions), so a
   // re-run may still merge a few, but it needs no refinement.
   HeightfieldOptions again = coarse;
   again.from = coarse.state;

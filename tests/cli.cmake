@@ -95,7 +95,7 @@ bccmis_cli_test(conformance.bad_trace_dir 2 ARGS conformance --impl true --trace
 # More verbs: diff, stats, render.
 bccmis_cli_test(diff_equal 0 ARGS diff ${_examples}/initial_1_1_0.state ${_examples}/initial_1_1_0.state)
 bccmis_cli_test(diff_different 1 ARGS diff ${_examples}/initial_1_1_0.state ${_cli}/broken.state
-                STDOUT_REGEX "neighbours of \\(2, 2\\): only in A: \\(1, 1\\); only in B: none")
+                STDOUT_REGEX "neighbors of \\(2, 2\\): only in A: \\(1, 1\\); only in B: none")
 # fig2 by hand: 1 + 8 cells, 17 nodes, one junction (4,2); 5 + 8*4 = 37 stored
 # edges; Euler: V - E + F = 26 - (37 + hull) + (37 + 1) = 2 gives 25 hull edges.
 bccmis_cli_test(stats_fig2 0 ARGS stats --from-trace ${_examples}/fig2.trace

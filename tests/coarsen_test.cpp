@@ -12,7 +12,7 @@ using test::vs;
 
 constexpr const char* kFig2Before = "lattice 3 1 1\nrefine 10 2\n";
 constexpr const char* kFig3Before = "lattice 3 1 1\nrefine 10 2\nrefine 6 2\n";
-const Vertex n{6, 2};
+const Point n{6, 2};
 
 TEST(Coarsen, Eq8a_Eq9f_TheFourChildrenAreDeleted) {
   //= erleben2009#eq-8a type=test
@@ -22,7 +22,7 @@ TEST(Coarsen, Eq8a_Eq9f_TheFourChildrenAreDeleted) {
   const CoarsenResult r = coarsen(g, n);
   ASSERT_TRUE(r.applied());
   EXPECT_EQ(r.Y, vs({{5, 1}, {5, 3}, {7, 1}, {7, 3}}));
-  for (const Vertex& y : r.Y) {
+  for (const Point& y : r.Y) {
     EXPECT_FALSE(g.is_center(y));
     EXPECT_FALSE(g.is_node(y));
     EXPECT_EQ(g.neighbors.count(y), 0u);
@@ -56,15 +56,15 @@ TEST(Coarsen, Eq10a_JMinusIsTheSideMidpointsLeftWithAtMostOneCell) {
   ASSERT_TRUE(r.applied());
   // (4,2): one cell (2,2) beyond; (6,0), (6,4): the domain boundary (E2).
   EXPECT_EQ(r.J_minus, vs({{4, 2}, {6, 0}, {6, 4}}));
-  for (const Vertex& j : r.J_minus) {
+  for (const Point& j : r.J_minus) {
     EXPECT_FALSE(g.is_node(j));
     EXPECT_EQ(g.neighbors.count(j), 0u);
   }
   // The literal (10a) would also have taken the corners, which keep 1 cell.
-  for (const Vertex b : {Vertex{4, 0}, Vertex{4, 4}, Vertex{8, 0}, Vertex{8, 4}}) EXPECT_TRUE(g.is_node(b));
+  for (const Point b : {Point{4, 0}, Point{4, 4}, Point{8, 0}, Point{8, 4}}) EXPECT_TRUE(g.is_node(b));
 }
 
-TEST(Coarsen, Eq11b_NeighbourAcrossADeletedJunctionForgetsIt) {
+TEST(Coarsen, Eq11b_NeighborAcrossADeletedJunctionForgetsIt) {
   //= erleben2009#eq-11a type=test
   //= erleben2009#eq-11b type=test
   //= erleben2009#eq-11c type=test
@@ -93,7 +93,7 @@ TEST(Coarsen, Fig3_UndoesFig2Exactly) {
 
 // ---- Refusals: each code, in order, and nothing changes --------------------
 
-void expect_refused(const std::string& setup, const Vertex& at, CoarsenRefusal expected) {
+void expect_refused(const std::string& setup, const Point& at, CoarsenRefusal expected) {
   Graph g = test::build(setup);
   const std::string before = canonical_state(g);
   const CoarsenResult r = coarsen(g, at);

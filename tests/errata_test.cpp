@@ -15,7 +15,7 @@ TEST(Errata, E1_RefineGivesBoundarySidesAMidpointNode) {
   //= erleben2009#eq-6c type=test
   // Literal (6): no corner pair of the root has a common cell once c is
   // removed, so no junction is connected; J+ stays isolated and the children
-  // have 2 neighbours each.
+  // have 2 neighbors each.
   Graph g = make_lattice({1, 1, 1});  // S = 4, root center (2,2)
   const RefineResult r = refine(g, {2, 2});
   ASSERT_TRUE(r.applied());
@@ -30,7 +30,7 @@ TEST(Errata, E1_RefineGivesBoundarySidesAMidpointNode) {
 
 TEST(Errata, E2_CoarsenKeepsBoundaryCornersAndDropsBoundaryMidpoints) {
   //= erleben2009#eq-10a type=test
-  // Literal (10a): (4,0) and (4,4) fall to one neighbour and are deleted; the
+  // Literal (10a): (4,0) and (4,4) fall to one neighbor and are deleted; the
   // boundary midpoints (2,0), (0,2), (2,4) fall to zero and are kept.
   const Graph initial = make_lattice({2, 1, 1});  // S = 4
   Graph g = initial;
@@ -69,7 +69,7 @@ TEST(Errata, E3_CenterWithARefinedChildIsNotCoarsenable) {
   EXPECT_EQ(coarsen(g, {4, 4}).refused, CoarsenRefusal::ChildrenRefined);
 }
 
-TEST(Errata, E3_SiblingsWithAFinerNeighbourAreNotCoarsenable) {
+TEST(Errata, E3_SiblingsWithAFinerNeighborAreNotCoarsenable) {
   //= erleben2009#pre-coarsen-balance type=test
   // Literal: accepted; the level-0 cell (4,4) would then touch the level-2
   // cells (9,1), (9,3) along its right side (a level difference of 2).
@@ -82,7 +82,7 @@ TEST(Errata, E4_DiagonalCoarserCellDoesNotBlockRefinement) {
   //= erleben2009#eq-3 type=test
   // Lattice 2 2 2 (S = 8): three of the four level-0 cells refined. The child
   // (6,6) has only level-1 cells along its sides, but touches the level-0
-  // cell (12,12) at the corner (8,8). The formula of (3) (edge neighbours)
+  // cell (12,12) at the corner (8,8). The formula of (3) (edge neighbors)
   // accepts; the sentence reading (all cells at the pure corners) refuses.
   Graph g = test::build("lattice 2 2 2\nrefine 4 4\nrefine 12 4\nrefine 4 12\n");
   ASSERT_TRUE(g.nbr({8, 8}).count({12, 12}));  // the sentence reading's X
@@ -117,7 +117,7 @@ TEST(Errata, E6_TheGraphStoresTwoThirdsOfTheEdges) {
   for (const LatticeSize s : {LatticeSize{1, 1, 0}, LatticeSize{4, 3, 1}, LatticeSize{10, 10, 0}}) {
     const Graph g = make_lattice(s);
     std::size_t stored = 0;
-    for (const Vertex& c : g.C) stored += g.nbr(c).size();
+    for (const Point& c : g.C) stored += g.nbr(c).size();
     const auto W = static_cast<std::size_t>(s.W), H = static_cast<std::size_t>(s.H);
     EXPECT_EQ(stored, 4 * W * H);
     const std::size_t hull = W * (H + 1) + H * (W + 1);

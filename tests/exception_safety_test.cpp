@@ -75,7 +75,7 @@ TEST(ExceptionSafety, CoarsenIsAllOrNothingUnderAllocationFailure) {
 
 TEST(ExceptionSafety, BoundaryAndInteriorCells) {
   const Graph g = test::build("lattice 3 3 2\nrefine 12 12\nrefine 4 12\nrefine 12 4\n");
-  for (const Vertex& c : g.C) {
+  for (const Point& c : g.C) {
     Graph probe = g;
     if (!refine(probe, c).applied()) continue;
     exercise(g, [&](Graph& h) { refine(h, c); });

@@ -136,7 +136,7 @@ TEST(ExploreKey, DistinguishesEveryState) {
   ASSERT_TRUE(refine(h, Point{12, 4}).applied());
   EXPECT_NE(encode_state_key(g), encode_state_key(h));
   Graph k = h;
-  k.neighbors[Point{8, 4}].erase(Point{10, 2});  // one neighbour less
+  k.neighbors[Point{8, 4}].erase(Point{10, 2});  // one neighbor less
   EXPECT_NE(encode_state_key(h), encode_state_key(k));
   EXPECT_NE(canonical_state(h), canonical_state(k));
 }
@@ -180,7 +180,7 @@ TEST(Explore, ResultDoesNotDependOnTheNumberOfThreads) {
   EXPECT_EQ(a.key_bytes, b.key_bytes);
   // The same first failure, with the same reproducer, on a broken operation.
   for (ExploreOptions* o : {&one, &two})
-    o->coarsen = [](Graph& g, const Vertex& n) {
+    o->coarsen = [](Graph& g, const Point& n) {
       CoarsenResult r = coarsen(g, n);
       if (r.applied() && n.x > 8) g.level[n] = 0;  // the right cell keeps a wrong level
       return r;
@@ -219,7 +219,7 @@ TEST(Explore, CountingModeGivesTheSameCounts) {
 // reproduces it from the initial lattice.
 TEST(Explore, ReportsABrokenInverseWithAReproducer) {
   ExploreOptions options;
-  options.coarsen = [](Graph& g, const Vertex& n) {
+  options.coarsen = [](Graph& g, const Point& n) {
     CoarsenResult r = coarsen(g, n);
     if (r.applied()) g.neighbors[n].insert(Point{9, 9});  // leaves a stray edge
     return r;
@@ -234,7 +234,7 @@ TEST(Explore, ReportsABrokenInverseWithAReproducer) {
 
 TEST(Explore, ReportsARefusalThatChangesTheState) {
   ExploreOptions options;
-  options.refine = [](Graph& g, const Vertex& c) {
+  options.refine = [](Graph& g, const Point& c) {
     RefineResult r = refine(g, c);
     if (!r.applied() && g.is_node(c) && c == Point{0, 0}) g.neighbors[Point{0, 0}].insert(Point{9, 9});
     return r;
@@ -249,7 +249,7 @@ TEST(Explore, ReportsARefusalThatChangesTheStateWithNothingAfterIt) {
   // 1 1 0 has no legal operation: the change is found by the comparison at
   // the end of the state and blamed on the call that made it.
   ExploreOptions options;
-  options.refine = [](Graph& g, const Vertex& c) {
+  options.refine = [](Graph& g, const Point& c) {
     RefineResult r = refine(g, c);
     if (r.refused == RefineRefusal::MaxLevel) g.level[c] = 1;
     return r;
@@ -262,7 +262,7 @@ TEST(Explore, ReportsARefusalThatChangesTheStateWithNothingAfterIt) {
 
 TEST(Explore, ReportsAnInvalidStateAndAThrowingOperation) {
   ExploreOptions broken;
-  broken.refine = [](Graph& g, const Vertex& c) {
+  broken.refine = [](Graph& g, const Point& c) {
     RefineResult r = refine(g, c);
     if (r.applied()) g.neighbors[Point{0, 0}].clear();  // a corner loses its cell
     return r;
@@ -276,7 +276,7 @@ TEST(Explore, ReportsAnInvalidStateAndAThrowingOperation) {
   EXPECT_EQ(r.first_failure->trace, "lattice 1 1 1\nrefine 2 2\n");
 
   ExploreOptions throwing;
-  throwing.coarsen = [](Graph&, const Vertex& n) -> CoarsenResult {
+  throwing.coarsen = [](Graph&, const Point& n) -> CoarsenResult {
     if (n == Point{2, 2}) throw std::runtime_error("boom");
     return CoarsenResult{CoarsenRefusal::NoSuchNode, {}, {}};
   };

@@ -35,7 +35,7 @@ using fast::Lattice;
 std::string codes(const std::optional<RefineRefusal>& r) { return r ? std::string(code(*r)) : "ok"; }
 std::string codes(const std::optional<CoarsenRefusal>& r) { return r ? std::string(code(*r)) : "ok"; }
 
-std::string set_text(const VertexSet& s) {
+std::string set_text(const PointSet& s) {
   std::string out = "{";
   for (const Point& p : s) {
     out += ' ';
@@ -76,7 +76,7 @@ class Twin {
     std::string what;
     if (op == OpKind::Refine) {
       const RefineResult want = refine(g_, p);
-      const fast::RefineOutcome got = lat_.refine(p);
+      const fast::RefineResult got = lat_.refine(p);
       what = "refine " + at;
       if (codes(got.refused) != codes(want.refused))
         fail(what + ": fast says " + codes(got.refused) + ", reference " + codes(want.refused));
@@ -86,7 +86,7 @@ class Twin {
       applied_ += got.applied();
     } else {
       const CoarsenResult want = coarsen(g_, p);
-      const fast::CoarsenOutcome got = lat_.coarsen(p);
+      const fast::CoarsenResult got = lat_.coarsen(p);
       what = "coarsen " + at;
       if (codes(got.refused) != codes(want.refused))
         fail(what + ": fast says " + codes(got.refused) + ", reference " + codes(want.refused));
@@ -157,14 +157,14 @@ RC_GTEST_PROP(Differential, LargerLatticesAndLongSequences, ()) {
   for (const Step& s : steps) t.run(s);
 }
 
-RC_GTEST_PROP(Differential, EveryVertexAndItsNeighboursAgreeAfterRandomOperations, ()) {
+RC_GTEST_PROP(Differential, EveryVertexAndItsNeighborsAgreeAfterRandomOperations, ()) {
   const Scenario sc = *genScenario(40);
   Twin t(sc.size);
   for (const Step& s : sc.steps) t.run(s);
   // Every guard at every vertex, and the queries, by position.
   const Graph& g = t.graph();
   const Lattice& lat = t.lattice();
-  for (const VertexSet* set : {&g.C, &g.N})
+  for (const PointSet* set : {&g.C, &g.N})
     for (const Point& p : *set) {
       RC_ASSERT(lat.nbr(p).to_set() == g.nbr(p));
       RC_ASSERT(lat.is_center(p) == g.is_center(p));
@@ -226,20 +226,20 @@ TEST(DifferentialGenerators, ReachDeepStatesWithManyAppliedOperations) {
 Ops fast_ops() {
   Ops ops;
   ops.name = "fast via from_graph/to_graph";
-  ops.refine = [](Graph& g, const Vertex& c) {
+  ops.refine = [](Graph& g, const Point& c) {
     Lattice lat = Lattice::from_graph(g);
-    const fast::RefineOutcome r = lat.refine(c);
+    const fast::RefineResult r = lat.refine(c);
     g = lat.to_graph();
-    return r.to_result();
+    return fast::to_sets(r);
   };
-  ops.coarsen = [](Graph& g, const Vertex& n) {
+  ops.coarsen = [](Graph& g, const Point& n) {
     Lattice lat = Lattice::from_graph(g);
-    const fast::CoarsenOutcome r = lat.coarsen(n);
+    const fast::CoarsenResult r = lat.coarsen(n);
     g = lat.to_graph();
-    return r.to_result();
+    return fast::to_sets(r);
   };
-  ops.can_refine = [](const Graph& g, const Vertex& c) { return Lattice::from_graph(g).can_refine(c); };
-  ops.can_coarsen = [](const Graph& g, const Vertex& n) { return Lattice::from_graph(g).can_coarsen(n); };
+  ops.can_refine = [](const Graph& g, const Point& c) { return Lattice::from_graph(g).can_refine(c); };
+  ops.can_coarsen = [](const Graph& g, const Point& n) { return Lattice::from_graph(g).can_coarsen(n); };
   return ops;
 }
 

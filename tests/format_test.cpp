@@ -100,8 +100,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadState{"huge int", with(kLattice110, "N 0 0 : 1 1", "N 0 0 : 1 99999999999999999999"), 4, 11, "out of range"},
         BadState{"crlf", with(kLattice110, "end 1 4\n", "end 1 4\r\n"), 8, 8, "carriage return"},
         BadState{"both kinds", with(kLattice110, "N 0 0 : 1 1", "N 1 1 : 1 1"), 4, 3, "both as a center and as a node"},
-        BadState{"odd neighbours", with(kLattice110, "N 0 0 : 1 1", "N 0 0 : 1 1 2"), 4, 13, "odd number"},
-        BadState{"no colon", with(kLattice110, "N 0 0 : 1 1", "N 0 0 1 1"), 4, 7, "expected 'N x y : neighbours'"}),
+        BadState{"odd neighbors", with(kLattice110, "N 0 0 : 1 1", "N 0 0 : 1 1 2"), 4, 13, "odd number"},
+        BadState{"no colon", with(kLattice110, "N 0 0 : 1 1", "N 0 0 1 1"), 4, 7, "expected 'N x y : neighbors'"}),
     [](const testing::TestParamInfo<BadState>& p) {
       std::string n = p.param.name;
       for (char& ch : n)

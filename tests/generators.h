@@ -44,16 +44,16 @@ namespace bccmis::proptest {
 
 struct Ops {
   std::string name = "core";
-  std::function<RefineResult(Graph&, const Vertex&)> refine = [](Graph& g, const Vertex& c) {
+  std::function<RefineResult(Graph&, const Point&)> refine = [](Graph& g, const Point& c) {
     return bccmis::refine(g, c);
   };
-  std::function<CoarsenResult(Graph&, const Vertex&)> coarsen = [](Graph& g, const Vertex& n) {
+  std::function<CoarsenResult(Graph&, const Point&)> coarsen = [](Graph& g, const Point& n) {
     return bccmis::coarsen(g, n);
   };
-  std::function<std::optional<RefineRefusal>(const Graph&, const Vertex&)> can_refine =
-      [](const Graph& g, const Vertex& c) { return bccmis::can_refine(g, c); };
-  std::function<std::optional<CoarsenRefusal>(const Graph&, const Vertex&)> can_coarsen =
-      [](const Graph& g, const Vertex& n) { return bccmis::can_coarsen(g, n); };
+  std::function<std::optional<RefineRefusal>(const Graph&, const Point&)> can_refine =
+      [](const Graph& g, const Point& c) { return bccmis::can_refine(g, c); };
+  std::function<std::optional<CoarsenRefusal>(const Graph&, const Point&)> can_coarsen =
+      [](const Graph& g, const Point& n) { return bccmis::can_coarsen(g, n); };
 };
 
 // ---- Steps and scenarios ----------------------------------------------------
@@ -161,7 +161,7 @@ inline void model_apply(model::State& m, OpKind op, const Point& p) {
 /// The cells (center, level) and nodes (every leaf corner) the model implies.
 struct Projection {
   std::set<std::pair<Point, int>> centers;
-  VertexSet nodes;
+  PointSet nodes;
 };
 
 inline Projection project(const model::State& m) {
@@ -396,7 +396,7 @@ inline void prop_vertex_counts(const Ops& ops, const Scenario& sc) {
     const std::string expected = w.expected(s.op, p);
     const auto n0 = static_cast<std::int64_t>(g.N.size());
     const auto c0 = static_cast<std::int64_t>(g.C.size());
-    // J of eq. (2b): the nodes of the cell with three neighbours.
+    // J of eq. (2b): the nodes of the cell with three neighbors.
     std::int64_t junctions = 0;
     if (s.op == OpKind::Refine)
       for (const Point& b : g.nbr(p))
@@ -440,7 +440,7 @@ inline void prop_coarsen_everything(const Ops& ops, const Scenario& sc) {
   // Each pass removes at least the finest level; 2 * (L + 1) passes are plenty.
   for (int pass = 0; pass <= 2 * (sc.size.L + 1); ++pass) {
     bool changed = false;
-    const VertexSet nodes = w.graph().N;
+    const PointSet nodes = w.graph().N;
     for (const Point& n : nodes)
       if (w.graph().is_node(n) && w.run(OpKind::Coarsen, n).applied) changed = true;
     if (!changed) break;

@@ -180,7 +180,7 @@ TEST(Layer1, ChecksAreReportedInPriorityOrder) {
   g.neighbors[{0, 0}].erase({2, 2});  // also leaves (0, 0) with an empty set
   link(g, {4, 0}, {4, 4});
   expect_violation(g, "bipartite", 1, {{4, 0}, {4, 4}});
-  // And a dangling neighbour anywhere beats both.
+  // And a dangling neighbor anywhere beats both.
   g.neighbors[{4, 4}].insert({9, 9});
   expect_violation(g, "dangling-neighbor", 1, {{4, 4}, {9, 9}});
 }
@@ -207,18 +207,18 @@ TEST(Layer1, StrayLevel) {
 // ---- Layer 2: structural ---------------------------------------------------
 
 TEST(Layer2, CenterDegree) {
-  // kOneCell without the node (0, 0): the cell has 3 neighbours.
+  // kOneCell without the node (0, 0): the cell has 3 neighbors.
   const Graph g = state(
       "bccmis-state 1\nlattice 1 1 1\n"
       "C 2 2 0 : 0 4 4 0 4 4\n"
       "N 0 4 : 2 2\nN 4 0 : 2 2\nN 4 4 : 2 2\n"
       "end 1 3\n");
   expect_violation(g, "center-degree", 2, {{2, 2}});
-  EXPECT_NE(find_violation(g)->message.find("3 neighbours"), std::string::npos);
+  EXPECT_NE(find_violation(g)->message.find("3 neighbors"), std::string::npos);
 }
 
 TEST(Layer2, CenterCorner) {
-  // kJunction without the domain corner (0, 0): (2, 2) still has 4 neighbours.
+  // kJunction without the domain corner (0, 0): (2, 2) still has 4 neighbors.
   Graph g = state(kJunction);
   g.neighbors[{2, 2}].erase({0, 0});
   g.neighbors.erase({0, 0});
@@ -240,7 +240,7 @@ TEST(Layer2, NodeDegreeInteriorMissingItsJunctionLink) {
   g.neighbors[{2, 2}].erase({4, 2});
   g.neighbors[{4, 2}].erase({2, 2});
   expect_violation(g, "node-degree", 2, {{4, 2}});
-  EXPECT_NE(find_violation(g)->message.find("interior node (4, 2) has 2 neighbours"), std::string::npos);
+  EXPECT_NE(find_violation(g)->message.find("interior node (4, 2) has 2 neighbors"), std::string::npos);
 }
 
 TEST(Layer2, NodeDegreeBoundary) {
@@ -253,7 +253,7 @@ TEST(Layer2, NodeDegreeBoundary) {
       "N 0 0 : 4 4\nN 0 8 : 4 4\nN 2 0 : 3 1\nN 2 2 : 3 1\nN 4 0 : 3 1\nN 4 2 : 3 1\nN 8 0 : 4 4\nN 8 8 : 4 4\n"
       "end 2 8\n");
   expect_violation(g, "node-degree", 2, {{2, 0}});
-  EXPECT_NE(find_violation(g)->message.find("boundary node (2, 0) has 1 neighbour, a boundary node has 2"),
+  EXPECT_NE(find_violation(g)->message.find("boundary node (2, 0) has 1 neighbor, a boundary node has 2"),
             std::string::npos);
 }
 
@@ -267,12 +267,12 @@ TEST(Layer2, NodeDegreeDomainCorner) {
       "N 0 0 : 1 1 4 4\nN 0 2 : 1 1\nN 0 8 : 4 4\nN 2 0 : 1 1\nN 2 2 : 1 1\nN 8 0 : 4 4\nN 8 8 : 4 4\n"
       "end 2 7\n");
   expect_violation(g, "node-degree", 2, {{0, 0}});
-  EXPECT_NE(find_violation(g)->message.find("domain corner (0, 0) has 2 neighbours"), std::string::npos);
+  EXPECT_NE(find_violation(g)->message.find("domain corner (0, 0) has 2 neighbors"), std::string::npos);
 }
 
 TEST(Layer2, NodeDegreeAboveFour) {
   // lattice 2 2 2 and one more level-2 cell (9, 9) in the corner of (8, 8):
-  // (8, 8) has 5 neighbours, each of which has it as a corner.
+  // (8, 8) has 5 neighbors, each of which has it as a corner.
   Graph g = make_lattice({2, 2, 2});
   g.C.insert({9, 9});
   g.level[{9, 9}] = 2;
@@ -281,7 +281,7 @@ TEST(Layer2, NodeDegreeAboveFour) {
     link(g, {9, 9}, p);
   }
   expect_violation(g, "node-degree", 2, {{8, 8}});
-  EXPECT_NE(find_violation(g)->message.find("5 neighbours"), std::string::npos);
+  EXPECT_NE(find_violation(g)->message.find("5 neighbors"), std::string::npos);
 }
 
 TEST(Layer2, BoundaryJunction) {
@@ -300,7 +300,7 @@ TEST(Layer2, JunctionDegreeLeftover) {
   add_node(g, {4, 2});
   link(g, {2, 2}, {4, 2});
   expect_violation(g, "junction-degree", 2, {{4, 2}, {2, 2}});
-  EXPECT_NE(find_violation(g)->message.find("has 1 neighbour;"), std::string::npos);
+  EXPECT_NE(find_violation(g)->message.find("has 1 neighbor;"), std::string::npos);
 }
 
 TEST(Layer2, JunctionDegreeTwoCoarseCells) {
@@ -323,7 +323,7 @@ TEST(Layer3, Grading) {
   EXPECT_NE(find_violation(g)->message.find("differ by 2 levels"), std::string::npos);
 }
 
-TEST(Layer3, DiagonalNeighboursMayDifferByTwo) {
+TEST(Layer3, DiagonalNeighborsMayDifferByTwo) {
   // lattice 2 2 2: refine (12, 12), then its child (10, 10); the level-2 cell
   // (9, 9) touches the level-0 cell (4, 4) only at the corner (8, 8).
   Graph g = make_lattice({2, 2, 2});
@@ -472,7 +472,7 @@ TEST(Valid, InitialLattices) {
 TEST(Valid, UniformRefinement) {
   Graph g = make_lattice({2, 3, 3});
   for (int level = 0; level < 3; ++level) {
-    const VertexSet cells = g.C;
+    const PointSet cells = g.C;
     for (const Point& c : cells) checked_refine(g, c);
     EXPECT_TRUE(is_valid(g));
   }

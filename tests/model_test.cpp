@@ -4,7 +4,7 @@
 //
 // Commands: Refine (a live leaf), Coarsen (the parent of live leaves),
 // RefineIllegal and CoarsenIllegal (positions the model refuses: wrong kind,
-// max level, coarser or finer neighbours, refined children, points that are
+// max level, coarser or finer neighbors, refined children, points that are
 // no vertex at all). After every command
 //   - the graph's decision (ok or the refusal code) equals the model's,
 //   - the graph's centers (position, level) are exactly the model's leaves and
@@ -120,7 +120,7 @@ struct RefineIllegal : Cmd {
   explicit RefineIllegal(const model::State& m) {
     switch (*rc::gen::inRange(0, 3)) {
       case 0: at = point_of(*rc::gen::elementOf(corners_of_leaves(m))); break;          // a node
-      case 1: at = point_of(model::center_of(m.lat, *rc::gen::elementOf(m.leaves))); break;  // a leaf (max level, coarser neighbour)
+      case 1: at = point_of(model::center_of(m.lat, *rc::gen::elementOf(m.leaves))); break;  // a leaf (max level, coarser neighbor)
       default: at = any_position(m); break;
     }
     RC_PRE(model_decision(m, OpKind::Refine, at) != "ok");
@@ -137,7 +137,7 @@ struct CoarsenIllegal : Cmd {
     switch (*rc::gen::inRange(0, 4)) {
       case 0: at = point_of(*rc::gen::elementOf(corners_of_leaves(m))); break;  // grid node, junction, ...
       case 1: at = point_of(model::center_of(m.lat, *rc::gen::elementOf(m.leaves))); break;  // a center
-      case 2:  // a refined cell whose children are refined or have finer neighbours
+      case 2:  // a refined cell whose children are refined or have finer neighbors
         RC_PRE(!parents.empty());
         at = point_of(model::center_of(m.lat, *rc::gen::elementOf(parents)));
         break;

@@ -2,8 +2,8 @@
 //
 // Configuration (lattice 3 1 1, S = 4, spec/examples/fig2.trace): three level-0
 // cells side by side, centers (2,2), (6,2), (10,2). The right cell (10,2) is
-// refined first, so the middle cell c = (6,2) has a same-level neighbour on the
-// left, two finer neighbours and an old junction (8,2) on the right, and the
+// refined first, so the middle cell c = (6,2) has a same-level neighbor on the
+// left, two finer neighbors and an old junction (8,2) on the right, and the
 // domain boundary above and below: every case of eq. (2)-(7) at once.
 // Every expected set below was derived by hand from the equations (the
 // derivation is in spec/examples/fig2.md), not printed by the code.
@@ -17,15 +17,15 @@ namespace {
 using test::vs;
 
 constexpr const char* kFig2Before = "lattice 3 1 1\nrefine 10 2\n";
-const Vertex c{6, 2};
+const Point c{6, 2};
 
-TEST(Refine, Fig2Before_EdgeNeighbourhoodIsAsDrawn) {
+TEST(Refine, Fig2Before_EdgeNeighborhoodIsAsDrawn) {
   //= erleben2009#eq-2a type=test
   //= erleben2009#eq-2b type=test
   const Graph g = test::build(kFig2Before);
   // (2a) B = N(c): 4 corners and the old junction on the right side.
   EXPECT_EQ(g.nbr(c), vs({{4, 0}, {4, 4}, {8, 0}, {8, 2}, {8, 4}}));
-  // (2b) the junction has exactly three neighbours: c and the two finer cells.
+  // (2b) the junction has exactly three neighbors: c and the two finer cells.
   EXPECT_EQ(g.nbr({8, 2}), vs({{6, 2}, {9, 1}, {9, 3}}));
   // (6c) on the boundary (erratum E1): the right cell's new boundary junctions
   // join only its two children.
@@ -42,10 +42,10 @@ TEST(Refine, Eq4And5_CreatesFourChildrenAndOnlyTheMissingJunctions) {
   ASSERT_TRUE(r.applied());
   // (4a) y_i is the child with corner p_i, halfway between c and p_i.
   EXPECT_EQ(r.Y, vs({{5, 1}, {5, 3}, {7, 1}, {7, 3}}));
-  // (5a) ||J+|| = 4 - ||J|| = 3: left (same-level neighbour), bottom and top
+  // (5a) ||J+|| = 4 - ||J|| = 3: left (same-level neighbor), bottom and top
   // (domain boundary); the right side keeps its old junction (8,2).
   EXPECT_EQ(r.J_plus, vs({{4, 2}, {6, 0}, {6, 4}}));
-  for (const Vertex& j : r.J_plus) EXPECT_TRUE(g.is_node(j));
+  for (const Point& j : r.J_plus) EXPECT_TRUE(g.is_node(j));
 }
 
 TEST(Refine, Eq4c_RefinedCellBecomesNodeOfItsFourChildren) {
@@ -59,7 +59,7 @@ TEST(Refine, Eq4c_RefinedCellBecomesNodeOfItsFourChildren) {
   EXPECT_FALSE(g.is_center(c));
   EXPECT_EQ(g.nbr(c), vs({{5, 1}, {5, 3}, {7, 1}, {7, 3}}));
   EXPECT_EQ(g.level.count(c), 0u);
-  for (const Vertex y : {Vertex{5, 1}, Vertex{5, 3}, Vertex{7, 1}, Vertex{7, 3}}) {
+  for (const Point y : {Point{5, 1}, Point{5, 3}, Point{7, 1}, Point{7, 3}}) {
     EXPECT_TRUE(g.is_center(y));
     EXPECT_EQ(g.level_of(y), 1);  // (4b) with level(c) + 1
   }
@@ -76,13 +76,13 @@ TEST(Refine, Eq4e_PureCornersSwapCForTheirChild) {
   EXPECT_EQ(g.nbr({8, 4}), vs({{7, 3}, {9, 3}}));
 }
 
-TEST(Refine, Eq6_NewJunctionJoinsNeighbourAcrossTheSideAndTwoChildren) {
+TEST(Refine, Eq6_NewJunctionJoinsNeighborAcrossTheSideAndTwoChildren) {
   //= erleben2009#eq-6a type=test
   //= erleben2009#eq-6b type=test
   //= erleben2009#eq-6c type=test
   Graph g = test::build(kFig2Before);
   ASSERT_TRUE(refine(g, c).applied());
-  // Left side: x_k = N(p_i) ∩ N(p_j) = {(2,2)}, the same-level neighbour.
+  // Left side: x_k = N(p_i) ∩ N(p_j) = {(2,2)}, the same-level neighbor.
   EXPECT_EQ(g.nbr({4, 2}), vs({{2, 2}, {5, 1}, {5, 3}}));
   EXPECT_EQ(g.nbr({2, 2}), vs({{0, 0}, {0, 4}, {4, 0}, {4, 2}, {4, 4}}));
   // Boundary sides (erratum E1): x_k = ∅.
@@ -132,7 +132,7 @@ TEST(Refine, Eq4_CountsChangeByOneNodePlusNewJunctions) {
 
 // ---- Refusals: each code, in order, and nothing changes --------------------
 
-void expect_refused(const std::string& setup, const Vertex& at, RefineRefusal expected) {
+void expect_refused(const std::string& setup, const Point& at, RefineRefusal expected) {
   Graph g = test::build(setup);
   const std::string before = canonical_state(g);
   const RefineResult r = refine(g, at);

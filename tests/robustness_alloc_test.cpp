@@ -66,7 +66,7 @@ namespace {
 
 struct Op {
   TraceCommand::Kind kind;
-  Vertex at;
+  Point at;
   bool checked;
 };
 
@@ -149,8 +149,8 @@ void run_walks(const LatticeSize& size, unsigned seed, int steps, int snapshot_e
   for (int step = 0; step <= steps; ++step) {
     if (step % snapshot_every == 0) {
       std::vector<Op> todo;
-      for (const Vertex& c : g.C) todo.push_back({TraceCommand::Kind::Refine, c, checked});
-      for (const Vertex& n : g.N) todo.push_back({TraceCommand::Kind::Coarsen, n, checked});
+      for (const Point& c : g.C) todo.push_back({TraceCommand::Kind::Refine, c, checked});
+      for (const Point& n : g.N) todo.push_back({TraceCommand::Kind::Coarsen, n, checked});
       for (const Op& op : todo) {
         ++ops;
         if (!exercise(g, walk, op, faults)) return;  // one reproducer per walk is enough
@@ -163,8 +163,8 @@ void run_walks(const LatticeSize& size, unsigned seed, int steps, int snapshot_e
       c.at = *std::next(g.C.begin(), static_cast<long>(rng() % g.C.size()));
       if (!refine(g, c.at).applied()) continue;
     } else {
-      std::vector<Vertex> refined;
-      for (const Vertex& n : g.N)
+      std::vector<Point> refined;
+      for (const Point& n : g.N)
         if (refined_center_level(g.size, n)) refined.push_back(n);
       if (refined.empty()) continue;
       c.kind = TraceCommand::Kind::Coarsen;

@@ -17,7 +17,7 @@ namespace {
 // same position restores the canonical state byte for byte.
 void expect_every_refine_undone(const Graph& g) {
   const std::string before = canonical_state(g);
-  for (const Vertex& c : g.C) {
+  for (const Point& c : g.C) {
     Graph h = g;
     if (!refine(h, c).applied()) continue;
     ASSERT_TRUE(coarsen(h, c).applied()) << "coarsen after refine of (" << c.x << ", " << c.y << ")";
@@ -27,7 +27,7 @@ void expect_every_refine_undone(const Graph& g) {
 
 void expect_every_coarsen_undone(const Graph& g) {
   const std::string before = canonical_state(g);
-  for (const Vertex& n : g.N) {
+  for (const Point& n : g.N) {
     Graph h = g;
     if (!coarsen(h, n).applied()) continue;
     ASSERT_TRUE(refine(h, n).applied()) << "refine after coarsen of (" << n.x << ", " << n.y << ")";
@@ -56,16 +56,16 @@ TEST(RoundTrip, RefineEverythingToLevel2AndCoarsenEverythingBack) {
   const Graph initial = make_lattice({3, 2, 2});
   Graph g = initial;
   for (int level = 0; level < 2; ++level) {
-    const VertexSet cells = g.C;
-    for (const Vertex& c : cells) ASSERT_TRUE(refine(g, c).applied());
+    const PointSet cells = g.C;
+    for (const Point& c : cells) ASSERT_TRUE(refine(g, c).applied());
   }
   EXPECT_EQ(g.C.size(), 3u * 2u * 16u);
   // A uniform level-2 grid of 12 x 8 cells has 13 x 9 nodes.
   EXPECT_EQ(g.N.size(), 13u * 9u);
   for (bool changed = true; changed;) {
     changed = false;
-    const VertexSet nodes = g.N;
-    for (const Vertex& n : nodes) changed |= coarsen(g, n).applied();
+    const PointSet nodes = g.N;
+    for (const Point& n : nodes) changed |= coarsen(g, n).applied();
   }
   EXPECT_EQ(canonical_state(g), canonical_state(initial));
 }
@@ -82,11 +82,11 @@ std::size_t count_reachable(const LatticeSize& s) {
     auto visit = [&](const Graph& h) {
       if (seen.insert(canonical_state(h)).second) queue.push_back(h);
     };
-    for (const Vertex& c : g.C) {
+    for (const Point& c : g.C) {
       Graph h = g;
       if (refine(h, c).applied()) visit(h);
     }
-    for (const Vertex& n : g.N) {
+    for (const Point& n : g.N) {
       Graph h = g;
       if (coarsen(h, n).applied()) visit(h);
     }

@@ -17,7 +17,7 @@ inline void PrintTo(const Point& p, std::ostream* os) { *os << "(" << p.x << ", 
 namespace test {
 
 /// A vertex set written as {{x, y}, ...}.
-inline VertexSet vs(std::initializer_list<Point> points) { return VertexSet(points); }
+inline PointSet vs(std::initializer_list<Point> points) { return PointSet(points); }
 
 /// Replays a trace text and fails the test (via exception) if any refine or
 /// coarsen in it is refused: the helper is for building known states.

@@ -117,7 +117,7 @@ Graph two_level_jump(bool coarse_lists_quarter) {
   Graph g = make_lattice({2, 1, 2});
   EXPECT_TRUE(refine(g, {12, 4}).applied());
   const Point c{10, 2};
-  for (const Point p : VertexSet(g.nbr(c))) unlink(g, c, p);
+  for (const Point p : PointSet(g.nbr(c))) unlink(g, c, p);
   g.C.erase(c);
   g.level.erase(c);
   g.N.insert(c);
@@ -165,7 +165,7 @@ TEST(TriangulationCheck, RejectsANonDelaunayStar) {
   // lies inside the circle through (7, 4), (8, 0), (8, 8).
   Graph g = make_lattice({2, 1, 2});
   const Point from{4, 4}, to{7, 4};
-  for (const Point p : VertexSet(g.nbr(from))) {
+  for (const Point p : PointSet(g.nbr(from))) {
     unlink(g, from, p);
     link(g, to, p);
   }
@@ -198,7 +198,7 @@ TEST(TriangulationCheck, RejectsAnUncoveredDomain) {
   // of the left cell triangulates the vertices' hull, which is not the domain.
   Graph g = make_lattice({2, 1, 1});
   const Point c{6, 2};
-  for (const Point p : VertexSet(g.nbr(c))) unlink(g, c, p);
+  for (const Point p : PointSet(g.nbr(c))) unlink(g, c, p);
   g.neighbors.erase(c);
   g.C.erase(c);
   g.level.erase(c);

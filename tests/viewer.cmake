@@ -83,7 +83,7 @@ bccmis_cli_test(view.from_log_decision 1 ARGS view ${_fig2} --from-log ${_viewer
   STDERR_REGEX "fig2_wrong_decision.log disagrees with the reference at step 3 \\(the page opens there\\): decision 2: reference 'refine 6 2 ok', implementation 'refine 6 2 refused coarser-neighbor'"
   LABEL viewer)
 bccmis_cli_test(view.from_log_state 1 ARGS view ${_fig2} --from-log ${_viewer}/fig2_wrong_state.out -o state.html
-  STDERR_REGEX "disagrees with the reference at step 4 .*final states differ.*neighbours of \\(7, 3\\): only in A: \\(8, 2\\)"
+  STDERR_REGEX "disagrees with the reference at step 4 .*final states differ.*neighbors of \\(7, 3\\): only in A: \\(8, 2\\)"
   LABEL viewer)
 bccmis_cli_test(view.from_log_with_states 2 ARGS view --states ${_states} --from-log ${_viewer}/fig2_wrong_state.out -o x.html
                 STDERR_REGEX "--from-log needs a trace" LABEL viewer)

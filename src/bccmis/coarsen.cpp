@@ -52,7 +52,7 @@ std::optional<int> refined_center_level(const LatticeSize& size, const Point& p)
   return l;
 }
 
-std::optional<CoarsenRefusal> can_coarsen(const Graph& g, const Vertex& n) {
+std::optional<CoarsenRefusal> can_coarsen(const Graph& g, const Point& n) {
   //= erleben2009#pre-coarsen-node
   //# n in N
   if (!g.is_node(n)) return CoarsenRefusal::NoSuchNode;
@@ -69,50 +69,50 @@ std::optional<CoarsenRefusal> can_coarsen(const Graph& g, const Vertex& n) {
   //= type=deviation
   //= reason=E3: a refined child would leave overlapping cells
   //# for all y in N(n): level(y) = l + 1
-  for (const Vertex& y : g.nbr(n))
+  for (const Point& y : g.nbr(n))
     if (!g.is_center(y) || g.level_of(y) != *l + 1) return CoarsenRefusal::ChildrenRefined;
   //= erleben2009#pre-coarsen-balance
   //= type=deviation
-  //= reason=E3: a junction on a child means an edge-neighbour of level l+2
+  //= reason=E3: a junction on a child means an edge-neighbor of level l+2
   //# for all y in N(n): |N(y)| = 4
-  for (const Vertex& y : g.nbr(n))
+  for (const Point& y : g.nbr(n))
     if (g.nbr(y).size() != 4) return CoarsenRefusal::FinerNeighbor;
   return std::nullopt;
 }
 
-CoarsenResult coarsen(Graph& g, const Vertex& n) {
+CoarsenResult coarsen(Graph& g, const Point& n) {
   CoarsenResult result;
   result.refused = can_coarsen(g, n);
   if (result.refused) return result;
 
   // Every change is staged in tx and applied at the end, all or nothing.
   Transaction tx(g);
-  auto nb = [&tx](const Vertex& v) -> VertexSet& { return tx.nb(v); };
+  auto nb = [&tx](const Point& v) -> PointSet& { return tx.nb(v); };
   const int l = *refined_center_level(g.size, n);
 
   // 1. The children and the boundary of the coarse cell: eq. (8a)-(8b).
   //= erleben2009#eq-8a
   //# Y = N(n)
-  const VertexSet Y = nb(n);
+  const PointSet Y = nb(n);
   //= erleben2009#eq-8b
   //# B = ( union over y_i in Y of N(y_i) ) \ {n}
-  VertexSet B;
-  for (const Vertex& y_i : Y) B = unite(B, nb(y_i));
-  B = minus(B, VertexSet{n});
+  PointSet B;
+  for (const Point& y_i : Y) B = unite(B, nb(y_i));
+  B = minus(B, PointSet{n});
 
   // Erratum E2: the side midpoints of the coarse cell are the b shared by two
   // children; they are found before (9a) removes the children.
-  VertexSet side_midpoints;
-  for (const Vertex& b_i : B)
+  PointSet side_midpoints;
+  for (const Point& b_i : B)
     if (intersect(nb(b_i), Y).size() == 2) side_midpoints.insert(b_i);
 
   // 2. Unhook and delete the children (Fig. 3a): eq. (9a)-(9f).
   //= erleben2009#eq-9a
   //# N(b_i) = N(b_i) \ Y  for all b_i in B
-  for (const Vertex& b_i : B) nb(b_i) = minus(nb(b_i), Y);
+  for (const Point& b_i : B) nb(b_i) = minus(nb(b_i), Y);
   //= erleben2009#eq-9b
   //# N(y_i) = ∅  for all y_i in Y
-  for (const Vertex& y_i : Y) nb(y_i).clear();
+  for (const Point& y_i : Y) nb(y_i).clear();
   //= erleben2009#eq-9c
   //# N(n) = ∅
   nb(n).clear();
@@ -124,7 +124,7 @@ CoarsenResult coarsen(Graph& g, const Vertex& n) {
   tx.add_center(n, l);
   //= erleben2009#eq-9f
   //# C = C \ Y
-  for (const Vertex& y_i : Y) {
+  for (const Point& y_i : Y) {
     tx.remove_center(y_i);
     tx.remove_vertex(y_i);  // the Y-vertices are deleted
   }
@@ -135,24 +135,24 @@ CoarsenResult coarsen(Graph& g, const Vertex& n) {
   //= type=deviation
   //= reason=E2: |N(b)| = 1 alone deletes boundary corners and keeps boundary side midpoints
   //# J- = { b in B : b is a side midpoint of the coarse cell and |N(b)| <= 1 }
-  VertexSet J_minus;
-  for (const Vertex& b_i : side_midpoints)
+  PointSet J_minus;
+  for (const Point& b_i : side_midpoints)
     if (nb(b_i).size() <= 1) J_minus.insert(b_i);
   //= erleben2009#eq-10b
   //# B = B \ J-
   B = minus(B, J_minus);
   //= erleben2009#eq-10c
   //# N = N \ J-
-  for (const Vertex& j_i : J_minus) tx.remove_node(j_i);
-  for (const Vertex& j_i : J_minus) {
+  for (const Point& j_i : J_minus) tx.remove_node(j_i);
+  for (const Point& j_i : J_minus) {
     //= erleben2009#eq-11a
     //= type=deviation
     //= reason=E2: x_i is a set of 0 or 1 cells (none on the domain boundary)
     //# x_i = N(j-_i)
-    const VertexSet x_i = nb(j_i);
+    const PointSet x_i = nb(j_i);
     //= erleben2009#eq-11b
     //# N(x_i) = N(x_i) \ {j-_i}
-    for (const Vertex& x : x_i) nb(x) = minus(nb(x), VertexSet{j_i});
+    for (const Point& x : x_i) nb(x) = minus(nb(x), PointSet{j_i});
     //= erleben2009#eq-11c
     //# N(j-_i) = ∅
     nb(j_i).clear();
@@ -160,7 +160,7 @@ CoarsenResult coarsen(Graph& g, const Vertex& n) {
   }
   //= erleben2009#eq-11d
   //# N = N \ J-   (repeats eq. 10c; erratum E5)
-  for (const Vertex& j_i : J_minus) tx.remove_node(j_i);
+  for (const Point& j_i : J_minus) tx.remove_node(j_i);
 
   // 4. Connect the coarse cell to its boundary (Fig. 3c): eq. (12a)-(12b).
   //= erleben2009#eq-12a
@@ -168,7 +168,7 @@ CoarsenResult coarsen(Graph& g, const Vertex& n) {
   nb(n) = B;
   //= erleben2009#eq-12b
   //# N(b_i) = N(b_i) ∪ {n}  for all b_i in B
-  for (const Vertex& b_i : B) nb(b_i) = unite(nb(b_i), VertexSet{n});
+  for (const Point& b_i : B) nb(b_i) = unite(nb(b_i), PointSet{n});
 
   result.Y = Y;
   result.J_minus = J_minus;

@@ -1,5 +1,9 @@
 #include "bccmis/format.h"
 
+#include <ostream>
+
+#include "bccmis/trace.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
@@ -212,29 +216,31 @@ std::string json_string(std::string_view text, bool html_safe) {
 
 // ---- Canonical state ---------------------------------------------------------
 
+void write_canonical_state(std::ostream& out, const Graph& g) { out << canonical_state(g); }
+
 std::string canonical_state(const Graph& g) {
   std::string out = "bccmis-state 1\nlattice " + std::to_string(g.size.W) + " " +
                     std::to_string(g.size.H) + " " + std::to_string(g.size.L) + "\n";
-  auto neighbours = [&](const Vertex& v) {
+  auto neighbors = [&](const Point& v) {
     out += " :";
-    for (const Vertex& w : g.nbr(v)) {
+    for (const Point& w : g.nbr(v)) {
       out += ' ';
       out += point_text(w);
     }
     out += "\n";
   };
-  for (const Vertex& c : g.C) {
+  for (const Point& c : g.C) {
     auto it = g.level.find(c);
     out += "C ";
     out += point_text(c);
     out += ' ';
     out += it == g.level.end() ? std::string("?") : std::to_string(it->second);
-    neighbours(c);
+    neighbors(c);
   }
-  for (const Vertex& n : g.N) {
+  for (const Point& n : g.N) {
     out += "N ";
     out += point_text(n);
-    neighbours(n);
+    neighbors(n);
   }
   out += "end " + std::to_string(g.C.size()) + " " + std::to_string(g.N.size()) + "\n";
   return out;
@@ -267,7 +273,7 @@ Graph parse_state(std::string_view text, std::string_view file) {
   }
 
   bool in_nodes = false;
-  std::optional<Vertex> previous;
+  std::optional<Point> previous;
   for (int i = 2;; ++i) {
     if (i == nlines - 1) {
       // The text after the last newline: either the unterminated last line or
@@ -304,8 +310,8 @@ Graph parse_state(std::string_view text, std::string_view file) {
     const std::size_t colon = center ? 4 : 3;
     if (t.size() <= colon || t[colon].text != ":")
       lp.fail(t.size() > colon ? t[colon].column : static_cast<int>(lines[i].size()) + 1,
-              center ? "expected 'C x y level : neighbours'" : "expected 'N x y : neighbours'");
-    const Vertex v{lp.integer(t[1], true, "x coordinate"), lp.integer(t[2], true, "y coordinate")};
+              center ? "expected 'C x y level : neighbors'" : "expected 'N x y : neighbors'");
+    const Point v{lp.integer(t[1], true, "x coordinate"), lp.integer(t[2], true, "y coordinate")};
     if (previous && !(*previous < v))
       lp.fail(t[1].column, std::string(center ? "C" : "N") + " lines must be sorted by (x, y) without repeats; " +
                                shown(v) + " follows " + shown(*previous));
@@ -321,13 +327,13 @@ Graph parse_state(std::string_view text, std::string_view file) {
       g.N.insert(v);
     }
     if ((t.size() - colon - 1) % 2 != 0)
-      lp.fail(t.back().column, "neighbour list has an odd number of coordinates");
-    VertexSet& nbrs = g.neighbors[v];
-    std::optional<Vertex> prev_nbr;
+      lp.fail(t.back().column, "neighbor list has an odd number of coordinates");
+    PointSet& nbrs = g.neighbors[v];
+    std::optional<Point> prev_nbr;
     for (std::size_t k = colon + 1; k < t.size(); k += 2) {
-      const Vertex w{lp.integer(t[k], true, "x coordinate"), lp.integer(t[k + 1], true, "y coordinate")};
+      const Point w{lp.integer(t[k], true, "x coordinate"), lp.integer(t[k + 1], true, "y coordinate")};
       if (prev_nbr && !(*prev_nbr < w))
-        lp.fail(t[k].column, "neighbours must be sorted by (x, y) without repeats; " + shown(w) +
+        lp.fail(t[k].column, "neighbors must be sorted by (x, y) without repeats; " + shown(w) +
                                  " follows " + shown(*prev_nbr));
       prev_nbr = w;
       nbrs.insert(w);
@@ -418,20 +424,9 @@ std::string decision_line(const TraceCommand& cmd, std::string_view refusal_code
 }
 
 Graph replay(const Trace& trace, std::string& log, const ReplayObserver& after) {
-  Graph g = make_lattice(trace.size);
-  for (const TraceCommand& c : trace.commands) {
-    std::string decision;
-    if (c.kind == TraceCommand::Kind::Refine) {
-      const RefineResult r = refine(g, c.at);
-      decision = decision_line(c, r.refused ? code(*r.refused) : std::string_view{});
-    } else if (c.kind == TraceCommand::Kind::Coarsen) {
-      const CoarsenResult r = coarsen(g, c.at);
-      decision = decision_line(c, r.refused ? code(*r.refused) : std::string_view{});
-    }
-    if (!decision.empty()) log += decision + "\n";
+  return replay_on<Graph>(trace, log, [&](const TraceCommand& c, const Graph& g, std::string_view decision) {
     if (after) after(c, g, decision);
-  }
-  return g;
+  });
 }
 
 }  // namespace bccmis

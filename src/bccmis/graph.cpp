@@ -39,8 +39,8 @@ std::int64_t cell_side(const LatticeSize& size, int level) {
   return std::int64_t{1} << (size.L + 1 - level);
 }
 
-const VertexSet& Graph::nbr(const Vertex& v) const {
-  static const VertexSet kEmpty;
+const PointSet& Graph::nbr(const Point& v) const {
+  static const PointSet kEmpty;
   auto it = neighbors.find(v);
   return it == neighbors.end() ? kEmpty : it->second;
 }
@@ -54,16 +54,18 @@ Graph make_lattice(const LatticeSize& size) {
     for (std::int64_t j = 0; j <= size.H; ++j) g.N.insert({i * S, j * S});
   for (std::int64_t i = 0; i < size.W; ++i)
     for (std::int64_t j = 0; j < size.H; ++j) {
-      const Vertex c{i * S + S / 2, j * S + S / 2};
+      const Point c{i * S + S / 2, j * S + S / 2};
       g.C.insert(c);
       g.level[c] = 0;
-      for (const Vertex p : {Vertex{i * S, j * S}, Vertex{(i + 1) * S, j * S},
-                             Vertex{i * S, (j + 1) * S}, Vertex{(i + 1) * S, (j + 1) * S}}) {
+      for (const Point p : {Point{i * S, j * S}, Point{(i + 1) * S, j * S},
+                             Point{i * S, (j + 1) * S}, Point{(i + 1) * S, (j + 1) * S}}) {
         g.neighbors[c].insert(p);
         g.neighbors[p].insert(c);
       }
     }
   return g;
 }
+
+Graph::Graph(const LatticeSize& initial) : Graph(make_lattice(initial)) {}
 
 }  // namespace bccmis

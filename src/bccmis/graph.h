@@ -2,10 +2,10 @@
 //
 // Erleben 2009, §2: the vertices of the triangulation are split into node
 // vertices N and cell-center vertices C (N ∩ C = ∅); every vertex v stores a
-// neighbour set 𝒩(v) of vertices of the other kind. Centers also carry the
+// neighbor set 𝒩(v) of vertices of the other kind. Centers also carry the
 // refinement level of their cell (used by the §2.1 level test).
 //
-// Vertex identity. A vertex is named by its integer lattice position
+// Point identity. A vertex is named by its integer lattice position
 // (spec/formats.md, "Coordinates"). A position is never both a node and a
 // center, and the paper's operations keep a vertex's identity when they change
 // its kind (eq. 4g/4h turns c into a node; eq. 9d/9e turns n into a center), so
@@ -31,8 +31,7 @@ struct Point {
   friend bool operator==(const Point&, const Point&) = default;
 };
 
-using Vertex = Point;
-using VertexSet = std::set<Vertex>;
+using PointSet = std::set<Point>;
 
 /// "(x, y)": how messages name a position.
 std::string to_string(const Point& p);
@@ -70,18 +69,26 @@ std::int64_t cell_side(const LatticeSize& size, int level);
 /// Invariants the operations maintain are checked by invariants/ (never
 /// assumed here): see spec/invariants.md.
 struct Graph {
+  using point_type = Point;
+  using size_type = LatticeSize;
+  static constexpr int dimension = 2;
+
+  Graph() = default;
+  /// The initial lattice, make_lattice(size).
+  explicit Graph(const LatticeSize& size);
+
   LatticeSize size;
-  VertexSet N;                           ///< node vertices
-  VertexSet C;                           ///< cell-center vertices
-  std::map<Vertex, VertexSet> neighbors; ///< 𝒩(v) for every v in N ∪ C
-  std::map<Vertex, int> level;           ///< refinement level of every c in C
+  PointSet N;                           ///< node vertices
+  PointSet C;                           ///< cell-center vertices
+  std::map<Point, PointSet> neighbors; ///< 𝒩(v) for every v in N ∪ C
+  std::map<Point, int> level;           ///< refinement level of every c in C
 
   /// 𝒩(v); the empty set for a vertex not in the graph.
-  const VertexSet& nbr(const Vertex& v) const;
-  bool is_node(const Vertex& v) const { return N.count(v) != 0; }
-  bool is_center(const Vertex& v) const { return C.count(v) != 0; }
+  const PointSet& nbr(const Point& v) const;
+  bool is_node(const Point& v) const { return N.count(v) != 0; }
+  bool is_center(const Point& v) const { return C.count(v) != 0; }
   /// Level of center c; throws std::out_of_range if c is not a center.
-  int level_of(const Vertex& c) const { return level.at(c); }
+  int level_of(const Point& c) const { return level.at(c); }
 
   friend bool operator==(const Graph&, const Graph&) = default;
 };

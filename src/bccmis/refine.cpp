@@ -46,37 +46,37 @@ std::string_view code(RefineRefusal r) {
 
 namespace {
 
-// The neighbourhood sets of c computed by (2a)-(3), before anything changes.
-struct Neighbourhood {
-  VertexSet B, J, P, X;
+// The neighborhood sets of c computed by (2a)-(3), before anything changes.
+struct Neighborhood {
+  PointSet B, J, P, X;
 };
 
-Neighbourhood neighbourhood(const Graph& g, const Vertex& c) {
-  Neighbourhood s;
+Neighborhood neighborhood(const Graph& g, const Point& c) {
+  Neighborhood s;
   //= erleben2009#eq-2a
   //# B = N(c)
   s.B = g.nbr(c);
   //= erleben2009#eq-2b
   //# J = { b in B : |N(b)| = 3 }
-  for (const Vertex& b : s.B)
+  for (const Point& b : s.B)
     if (g.nbr(b).size() == 3) s.J.insert(b);
   //= erleben2009#eq-2c
   //# P = B \ J
   s.P = minus(s.B, s.J);
   //= erleben2009#eq-3
   //= type=deviation
-  //= reason=E4: the formula (edge neighbours) is implemented, not the sentence (all neighbours)
+  //= reason=E4: the formula (edge neighbors) is implemented, not the sentence (all neighbors)
   //# X = ( union over b_i != b_j in B of N(b_i) ∩ N(b_j) ) \ {c}
   for (auto bi = s.B.begin(); bi != s.B.end(); ++bi)
     for (auto bj = std::next(bi); bj != s.B.end(); ++bj)
       s.X = unite(s.X, intersect(g.nbr(*bi), g.nbr(*bj)));
-  s.X = minus(s.X, VertexSet{c});
+  s.X = minus(s.X, PointSet{c});
   return s;
 }
 
 }  // namespace
 
-std::optional<RefineRefusal> can_refine(const Graph& g, const Vertex& c) {
+std::optional<RefineRefusal> can_refine(const Graph& g, const Point& c) {
   //= erleben2009#pre-refine-cell
   //# c in C
   if (!g.is_center(c)) return RefineRefusal::NoSuchCell;
@@ -87,47 +87,47 @@ std::optional<RefineRefusal> can_refine(const Graph& g, const Vertex& c) {
   if (g.level_of(c) >= g.size.L) return RefineRefusal::MaxLevel;
   //= erleben2009#pre-refine-level
   //# for all x in X: level(x) >= level(c)
-  const Neighbourhood s = neighbourhood(g, c);
-  for (const Vertex& x : s.X)
+  const Neighborhood s = neighborhood(g, c);
+  for (const Point& x : s.X)
     if (g.level_of(x) < g.level_of(c)) return RefineRefusal::CoarserNeighbor;
   return std::nullopt;
 }
 
-RefineResult refine(Graph& g, const Vertex& c) {
+RefineResult refine(Graph& g, const Point& c) {
   RefineResult result;
   result.refused = can_refine(g, c);
   if (result.refused) return result;
 
   // Every change is staged in tx and applied at the end, all or nothing.
   Transaction tx(g);
-  auto nb = [&tx](const Vertex& v) -> VertexSet& { return tx.nb(v); };
+  auto nb = [&tx](const Point& v) -> PointSet& { return tx.nb(v); };
   const int l = g.level_of(c);
 
-  // 1. The neighbourhood of c (Fig. 2a): eq. (2a)-(3).
-  const auto [B, J, P, X] = neighbourhood(g, c);
+  // 1. The neighborhood of c (Fig. 2a): eq. (2a)-(3).
+  const auto [B, J, P, X] = neighborhood(g, c);
   //= erleben2009#claim-P-has-4
   //# ||P|| = 4
   if (P.size() != 4)
-    throw std::logic_error("refine: ||P|| != 4 although no edge-neighbour is coarser; "
+    throw std::logic_error("refine: ||P|| != 4 although no edge-neighbor is coarser; "
                            "the graph is not a valid lattice (run the checker)");
 
-  const std::vector<Vertex> p(P.begin(), P.end());  // p[0..3] = p_1..p_4
+  const std::vector<Point> p(P.begin(), P.end());  // p[0..3] = p_1..p_4
 
   // The sides of c that need a new junction in step 3, found before anything
   // changes. Erratum E1: the paper makes a junction only where
-  // |N(p_i) ∩ N(p_j)| = 1, i.e. on sides with a same-level neighbour, so a side
+  // |N(p_i) ∩ N(p_j)| = 1, i.e. on sides with a same-level neighbor, so a side
   // on the domain boundary got none. We take the four sides of c instead
   // (adjacent corners: a position use) and give every side without an old
   // junction a new midpoint node.
   struct Side {
     std::size_t i, j;  // indices into p / y
-    Vertex j_plus;
+    Point j_plus;
   };
   std::vector<Side> sides;
   for (std::size_t i = 0; i < 4; ++i)
     for (std::size_t j = i + 1; j < 4; ++j) {
       if (!are_side_adjacent(p[i], p[j])) continue;  // a diagonal of c, not a side
-      const Vertex mid = midpoint(p[i], p[j]);
+      const Point mid = midpoint(p[i], p[j]);
       if (J.count(mid) != 0) continue;  // the side already has its junction: step 4
       sides.push_back({i, j, mid});
     }
@@ -139,27 +139,27 @@ RefineResult refine(Graph& g, const Vertex& c) {
   // 2. Subdivide c (Fig. 2b): eq. (4a)-(4h). The paper pairs each p_i with one
   //    y_i without saying how; y_i is the child cell that has p_i as a corner,
   //    centred halfway between c and p_i (erratum E5, a position use).
-  std::array<Vertex, 4> y;                          // y[i] pairs with p[i]
+  std::array<Point, 4> y;                          // y[i] pairs with p[i]
   for (std::size_t i = 0; i < 4; ++i) y[i] = midpoint(c, p[i]);
 
   //= erleben2009#eq-4a
   //# Y = { y_1, ..., y_4 }
-  const VertexSet Y(y.begin(), y.end());
+  const PointSet Y(y.begin(), y.end());
   //= erleben2009#eq-4b
   //# C = C ∪ Y
-  for (const Vertex& y_i : Y) tx.add_center(y_i, l + 1);
+  for (const Point& y_i : Y) tx.add_center(y_i, l + 1);
   //= erleben2009#eq-4c
   //# N(c) = Y
   nb(c) = Y;
   //= erleben2009#eq-4d
   //# N(j_i) = N(j_i) \ {c}  for all j_i in J
-  for (const Vertex& ji : J) nb(ji) = minus(nb(ji), VertexSet{c});
+  for (const Point& ji : J) nb(ji) = minus(nb(ji), PointSet{c});
   //= erleben2009#eq-4e
   //# N(p_i) = N(p_i) ∪ {y_i} \ {c}  for all p_i in P
-  for (std::size_t i = 0; i < 4; ++i) nb(p[i]) = minus(unite(nb(p[i]), VertexSet{y[i]}), VertexSet{c});
+  for (std::size_t i = 0; i < 4; ++i) nb(p[i]) = minus(unite(nb(p[i]), PointSet{y[i]}), PointSet{c});
   //= erleben2009#eq-4f
   //# N(y_i) = {p_i, c}  for all y_i in Y
-  for (std::size_t i = 0; i < 4; ++i) nb(y[i]) = VertexSet{p[i], c};
+  for (std::size_t i = 0; i < 4; ++i) nb(y[i]) = PointSet{p[i], c};
   //= erleben2009#eq-4g
   //# C = C \ {c}
   tx.remove_center(c);
@@ -172,49 +172,49 @@ RefineResult refine(Graph& g, const Vertex& c) {
   //= type=deviation
   //= reason=E1: one new junction per side of c without an old junction (4 - ||J|| of them)
   //# J+ = { j+_1, ..., j+_(4-||J||) }
-  VertexSet J_plus;
+  PointSet J_plus;
   for (const Side& s : sides) J_plus.insert(s.j_plus);
   //= erleben2009#eq-5b
   //# N = N ∪ J+
-  for (const Vertex& j : J_plus) tx.add_node(j);
+  for (const Point& j : J_plus) tx.add_node(j);
 
   for (const Side& s : sides) {
-    const Vertex& j_k = s.j_plus;
-    const Vertex &p_i = p[s.i], &p_j = p[s.j], &y_i = y[s.i], &y_j = y[s.j];
+    const Point& j_k = s.j_plus;
+    const Point &p_i = p[s.i], &p_j = p[s.j], &y_i = y[s.i], &y_j = y[s.j];
     //= erleben2009#eq-6a
     //= type=deviation
     //= reason=E1: x_k is the set N(p_i) ∩ N(p_j): one cell across the side, or none on the boundary
     //# x_k = N(p_i) ∩ N(p_j)
-    const VertexSet x_k = intersect(nb(p_i), nb(p_j));
+    const PointSet x_k = intersect(nb(p_i), nb(p_j));
     //= erleben2009#eq-6b
     //# N(x_k) = N(x_k) ∪ {j+_k}
-    for (const Vertex& x : x_k) nb(x) = unite(nb(x), VertexSet{j_k});
+    for (const Point& x : x_k) nb(x) = unite(nb(x), PointSet{j_k});
     //= erleben2009#eq-6c
     //# N(j+_k) = {x_k, y_i, y_j}
-    nb(j_k) = unite(x_k, VertexSet{y_i, y_j});
+    nb(j_k) = unite(x_k, PointSet{y_i, y_j});
     //= erleben2009#eq-6d
     //# N(y_i) = N(y_i) ∪ {j+_k}
-    nb(y_i) = unite(nb(y_i), VertexSet{j_k});
+    nb(y_i) = unite(nb(y_i), PointSet{j_k});
     //= erleben2009#eq-6e
     //# N(y_j) = N(y_j) ∪ {j+_k}
-    nb(y_j) = unite(nb(y_j), VertexSet{j_k});
+    nb(y_j) = unite(nb(y_j), PointSet{j_k});
   }
 
   // 4. Old junctions (Fig. 2d): eq. (7a)-(7b). The condition is evaluated for
   //    every pair (j_k, p_i) on the graph as left by steps 2-3; adding y_i to
   //    N(j_k) cannot change the condition for another corner p_m, because y_i
   //    touches no corner but p_i.
-  for (const Vertex& j_k : J)
+  for (const Point& j_k : J)
     for (std::size_t i = 0; i < 4; ++i) {
       //= erleben2009#eq-7-condition
       //# if |N(j_k) ∩ N(p_i)| = 1
       if (intersect(nb(j_k), nb(p[i])).size() != 1) continue;
       //= erleben2009#eq-7a
       //# N(j_k) = N(j_k) ∪ {y_i}
-      nb(j_k) = unite(nb(j_k), VertexSet{y[i]});
+      nb(j_k) = unite(nb(j_k), PointSet{y[i]});
       //= erleben2009#eq-7b
       //# N(y_i) = N(y_i) ∪ {j_k}
-      nb(y[i]) = unite(nb(y[i]), VertexSet{j_k});
+      nb(y[i]) = unite(nb(y[i]), PointSet{j_k});
     }
 
   result.Y = Y;

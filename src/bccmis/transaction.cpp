@@ -2,44 +2,44 @@
 
 namespace bccmis {
 
-VertexSet& Transaction::nb(const Vertex& v) {
+PointSet& Transaction::nb(const Point& v) {
   auto it = staged_.find(v);
   if (it == staged_.end()) it = staged_.emplace(v, g_.nbr(v)).first;
   return it->second;
 }
 
-void Transaction::add_node(const Vertex& v) {
+void Transaction::add_node(const Point& v) {
   remove_nodes_.erase(v);
   add_nodes_.insert(v);
 }
 
-void Transaction::remove_node(const Vertex& v) {
+void Transaction::remove_node(const Point& v) {
   add_nodes_.erase(v);
   remove_nodes_.insert(v);
 }
 
-void Transaction::add_center(const Vertex& v, int level) {
+void Transaction::add_center(const Point& v, int level) {
   remove_centers_.erase(v);
   add_centers_.insert(v);
   add_levels_[v] = level;
 }
 
-void Transaction::remove_center(const Vertex& v) {
+void Transaction::remove_center(const Point& v) {
   add_centers_.erase(v);
   add_levels_.erase(v);
   remove_centers_.insert(v);
 }
 
-void Transaction::remove_vertex(const Vertex& v) {
+void Transaction::remove_vertex(const Point& v) {
   staged_.erase(v);
   deleted_.insert(v);
 }
 
 void Transaction::commit() noexcept {
   // Removals first: erase never allocates.
-  for (const Vertex& v : deleted_) g_.neighbors.erase(v);
-  for (const Vertex& v : remove_nodes_) g_.N.erase(v);
-  for (const Vertex& v : remove_centers_) {
+  for (const Point& v : deleted_) g_.neighbors.erase(v);
+  for (const Point& v : remove_nodes_) g_.N.erase(v);
+  for (const Point& v : remove_centers_) {
     g_.C.erase(v);
     g_.level.erase(v);
   }
@@ -54,7 +54,7 @@ void Transaction::commit() noexcept {
       g_.level.insert(std::move(node));
     }
   }
-  // Neighbour sets: swap into existing entries, splice new entries.
+  // Neighbor sets: swap into existing entries, splice new entries.
   while (!staged_.empty()) {
     auto node = staged_.extract(staged_.begin());
     if (auto it = g_.neighbors.find(node.key()); it != g_.neighbors.end()) {

@@ -211,7 +211,7 @@ inline std::ostream& operator<<(std::ostream& os, RefineResult r) { return os <<
 // Legality of refining `c`, assuming `s` is balanced.  Refining replaces c by
 // its 4 children; the only new leaf pairs are (child, other leaf), so the
 // result is balanced iff no child is edge-adjacent to a leaf more than one
-// level coarser than the child, i.e. no edge neighbour of c is coarser
+// level coarser than the child, i.e. no edge neighbor of c is coarser
 // than c.  We check the children literally.
 inline RefineResult check_refine(const State& s, const Leaf& c) {
   if (!s.has(c)) return RefineResult::no_such_cell;

@@ -23,8 +23,8 @@ enum class Flaw {
   LiteralBoundary6,       ///< refine: junctions only where |N(p_i) ∩ N(p_j)| = 1 (none on the domain boundary)
   WeakCoarsenGuard,       ///< can_coarsen: only n in N and |N(n)| = 4 (the paper's literal test)
   CoarsenDifferentState,  ///< coarsen: also coarsens the first other coarsenable node (valid, but not the inverse)
-  CornerBalance,          ///< can_refine: every cell at a corner of c counts, not only edge neighbours (E4's sentence)
-  RefusalRefinesNeighbour ///< refine: refused for a coarser neighbour, but refines that neighbour anyway
+  CornerBalance,          ///< can_refine: every cell at a corner of c counts, not only edge neighbors (E4's sentence)
+  RefusalRefinesNeighbor ///< refine: refused for a coarser neighbor, but refines that neighbor anyway
 };
 
 struct FlawInfo {
@@ -35,9 +35,9 @@ struct FlawInfo {
 /// Every flaw except None.
 const std::vector<FlawInfo>& all_flaws();
 
-std::optional<RefineRefusal> can_refine(const Graph& g, const Vertex& c, Flaw flaw);
-std::optional<CoarsenRefusal> can_coarsen(const Graph& g, const Vertex& n, Flaw flaw);
-RefineResult refine(Graph& g, const Vertex& c, Flaw flaw);
-CoarsenResult coarsen(Graph& g, const Vertex& n, Flaw flaw);
+std::optional<RefineRefusal> can_refine(const Graph& g, const Point& c, Flaw flaw);
+std::optional<CoarsenRefusal> can_coarsen(const Graph& g, const Point& n, Flaw flaw);
+RefineResult refine(Graph& g, const Point& c, Flaw flaw);
+CoarsenResult coarsen(Graph& g, const Point& n, Flaw flaw);
 
 }  // namespace bccmis::mutants

@@ -39,10 +39,10 @@ constexpr int kPassingBudget = 50;  // for the runs that must pass (baseline, eq
 Ops mutant_ops(Flaw flaw, const std::string& name) {
   Ops ops;
   ops.name = name;
-  ops.refine = [flaw](Graph& g, const Vertex& c) { return mutants::refine(g, c, flaw); };
-  ops.coarsen = [flaw](Graph& g, const Vertex& n) { return mutants::coarsen(g, n, flaw); };
-  ops.can_refine = [flaw](const Graph& g, const Vertex& c) { return mutants::can_refine(g, c, flaw); };
-  ops.can_coarsen = [flaw](const Graph& g, const Vertex& n) { return mutants::can_coarsen(g, n, flaw); };
+  ops.refine = [flaw](Graph& g, const Point& c) { return mutants::refine(g, c, flaw); };
+  ops.coarsen = [flaw](Graph& g, const Point& n) { return mutants::coarsen(g, n, flaw); };
+  ops.can_refine = [flaw](const Graph& g, const Point& c) { return mutants::can_refine(g, c, flaw); };
+  ops.can_coarsen = [flaw](const Graph& g, const Point& n) { return mutants::can_coarsen(g, n, flaw); };
   return ops;
 }
 
@@ -125,7 +125,7 @@ const std::vector<Expectation>& expectations() {
       {Flaw::WeakCoarsenGuard, "WeakCoarsenGuard", {"decisions"}, {}, true},
       {Flaw::CoarsenDifferentState, "CoarsenDifferentState", {"refine-coarsen", "decisions"}, {"valid"}, true},
       {Flaw::CornerBalance, "CornerBalance", {"decisions"}, {"valid", "refine-coarsen", "coarsen-refine"}, false},
-      {Flaw::RefusalRefinesNeighbour, "RefusalRefinesNeighbour", {"refusal"}, {"valid"}, true},
+      {Flaw::RefusalRefinesNeighbor, "RefusalRefinesNeighbor", {"refusal"}, {"valid"}, true},
   };
   return all;
 }

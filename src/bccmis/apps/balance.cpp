@@ -14,17 +14,17 @@ std::string_view name(Balance b) { return b == Balance::Edge ? "edge" : "corner"
 
 namespace {
 
-VertexSet neighbors_under(const Graph& g, const Point& c, Balance b) {
-  VertexSet X;
+PointSet neighbors_under(const Graph& g, const Point& c, Balance b) {
+  PointSet X;
   if (g.is_center(c)) detail::for_each_neighbor(g, c, b, [&](const Point& x) { X.insert(x); });
   return X;
 }
 
 }  // namespace
 
-VertexSet edge_neighbors(const Graph& g, const Point& c) { return neighbors_under(g, c, Balance::Edge); }
+PointSet edge_neighbors(const Graph& g, const Point& c) { return neighbors_under(g, c, Balance::Edge); }
 
-VertexSet touching_neighbors(const Graph& g, const Point& c) { return neighbors_under(g, c, Balance::Corner); }
+PointSet touching_neighbors(const Graph& g, const Point& c) { return neighbors_under(g, c, Balance::Corner); }
 
 std::optional<RefineRefusal> can_refine_under(const Graph& g, const Point& c, Balance b) {
   return detail::can_refine_under(g, c, b);
@@ -48,7 +48,7 @@ std::size_t coarsen_where(Graph& g, const CoarsenPredicate& allow, Balance b) {
   return detail::coarsen_where(g, allow, b);
 }
 
-VertexSet boundary_after_coarsen(const Graph& g, const Point& n) { return detail::boundary_after_coarsen(g, n); }
+PointSet boundary_after_coarsen(const Graph& g, const Point& n) { return detail::boundary_after_coarsen(g, n); }
 
 std::optional<std::pair<Point, Point>> find_corner_imbalance(const Graph& g) {
   for (const Point& c : g.C) {

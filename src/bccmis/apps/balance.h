@@ -2,7 +2,7 @@
 // operations (refine, coarsen, can_refine, can_coarsen).
 //
 // The paper (§2.1 ¶1) refuses to refine a cell that has a coarser edge-
-// neighbour and leaves the cascade to the user; refine_balanced is that
+// neighbor and leaves the cascade to the user; refine_balanced is that
 // cascade. coarsen_where is the matching sweep for coarsening. Both use only
 // the public API of the reference core (spec/apps.md, "Balanced refinement").
 //
@@ -30,7 +30,7 @@ namespace fast {
 class Lattice;
 }
 
-/// Which neighbours the 2:1 level rule covers.
+/// Which neighbors the 2:1 level rule covers.
 enum class Balance {
   Edge,    ///< `edge`: cells sharing a piece of side (the core's rule)
   Corner,  ///< `corner`: cells touching at a side or at a corner point
@@ -42,11 +42,11 @@ std::string_view name(Balance b);
 
 /// The cells sharing (part of) a side with cell c: eq. (3)'s X,
 /// (∪_{b_i ≠ b_j ∈ 𝒩(c)} 𝒩(b_i) ∩ 𝒩(b_j)) \ {c}. Empty if c is not a center.
-VertexSet edge_neighbors(const Graph& g, const Point& c);
+PointSet edge_neighbors(const Graph& g, const Point& c);
 
-/// The cells touching cell c at all (edge-neighbours and cells meeting c at
+/// The cells touching cell c at all (edge-neighbors and cells meeting c at
 /// a corner point only): (∪_{b ∈ 𝒩(c)} 𝒩(b)) \ {c}.
-VertexSet touching_neighbors(const Graph& g, const Point& c);
+PointSet touching_neighbors(const Graph& g, const Point& c);
 
 /// can_refine(g, c), and in corner mode also `CoarserNeighbor` when a cell
 /// touching c only at a corner is coarser than c.
@@ -59,7 +59,7 @@ std::optional<CoarsenRefusal> can_coarsen_under(const Graph& g, const Point& n, 
 /// What refine_balanced(g, c) did.
 struct BalancedRefineResult {
   /// Empty when c was refined. Only `NoSuchCell` or `MaxLevel`: a coarser
-  /// neighbour never stops the cascade.
+  /// neighbor never stops the cascade.
   std::optional<RefineRefusal> refused;
   /// The centers refined, in order: the cascade first (coarsest first along
   /// each chain), c last. Empty when refused.
@@ -67,9 +67,9 @@ struct BalancedRefineResult {
   bool applied() const { return !refused; }
 };
 
-/// Refines cell c even when a neighbour (an edge-neighbour; in corner mode
-/// any touching cell) is coarser, by first refining that neighbour
-/// (recursively: the neighbour's coarser neighbours first). Only cells that
+/// Refines cell c even when a neighbor (an edge-neighbor; in corner mode
+/// any touching cell) is coarser, by first refining that neighbor
+/// (recursively: the neighbor's coarser neighbors first). Only cells that
 /// every balanced lattice with c refined must refine are refined, so the
 /// leaf set reached by a set of requests does not depend on their order
 /// (tests/apps_balance_test.cpp checks this against a geometric closure). A
@@ -100,7 +100,7 @@ std::size_t coarsen_where(Graph& g, const CoarsenPredicate& allow, Balance b = B
 /// merged cell and those side midpoints that keep at least two cells outside
 /// the four children (spec/errata.toml E2). Precondition: can_coarsen(g, n)
 /// is empty.
-VertexSet boundary_after_coarsen(const Graph& g, const Point& n);
+PointSet boundary_after_coarsen(const Graph& g, const Point& n);
 
 /// The first pair of touching cells (in sorted order of the first) whose
 /// levels differ by more than one; empty for a corner-balanced lattice.

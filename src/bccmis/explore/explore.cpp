@@ -26,7 +26,7 @@ namespace {
 // Two encodings, told apart by the first byte:
 //
 //  0 (compact): used when the graph is "regular": every point (vertex or
-//    neighbour) lies on the integer grid [0, W*S] x [0, H*S], N and C are
+//    neighbor) lies on the integer grid [0, W*S] x [0, H*S], N and C are
 //    disjoint, the keys of `neighbors` are exactly N ∪ C, the keys of `level`
 //    are exactly C, and every level is in 0..200. Points are numbered
 //    id = x * (H*S + 1) + y, which is increasing in the (x, y) order of Point.
@@ -34,7 +34,7 @@ namespace {
 //      varint(id - previous id)          (previous id starts at -1)
 //      byte 0 for a node, 1 + level for a center
 //      varint(|N(v)|)
-//      zigzag varint(first neighbour id - id), varint(delta) for the others
+//      zigzag varint(first neighbor id - id), varint(delta) for the others
 //  1 (generic): anything else, every container written out with zigzag
 //    varints of raw coordinates.
 // Both are decodable, so the key is exact.
@@ -184,7 +184,7 @@ Graph decode(const std::string& key, const LatticeSize& size, const Grid& grid) 
         g.C.emplace_hint(g.C.end(), v);
         g.level.emplace_hint(g.level.end(), v, tag - 1);
       }
-      VertexSet nbrs;
+      PointSet nbrs;
       const std::uint64_t n = r.varint();
       std::int64_t prev_n = 0;
       for (std::uint64_t m = 0; m < n; ++m) {
@@ -203,7 +203,7 @@ Graph decode(const std::string& key, const LatticeSize& size, const Grid& grid) 
     }
     for (std::uint64_t k = r.varint(); k > 0; --k) {
       const Point p = r.point();
-      VertexSet& nbrs = g.neighbors[p];
+      PointSet& nbrs = g.neighbors[p];
       for (std::uint64_t m = r.varint(); m > 0; --m) nbrs.insert(r.point());
     }
   } else {
@@ -233,8 +233,8 @@ struct StateWork {
   std::vector<TraceCommand> extra;     // the commands after the state that reproduce it
 };
 
-using RefineFn = std::function<RefineResult(Graph&, const Vertex&)>;
-using CoarsenFn = std::function<CoarsenResult(Graph&, const Vertex&)>;
+using RefineFn = std::function<RefineResult(Graph&, const Point&)>;
+using CoarsenFn = std::function<CoarsenResult(Graph&, const Point&)>;
 
 // Processes one state: checker, every operation on every vertex, inverses.
 // Reads `seen` (no writes happen while workers run).
@@ -259,11 +259,11 @@ class StateProcessor {
       }
     }
 
-    std::vector<Vertex> vertices;
+    std::vector<Point> vertices;
     vertices.reserve(g_.N.size() + g_.C.size());
     std::set_union(g_.N.begin(), g_.N.end(), g_.C.begin(), g_.C.end(), std::back_inserter(vertices));
     pending_.clear();
-    for (const Vertex& v : vertices) {
+    for (const Point& v : vertices) {
       if (stop()) return;
       if (options_.try_every_op || g_.is_center(v)) try_op(TraceCommand::Kind::Refine, v);
       if (stop()) return;
@@ -282,7 +282,7 @@ class StateProcessor {
     std::string_view refusal;
   };
 
-  static std::string op_text(TraceCommand::Kind kind, const Vertex& v) {
+  static std::string op_text(TraceCommand::Kind kind, const Point& v) {
     return (kind == TraceCommand::Kind::Refine ? "refine " : "coarsen ") + point_text(v);
   }
   static TraceCommand::Kind inverse(TraceCommand::Kind kind) {
@@ -290,7 +290,7 @@ class StateProcessor {
   }
 
   // Runs one operation on g_; exceptions propagate.
-  Call call(TraceCommand::Kind kind, const Vertex& v) {
+  Call call(TraceCommand::Kind kind, const Point& v) {
     if (kind == TraceCommand::Kind::Refine) {
       const RefineResult r = refine_(g_, v);
       return r.applied() ? Call{true, {}} : Call{false, code(*r.refused)};
@@ -341,7 +341,7 @@ class StateProcessor {
 
   // Runs op at v; if accepted, records the successor and undoes it with the
   // inverse operation, which must give back the state exactly.
-  void try_op(TraceCommand::Kind kind, const Vertex& v) {
+  void try_op(TraceCommand::Kind kind, const Point& v) {
     ++out_->ops_tried;
     const TraceCommand cmd{kind, v, 0};
     Call r;
@@ -387,7 +387,7 @@ class StateProcessor {
   const RefineFn& refine_;
   const CoarsenFn& coarsen_;
   const std::unordered_set<std::string_view>& seen_;
-  std::vector<std::pair<TraceCommand::Kind, Vertex>> pending_;  // refused calls not yet compared
+  std::vector<std::pair<TraceCommand::Kind, Point>> pending_;  // refused calls not yet compared
   StateWork* out_ = nullptr;
   std::int64_t i_ = 0;
   const std::string* key_ = nullptr;
@@ -403,8 +403,8 @@ class Explorer {
  public:
   Explorer(const LatticeSize& size, const ExploreOptions& options)
       : size_(size), options_(options), grid_(size) {
-    refine_ = options.refine ? options.refine : [](Graph& g, const Vertex& c) { return bccmis::refine(g, c); };
-    coarsen_ = options.coarsen ? options.coarsen : [](Graph& g, const Vertex& n) { return bccmis::coarsen(g, n); };
+    refine_ = options.refine ? options.refine : [](Graph& g, const Point& c) { return bccmis::refine(g, c); };
+    coarsen_ = options.coarsen ? options.coarsen : [](Graph& g, const Point& n) { return bccmis::coarsen(g, n); };
     threads_ = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
     threads_ = std::clamp(threads_, 1, 64);
   }

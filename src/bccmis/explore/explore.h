@@ -10,7 +10,7 @@
 //        exact key below), and its result is queued if it is new;
 //      - a refused operation must leave the state exactly unchanged.
 // States are deduplicated by an exact key: a compact binary encoding of the
-// whole Graph (N, C, every neighbour set, every level), from which the graph
+// whole Graph (N, C, every neighbor set, every level), from which the graph
 // is decoded again. Two graphs have equal keys iff they are equal.
 //
 // States are processed in parallel batches (ExploreOptions::threads); the
@@ -58,8 +58,8 @@ struct ExploreOptions {
   std::function<void(const ExploreProgress&)> progress;
   std::int64_t progress_every = 4096;
   /// The operations under test; empty means bccmis::refine / bccmis::coarsen.
-  std::function<RefineResult(Graph&, const Vertex&)> refine;
-  std::function<CoarsenResult(Graph&, const Vertex&)> coarsen;
+  std::function<RefineResult(Graph&, const Point&)> refine;
+  std::function<CoarsenResult(Graph&, const Point&)> coarsen;
 };
 
 /// The first thing that went wrong, with a reproducer.

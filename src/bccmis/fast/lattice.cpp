@@ -22,8 +22,10 @@
 // junction: across its outer sides lie cells of its own level (old junction)
 // or of c's level (a new junction is made on that cell's side instead).
 #include "bccmis/fast/lattice.h"
+#include "bccmis/trace.h"
 
 #include <algorithm>
+#include <ostream>
 #include <array>
 #include <bit>
 #include <charconv>
@@ -149,21 +151,6 @@ void detail::advise_huge_pages(void* p, std::size_t bytes) noexcept {
 
 // ---- SmallPoints / outcomes --------------------------------------------------
 
-RefineResult RefineOutcome::to_result() const {
-  RefineResult r;
-  r.refused = refused;
-  r.Y = Y.to_set();
-  r.J_plus = J_plus.to_set();
-  return r;
-}
-
-CoarsenResult CoarsenOutcome::to_result() const {
-  CoarsenResult r;
-  r.refused = refused;
-  r.Y = Y.to_set();
-  r.J_minus = J_minus.to_set();
-  return r;
-}
 
 // ---- Records -----------------------------------------------------------------
 
@@ -440,7 +427,7 @@ Lattice Lattice::from_graph(const Graph& g) {
   auto node_index = [&](const Point& p) -> Index {
     const auto it = std::lower_bound(node_points.begin(), node_points.end(), p);
     if (it == node_points.end() || *it != p)
-      throw std::invalid_argument("from_graph: neighbour (" + std::to_string(p.x) + ", " + std::to_string(p.y) +
+      throw std::invalid_argument("from_graph: neighbor (" + std::to_string(p.x) + ", " + std::to_string(p.y) +
                                   ") of a center is not a node");
     return static_cast<Index>(it - node_points.begin());
   };
@@ -524,8 +511,8 @@ std::optional<RefineRefusal> Lattice::refine_refusal(const Point& c, Index& ci) 
   return std::nullopt;
 }
 
-RefineOutcome Lattice::refine(const Point& c) {
-  RefineOutcome out;
+RefineResult Lattice::refine(const Point& c) {
+  RefineResult out;
   Index ci = kNone;
   out.refused = refine_refusal(c, ci);
   if (out.refused) return out;
@@ -544,7 +531,7 @@ RefineOutcome Lattice::refine(const Point& c) {
   const std::size_t y_base = static_cast<std::size_t>(mix(c) >> table_shift_);
   prefetch(child_home(y_base, 0));
 
-  // 1. The neighbourhood (eq. 2a-3): K = P, old.mid = J, across = X.
+  // 1. The neighborhood (eq. 2a-3): K = P, old.mid = J, across = X.
   Index across[4];
   for (int s = 0; s < 4; ++s)
     across[s] = old.mid[s] == kNone ? nodes_[old.corner[kSideCorner[s]]].cell[kSideQuad[s]] : kNone;
@@ -638,8 +625,8 @@ std::optional<CoarsenRefusal> Lattice::coarsen_refusal(const Point& n, Index& ni
   return std::nullopt;
 }
 
-CoarsenOutcome Lattice::coarsen(const Point& n) {
-  CoarsenOutcome out;
+CoarsenResult Lattice::coarsen(const Point& n) {
+  CoarsenResult out;
   Index ni = kNone;
   int l = 0;
   out.refused = coarsen_refusal(n, ni, l);
@@ -761,7 +748,7 @@ namespace {
 
 // 𝒩(c) of a center, in sorted (x, y) order: SW, W, NW, S, N, SE, E, NE.
 template <class Out>
-void center_neighbours(const Lattice::Center& cc, std::int64_t h, Out& out) {
+void center_neighbors(const Lattice::Center& cc, std::int64_t h, Out& out) {
   const Point c = cc.position();
   out.push_back(offset(c, -h, -h));
   if (cc.mid[3] != kNone) out.push_back(offset(c, -h, 0));
@@ -774,7 +761,7 @@ void center_neighbours(const Lattice::Center& cc, std::int64_t h, Out& out) {
 }
 
 // 𝒩(n) of a node, sorted.
-SmallPoints<4> node_neighbours(const Lattice& g, Index n) {
+SmallPoints<4> node_neighbors(const Lattice& g, Index n) {
   const Lattice::Node& nd = g.node_pool()[n];
   SmallPoints<4> out;
   for (int q = 0; q < 4; ++q) {
@@ -793,15 +780,15 @@ SmallPoints<4> node_neighbours(const Lattice& g, Index n) {
 SmallPoints<8> Lattice::nbr(const Point& v) const {
   SmallPoints<8> out;
   if (const Index c = find_center(v); c != kNone) {
-    center_neighbours(centers_[c], half_side(level(c)), out);
+    center_neighbors(centers_[c], half_side(level(c)), out);
     return out;
   }
   if (const Index n = find_node(v); n != kNone) {
-    for (const Point& p : node_neighbours(*this, n)) out.push_back(p);
+    for (const Point& p : node_neighbors(*this, n)) out.push_back(p);
     return out;
   }
   if (!node_exists(v)) return out;
-  // A grid node or a junction is not in the position table: its neighbours
+  // A grid node or a junction is not in the position table: its neighbors
   // are the distinct leaves in the four quadrants around it.
   Index seen[4];
   std::size_t k = 0;
@@ -852,12 +839,12 @@ Graph Lattice::to_graph() const {
     g.C.insert(g.C.end(), p);
     g.level.emplace_hint(g.level.end(), p, level(c));
     SmallPoints<8> nb;
-    center_neighbours(centers_[c], half_side(level(c)), nb);
+    center_neighbors(centers_[c], half_side(level(c)), nb);
     g.neighbors.emplace_hint(g.neighbors.end(), p, nb.to_set());
   }
   for (const auto& [p, n] : ns) {
     g.N.insert(g.N.end(), p);
-    g.neighbors.emplace(p, node_neighbours(*this, n).to_set());
+    g.neighbors.emplace(p, node_neighbors(*this, n).to_set());
   }
   return g;
 }
@@ -878,6 +865,8 @@ void append_point(std::string& out, const Point& p) {
 }
 
 }  // namespace
+
+void write_canonical_state(std::ostream& out, const Lattice& g) { out << canonical_state(g); }
 
 std::string canonical_state(const Lattice& g) {
   const auto& centers = g.center_pool();
@@ -908,7 +897,7 @@ std::string canonical_state(const Lattice& g) {
     append_int(out, g.level(c));
     out += " :";
     SmallPoints<8> nb;
-    center_neighbours(centers[c], g.half_side(g.level(c)), nb);
+    center_neighbors(centers[c], g.half_side(g.level(c)), nb);
     for (const Point& b : nb) append_point(out, b);
     out += '\n';
   }
@@ -916,7 +905,7 @@ std::string canonical_state(const Lattice& g) {
     out += 'N';
     append_point(out, p);
     out += " :";
-    for (const Point& b : node_neighbours(g, n)) append_point(out, b);
+    for (const Point& b : node_neighbors(g, n)) append_point(out, b);
     out += '\n';
   }
   out += "end ";
@@ -928,20 +917,9 @@ std::string canonical_state(const Lattice& g) {
 }
 
 Lattice replay(const Trace& trace, std::string& log, const FastReplayObserver& after) {
-  Lattice g(trace.size);
-  for (const TraceCommand& cmd : trace.commands) {
-    std::string decision;
-    if (cmd.kind == TraceCommand::Kind::Refine) {
-      const RefineOutcome r = g.refine(cmd.at);
-      decision = decision_line(cmd, r.refused ? code(*r.refused) : std::string_view{});
-    } else if (cmd.kind == TraceCommand::Kind::Coarsen) {
-      const CoarsenOutcome r = g.coarsen(cmd.at);
-      decision = decision_line(cmd, r.refused ? code(*r.refused) : std::string_view{});
-    }
-    if (!decision.empty()) log += decision + "\n";
-    if (after) after(cmd, g, decision);
-  }
-  return g;
+  return replay_on<Lattice>(trace, log, [&](const TraceCommand& c, const Lattice& g, std::string_view decision) {
+    if (after) after(c, g, decision);
+  });
 }
 
 // ---- Memory and audit -------------------------------------------------------------------

@@ -4,10 +4,10 @@
 // std::set and is the oracle. This is the same graph, the same operations and
 // the same decisions, stored for speed:
 //
-//   - every neighbour set has a fixed place per direction. A center keeps its
+//   - every neighbor set has a fixed place per direction. A center keeps its
 //     4 corners and its 4 side midpoints (junctions, empty when absent): at
-//     most 8 neighbours. A node keeps, per quadrant around it, the leaf cell
-//     that occupies that quadrant: at most 4 neighbours (a junction is the side
+//     most 8 neighbors. A node keeps, per quadrant around it, the leaf cell
+//     that occupies that quadrant: at most 4 neighbors (a junction is the side
 //     midpoint of one cell, which then occupies two quadrants). The paper's
 //     set operations become a fixed number of slot writes: O(1).
 //   - centers (48 bytes) and nodes (16 bytes) live in two flat pools with
@@ -46,6 +46,7 @@
 
 #include "bccmis/format.h"
 #include "bccmis/graph.h"
+#include "bccmis/lattice.h"
 #include "bccmis/ops.h"
 
 namespace bccmis::fast {
@@ -99,36 +100,29 @@ class SmallPoints {
       for (std::size_t j = i; j > 0 && items_[j] < items_[j - 1]; --j) std::swap(items_[j], items_[j - 1]);
   }
   /// The same points as a std::set (allocates; for comparisons and adapters).
-  VertexSet to_set() const { return VertexSet(begin(), end()); }
+  PointSet to_set() const { return PointSet(begin(), end()); }
 
  private:
   std::array<Point, N> items_{};
   std::size_t size_ = 0;
 };
 
-/// What Lattice::refine did. Same members as bccmis::RefineResult, without
-/// heap allocation: Y and J_plus are sorted by (x, y) as the reference's sets.
-struct RefineOutcome {
-  std::optional<RefineRefusal> refused;  ///< empty when applied
-  SmallPoints<4> Y;                      ///< the four new centers (eq. 4a)
-  SmallPoints<4> J_plus;                 ///< the new junction nodes (eq. 5a, erratum E1)
-  bool applied() const { return !refused; }
-  /// The reference's result type (allocates).
-  RefineResult to_result() const;
-};
+/// What Lattice::refine and Lattice::coarsen did: the reference's result
+/// types on fixed-size sets (no heap), sorted by (x, y) as the reference's.
+using RefineResult = BasicRefineResult<SmallPoints<4>>;
+using CoarsenResult = BasicCoarsenResult<SmallPoints<4>>;
 
-/// What Lattice::coarsen did. Same members as bccmis::CoarsenResult.
-struct CoarsenOutcome {
-  std::optional<CoarsenRefusal> refused;  ///< empty when applied
-  SmallPoints<4> Y;                       ///< the four deleted centers (eq. 8a)
-  SmallPoints<4> J_minus;                 ///< the deleted junction nodes (eq. 10a, erratum E2)
-  bool applied() const { return !refused; }
-  CoarsenResult to_result() const;
-};
+/// The same results with std::set members (allocates; for comparisons).
+inline bccmis::RefineResult to_sets(const RefineResult& r) { return {r.refused, r.Y.to_set(), r.J_plus.to_set()}; }
+inline bccmis::CoarsenResult to_sets(const CoarsenResult& r) { return {r.refused, r.Y.to_set(), r.J_minus.to_set()}; }
 
 /// The adaptive lattice on flat arrays. Copyable and movable.
 class Lattice {
  public:
+  using point_type = Point;
+  using size_type = LatticeSize;
+  static constexpr int dimension = 2;
+
   /// The initial lattice of make_lattice(size): W x H level-0 cells. Throws
   /// LatticeError on an invalid size, std::length_error when the lattice
   /// would need 2^26 or more vertices of one kind (about 6.7e7 cells).
@@ -141,9 +135,9 @@ class Lattice {
   std::optional<RefineRefusal> can_refine(const Point& c) const;
   std::optional<CoarsenRefusal> can_coarsen(const Point& n) const;
   /// §2.1: split cell c into its four children. A refused call changes nothing.
-  RefineOutcome refine(const Point& c);
+  RefineResult refine(const Point& c);
   /// §2.2: merge the four cells around node n. A refused call changes nothing.
-  CoarsenOutcome coarsen(const Point& n);
+  CoarsenResult coarsen(const Point& n);
 
   /// refine (coarsen) each position in order, exactly as that many calls
   /// would; returns how many were applied. Looks ahead in the list and
@@ -179,7 +173,7 @@ class Lattice {
   Graph to_graph() const;
   /// Builds the lattice of a valid reference graph (one the checker accepts,
   /// e.g. parsed from a canonical state). Throws std::invalid_argument when a
-  /// neighbour is not at a corner or side midpoint of its cell.
+  /// neighbor is not at a corner or side midpoint of its cell.
   static Lattice from_graph(const Graph& g);
 
   // ---- Memory -----------------------------------------------------------------
@@ -380,17 +374,24 @@ class Lattice {
   std::size_t table_used_ = 0;
 };
 
-// ---- Free functions with the reference's names (one-line switch) -------------
-//
-// Code written against `namespace impl = bccmis;` with a Graph switches to
-// `namespace impl = bccmis::fast;` with a Lattice:
-//   auto g = impl::make_lattice(size);  impl::refine(g, c);  impl::canonical_state(g);
+// ---- The lattice vocabulary (bccmis/lattice.h): Lattice models AdaptiveLattice
 
 inline Lattice make_lattice(const LatticeSize& size) { return Lattice(size); }
+inline const LatticeSize& size_of(const Lattice& g) { return g.size(); }
 inline std::optional<RefineRefusal> can_refine(const Lattice& g, const Point& c) { return g.can_refine(c); }
 inline std::optional<CoarsenRefusal> can_coarsen(const Lattice& g, const Point& n) { return g.can_coarsen(n); }
-inline RefineOutcome refine(Lattice& g, const Point& c) { return g.refine(c); }
-inline CoarsenOutcome coarsen(Lattice& g, const Point& n) { return g.coarsen(n); }
+inline RefineResult refine(Lattice& g, const Point& c) { return g.refine(c); }
+inline CoarsenResult coarsen(Lattice& g, const Point& n) { return g.coarsen(n); }
+inline bool is_center(const Lattice& g, const Point& v) { return g.is_center(v); }
+inline bool is_node(const Lattice& g, const Point& v) { return g.is_node(v); }
+inline int level_of(const Lattice& g, const Point& c) { return g.level_of(c); }
+inline SmallPoints<8> neighbors(const Lattice& g, const Point& v) { return g.nbr(v); }
+inline std::vector<Point> cells(const Lattice& g) { return g.cells(); }
+inline std::vector<Point> nodes(const Lattice& g) { return g.nodes(); }
+inline std::size_t cell_count(const Lattice& g) { return g.cell_count(); }
+inline std::size_t node_count(const Lattice& g) { return g.node_count(); }
+/// The canonical text of spec/formats.md, written from the pools.
+void write_canonical_state(std::ostream& out, const Lattice& g);
 
 /// The canonical text of spec/formats.md, byte-identical to
 /// bccmis::canonical_state(g.to_graph()), printed from the pools directly.
@@ -403,3 +404,5 @@ using FastReplayObserver = std::function<void(const TraceCommand&, const Lattice
 Lattice replay(const Trace& trace, std::string& log, const FastReplayObserver& after = {});
 
 }  // namespace bccmis::fast
+
+static_assert(bccmis::AdaptiveLattice<bccmis::fast::Lattice>);

@@ -30,7 +30,7 @@ class ReferenceLattice final : public LatticeInterface {
   bool is_center(const Point& v) const override { return g_.is_center(v); }
   bool is_node(const Point& v) const override { return g_.is_node(v); }
   int level_of(const Point& c) const override { return g_.level_of(c); }
-  VertexSet nbr(const Point& v) const override { return g_.nbr(v); }
+  PointSet nbr(const Point& v) const override { return g_.nbr(v); }
   std::vector<Point> cells() const override { return {g_.C.begin(), g_.C.end()}; }
   std::vector<Point> nodes() const override { return {g_.N.begin(), g_.N.end()}; }
   Graph to_graph() const override { return g_; }
@@ -48,14 +48,14 @@ class FastLattice final : public LatticeInterface {
   const LatticeSize& size() const override { return g_.size(); }
   std::optional<RefineRefusal> can_refine(const Point& c) const override { return g_.can_refine(c); }
   std::optional<CoarsenRefusal> can_coarsen(const Point& n) const override { return g_.can_coarsen(n); }
-  RefineResult refine(const Point& c) override { return g_.refine(c).to_result(); }
-  CoarsenResult coarsen(const Point& n) override { return g_.coarsen(n).to_result(); }
+  RefineResult refine(const Point& c) override { return fast::to_sets(g_.refine(c)); }
+  CoarsenResult coarsen(const Point& n) override { return fast::to_sets(g_.coarsen(n)); }
   std::size_t cell_count() const override { return g_.cell_count(); }
   std::size_t node_count() const override { return g_.node_count(); }
   bool is_center(const Point& v) const override { return g_.is_center(v); }
   bool is_node(const Point& v) const override { return g_.is_node(v); }
   int level_of(const Point& c) const override { return g_.level_of(c); }
-  VertexSet nbr(const Point& v) const override { return g_.nbr(v).to_set(); }
+  PointSet nbr(const Point& v) const override { return g_.nbr(v).to_set(); }
   std::vector<Point> cells() const override { return g_.cells(); }
   std::vector<Point> nodes() const override { return g_.nodes(); }
   Graph to_graph() const override { return g_.to_graph(); }

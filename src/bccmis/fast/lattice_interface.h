@@ -49,7 +49,7 @@ class LatticeInterface {
   /// Throws std::out_of_range if c is not a center.
   virtual int level_of(const Point& c) const = 0;
   /// 𝒩(v); empty for a position that is not a vertex.
-  virtual VertexSet nbr(const Point& v) const = 0;
+  virtual PointSet nbr(const Point& v) const = 0;
   /// C and N, sorted by (x, y).
   virtual std::vector<Point> cells() const = 0;
   virtual std::vector<Point> nodes() const = 0;

@@ -10,19 +10,19 @@ namespace bccmis {
 
 namespace {
 
-VertexSet difference(const VertexSet& a, const VertexSet& b) {
-  VertexSet out;
+PointSet difference(const PointSet& a, const PointSet& b) {
+  PointSet out;
   std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::inserter(out, out.end()));
   return out;
 }
 
-std::string list(const VertexSet& s) {
+std::string list(const PointSet& s) {
   std::string out = "{";
   for (const Point& p : s) out += (out.size() > 1 ? ", " : "") + inv::pos(p);
   return out + "}";
 }
 
-std::vector<Point> points(const VertexSet& a, const VertexSet& b = {}) {
+std::vector<Point> points(const PointSet& a, const PointSet& b = {}) {
   std::vector<Point> out(a.begin(), a.end());
   out.insert(out.end(), b.begin(), b.end());
   return out;
@@ -33,9 +33,9 @@ void validate(const Graph& g, const std::string& context) {
 }
 
 // The exact change of one vertex set: `gained` and `lost` as expected.
-void expect_change(const VertexSet& before, const VertexSet& after, const VertexSet& gained, const VertexSet& lost,
+void expect_change(const PointSet& before, const PointSet& after, const PointSet& gained, const PointSet& lost,
                    const char* set_name, const std::string& op, const char* code, const char* section) {
-  const VertexSet plus = difference(after, before), minus = difference(before, after);
+  const PointSet plus = difference(after, before), minus = difference(before, after);
   if (plus == gained && minus == lost) return;
   const std::string text = op + " changed " + set_name + " by +" + list(plus) + " -" + list(minus) +
                            "; the equations give +" + list(gained) + " -" + list(lost);
@@ -43,14 +43,14 @@ void expect_change(const VertexSet& before, const VertexSet& after, const Vertex
 }
 
 // The checks after an operation (defined below the wrappers, in call order).
-void check_refine_result(const Graph& before, const Graph& g, const RefineResult& r, const Vertex& c,
+void check_refine_result(const Graph& before, const Graph& g, const RefineResult& r, const Point& c,
                          const std::string& op);
-void check_coarsen_result(const Graph& before, const Graph& g, const CoarsenResult& r, const Vertex& n,
+void check_coarsen_result(const Graph& before, const Graph& g, const CoarsenResult& r, const Point& n,
                           const std::string& op);
 
 }  // namespace
 
-RefineResult checked_refine(Graph& g, const Vertex& c) {
+RefineResult checked_refine(Graph& g, const Point& c) {
   const std::string op = "refine " + inv::pos(c);
   validate(g, "before " + op);
   Graph before = g;
@@ -68,7 +68,7 @@ RefineResult checked_refine(Graph& g, const Vertex& c) {
 
 namespace {
 
-void check_refine_result(const Graph& before, const Graph& g, const RefineResult& r, const Vertex& c,
+void check_refine_result(const Graph& before, const Graph& g, const RefineResult& r, const Point& c,
                          const std::string& op) {
   if (!r.applied()) {
     if (!(g == before))
@@ -89,14 +89,14 @@ void check_refine_result(const Graph& before, const Graph& g, const RefineResult
   // eq. (4b), (4g): C = C ∪ Y \ {c}
   expect_change(before.C, g.C, r.Y, {c}, "C", op, "refine-count", "§2.1 eq. (4b), (4g)");
   // eq. (4h), (5b): N = N ∪ {c} ∪ J+
-  VertexSet gained = r.J_plus;
+  PointSet gained = r.J_plus;
   gained.insert(c);
   expect_change(before.N, g.N, gained, {}, "N", op, "refine-count", "§2.1 eq. (4h), (5b)");
 }
 
 }  // namespace
 
-CoarsenResult checked_coarsen(Graph& g, const Vertex& n) {
+CoarsenResult checked_coarsen(Graph& g, const Point& n) {
   const std::string op = "coarsen " + inv::pos(n);
   validate(g, "before " + op);
   Graph before = g;
@@ -114,7 +114,7 @@ CoarsenResult checked_coarsen(Graph& g, const Vertex& n) {
 
 namespace {
 
-void check_coarsen_result(const Graph& before, const Graph& g, const CoarsenResult& r, const Vertex& n,
+void check_coarsen_result(const Graph& before, const Graph& g, const CoarsenResult& r, const Point& n,
                           const std::string& op) {
   if (!r.applied()) {
     if (!(g == before))
@@ -135,7 +135,7 @@ void check_coarsen_result(const Graph& before, const Graph& g, const CoarsenResu
   // eq. (9e), (9f): C = C ∪ {n} \ Y
   expect_change(before.C, g.C, {n}, r.Y, "C", op, "coarsen-count", "§2.2 eq. (9e), (9f)");
   // eq. (9d), (10c): N = N \ {n} \ J-
-  VertexSet lost = r.J_minus;
+  PointSet lost = r.J_minus;
   lost.insert(n);
   expect_change(before.N, g.N, {}, lost, "N", op, "coarsen-count", "§2.2 eq. (9d), (10c)");
 }

@@ -20,7 +20,7 @@
 
 namespace bccmis {
 
-RefineResult checked_refine(Graph& g, const Vertex& c);
-CoarsenResult checked_coarsen(Graph& g, const Vertex& n);
+RefineResult checked_refine(Graph& g, const Point& c);
+CoarsenResult checked_coarsen(Graph& g, const Point& n);
 
 }  // namespace bccmis

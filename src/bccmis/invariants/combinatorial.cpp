@@ -1,5 +1,5 @@
 // Layer 1, combinatorial (Erleben 2009, §2 and §2.2): the sets N and C and the
-// neighbour sets form a symmetric bipartite graph over existing vertices, and
+// neighbor sets form a symmetric bipartite graph over existing vertices, and
 // exactly the centers carry a level.
 //
 // Each check finds its first offender in sorted order, by merge walks over the
@@ -7,12 +7,12 @@
 // failing check in this order is reported:
 //   lattice-size       1 <= W, H; 0 <= L <= 61; W*S, H*S <= 2^62         §1
 //   partition          N ∩ C = ∅                                         §2
-//   neighbor-entry     every v in N ∪ C has an entry in the neighbour map  §2
+//   neighbor-entry     every v in N ∪ C has an entry in the neighbor map  §2
 //   stale-entry        no entry for a position that is not a vertex       §2.2
-//   dangling-neighbor  every listed neighbour is a vertex                 §2.2
+//   dangling-neighbor  every listed neighbor is a vertex                 §2.2
 //   bipartite          nodes list only centers, centers only nodes        §2
 //   symmetry           w ∈ 𝒩(v) ⇔ v ∈ 𝒩(w)                               §2
-//   empty-neighbors    no vertex has an empty neighbour set               §2
+//   empty-neighbors    no vertex has an empty neighbor set               §2
 //   missing-level      every center has a level                           §2.1 ¶1
 //   stray-level        only centers have a level                          §2.1 ¶1
 #include <optional>
@@ -56,23 +56,23 @@ std::optional<Violation> check_combinatorial(const Graph& g) {
     }
   }
 
-  // neighbor-entry: every vertex has an entry in the neighbour map (§2 "for
+  // neighbor-entry: every vertex has an entry in the neighbor map (§2 "for
   // each c in C we store a neighbor set"; likewise for each node). Centers
   // first, then nodes.
   for (const bool centers : {true, false}) {
-    const VertexSet& set = centers ? g.C : g.N;
+    const PointSet& set = centers ? g.C : g.N;
     auto e = g.neighbors.begin();
     for (const Point& v : set) {
       while (e != g.neighbors.end() && e->first < v) ++e;
       if (e == g.neighbors.end() || e->first != v)
         return violation(layer, "neighbor-entry", {v},
                          std::string(kind(centers)) + " " + pos(v) +
-                             " has no neighbour set (no entry in the neighbour map)",
+                             " has no neighbor set (no entry in the neighbor map)",
                          "§2");
     }
   }
 
-  // stale-entry: no neighbour-map entry for a position that is not a vertex,
+  // stale-entry: no neighbor-map entry for a position that is not a vertex,
   // e.g. a deleted Y or J- vertex whose entry was left behind (§2.2). After
   // this and neighbor-entry, the keys of the map are exactly N ∪ C.
   {
@@ -83,7 +83,7 @@ std::optional<Violation> check_combinatorial(const Graph& g) {
       while (c != g.C.end() && *c < v) ++c;
       if ((n == g.N.end() || *n != v) && (c == g.C.end() || *c != v))
         return violation(layer, "stale-entry", {v},
-                         pos(v) + " has a neighbour set of " + std::to_string(nbrs.size()) +
+                         pos(v) + " has a neighbor set of " + std::to_string(nbrs.size()) +
                              " but is neither a node nor a center (a deleted vertex left behind?)",
                          "§2.2");
     }
@@ -91,7 +91,7 @@ std::optional<Violation> check_combinatorial(const Graph& g) {
 
   // One pass over the edges finds the first violation of each of these, in
   // sorted order; they are reported in this order of priority:
-  //   dangling-neighbor: every listed neighbour exists (§2.2: deleted Y and
+  //   dangling-neighbor: every listed neighbor exists (§2.2: deleted Y and
   //     J- vertices must be unhooked, eq. 9a and 11b);
   //   bipartite: edges only join a node and a center (§2 "we do not store
   //     edges where v_i and v_j both belong to the same vertex-set");
@@ -106,7 +106,7 @@ std::optional<Violation> check_combinatorial(const Graph& g) {
       const bool v_center = c != g.C.end() && *c == v;
       const std::string k = kind(v_center);
       if (nbrs.empty() && !empty)
-        empty = violation(layer, "empty-neighbors", {v}, k + " " + pos(v) + " has an empty neighbour set", "§2");
+        empty = violation(layer, "empty-neighbors", {v}, k + " " + pos(v) + " has an empty neighbor set", "§2");
       for (const Point& w : nbrs) {
         const auto entry = g.neighbors.find(w);
         if (entry == g.neighbors.end())

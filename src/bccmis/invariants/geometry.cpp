@@ -52,7 +52,7 @@ std::optional<Violation> check_geometry(const Graph& g) {
                        "§1 ¶8");
   }
 
-  // After layer 1 the keys of the neighbour map are exactly N ∪ C, sorted.
+  // After layer 1 the keys of the neighbor map are exactly N ∪ C, sorted.
   for (const auto& [v, nbrs] : g.neighbors)
     if (!domain.contains(v))
       return violation(layer, "outside-domain", {v},

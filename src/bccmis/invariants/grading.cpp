@@ -2,10 +2,10 @@
 //   grading   two cells that share a side differ in level by at most 1.
 //
 // "Share a side" is taken from the graph, as the paper's eq. (3) does: cells a
-// and b are edge neighbours iff they have at least two boundary nodes in
+// and b are edge neighbors iff they have at least two boundary nodes in
 // common, |𝒩(a) ∩ 𝒩(b)| >= 2. After layer 2 this is exactly geometric edge
-// adjacency (spec/invariants.md): same-level neighbours share two corners, a
-// coarse cell and a finer neighbour share a corner and the junction, and cells
+// adjacency (spec/invariants.md): same-level neighbors share two corners, a
+// coarse cell and a finer neighbor share a corner and the junction, and cells
 // that touch only at a corner share one node. So cells meeting only at a
 // corner may differ by 2 levels (never more); that is allowed.
 //
@@ -46,7 +46,7 @@ std::optional<Violation> check_grading(const Graph& g) {
         return violation(layer, "grading", {a, b},
                          "cells " + pos(a) + " (level " + std::to_string(la) + ") and " + pos(b) + " (level " +
                              std::to_string(lb) + ") share a side but differ by " +
-                             std::to_string(diff < 0 ? -diff : diff) + " levels; edge neighbours differ by at most 1",
+                             std::to_string(diff < 0 ? -diff : diff) + " levels; edge neighbors differ by at most 1",
                          "§1 ¶8");
     }
   }

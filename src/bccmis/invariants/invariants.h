@@ -10,7 +10,7 @@
 //   1. combinatorial: partition, bipartite, symmetry, existence, level entries;
 //   2. structural:    each cell lists its 4 corners and only side midpoints;
 //                     exact node degree per kind (1, 2, 3 or 4);
-//   3. grading:       edge-neighbouring cells (eq. 3's X) differ by <= 1 level;
+//   3. grading:       edge-neighboring cells (eq. 3's X) differ by <= 1 level;
 //   4. geometry:      levels, positions, and the cells tile the domain;
 //   5. triangulation: CGAL cross-check, a separate target
 //                     (src/bccmis/invariants/cgal/bccmis/triangulation_check.h).

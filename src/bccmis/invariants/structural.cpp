@@ -17,7 +17,7 @@
 //   boundary-junction  no cell lists a midpoint of a side on the domain
 //                      boundary (no finer cell can lie beyond it)          §2.1 eq. (6a)
 //   junction-degree    a node listed as a side midpoint has exactly 3
-//                      neighbours: that one coarse cell and two cells that
+//                      neighbors: that one coarse cell and two cells that
 //                      have it as a corner                                 §2.1 ¶2
 #include <optional>
 
@@ -28,8 +28,8 @@ namespace bccmis::inv {
 
 namespace {
 
-std::string neighbours_text(std::size_t k) {
-  return std::to_string(k) + (k == 1 ? " neighbour" : " neighbours");
+std::string neighbors_text(std::size_t k) {
+  return std::to_string(k) + (k == 1 ? " neighbor" : " neighbors");
 }
 
 }  // namespace
@@ -39,11 +39,11 @@ std::optional<Violation> check_structural(const Graph& g) {
   const Domain domain(g.size);
 
   for (const Point& c : g.C) {
-    const VertexSet& nbrs = g.nbr(c);
+    const PointSet& nbrs = g.nbr(c);
     // center-degree: the paper's ‖P‖ = 4 and at most one junction per side.
     if (nbrs.size() < 4 || nbrs.size() > 8)
       return violation(layer, "center-degree", {c},
-                       "center " + pos(c) + " has " + neighbours_text(nbrs.size()) +
+                       "center " + pos(c) + " has " + neighbors_text(nbrs.size()) +
                            "; a cell lists its 4 corners and at most 4 side midpoints (4..8)",
                        "§2.1");
     const std::optional<int> level = domain.center_level(c);
@@ -67,10 +67,10 @@ std::optional<Violation> check_structural(const Graph& g) {
   }
 
   for (const Point& n : g.N) {
-    const VertexSet& nbrs = g.nbr(n);
+    const PointSet& nbrs = g.nbr(n);
     if (nbrs.size() > 4)
       return violation(layer, "node-degree", {n},
-                       "node " + pos(n) + " has " + neighbours_text(nbrs.size()) +
+                       "node " + pos(n) + " has " + neighbors_text(nbrs.size()) +
                            "; a node has 1 to 4 (at most 4 cells meet at a point)",
                        "§1 ¶5");
     const Place place = domain.place(n);
@@ -81,7 +81,7 @@ std::optional<Violation> check_structural(const Graph& g) {
     for (const Point& c : nbrs) {
       const std::optional<int> level = domain.center_level(c);
       if (!level) {
-        judged = false;  // a neighbour layer 4 will report
+        judged = false;  // a neighbor layer 4 will report
         break;
       }
       const Role r = role_of(c, domain.half(*level), n);
@@ -107,19 +107,19 @@ std::optional<Violation> check_structural(const Graph& g) {
       if (nbrs.size() != 3)
         return violation(layer, "junction-degree", {n, as_midpoint.front()},
                          "junction " + pos(n) + " (a side midpoint of center " + pos(as_midpoint.front()) + ") has " +
-                             neighbours_text(nbrs.size()) +
+                             neighbors_text(nbrs.size()) +
                              "; a junction has exactly 3: the coarse cell and the two finer cells beside it",
                          "§2.1 ¶2");
       continue;
     }
-    // Every neighbour has n as a corner: the cells meeting at n fill all the
+    // Every neighbor has n as a corner: the cells meeting at n fill all the
     // quadrants around n that lie in the domain.
     const std::size_t expected = place == Place::DomainCorner ? 1 : place == Place::Boundary ? 2 : 4;
     if (as_corner != expected) {
       const char* kind = place == Place::DomainCorner ? "domain corner"
                          : place == Place::Boundary   ? "boundary node"
                                                       : "interior node";
-      std::string text = std::string(kind) + " " + pos(n) + " has " + neighbours_text(as_corner) + ", ";
+      std::string text = std::string(kind) + " " + pos(n) + " has " + neighbors_text(as_corner) + ", ";
       if (place == Place::Interior)
         text += "none of which has it as a side midpoint; an interior corner has 4 (a junction 3, one of them the "
                 "coarse cell that has it as a side midpoint)";

@@ -187,7 +187,7 @@ Trace random_trace(std::mt19937_64& rng, int max_ops) {
     TraceCommand c;
     c.line = i + 2;
     const std::int64_t r = uniform(0, 99);
-    auto pick = [&](const VertexSet& s) {
+    auto pick = [&](const PointSet& s) {
       auto it = s.begin();
       std::advance(it, uniform(0, static_cast<std::int64_t>(s.size()) - 1));
       return *it;

@@ -11,7 +11,7 @@ namespace {
 
 std::string pos(const Point& p) { return to_string(p); }
 
-std::string list(const VertexSet& s) {
+std::string list(const PointSet& s) {
   std::string r;
   for (const Point& p : s) {
     if (!r.empty()) r += ' ';
@@ -67,7 +67,7 @@ std::vector<std::string> diff_states(const Graph& a, const Graph& b) {
   std::vector<std::string> out;
   if (!(a.size == b.size))
     out.push_back("lattice: A is " + lattice_text(a.size) + ", B is " + lattice_text(b.size));
-  VertexSet all;
+  PointSet all;
   for (const Graph* g : {&a, &b}) {
     all.insert(g->N.begin(), g->N.end());
     all.insert(g->C.begin(), g->C.end());
@@ -91,13 +91,13 @@ std::vector<std::string> diff_states(const Graph& a, const Graph& b) {
     if (a.is_center(p) && a.level.count(p) && b.level.count(p) && a.level.at(p) != b.level.at(p))
       out.push_back(pos(p) + ": level " + std::to_string(a.level.at(p)) + " in A, " +
                     std::to_string(b.level.at(p)) + " in B");
-    const VertexSet& na = a.nbr(p);
-    const VertexSet& nb = b.nbr(p);
+    const PointSet& na = a.nbr(p);
+    const PointSet& nb = b.nbr(p);
     if (na != nb) {
-      VertexSet only_a, only_b;
+      PointSet only_a, only_b;
       std::set_difference(na.begin(), na.end(), nb.begin(), nb.end(), std::inserter(only_a, only_a.end()));
       std::set_difference(nb.begin(), nb.end(), na.begin(), na.end(), std::inserter(only_b, only_b.end()));
-      out.push_back("neighbours of " + pos(p) + ": only in A: " + list(only_a) + "; only in B: " + list(only_b));
+      out.push_back("neighbors of " + pos(p) + ": only in A: " + list(only_a) + "; only in B: " + list(only_b));
     }
   }
   return out;

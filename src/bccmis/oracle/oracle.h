@@ -13,7 +13,7 @@ namespace bccmis {
 
 /// The semantic difference of two states, by position: one line per
 /// difference (lattice size, vertex only in A or only in B, vertex of another
-/// kind, different level, different neighbour sets). Empty iff A == B.
+/// kind, different level, different neighbor sets). Empty iff A == B.
 std::vector<std::string> diff_states(const Graph& a, const Graph& b);
 
 /// Counts describing a state (the `bccmis stats` output).

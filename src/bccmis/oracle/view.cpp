@@ -31,7 +31,7 @@ std::string points_json(const std::vector<Point>& ps) {
   }
   return out + "]";
 }
-std::string points_json(const VertexSet& s) { return points_json(std::vector<Point>(s.begin(), s.end())); }
+std::string points_json(const PointSet& s) { return points_json(std::vector<Point>(s.begin(), s.end())); }
 
 bool has_vertex(const Graph& g, const Point& p) { return g.is_center(p) || g.is_node(p); }
 
@@ -124,20 +124,20 @@ class ModelBuilder {
     std::optional<Point> at;
     std::string decision;  ///< "ok", "refused <code>", or empty
     int level = -1;        ///< refine: level of c; coarsen: level of the new cell
-    VertexSet Y, J;        ///< refine: Y and J+; coarsen: removed Y and J-
+    PointSet Y, J;        ///< refine: Y and J+; coarsen: removed Y and J-
   };
 
   /// A step whose changes are anywhere: compares every vertex.
   void add(const Step& s, const Graph& now) { finish(s, now, changed_positions(prev_, now)); }
 
   /// A refine or coarsen step: every edge the operation adds or removes has an
-  /// end in `seeds` (c or n, Y, J+ or J-) or in their neighbour sets before or
+  /// end in `seeds` (c or n, Y, J+ or J-) or in their neighbor sets before or
   /// after, so only the two-ring of the seeds in both states is compared.
   /// Every `kVerifyEvery` steps the whole mirror is compared with `now`.
-  void add_local(const Step& s, const Graph& now, VertexSet seeds) {
-    VertexSet region = seeds;
+  void add_local(const Step& s, const Graph& now, PointSet seeds) {
+    PointSet region = seeds;
     for (int ring = 0; ring < 2; ++ring) {
-      VertexSet next = region;
+      PointSet next = region;
       for (const Point& p : region)
         for (const Graph* g : {static_cast<const Graph*>(&prev_), &now}) next.insert(g->nbr(p).begin(), g->nbr(p).end());
       region = std::move(next);
@@ -285,7 +285,7 @@ ViewResult view_trace(const Trace& trace, const ViewOptions& o) {
       throw ViewLimitError(c.line, "after '" + s.label + "' the lattice has " + std::to_string(vertices) +
                                        " vertices, above the limit of " + std::to_string(o.max_vertices) +
                                        " (--max-vertices)");
-    VertexSet seeds = s.Y;
+    PointSet seeds = s.Y;
     seeds.insert(s.J.begin(), s.J.end());
     if (s.at) seeds.insert(*s.at);
     model.add_local(s, g, std::move(seeds));

@@ -265,7 +265,7 @@ Graph import_leaves(const LatticeSize& size, std::span<const Leaf> input) {
       throw ImportError("bccmis::p4est_bridge: leaves overlap: " + describe(leaf) + " is a leaf and contains other leaves");
   // Refine coarsest first. Before level k, every refined cell coarser than k
   // is refined, so a cell coarser than k is a leaf of the input. refine(c)
-  // (eq. 3, erratum E4) refuses exactly when an edge-neighbour of c is such
+  // (eq. 3, erratum E4) refuses exactly when an edge-neighbor of c is such
   // a leaf, i.e. when a leaf of level >= k+1 inside c and a leaf of level
   // < k across c's side differ by 2 or more: the input is not face balanced.
   std::sort(refined.begin(), refined.end(), level_first);
@@ -275,7 +275,7 @@ Graph import_leaves(const LatticeSize& size, std::span<const Leaf> input) {
     if (r.refused == RefineRefusal::CoarserNeighbor)
       throw ImportError("bccmis::p4est_bridge: the forest is not face balanced (2:1 across faces): " + describe(c) +
                         " holds leaves of level " + std::to_string(c.level + 1) +
-                        " or finer, but an edge-neighbour is a leaf coarser than level " + std::to_string(c.level));
+                        " or finer, but an edge-neighbor is a leaf coarser than level " + std::to_string(c.level));
     if (!r.applied())
       throw ImportError("bccmis::p4est_bridge: " + describe(c) + " cannot be refined: " + std::string(code(*r.refused)));
   }

@@ -7,7 +7,7 @@
 // Graph and for fast::Lattice (the overloads in balance.h, animate.h and
 // heightfield.h). A lattice is reached only through the overloads in the
 // `access` section below: the same queries and operations under the same
-// names, with the same (x, y)-sorted neighbour order, so both instantiations
+// names, with the same (x, y)-sorted neighbor order, so both instantiations
 // make the same decisions in the same order (tests/apps_fast_test.cpp and
 // RunAnimate.FastImplMakesTheSameFramesAndState compare states and reports).
 #pragma once
@@ -34,22 +34,20 @@ namespace bccmis::detail {
 
 // ---- access -----------------------------------------------------------------------
 
-inline const LatticeSize& size_of(const Graph& g) { return g.size; }
-inline const LatticeSize& size_of(const fast::Lattice& g) { return g.size(); }
 
 /// 𝒩(v): a reference to the set (reference) or a sorted copy (fast).
-inline const VertexSet& nbr_of(const Graph& g, const Point& v) { return g.nbr(v); }
+inline const PointSet& nbr_of(const Graph& g, const Point& v) { return g.nbr(v); }
 inline fast::SmallPoints<8> nbr_of(const fast::Lattice& g, const Point& v) { return g.nbr(v); }
 
-inline bool holds(const VertexSet& s, const Point& p) { return s.count(p) != 0; }
+inline bool holds(const PointSet& s, const Point& p) { return s.count(p) != 0; }
 template <std::size_t K>
 bool holds(const fast::SmallPoints<K>& s, const Point& p) { return s.contains(p); }
 
 /// C, sorted by (x, y).
-inline const VertexSet& cells_of(const Graph& g) { return g.C; }
+inline const PointSet& cells_of(const Graph& g) { return g.C; }
 inline std::vector<Point> cells_of(const fast::Lattice& g) { return g.cells(); }
 /// N, sorted by (x, y).
-inline const VertexSet& nodes_of(const Graph& g) { return g.N; }
+inline const PointSet& nodes_of(const Graph& g) { return g.N; }
 inline std::vector<Point> nodes_of(const fast::Lattice& g) { return g.nodes(); }
 
 inline std::optional<RefineRefusal> can_refine_at(const Graph& g, const Point& c) { return can_refine(g, c); }
@@ -66,7 +64,7 @@ inline bool coarsen_at(fast::Lattice& g, const Point& n) { return g.coarsen(n).a
 
 // ---- balance (balance.h) ------------------------------------------------------------
 
-/// Calls f(x) for every neighbour x of center c under mode b (x may repeat):
+/// Calls f(x) for every neighbor x of center c under mode b (x may repeat):
 /// edge, the cells across a side piece of c (eq. 3's X, erratum E4): two
 /// boundary nodes of c share a second cell exactly when they are the ends of
 /// one side piece of c (a corner and a corner, or a corner and a junction);
@@ -91,7 +89,7 @@ void for_each_neighbor(const Lat& g, const Point& c, Balance b, const F& f) {
   }
 }
 
-/// The smallest (by (x, y)) neighbour of c under mode b that is coarser than
+/// The smallest (by (x, y)) neighbor of c under mode b that is coarser than
 /// c, i.e. the first coarser element of edge_neighbors / touching_neighbors.
 template <class Lat>
 std::optional<Point> coarser_neighbor(const Lat& g, const Point& c, Balance b) {
@@ -130,7 +128,7 @@ std::optional<CoarsenRefusal> can_coarsen_under(const Lat& g, const Point& n, Ba
 }
 
 // Precondition: c is a center below the maximum level. Every coarser
-// neighbour x has level(x) < level(c), so the recursion depth is at most L.
+// neighbor x has level(x) < level(c), so the recursion depth is at most L.
 template <class Lat>
 void cascade(Lat& g, const Point& c, Balance b, std::vector<Point>& refined) {
   while (can_refine_under(g, c, b) == RefineRefusal::CoarserNeighbor) {
@@ -162,7 +160,7 @@ std::size_t coarsen_sweep(Lat& g, const Allow& allow, Balance b) {
   // Only refined centers can be coarsened; the position test is cheap and
   // keeps the pass from calling the predicate on grid nodes and midpoints.
   // Finest first: merging the children of a cell can make the cell itself
-  // (one level up) or a neighbour blocked by a finer junction mergeable, so
+  // (one level up) or a neighbor blocked by a finer junction mergeable, so
   // one pass usually reaches the fixpoint.
   std::vector<std::pair<int, Point>> candidates;
   for (const Point& n : nodes_of(g))
@@ -185,11 +183,11 @@ std::size_t coarsen_where(Lat& g, const Allow& allow, Balance b) {
 }
 
 template <class Lat>
-VertexSet boundary_after_coarsen(const Lat& g, const Point& n) {
+PointSet boundary_after_coarsen(const Lat& g, const Point& n) {
   const auto& Y = nbr_of(g, n);
   const int child_level = Y.empty() ? 0 : g.level_of(*Y.begin());
   const std::int64_t half = cell_side(size_of(g), child_level);  // half the merged cell's side
-  VertexSet B;
+  PointSet B;
   for (const Point& y : Y)
     for (const Point& p : nbr_of(g, y)) {
       if (p == n || B.count(p) != 0) continue;

@@ -42,7 +42,7 @@ K::Point_2 point(const Point& p) { return {exact(p.x), exact(p.y)}; }
 
 // Sorts the boundary nodes of a cell counter-clockwise around its center,
 // starting at angle 0 (exact: 128-bit cross products of 64-bit differences).
-std::vector<Point> angular(const Point& c, const VertexSet& ring) {
+std::vector<Point> angular(const Point& c, const PointSet& ring) {
   std::vector<Point> out(ring.begin(), ring.end());
   auto upper = [&c](const Point& p) {
     const Int128 dx = Int128{p.x} - c.x, dy = Int128{p.y} - c.y;
@@ -87,7 +87,7 @@ std::optional<Violation> find_triangulation_violation(const Graph& g) {
   const std::int64_t width = g.size.W * S, height = g.size.H * S;
   // Every vertex lies in the domain (this also keeps the 128-bit angular
   // comparisons below exact: coordinates are then at most 2^62).
-  for (const VertexSet* set : {&g.C, &g.N})
+  for (const PointSet* set : {&g.C, &g.N})
     for (const Point& v : *set)
       if (v.x < 0 || v.y < 0 || v.x > width || v.y > height)
         return violation("hull-domain", {v},
@@ -100,7 +100,7 @@ std::optional<Violation> find_triangulation_violation(const Graph& g) {
   std::map<Edge, std::string> expected;
   auto is_vertex = [&g](const Point& v) { return g.N.count(v) != 0 || g.C.count(v) != 0; };
   for (const Point& c : g.C) {
-    VertexSet ring;
+    PointSet ring;
     for (const Point& n : g.nbr(c))
       if (is_vertex(n)) {
         ring.insert(n);
@@ -118,7 +118,7 @@ std::optional<Violation> find_triangulation_violation(const Graph& g) {
   Triangulation t;
   std::map<Point, VertexHandle> handle;
   std::map<VertexHandle, Point> vertex;
-  for (const VertexSet* set : {&g.N, &g.C})
+  for (const PointSet* set : {&g.N, &g.C})
     for (const Point& v : *set) {
       const VertexHandle h = t.insert(point(v));
       handle[v] = h;
