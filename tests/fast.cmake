@@ -13,6 +13,12 @@ if(TARGET bccmis::fast)
   target_compile_definitions(fast_lattice_test PRIVATE BCCMIS_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   gtest_discover_tests(fast_lattice_test DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
 
+  # The streamed canonical states and decision lines against the texts built
+  # line by line (both lattices, random states).
+  add_executable(output_paths_test output_paths_test.cpp)
+  target_link_libraries(output_paths_test PRIVATE bccmis::fast GTest::gtest_main bccmis::warnings)
+  gtest_discover_tests(output_paths_test DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
+
   # No allocation per operation in steady state; strong guarantee (replaces
   # the global operator new, so its own executable).
   add_executable(fast_alloc_test fast_alloc_test.cpp)

@@ -2,9 +2,11 @@
 
 #include <ostream>
 
+#include "bccmis/text_writer.h"
 #include "bccmis/trace.h"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cstdio>
 #include <cstdint>
@@ -128,9 +130,24 @@ class LineParser {
 
 // Trace tokens: separated by spaces or tabs; '#' starts a comment; a trailing
 // '\r' (CRLF files) is ignored. Other control bytes are errors.
-std::vector<Token> trace_tokens(std::string_view line, const LineParser& lp) {
+// A command has at most four tokens: the first five are kept (an arity error
+// names the column of the first extra one), the rest only counted.
+struct TraceTokens {
+  static constexpr std::size_t kKept = 5;
+  std::array<Token, kKept> kept{};
+  std::size_t count = 0;
+  bool empty() const { return count == 0; }
+  std::size_t size() const { return count; }
+  const Token& operator[](std::size_t i) const { return kept[i]; }
+  void push_back(const Token& t) {
+    if (count < kKept) kept[count] = t;
+    ++count;
+  }
+};
+
+TraceTokens trace_tokens(std::string_view line, const LineParser& lp) {
   if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-  std::vector<Token> tokens;
+  TraceTokens tokens;
   std::size_t i = 0;
   while (i < line.size()) {
     const char ch = line[i];
@@ -175,14 +192,6 @@ std::vector<Token> state_tokens(std::string_view line, const LineParser& lp) {
   return tokens;
 }
 
-// Built by appending (see to_string(Point) in graph.cpp).
-std::string point_text(const Point& p) {
-  std::string t = std::to_string(p.x);
-  t += ' ';
-  t += std::to_string(p.y);
-  return t;
-}
-
 // A position in an error message.
 std::string shown(const Point& p) { return to_string(p); }
 
@@ -216,35 +225,49 @@ std::string json_string(std::string_view text, bool html_safe) {
 
 // ---- Canonical state ---------------------------------------------------------
 
-void write_canonical_state(std::ostream& out, const Graph& g) { out << canonical_state(g); }
-
-std::string canonical_state(const Graph& g) {
-  std::string out = "bccmis-state 1\nlattice " + std::to_string(g.size.W) + " " +
-                    std::to_string(g.size.H) + " " + std::to_string(g.size.L) + "\n";
+void write_canonical_state(std::ostream& out, const Graph& g) {
+  TextWriter w(out);
+  w.put("bccmis-state 1\nlattice ");
+  w.put_int(g.size.W);
+  w.put(' ');
+  w.put_int(g.size.H);
+  w.put(' ');
+  w.put_int(g.size.L);
+  w.put('\n');
   auto neighbors = [&](const Point& v) {
-    out += " :";
-    for (const Point& w : g.nbr(v)) {
-      out += ' ';
-      out += point_text(w);
-    }
-    out += "\n";
+    w.put(" :");
+    for (const Point& b : g.nbr(v)) w.put_point(b.x, b.y);
+    w.put('\n');
   };
+  // g.level holds the levels of the centers (and, in a graph built by hand,
+  // maybe of other points): walked beside g.C, both sorted.
+  auto level = g.level.begin();
   for (const Point& c : g.C) {
-    auto it = g.level.find(c);
-    out += "C ";
-    out += point_text(c);
-    out += ' ';
-    out += it == g.level.end() ? std::string("?") : std::to_string(it->second);
+    w.put('C');
+    w.put_point(c.x, c.y);
+    w.put(' ');
+    while (level != g.level.end() && level->first < c) ++level;
+    if (level != g.level.end() && level->first == c) {
+      w.put_int(level->second);
+    } else {
+      w.put('?');
+    }
     neighbors(c);
   }
   for (const Point& n : g.N) {
-    out += "N ";
-    out += point_text(n);
+    w.put('N');
+    w.put_point(n.x, n.y);
     neighbors(n);
   }
-  out += "end " + std::to_string(g.C.size()) + " " + std::to_string(g.N.size()) + "\n";
-  return out;
+  w.put("end ");
+  w.put_int(static_cast<std::int64_t>(g.C.size()));
+  w.put(' ');
+  w.put_int(static_cast<std::int64_t>(g.N.size()));
+  w.put('\n');
+  w.flush();
 }
+
+std::string canonical_state(const Graph& g) { return canonical_text(g); }
 
 Graph parse_state(std::string_view text, std::string_view file) {
   const std::vector<std::string_view> lines = split_lines(text);
@@ -355,16 +378,16 @@ Trace parse_trace(std::string_view text, std::string_view file, const TraceLimit
   Trace trace;
   trace.file = std::string(file);
   bool have_lattice = false;
-  const std::vector<std::string_view> lines = split_lines(text);
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    const int line_no = static_cast<int>(i) + 1;
+  trace.commands.reserve(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1);
+  int line_no = 0;
+  auto parse_line = [&](std::string_view line) {
     const LineParser lp(file, line_no);
-    const auto t = trace_tokens(lines[i], lp);
-    if (t.empty()) continue;
+    const auto t = trace_tokens(line, lp);
+    if (t.empty()) return;
     const std::string_view cmd = t[0].text;
     auto arity = [&](std::size_t n, const char* usage) {
       if (t.size() != n + 1)
-        lp.fail(t.size() > n + 1 ? t[n + 1].column : static_cast<int>(lines[i].size()) + 1,
+        lp.fail(t.size() > n + 1 ? t[n + 1].column : static_cast<int>(line.size()) + 1,
                 std::string(t.size() > n + 1 ? "too many arguments" : "too few arguments") + "; usage: " + usage);
     };
     if (cmd == "lattice") {
@@ -377,7 +400,7 @@ Trace parse_trace(std::string_view text, std::string_view file, const TraceLimit
                                  (v == INT64_MAX ? std::string("more than 2^63") : std::to_string(v)) + ")");
       trace.lattice_line = line_no;
       have_lattice = true;
-      continue;
+      return;
     }
     TraceCommand c;
     c.line = line_no;
@@ -392,35 +415,68 @@ Trace parse_trace(std::string_view text, std::string_view file, const TraceLimit
     }
     if (!have_lattice) lp.fail(t[0].column, "'" + std::string(cmd) + "' before the 'lattice W H L' command");
     trace.commands.push_back(c);
+  };
+  // Lines end at '\n'; the text after the last one is a line too (empty when
+  // the text ends with a newline).
+  for (std::size_t start = 0;;) {
+    ++line_no;
+    const std::size_t nl = text.find('\n', start);
+    parse_line(text.substr(start, nl == std::string_view::npos ? std::string_view::npos : nl - start));
+    if (nl == std::string_view::npos) break;
+    start = nl + 1;
   }
   if (!have_lattice) {
     // Point at the last line of the file (not past a final newline).
-    const int last = static_cast<int>(lines.size()) - (lines.size() > 1 && lines.back().empty() ? 1 : 0);
+    const int last = line_no - (line_no > 1 && text.back() == '\n' ? 1 : 0);
     throw ParseError(std::string(file), std::max(last, 1), 1, "no 'lattice W H L' command (a trace starts with one)");
   }
+  trace.commands.shrink_to_fit();
   return trace;
 }
 
 std::string format_trace(const Trace& trace) {
   std::string out = "lattice " + std::to_string(trace.size.W) + " " + std::to_string(trace.size.H) + " " +
                     std::to_string(trace.size.L) + "\n";
-  for (const TraceCommand& c : trace.commands) out += command_text(c) + "\n";
+  for (const TraceCommand& c : trace.commands) {
+    append_command_text(out, c);
+    out += '\n';
+  }
   return out;
 }
 
-std::string command_text(const TraceCommand& cmd) {
+void append_command_text(std::string& out, const TraceCommand& cmd) {
+  std::string_view keyword = "check";
   switch (cmd.kind) {
-    case TraceCommand::Kind::Refine: return "refine " + point_text(cmd.at);
-    case TraceCommand::Kind::Coarsen: return "coarsen " + point_text(cmd.at);
+    case TraceCommand::Kind::Refine: keyword = "refine"; break;
+    case TraceCommand::Kind::Coarsen: keyword = "coarsen"; break;
     case TraceCommand::Kind::Check: break;
   }
-  return "check";
+  out += keyword;
+  if (cmd.kind == TraceCommand::Kind::Check) return;
+  char buf[TextWriter::kPointBytes];
+  out.append(buf, TextWriter::write_point(buf, cmd.at.x, cmd.at.y));
+}
+
+void append_decision_line(std::string& out, const TraceCommand& cmd, std::string_view refusal_code) {
+  append_command_text(out, cmd);
+  if (refusal_code.empty()) {
+    out += " ok";
+    return;
+  }
+  out += " refused ";
+  out += refusal_code;
+}
+
+std::string command_text(const TraceCommand& cmd) {
+  std::string out;
+  append_command_text(out, cmd);
+  return out;
 }
 
 std::string decision_line(const TraceCommand& cmd, std::string_view refusal_code) {
-  const std::string out = command_text(cmd);
-  if (refusal_code.empty()) return out + " ok";
-  return out + " refused " + std::string(refusal_code);
+  std::string out;
+  append_decision_line(out, cmd, refusal_code);
+  return out;
 }
 
 Graph replay(const Trace& trace, std::string& log, const ReplayObserver& after) {

@@ -71,10 +71,14 @@ std::string format_trace(const Trace& trace);
 
 /// A command as trace text without the newline: `refine 4 4`, `check`.
 std::string command_text(const TraceCommand& cmd);
+/// command_text(cmd) appended to `out`.
+void append_command_text(std::string& out, const TraceCommand& cmd);
 
 /// One decision-log line without the newline, e.g. `refine 4 4 ok` or
 /// `coarsen 8 8 refused not-a-refined-center`.
 std::string decision_line(const TraceCommand& cmd, std::string_view refusal_code);
+/// decision_line(cmd, refusal_code) appended to `out`.
+void append_decision_line(std::string& out, const TraceCommand& cmd, std::string_view refusal_code);
 
 /// `text` as a JSON string literal (RFC 8259), quotes included: `"`, `\`,
 /// newline, tab and carriage return get their short escapes, other control

@@ -8,6 +8,8 @@
 #pragma once
 
 #include <concepts>
+#include <cstddef>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -56,8 +58,18 @@ StepResult<L> step(L& g, const TraceCommand& cmd) {
 template <AdaptiveLattice L>
 void append_decision(std::string& log, const TraceCommand& cmd, const StepResult<L>& r) {
   if (r.is_check()) return;
-  log += decision_line(cmd, r.refusal());
+  append_decision_line(log, cmd, r.refusal());
   log += '\n';
+}
+
+/// The most cells g can have while `trace` is replayed on it: its cells now
+/// and 3 more per refine command (saturated).
+template <AdaptiveLattice L>
+std::size_t max_cells(const L& g, const Trace& trace) {
+  std::size_t refines = 0;
+  for (const TraceCommand& cmd : trace.commands) refines += cmd.kind == TraceCommand::Kind::Refine ? 1 : 0;
+  const std::size_t room = std::numeric_limits<std::size_t>::max() - cell_count(g);
+  return cell_count(g) + (refines > room / 3 ? room : 3 * refines);
 }
 
 /// An observer that does nothing.
@@ -67,7 +79,10 @@ struct NoObserver {
 };
 
 /// Replays `trace` from its initial lattice: one decision-log line per refine
-/// and coarsen appended to `log`. After every command, `after` (if callable)
+/// and coarsen appended to `log`. A lattice that can reserve (an optional
+/// `reserve(g, cells)` of its vocabulary) is first given room for
+/// max_cells(g, trace), so that it does not grow (copying its arrays) on the
+/// way. After every command, `after` (if callable)
 /// is called with the command, the lattice, the command's decision line
 /// (without the newline; empty for check) and, if it takes a fourth
 /// argument, the StepResult (what the command touched). Returns the final
@@ -75,6 +90,7 @@ struct NoObserver {
 template <AdaptiveLattice L, class Observer = NoObserver>
 L replay_on(const Trace& trace, std::string& log, const Observer& after = {}) {
   L g(trace.size);
+  if constexpr (requires(std::size_t n) { reserve(g, n); }) reserve(g, max_cells(g, trace));
   for (const TraceCommand& cmd : trace.commands) {
     const StepResult<L> r = step(g, cmd);
     const std::size_t start = log.size();

@@ -22,6 +22,7 @@
 // junction: across its outer sides lie cells of its own level (old junction)
 // or of c's level (a new junction is made on that cell's side instead).
 #include "bccmis/fast/lattice.h"
+#include "bccmis/text_writer.h"
 #include "bccmis/trace.h"
 
 #include <algorithm>
@@ -851,70 +852,166 @@ Graph Lattice::to_graph() const {
 
 namespace {
 
-void append_int(std::string& out, std::int64_t v) {
-  char buf[24];
-  const auto res = std::to_chars(buf, buf + sizeof buf, v);
-  out.append(buf, res.ptr);
+// Sorts keys by their bits [low, low + bits), which are distinct between any
+// two keys: a least-significant-digit radix sort, 11 bits a pass (the
+// counts stay in L1), through one scratch array of the same size.
+void sort_by_high_bits(std::vector<std::uint64_t>& keys, int low, int bits) {
+  constexpr int kDigitBits = 11;
+  constexpr std::size_t kBuckets = std::size_t{1} << kDigitBits;
+  std::vector<std::uint64_t> scratch(keys.size());
+  std::vector<std::size_t> start(kBuckets);
+  for (int shift = low; shift < low + bits; shift += kDigitBits) {
+    std::fill(start.begin(), start.end(), std::size_t{0});
+    for (const std::uint64_t k : keys) ++start[(k >> shift) & (kBuckets - 1)];
+    std::size_t sum = 0;
+    for (std::size_t& c : start) sum += std::exchange(c, sum);
+    for (const std::uint64_t k : keys) scratch[start[(k >> shift) & (kBuckets - 1)]++] = k;
+    keys.swap(scratch);
+  }
 }
 
-void append_point(std::string& out, const Point& p) {
-  out += ' ';
-  append_int(out, p.x);
-  out += ' ';
-  append_int(out, p.y);
+// Calls f(position, payload) for every live record i of a pool, in canonical
+// (x, y) order (spec/formats.md), with payload(i) < 2^payload_bits.
+// Positions lie in the closed domain, so both coordinates are below
+// 2^coord_bits. When (x, y, payload) fit one 64-bit key, the sort moves 8
+// bytes a record; otherwise (position, payload) pairs.
+template <class Pool, class Position, class Payload, class F>
+void for_each_sorted(const Pool& pool, std::size_t live, int coord_bits, int payload_bits, const Position& position,
+                     const Payload& payload, const F& f) {
+  if (2 * coord_bits + payload_bits <= 64) {
+    const int x_shift = coord_bits + payload_bits;
+    const std::uint64_t coord_mask = (std::uint64_t{1} << coord_bits) - 1;
+    const std::uint64_t payload_mask = (std::uint64_t{1} << payload_bits) - 1;
+    std::vector<std::uint64_t> keys;
+    keys.reserve(live);
+    for (std::size_t i = 0; i < pool.size(); ++i)
+      if (pool[i].live()) {
+        const Point p = position(static_cast<Index>(i));
+        keys.push_back(static_cast<std::uint64_t>(p.x) << x_shift |
+                       static_cast<std::uint64_t>(p.y) << payload_bits | payload(static_cast<Index>(i)));
+      }
+    sort_by_high_bits(keys, payload_bits, 2 * coord_bits);
+    for (const std::uint64_t k : keys)
+      f(Point{static_cast<std::int64_t>(k >> x_shift), static_cast<std::int64_t>((k >> payload_bits) & coord_mask)},
+        static_cast<Index>(k & payload_mask));
+    return;
+  }
+  std::vector<std::pair<Point, Index>> records;
+  records.reserve(live);
+  for (std::size_t i = 0; i < pool.size(); ++i)
+    if (pool[i].live()) records.emplace_back(position(static_cast<Index>(i)), payload(static_cast<Index>(i)));
+  std::sort(records.begin(), records.end(), [](const auto& a, const auto& b) { return point_less(a.first, b.first); });
+  for (const auto& [p, i] : records) f(p, i);
 }
 
 }  // namespace
 
-void write_canonical_state(std::ostream& out, const Lattice& g) { out << canonical_state(g); }
+namespace {
 
-std::string canonical_state(const Lattice& g) {
-  const auto& centers = g.center_pool();
-  const auto& nodes = g.node_pool();
-  std::vector<std::pair<Point, Index>> cs, ns;
-  cs.reserve(g.cell_count());
-  ns.reserve(g.node_count());
-  for (std::size_t c = 0; c < centers.size(); ++c)
-    if (centers[c].live()) cs.emplace_back(centers[c].position(), static_cast<Index>(c));
-  for (std::size_t n = 0; n < nodes.size(); ++n)
-    if (nodes[n].live())
-      ns.emplace_back(g.node_position(static_cast<Index>(n)), static_cast<Index>(n));
-  const auto by_point = [](const auto& a, const auto& b) { return point_less(a.first, b.first); };
-  std::sort(cs.begin(), cs.end(), by_point);
-  std::sort(ns.begin(), ns.end(), by_point);
+// bit_width of the largest coordinate of the closed domain.
+int coordinate_bits(const LatticeSize& size) {
+  const std::int64_t S = level0_side(size);
+  return std::bit_width(static_cast<std::uint64_t>(std::max(size.W * S, size.H * S)));
+}
 
-  std::string out = "bccmis-state 1\nlattice ";
-  append_int(out, g.size().W);
-  out += ' ';
-  append_int(out, g.size().H);
-  out += ' ';
-  append_int(out, g.size().L);
-  out += '\n';
-  for (const auto& [p, c] : cs) {
-    out += 'C';
-    append_point(out, p);
-    out += ' ';
-    append_int(out, g.level(c));
-    out += " :";
-    SmallPoints<8> nb;
-    center_neighbors(centers[c], g.half_side(g.level(c)), nb);
-    for (const Point& b : nb) append_point(out, b);
-    out += '\n';
-  }
-  for (const auto& [p, n] : ns) {
-    out += 'N';
-    append_point(out, p);
-    out += " :";
-    for (const Point& b : node_neighbors(g, n)) append_point(out, b);
-    out += '\n';
-  }
-  out += "end ";
-  append_int(out, static_cast<std::int64_t>(g.cell_count()));
-  out += ' ';
-  append_int(out, static_cast<std::int64_t>(g.node_count()));
-  out += '\n';
+template <class Pool, class Position>
+std::vector<Index> sorted_slots(const Pool& pool, std::size_t live, const LatticeSize& size, const Position& position) {
+  std::vector<Index> out;
+  out.reserve(live);
+  for_each_sorted(
+      pool, live, coordinate_bits(size), std::bit_width(pool.size()), position, [](Index i) { return i; },
+      [&](const Point&, Index i) { out.push_back(i); });
   return out;
 }
+
+}  // namespace
+
+std::vector<Lattice::Index> Lattice::sorted_center_slots() const {
+  return sorted_slots(centers_, cell_count_, size_, [&](Index c) { return centers_[c].position(); });
+}
+
+std::vector<Lattice::Index> Lattice::sorted_node_slots() const {
+  return sorted_slots(nodes_, node_count_, size_, [&](Index n) { return node_position(n); });
+}
+
+void write_canonical_state(std::ostream& out, const Lattice& g) {
+  using Decimal = TextWriter::Decimal;
+  const auto& centers = g.center_pool();
+  const auto& nodes = g.node_pool();
+  const LatticeSize& size = g.size();
+  const int coord_bits = coordinate_bits(size);
+  TextWriter w(out);
+  w.put("bccmis-state 1\nlattice ");
+  w.put_int(size.W);
+  w.put(' ');
+  w.put_int(size.H);
+  w.put(' ');
+  w.put_int(size.L);
+  w.put('\n');
+  // A C line holds at most 9 points and a level, an N line 5 points; every
+  // number is copied as sizeof(Decimal::text) bytes.
+  constexpr std::size_t kLine = 16 + 19 * sizeof(Decimal::text);
+  // A cell's line follows from its position and which sides have a junction
+  // (bit s for side s), so the sort carries those 4 bits and the lines are
+  // written without going back to the pool. 𝒩(c) in sorted order: SW, W, NW,
+  // S, N, SE, E, NE (W, S, N, E when there is a junction).
+  for_each_sorted(
+      centers, g.cell_count(), coord_bits, 4, [&](Index c) { return centers[c].position(); },
+      [&](Index c) {
+        Index mids = 0;
+        for (int s = 0; s < 4; ++s) mids |= centers[c].mid[s] != Lattice::kNone ? Index{1} << s : 0;
+        return mids;
+      },
+      [&](const Point& p, Index mids) {
+        const int t = std::countr_zero(static_cast<std::uint64_t>(p.x));  // h = 2^t, level L - t
+        const std::int64_t h = std::int64_t{1} << t;
+        const Decimal x0(p.x - h), x1(p.x), x2(p.x + h), y0(p.y - h), y1(p.y), y2(p.y + h);
+        char* q = w.room(kLine);
+        auto point = [&](const Decimal& x, const Decimal& y) {
+          *q++ = ' ';
+          q = x.copy_to(q);
+          *q++ = ' ';
+          q = y.copy_to(q);
+        };
+        *q++ = 'C';
+        point(x1, y1);
+        *q++ = ' ';
+        q = TextWriter::write_int(q, size.L - t);
+        *q++ = ' ';
+        *q++ = ':';
+        point(x0, y0);
+        if (mids & 8) point(x0, y1);
+        point(x0, y2);
+        if (mids & 1) point(x1, y0);
+        if (mids & 4) point(x1, y2);
+        point(x2, y0);
+        if (mids & 2) point(x2, y1);
+        point(x2, y2);
+        *q++ = '\n';
+        w.commit(q);
+      });
+  for_each_sorted(
+      nodes, g.node_count(), coord_bits, std::bit_width(nodes.size()), [&](Index n) { return g.node_position(n); },
+      [](Index n) { return n; },
+      [&](const Point& p, Index n) {
+        char* q = w.room(kLine);
+        *q++ = 'N';
+        q = TextWriter::write_point(q, p.x, p.y);
+        *q++ = ' ';
+        *q++ = ':';
+        for (const Point& b : node_neighbors(g, n)) q = TextWriter::write_point(q, b.x, b.y);
+        *q++ = '\n';
+        w.commit(q);
+      });
+  w.put("end ");
+  w.put_int(static_cast<std::int64_t>(g.cell_count()));
+  w.put(' ');
+  w.put_int(static_cast<std::int64_t>(g.node_count()));
+  w.put('\n');
+  w.flush();
+}
+
+std::string canonical_state(const Lattice& g) { return canonical_text(g); }
 
 Lattice replay(const Trace& trace, std::string& log, const FastReplayObserver& after) {
   return replay_on<Lattice>(trace, log, [&](const TraceCommand& c, const Lattice& g, std::string_view decision) {
@@ -925,12 +1022,22 @@ Lattice replay(const Trace& trace, std::string& log, const FastReplayObserver& a
 // ---- Memory and audit -------------------------------------------------------------------
 
 void Lattice::reserve(std::size_t cells) {
+  cells = std::min(kMaxPool, cells);
   const std::size_t nodes = cells + cells / 4 + 16;
-  centers_.reserve(std::min(kMaxPool, cells));
+  centers_.reserve(cells);
   nodes_.reserve(std::min(kMaxPool, nodes));
   std::size_t slots = table_.size();
   while ((cells + cells / 3) * 5 > slots * 3) slots *= 2;  // keys: cells and refined centers
   if (slots != table_.size()) rehash(slots);
+}
+
+void reserve(Lattice& g, std::size_t cells) {
+  try {
+    g.reserve(cells);
+  } catch (const std::bad_alloc&) {
+    // Lattice::reserve changes capacities only: the lattice is as it was,
+    // and grows when it must.
+  }
 }
 
 void Lattice::shrink_to_fit() {

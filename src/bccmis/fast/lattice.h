@@ -178,7 +178,8 @@ class Lattice {
 
   // ---- Memory -----------------------------------------------------------------
 
-  /// Room for `cells` cells and about as many nodes without reallocating.
+  /// Room for `cells` cells (at most 2^26 - 1) and about as many nodes
+  /// without reallocating.
   void reserve(std::size_t cells);
   /// Gives back unused pool capacity (the free lists stay).
   void shrink_to_fit();
@@ -221,6 +222,27 @@ class Lattice {
     Index cell[4];
     bool live() const { return cell[3] != kFreeMark; }
   };
+
+  /// The live center (node) slots in canonical order: sorted by position.
+  std::vector<Index> sorted_center_slots() const;
+  std::vector<Index> sorted_node_slots() const;
+  /// Calls f(node slot, position) for the boundary nodes of the live center
+  /// slot c in the order of bccmis::boundary_in_angular_order (counter-
+  /// clockwise from the south-west corner): SW, S, SE, E, NE, N, NW, W, the
+  /// side midpoints only where the cell has a junction.
+  template <class F>
+  void for_each_boundary_node(Index c, F&& f) const {
+    static constexpr int kCorner[4] = {0, 1, 3, 2};  // SW, SE, NE, NW
+    static constexpr std::int64_t kCornerDx[4] = {-1, 1, 1, -1}, kCornerDy[4] = {-1, -1, 1, 1};
+    static constexpr std::int64_t kSideDx[4] = {0, 1, 0, -1}, kSideDy[4] = {-1, 0, 1, 0};  // S, E, N, W
+    const Center& r = centers_[c];
+    const Point p = r.position();
+    const std::int64_t h = half_side(r.level(size_.L));
+    for (int k = 0; k < 4; ++k) {
+      f(r.corner[kCorner[k]], Point{p.x + kCornerDx[k] * h, p.y + kCornerDy[k] * h});
+      if (r.mid[k] != kNone) f(r.mid[k], Point{p.x + kSideDx[k] * h, p.y + kSideDy[k] * h});
+    }
+  }
 
   const detail::Array<Center>& center_pool() const { return centers_; }
   const detail::Array<Node>& node_pool() const { return nodes_; }
@@ -390,6 +412,12 @@ inline std::vector<Point> cells(const Lattice& g) { return g.cells(); }
 inline std::vector<Point> nodes(const Lattice& g) { return g.nodes(); }
 inline std::size_t cell_count(const Lattice& g) { return g.cell_count(); }
 inline std::size_t node_count(const Lattice& g) { return g.node_count(); }
+/// Optional in the vocabulary (replay_on calls it when a lattice has it):
+/// room for `cells` cells, a hint. The pools' capacity is address space
+/// until it is used; the position table is sized for that many cells (about
+/// 9-18 bytes a cell). A reservation the allocator refuses is dropped: the
+/// lattice then grows as it goes.
+void reserve(Lattice& g, std::size_t cells);
 /// The canonical text of spec/formats.md, written from the pools.
 void write_canonical_state(std::ostream& out, const Lattice& g);
 
