@@ -37,3 +37,9 @@ if(Python3_FOUND)
   set_tests_properties(apps.sample_terrain_reproducible apps.sample_terrain256_reproducible
                        PROPERTIES LABELS "unit;apps")
 endif()
+
+# The height field's streamed writers and fast-lattice mesh paths against the
+# texts and values they replace.
+add_executable(apps_output_test ${CMAKE_CURRENT_LIST_DIR}/apps_output_test.cpp)
+target_link_libraries(apps_output_test PRIVATE bccmis::apps bccmis::fast bccmis::core GTest::gtest_main bccmis::warnings)
+gtest_discover_tests(apps_output_test DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)

@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "bccmis/apps/detail/generic.h"
 
@@ -113,8 +114,12 @@ std::optional<ErrorMeasure> parse_error_measure(std::string_view text) {
 
 std::string_view name(ErrorMeasure m) { return m == ErrorMeasure::MaxPixel ? "max" : "samples"; }
 
-CellFan::CellFan(const Point& center, int level, const std::vector<Point>& boundary_ccw, const HeightSampler& s)
-    : center_(center), level_(level), half_(cell_side(s.size(), level) / 2), zc_(s.at(center)), ring_(boundary_ccw) {
+CellFan::CellFan(const Point& center, int level, std::vector<Point> boundary_ccw, const HeightSampler& s)
+    : center_(center),
+      level_(level),
+      half_(cell_side(s.size(), level) / 2),
+      zc_(s.at(center)),
+      ring_(std::move(boundary_ccw)) {
   z_.reserve(ring_.size());
   for (const Point& b : ring_) z_.push_back(s.at(b));
 }
@@ -183,11 +188,17 @@ double cell_error(const Graph& g, const Point& c, const HeightSampler& s, const 
   return cell_error(cell_fan(g, c, s), s, e);
 }
 
-MeshError mesh_error(const Graph& g, const HeightSampler& s) {
+namespace {
+
+// mesh_error over the cells in sorted order (the order fixes which cell is
+// named worst and how the squares are summed); fan_of(cell) is its fan.
+template <class Cells, class Fan>
+MeshError mesh_error_of(const Cells& cells, const HeightSampler& s, const Fan& fan_of) {
   MeshError m;
   double sum = 0;
-  for (const Point& c : g.C) {
-    const CellFan fan = cell_fan(g, c, s);
+  for (const auto& cell : cells) {
+    const CellFan fan = fan_of(cell);
+    const Point c = fan.center();
     const std::int64_t h = fan.half_side();
     const auto [i0, i1] = s.columns(c.x - h, c.x + h, true);
     const auto [j0, j1] = s.rows(c.y - h, c.y + h, true);
@@ -206,6 +217,24 @@ MeshError mesh_error(const Graph& g, const HeightSampler& s) {
   }
   m.rms = m.pixels > 0 ? std::sqrt(sum / static_cast<double>(m.pixels)) : 0.0;
   return m;
+}
+
+}  // namespace
+
+MeshError mesh_error(const Graph& g, const HeightSampler& s) {
+  return mesh_error_of(g.C, s, [&](const Point& c) { return cell_fan(g, c, s); });
+}
+
+MeshError mesh_error(const fast::Lattice& g, const HeightSampler& s) {
+  // The fans of detail::cell_fan, read from the pools: the same ring (the
+  // angular order), so the same values.
+  const std::vector<fast::Lattice::Index> slots = g.sorted_center_slots();
+  return mesh_error_of(slots, s, [&](fast::Lattice::Index c) {
+    std::vector<Point> ring;
+    ring.reserve(8);
+    g.for_each_boundary_node(c, [&](fast::Lattice::Index, const Point& p) { ring.push_back(p); });
+    return CellFan(g.center_pool()[c].position(), g.level(c), std::move(ring), s);
+  });
 }
 
 // ---- tessellation --------------------------------------------------------------

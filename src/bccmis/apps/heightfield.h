@@ -76,7 +76,7 @@ struct ErrorSettings {
 /// (center, b_i, b_i+1) over the boundary nodes in counter-clockwise order.
 class CellFan {
  public:
-  CellFan(const Point& center, int level, const std::vector<Point>& boundary_ccw, const HeightSampler& s);
+  CellFan(const Point& center, int level, std::vector<Point> boundary_ccw, const HeightSampler& s);
   /// The interpolated height at a point of the closed cell.
   double at(double x, double y) const;
   Point center() const { return center_; }
@@ -107,6 +107,8 @@ struct MeshError {
   Point worst_cell;           ///< center of a cell attaining max_abs
 };
 MeshError mesh_error(const Graph& g, const HeightSampler& s);
+/// The same report from the fast lattice (cells visited in the same order).
+MeshError mesh_error(const fast::Lattice& g, const HeightSampler& s);
 
 /// Cell errors up to this fraction of the vertical scale are floating-point
 /// rounding: tessellate() refines only cells whose error exceeds
