@@ -1033,7 +1033,7 @@ void Lattice::reserve(std::size_t cells) {
 
 void reserve(Lattice& g, std::size_t cells) {
   try {
-    g.reserve(cells);
+    g.reserve(std::min(cells, kMaxReserveHint));
   } catch (const std::bad_alloc&) {
     // Lattice::reserve changes capacities only: the lattice is as it was,
     // and grows when it must.

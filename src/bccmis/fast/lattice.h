@@ -413,10 +413,12 @@ inline std::vector<Point> nodes(const Lattice& g) { return g.nodes(); }
 inline std::size_t cell_count(const Lattice& g) { return g.cell_count(); }
 inline std::size_t node_count(const Lattice& g) { return g.node_count(); }
 /// Optional in the vocabulary (replay_on calls it when a lattice has it):
-/// room for `cells` cells, a hint. The pools' capacity is address space
-/// until it is used; the position table is sized for that many cells (about
-/// 9-18 bytes a cell). A reservation the allocator refuses is dropped: the
-/// lattice then grows as it goes.
+/// room for `cells` cells, a hint, of at most kMaxReserveHint cells. The
+/// pools' capacity is address space until it is used; the position table is
+/// sized for that many cells (about 9-18 bytes a cell, so at most 32 MiB for
+/// a hint however many refines a trace lists). A reservation the allocator
+/// refuses is dropped. Beyond the hint the lattice grows as it goes.
+inline constexpr std::size_t kMaxReserveHint = std::size_t{1} << 22;
 void reserve(Lattice& g, std::size_t cells);
 /// The canonical text of spec/formats.md, written from the pools.
 void write_canonical_state(std::ostream& out, const Lattice& g);
