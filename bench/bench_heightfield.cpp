@@ -32,6 +32,7 @@
 
 #include "bccmis/fast/lattice.h"
 #include "bccmis/format.h"
+#include "bccmis/geometry.h"
 #include "bccmis/apps/heightfield.h"
 #include "bccmis/apps/image.h"
 #include "bench_main.h"

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "bccmis/format.h"
+#include "bccmis/geometry.h"
 #include "bccmis/graph.h"
 #include "bccmis/ops.h"
 

@@ -4,7 +4,7 @@
 #include <map>
 #include <system_error>
 
-#include "bccmis/oracle/oracle.h"
+#include "bccmis/geometry.h"
 
 namespace bccmis {
 
