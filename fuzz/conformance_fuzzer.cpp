@@ -34,6 +34,7 @@
 #include "bccmis/oracle/conformance.h"
 #include "bccmis/format.h"
 #include "bccmis/oracle/view.h"
+#include "bccmis/trace.h"
 #include "fuzz_util.h"
 
 namespace {
@@ -96,7 +97,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   ImplRun completed = run;
   if (run.out.find("bccmis-state ") == std::string::npos) {
     std::string log;
-    completed.out += canonical_state(replay(trace, log));
+    completed.out += canonical_state(replay_on<Graph>(trace, log));
   }
   const std::string completed_verdict = guarded(trace, "compare_run", [&] { return compare_run(trace, completed); });
   const std::optional<ViewSide> side =
