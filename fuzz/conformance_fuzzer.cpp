@@ -36,6 +36,7 @@
 #include "bccmis/oracle/view.h"
 #include "bccmis/trace.h"
 #include "fuzz_util.h"
+#include "testing/byte_program.h"
 
 namespace {
 
@@ -55,7 +56,7 @@ auto guarded(const Trace& trace, std::string_view what, F&& f) -> decltype(f()) 
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  fuzz::Bytes in(data, size);
+  testing::Bytes in(data, size);
   std::mt19937_64 rng(in.next());
   const Trace trace = random_trace(rng, 12);
   const std::string reference = reference_output(trace);

@@ -1,5 +1,6 @@
 // Shared RapidCheck generators and property bodies for the property suites
-// (tests/properties_test.cpp, tests/model_test.cpp, tests/mutants/).
+// (tests/properties_test.cpp, tests/model_test.cpp, tests/mutants/,
+// tests/fast_differential_test.cpp).
 //
 // A Scenario is a lattice size plus a list of Steps. A Step is generated
 // without looking at any state and resolved against the current graph only
@@ -60,6 +61,11 @@ struct Ops {
 
 enum class OpKind { Refine, Coarsen };
 enum class Pick { Live, WrongKind, Anywhere };
+
+/// The trace command kind of an operation.
+inline TraceCommand::Kind trace_kind(OpKind op) {
+  return op == OpKind::Refine ? TraceCommand::Kind::Refine : TraceCommand::Kind::Coarsen;
+}
 
 struct Step {
   OpKind op = OpKind::Refine;
@@ -280,8 +286,7 @@ class Walk {
 
   /// Runs op at p with the operations under test (records it in the trace).
   Outcome run(OpKind op, const Point& p) {
-    trace_.commands.push_back(
-        TraceCommand{op == OpKind::Refine ? TraceCommand::Kind::Refine : TraceCommand::Kind::Coarsen, p, 0});
+    trace_.commands.push_back(TraceCommand{trace_kind(op), p, 0});
     Outcome o;
     o.op = op;
     o.at = p;
