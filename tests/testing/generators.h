@@ -111,11 +111,11 @@ inline rc::Gen<LatticeSize> genLatticeSize() {
       });
 }
 
-inline rc::Gen<Step> genStep() {
+/// Steps whose operation and pick are drawn from `ops` and `picks`.
+inline rc::Gen<Step> genStep(rc::Gen<OpKind> ops, rc::Gen<Pick> picks) {
   return rc::gen::map(
-      rc::gen::tuple(rc::gen::weightedElement<OpKind>({{3, OpKind::Refine}, {2, OpKind::Coarsen}}),
-                     rc::gen::weightedElement<Pick>({{7, Pick::Live}, {1, Pick::WrongKind}, {2, Pick::Anywhere}}),
-                     rc::gen::arbitrary<std::uint32_t>(), rc::gen::arbitrary<std::uint32_t>()),
+      rc::gen::tuple(std::move(ops), std::move(picks), rc::gen::arbitrary<std::uint32_t>(),
+                     rc::gen::arbitrary<std::uint32_t>()),
       [](const std::tuple<OpKind, Pick, std::uint32_t, std::uint32_t>& t) {
         Step s;
         s.op = std::get<0>(t);
@@ -124,6 +124,11 @@ inline rc::Gen<Step> genStep() {
         s.b = std::get<3>(t);
         return s;
       });
+}
+
+inline rc::Gen<Step> genStep() {
+  return genStep(rc::gen::weightedElement<OpKind>({{3, OpKind::Refine}, {2, OpKind::Coarsen}}),
+                 rc::gen::weightedElement<Pick>({{7, Pick::Live}, {1, Pick::WrongKind}, {2, Pick::Anywhere}}));
 }
 
 /// Up to max_steps steps (scaled by RapidCheck's size; max_size 100 gives the full range).
