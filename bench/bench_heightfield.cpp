@@ -32,6 +32,7 @@
 
 #include "bccmis/fast/lattice.h"
 #include "bccmis/format.h"
+#include "bccmis/geometry.h"
 #include "bccmis/apps/heightfield.h"
 #include "bccmis/apps/image.h"
 #include "bench_main.h"
@@ -64,37 +65,19 @@ const HeightField& field() {
   return f;
 }
 
-struct Reference {
-  using Lattice = Graph;
-  static Graph make(const LatticeSize& size) { return make_lattice(size); }
-  static const Graph& graph(const Graph& g) { return g; }
-  static std::size_t cells(const Graph& g) { return g.C.size(); }
-  static std::size_t nodes(const Graph& g) { return g.N.size(); }
-  static bool refine_at(Graph& g, const Point& c) { return refine(g, c).applied(); }
-};
-
-struct Fast {
-  using Lattice = fast::Lattice;
-  static fast::Lattice make(const LatticeSize& size) { return fast::Lattice(size); }
-  static Graph graph(const fast::Lattice& g) { return g.to_graph(); }
-  static std::size_t cells(const fast::Lattice& g) { return g.cell_count(); }
-  static std::size_t nodes(const fast::Lattice& g) { return g.node_count(); }
-  static bool refine_at(fast::Lattice& g, const Point& c) { return g.refine(c).applied(); }
-};
-
-template <class Impl>
+template <AdaptiveLattice L>
 void BM_Heightfield(benchmark::State& st) {
   const HeightSampler s(field(), paper_size(), 1.0);
   const TessellateSettings t = settings(static_cast<int>(st.range(0)));
   TessellateReport last;
   std::size_t cells = 0, nodes = 0;
   for (auto _ : st) {
-    typename Impl::Lattice g = Impl::make(paper_size());
+    L g(paper_size());
     const double t0 = thread_seconds();
     last = tessellate(g, s, t);
     st.SetIterationTime(thread_seconds() - t0);
-    cells = Impl::cells(g);
-    nodes = Impl::nodes(g);
+    cells = cell_count(g);
+    nodes = node_count(g);
     benchmark::DoNotOptimize(cells);
   }
   st.counters["cells"] = static_cast<double>(cells);
@@ -114,17 +97,17 @@ std::vector<Point> refinements_of(const Graph& g) {
   return order;
 }
 
-template <class Impl>
+template <AdaptiveLattice L>
 void BM_HeightfieldOps(benchmark::State& st) {
   const HeightSampler s(field(), paper_size(), 1.0);
   Graph result = make_lattice(paper_size());
   tessellate(result, s, settings(0));
   const std::vector<Point> order = refinements_of(result);
   for (auto _ : st) {
-    typename Impl::Lattice g = Impl::make(paper_size());
+    L g(paper_size());
     const double t0 = thread_seconds();
     std::size_t applied = 0;
-    for (const Point& c : order) applied += Impl::refine_at(g, c) ? 1 : 0;
+    for (const Point& c : order) applied += refine(g, c).applied() ? 1 : 0;
     st.SetIterationTime(thread_seconds() - t0);
     if (applied != order.size()) {
       st.SkipWithError("a refinement of the recorded sequence was refused");
@@ -139,8 +122,8 @@ void BM_HeightfieldOps(benchmark::State& st) {
 int verify() {
   const HeightSampler s(field(), paper_size(), 1.0);
   for (int measure : {0, 1}) {
-    Graph g = Reference::make(paper_size());
-    fast::Lattice f = Fast::make(paper_size());
+    Graph g(paper_size());
+    fast::Lattice f(paper_size());
     const TessellateReport a = tessellate(g, s, settings(measure));
     const TessellateReport b = tessellate(f, s, settings(measure));
     const std::string sa = canonical_state(g), sb = canonical_state(f.to_graph());
@@ -161,22 +144,22 @@ int verify() {
   return 0;
 }
 
-template <class Impl>
+template <AdaptiveLattice L>
 void register_impl(const std::string& impl) {
-  benchmark::RegisterBenchmark(("Heightfield/" + impl).c_str(), BM_Heightfield<Impl>)
+  benchmark::RegisterBenchmark(("Heightfield/" + impl).c_str(), BM_Heightfield<L>)
       ->ArgName("measure")
       ->Arg(0)
       ->Arg(1)
       ->UseManualTime()
       ->Unit(benchmark::kMillisecond);
-  benchmark::RegisterBenchmark(("HeightfieldOps/" + impl).c_str(), BM_HeightfieldOps<Impl>)
+  benchmark::RegisterBenchmark(("HeightfieldOps/" + impl).c_str(), BM_HeightfieldOps<L>)
       ->UseManualTime()
       ->Unit(benchmark::kMicrosecond);
 }
 
 void register_all() {
-  register_impl<Reference>("reference");
-  register_impl<Fast>("fast");
+  register_impl<Graph>("reference");
+  register_impl<fast::Lattice>("fast");
 }
 
 }  // namespace

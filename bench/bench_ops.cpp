@@ -88,13 +88,13 @@ double seconds_since(Clock::time_point t0) { return Clock::now() - t0; }
 
 // ---- Cached lattices (building a 10^7-cell lattice once is enough) --------------------------
 
-template <class Impl>
-typename Impl::State& cached_lattice(const LatticeSize& size) {
-  static std::unique_ptr<typename Impl::State> state;
+template <AdaptiveLattice L>
+L& cached_lattice(const LatticeSize& size) {
+  static std::unique_ptr<L> state;
   static LatticeSize have{0, 0, 0};
   if (!state || !(have == size)) {
     state.reset();
-    state = std::make_unique<typename Impl::State>(Impl::make(size));
+    state = std::make_unique<L>(size);
     have = size;
   }
   return *state;
@@ -116,17 +116,17 @@ const std::vector<Point>& cell_order(const LatticeSize& size, bool random) {
 
 // ---- Refine / Coarsen: ns per operation against lattice size ---------------------------------
 
-template <class Impl>
+template <AdaptiveLattice L>
 void run_ops(benchmark::State& st, bool time_refine) {
   const LatticeSize size = square_lattice(st.range(0), 4);
   const bool random = st.range(1) != 0;
-  auto& g = cached_lattice<Impl>(size);
+  auto& g = cached_lattice<L>(size);
   const std::vector<Point>& cells = cell_order(size, random);
   const std::size_t batch = std::max<std::size_t>(1, std::min<std::size_t>(cells.size() / 4, 4096));
   // One untimed round first: the pools and the table reach the size a batch
   // needs (the growth is a one-time cost, not a per-operation one).
-  for (std::size_t i = 0; i < batch; ++i) Impl::refine(g, cells[i]);
-  for (std::size_t i = 0; i < batch; ++i) Impl::coarsen(g, cells[i]);
+  for (std::size_t i = 0; i < batch; ++i) refine(g, cells[i]);
+  for (std::size_t i = 0; i < batch; ++i) coarsen(g, cells[i]);
   std::size_t cursor = 0;
   double timed = 0;
   std::size_t ops = 0;
@@ -136,35 +136,35 @@ void run_ops(benchmark::State& st, bool time_refine) {
     double t = 0;
     std::size_t applied = 0;
     const auto t0 = Clock::now();
-    for (std::size_t i = begin; i < begin + batch; ++i) applied += Impl::refine(g, cells[i]);
+    for (std::size_t i = begin; i < begin + batch; ++i) applied += refine(g, cells[i]).applied();
     if (time_refine) t = seconds_since(t0);
     const auto t1 = Clock::now();
-    for (std::size_t i = begin; i < begin + batch; ++i) applied += Impl::coarsen(g, cells[i]);
+    for (std::size_t i = begin; i < begin + batch; ++i) applied += coarsen(g, cells[i]).applied();
     if (!time_refine) t = seconds_since(t1);
     if (applied != 2 * batch) st.SkipWithError("an operation of the batch was refused");
     st.SetIterationTime(t);
     timed += t;
     ops += batch;
   }
-  st.counters["cells"] = static_cast<double>(Impl::cells(g));
+  st.counters["cells"] = static_cast<double>(cell_count(g));
   st.counters["batch"] = static_cast<double>(batch);
   st.counters["ns_per_op"] = ops ? timed * 1e9 / static_cast<double>(ops) : 0;
 }
 
-template <class Impl>
+template <AdaptiveLattice L>
 void BM_Refine(benchmark::State& st) {
-  run_ops<Impl>(st, true);
+  run_ops<L>(st, true);
 }
-template <class Impl>
+template <AdaptiveLattice L>
 void BM_Coarsen(benchmark::State& st) {
-  run_ops<Impl>(st, false);
+  run_ops<L>(st, false);
 }
 
 // The same batches through Lattice::refine_each / coarsen_each (look-ahead
 // prefetching; same decisions as the single calls).
 void run_each(benchmark::State& st, bool time_refine) {
   const LatticeSize size = square_lattice(st.range(0), 4);
-  auto& g = cached_lattice<Fast>(size);
+  auto& g = cached_lattice<fast::Lattice>(size);
   const std::vector<Point>& cells = cell_order(size, st.range(1) != 0);
   const std::size_t batch = std::max<std::size_t>(1, std::min<std::size_t>(cells.size() / 4, 4096));
   const std::span<const Point> all(cells);
@@ -203,22 +203,22 @@ const Mix& cached_mix(std::int64_t cells) {
   return *m;
 }
 
-template <class Impl>
-typename Impl::State start_state(const Mix& mix);
+template <AdaptiveLattice L>
+L start_state(const Mix& mix);
 template <>
-Graph start_state<Reference>(const Mix& mix) {
+Graph start_state<Graph>(const Mix& mix) {
   return mix.start.to_graph();
 }
 template <>
-fast::Lattice start_state<Fast>(const Mix& mix) {
+fast::Lattice start_state<fast::Lattice>(const Mix& mix) {
   return mix.start;
 }
 
-template <class Impl>
+template <AdaptiveLattice L>
 void BM_Mix(benchmark::State& st) {
   const Mix& mix = cached_mix(st.range(0));
-  const typename Impl::State start = start_state<Impl>(mix);
-  auto g = std::make_unique<typename Impl::State>(start);
+  const L start = start_state<L>(mix);
+  auto g = std::make_unique<L>(start);
   const std::size_t block = std::min<std::size_t>(4096, mix.ops.size());
   std::size_t cursor = 0;
   double timed = 0;
@@ -232,7 +232,7 @@ void BM_Mix(benchmark::State& st) {
     const auto t0 = Clock::now();
     for (std::size_t i = cursor; i < cursor + block; ++i) {
       const Op& op = mix.ops[i];
-      applied += op.refine ? Impl::refine(*g, op.at) : Impl::coarsen(*g, op.at);
+      applied += op.refine ? refine(*g, op.at).applied() : coarsen(*g, op.at).applied();
     }
     const double t = seconds_since(t0);
     if (applied != block) st.SkipWithError("the mix diverged: an operation was refused");
@@ -241,22 +241,22 @@ void BM_Mix(benchmark::State& st) {
     timed += t;
     ops += block;
   }
-  st.counters["cells"] = static_cast<double>(Impl::cells(*g));
+  st.counters["cells"] = static_cast<double>(cell_count(*g));
   st.counters["ns_per_op"] = ops ? timed * 1e9 / static_cast<double>(ops) : 0;
   st.SetItemsProcessed(static_cast<std::int64_t>(ops));
 }
 
 // ---- Uniform refinement of a 6x6 lattice ----------------------------------------------------------
 
-template <class Impl>
-std::size_t refine_uniformly(typename Impl::State& g, const LatticeSize& size) {
+template <AdaptiveLattice L>
+std::size_t refine_uniformly(L& g, const LatticeSize& size) {
   std::size_t n = 0;
   for (int l = 0; l < size.L; ++l)
-    for (const Point& c : grid_centers(size, l)) n += Impl::refine(g, c);
+    for (const Point& c : grid_centers(size, l)) n += refine(g, c).applied();
   return n;
 }
 
-template <class Impl>
+template <AdaptiveLattice L>
 void BM_Uniform6x6(benchmark::State& st) {
   const LatticeSize size{6, 6, static_cast<int>(st.range(0))};
   // The positions are computed outside the timing, level by level.
@@ -264,14 +264,14 @@ void BM_Uniform6x6(benchmark::State& st) {
   for (int l = 0; l < size.L; ++l) levels.push_back(grid_centers(size, l));
   std::size_t refines = 0;
   for (auto _ : st) {
-    typename Impl::State g = Impl::make(size);
+    L g(size);
     std::size_t n = 0;
     for (const auto& level : levels)
-      for (const Point& c : level) n += Impl::refine(g, c);
+      for (const Point& c : level) n += refine(g, c).applied();
     refines += n;
     benchmark::DoNotOptimize(g);
     st.PauseTiming();
-    { [[maybe_unused]] typename Impl::State drop = std::move(g); }  // destruction untimed
+    { [[maybe_unused]] L drop = std::move(g); }  // destruction untimed
     st.ResumeTiming();
   }
   st.counters["cells"] = static_cast<double>(36) * static_cast<double>(std::int64_t{1} << (2 * size.L));
@@ -282,14 +282,14 @@ void BM_Uniform6x6(benchmark::State& st) {
 
 // ---- Moving feature -------------------------------------------------------------------------------
 
-template <class Impl>
+template <AdaptiveLattice L>
 void BM_MovingFeature(benchmark::State& st) {
   const LatticeSize size = g_smoke ? LatticeSize{4, 4, 4} : LatticeSize{16, 16, 6};
-  MovingFeature<Impl> anim(size, 0.5 * static_cast<double>(level0_side(size)), 256);
+  MovingFeature<L> anim(size, 0.5 * static_cast<double>(level0_side(size)), 256);
   std::size_t ops = 0;
   for (auto _ : st) ops += anim.frame();
   st.counters["ops_per_frame"] = benchmark::Counter(static_cast<double>(ops), benchmark::Counter::kAvgIterations);
-  st.counters["cells"] = static_cast<double>(Impl::cells(anim.state()));
+  st.counters["cells"] = static_cast<double>(cell_count(anim.state()));
 }
 
 // ---- The machine: latency of a dependent load ---------------------------------------------------
@@ -329,33 +329,33 @@ void register_all() {
       if (n <= g_max_cells)
         for (const int order : {0, 1}) b->Args({n, order});
   };
-  per_op("Refine/reference", BM_Refine<Reference>, ref_sizes);
-  per_op("Coarsen/reference", BM_Coarsen<Reference>, ref_sizes);
-  per_op("Refine/fast", BM_Refine<Fast>, fast_sizes);
-  per_op("Coarsen/fast", BM_Coarsen<Fast>, fast_sizes);
+  per_op("Refine/reference", BM_Refine<Graph>, ref_sizes);
+  per_op("Coarsen/reference", BM_Coarsen<Graph>, ref_sizes);
+  per_op("Refine/fast", BM_Refine<fast::Lattice>, fast_sizes);
+  per_op("Coarsen/fast", BM_Coarsen<fast::Lattice>, fast_sizes);
   per_op("RefineEach/fast", BM_RefineEach, fast_sizes);
   per_op("CoarsenEach/fast", BM_CoarsenEach, fast_sizes);
 
   const std::vector<std::int64_t> mix_sizes =
       g_smoke ? std::vector<std::int64_t>{1000} : std::vector<std::int64_t>{1000, 10'000, 100'000, 1'000'000};
   using Fn = void (*)(benchmark::State&);
-  for (const auto& [name, fn] : {std::pair<const char*, Fn>{"Mix/reference", BM_Mix<Reference>},
-                                 std::pair<const char*, Fn>{"Mix/fast", BM_Mix<Fast>}}) {
+  for (const auto& [name, fn] : {std::pair<const char*, Fn>{"Mix/reference", BM_Mix<Graph>},
+                                 std::pair<const char*, Fn>{"Mix/fast", BM_Mix<fast::Lattice>}}) {
     auto* b = benchmark::RegisterBenchmark(name, fn);
     b->ArgName("cells")->UseManualTime()->Unit(benchmark::kMicrosecond);
     for (const std::int64_t n : mix_sizes) b->Arg(n);
   }
 
   const int ref_levels = g_smoke ? 2 : 6, fast_levels = g_smoke ? 2 : 8;
-  auto* ur = benchmark::RegisterBenchmark("Uniform6x6/reference", BM_Uniform6x6<Reference>);
+  auto* ur = benchmark::RegisterBenchmark("Uniform6x6/reference", BM_Uniform6x6<Graph>);
   ur->ArgName("level")->Unit(benchmark::kMillisecond);
   for (int k = g_smoke ? 2 : 1; k <= ref_levels; ++k) ur->Arg(k);
-  auto* uf = benchmark::RegisterBenchmark("Uniform6x6/fast", BM_Uniform6x6<Fast>);
+  auto* uf = benchmark::RegisterBenchmark("Uniform6x6/fast", BM_Uniform6x6<fast::Lattice>);
   uf->ArgName("level")->Unit(benchmark::kMillisecond);
   for (int k = g_smoke ? 2 : 1; k <= fast_levels; ++k) uf->Arg(k);
 
-  benchmark::RegisterBenchmark("MovingFeature/reference", BM_MovingFeature<Reference>)->Unit(benchmark::kMicrosecond);
-  benchmark::RegisterBenchmark("MovingFeature/fast", BM_MovingFeature<Fast>)->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("MovingFeature/reference", BM_MovingFeature<Graph>)->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("MovingFeature/fast", BM_MovingFeature<fast::Lattice>)->Unit(benchmark::kMicrosecond);
 
   auto* lat = benchmark::RegisterBenchmark("LoadLatency", BM_LoadLatency);
   lat->ArgName("bytes")->Unit(benchmark::kMicrosecond);
@@ -378,8 +378,8 @@ int verify() {
     fast::Lattice fst = mix.start;
     bool agree = canonical_state(ref) == fast::canonical_state(fst);
     for (const Op& op : mix.ops) {
-      const bool a = op.refine ? Reference::refine(ref, op.at) : Reference::coarsen(ref, op.at);
-      const bool b = op.refine ? Fast::refine(fst, op.at) : Fast::coarsen(fst, op.at);
+      const bool a = op.refine ? refine(ref, op.at).applied() : coarsen(ref, op.at).applied();
+      const bool b = op.refine ? refine(fst, op.at).applied() : coarsen(fst, op.at).applied();
       agree = agree && a && b;
     }
     expect(agree && canonical_state(ref) == fast::canonical_state(fst),
@@ -387,16 +387,16 @@ int verify() {
   }
   {
     const LatticeSize size{6, 6, g_smoke ? 2 : 4};
-    Graph ref = Reference::make(size);
-    fast::Lattice fst = Fast::make(size);
-    const std::size_t a = refine_uniformly<Reference>(ref, size), b = refine_uniformly<Fast>(fst, size);
+    Graph ref(size);
+    fast::Lattice fst(size);
+    const std::size_t a = refine_uniformly<Graph>(ref, size), b = refine_uniformly<fast::Lattice>(fst, size);
     expect(a == b && canonical_state(ref) == fast::canonical_state(fst),
            "uniform 6x6 to level " + std::to_string(size.L) + " (" + std::to_string(a) + " refines)");
   }
   {
     const LatticeSize size{4, 4, 4};
-    MovingFeature<Reference> ra(size, 0.5 * static_cast<double>(level0_side(size)), 64);
-    MovingFeature<Fast> fa(size, 0.5 * static_cast<double>(level0_side(size)), 64);
+    MovingFeature<Graph> ra(size, 0.5 * static_cast<double>(level0_side(size)), 64);
+    MovingFeature<fast::Lattice> fa(size, 0.5 * static_cast<double>(level0_side(size)), 64);
     bool agree = true;
     std::size_t ops = 0;
     for (int f = 0; f < (g_smoke ? 16 : 128); ++f) {
@@ -409,17 +409,17 @@ int verify() {
   return failures;
 }
 
-template <class Impl>
+template <AdaptiveLattice L>
 int instructions_run(std::int64_t cells, bool random) {
   const LatticeSize size = square_lattice(cells, 4);
-  auto g = Impl::make(size);
+  L g(size);
   const std::vector<Point>& order = cell_order(size, random);
   const std::size_t batch = std::min<std::size_t>(order.size() / 4, 4096);
   std::size_t applied = 0;
   for (std::size_t round = 0; round < 5; ++round) {
     const std::size_t begin = round * batch % (order.size() - batch + 1);
-    for (std::size_t i = begin; i < begin + batch; ++i) applied += Impl::refine(g, order[i]);
-    for (std::size_t i = begin; i < begin + batch; ++i) applied += Impl::coarsen(g, order[i]);
+    for (std::size_t i = begin; i < begin + batch; ++i) applied += refine(g, order[i]).applied();
+    for (std::size_t i = begin; i < begin + batch; ++i) applied += coarsen(g, order[i]).applied();
 #if BCCMIS_BENCH_HAVE_CALLGRIND
     if (round == 0) CALLGRIND_ZERO_STATS;  // the first round grows the pools: not counted
 #endif
@@ -454,8 +454,8 @@ int main(int argc, char** argv) {
     long long cells = 0;
     int order = 0;
     if (std::sscanf(instructions.c_str(), "%15[a-z],%lld,%d", impl, &cells, &order) != 3) return 2;
-    return std::strcmp(impl, "fast") == 0 ? instructions_run<Fast>(cells, order != 0)
-                                          : instructions_run<Reference>(cells, order != 0);
+    return std::strcmp(impl, "fast") == 0 ? instructions_run<bccmis::fast::Lattice>(cells, order != 0)
+                                          : instructions_run<bccmis::Graph>(cells, order != 0);
   }
   if (do_verify && verify() != 0) return 1;
   register_all();

@@ -9,7 +9,7 @@
 // level-L cell per frame (bench/workloads.h MovingFeature, whose geometry
 // P4estFeature below repeats).
 //
-//   Batch/bccmis_fast/leaves:N   MovingFeature<Fast>'s constructor: for each
+//   Batch/bccmis_fast/leaves:N   MovingFeature<fast::Lattice>'s constructor: for each
 //     level-L cell meeting the disk, refine its leaf down to level L with the
 //     balancing cascade (local operations only).
 //   Batch/bccmis_fast_reserved/leaves:N  the same after reserve(N) (the leaf
@@ -212,16 +212,16 @@ void step_p4est(benchmark::State& state, Workload w) {
 void register_all() {
   for (const Workload& w : workloads()) {
     const std::string n = "/leaves:" + std::to_string(w.leaves);
-    benchmark::RegisterBenchmark(("Batch/bccmis_fast" + n).c_str(), batch_bccmis<LocalFeature<Fast>>, w)
+    benchmark::RegisterBenchmark(("Batch/bccmis_fast" + n).c_str(), batch_bccmis<LocalFeature<fast::Lattice>>, w)
         ->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("Batch/bccmis_fast_reserved" + n).c_str(), batch_bccmis<LocalFeature<Fast>, true>, w)
+    benchmark::RegisterBenchmark(("Batch/bccmis_fast_reserved" + n).c_str(), batch_bccmis<LocalFeature<fast::Lattice>, true>, w)
         ->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("Batch/bccmis_fast_pointwise" + n).c_str(), batch_bccmis<MovingFeature<Fast>>, w)
+    benchmark::RegisterBenchmark(("Batch/bccmis_fast_pointwise" + n).c_str(), batch_bccmis<MovingFeature<fast::Lattice>>, w)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("Batch/p4est" + n).c_str(), batch_p4est, w)->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("Step/bccmis_fast" + n).c_str(), step_bccmis<LocalFeature<Fast>>, w)
+    benchmark::RegisterBenchmark(("Step/bccmis_fast" + n).c_str(), step_bccmis<LocalFeature<fast::Lattice>>, w)
         ->Unit(benchmark::kMicrosecond);
-    benchmark::RegisterBenchmark(("Step/bccmis_fast_boxscan" + n).c_str(), step_bccmis<MovingFeature<Fast>>, w)
+    benchmark::RegisterBenchmark(("Step/bccmis_fast_boxscan" + n).c_str(), step_bccmis<MovingFeature<fast::Lattice>>, w)
         ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark(("Step/p4est" + n).c_str(), step_p4est, w)->Unit(benchmark::kMicrosecond);
   }
@@ -232,8 +232,8 @@ void register_all() {
 // import into the same lattice (checker included). Returns the failures.
 int verify_one(const Workload& w, int turn, int frames) {
   const p4est_bridge::Brick brick(w.size);
-  LocalFeature<Fast> ours(w.size, w.radius, turn);
-  MovingFeature<Fast> scan(w.size, w.radius, turn);
+  LocalFeature<fast::Lattice> ours(w.size, w.radius, turn);
+  MovingFeature<fast::Lattice> scan(w.size, w.radius, turn);
   P4estFeature theirs(brick, w.radius, turn);
   std::size_t ops = 0, scan_ops = 0;
   for (int f = 0; f <= frames; ++f) {

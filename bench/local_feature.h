@@ -25,22 +25,21 @@
 
 namespace bccmis::bench {
 
-template <class Impl>
+template <AdaptiveLattice L>
 class LocalFeature {
  public:
-  using State = typename Impl::State;
   /// `reserve_cells` > 0: room for that many cells before the build (the
   /// fast lattice's reserve(); the pools and the position table then never
   /// grow during the build).
   LocalFeature(const LatticeSize& size, double radius, int frames_per_turn, std::size_t reserve_cells = 0)
-      : size_(size), g_(Impl::make(size)), radius_(radius), frames_(frames_per_turn) {
-    if constexpr (requires(State& s) { s.reserve(reserve_cells); })
+      : size_(size), g_(size), radius_(radius), frames_(frames_per_turn) {
+    if constexpr (requires(L& s) { s.reserve(reserve_cells); })
       if (reserve_cells > 0) g_.reserve(reserve_cells);
     side_ = static_cast<double>(level0_side(size));
     disk_ = position(0);
     for (int l = 0; l < size_.L; ++l)
       for_cells(l, disk_, radius_, nullptr, 0, [&](const Point& c) {
-        if (Impl::is_center(g_, c) && Impl::level_of(g_, c) == l) refine_balanced(c, l);
+        if (is_center(g_, c) && level_of(g_, c) == l) refine_balanced(c, l);
       });
   }
 
@@ -58,14 +57,14 @@ class LocalFeature {
     for (int l = size_.L - 1; l >= 0; --l) {
       const double margin = radius_ + 1.5 * static_cast<double>(cell_side(size_, l));
       for_cells(l, old, margin, &disk_, radius_, [&](const Point& n) {
-        if (!Impl::can_coarsen(g_, n)) ops_ += Impl::coarsen(g_, n);
+        if (!can_coarsen(g_, n)) ops_ += coarsen(g_, n).applied();
       });
     }
     for_cells(size_.L, disk_, radius_, &old, radius_, [&](const Point& p) { refine_to(p, size_.L); });
     return ops_;
   }
 
-  const State& state() const { return g_; }
+  const L& state() const { return g_; }
 
  private:
   struct Disk {
@@ -130,12 +129,12 @@ class LocalFeature {
 
   // LeafRefiner (workloads.h), locating from level L up: the leaves a frame
   // visits are fine.
-  LeafRefiner<Impl> refiner() { return LeafRefiner<Impl>(g_, size_, LeafRefiner<Impl>::Search::FinestFirst, ops_); }
+  LeafRefiner<L> refiner() { return LeafRefiner<L>(g_, size_, LeafRefiner<L>::Search::FinestFirst, ops_); }
   void refine_to(const Point& p, int target) { refiner().refine_to(p, target); }
   bool refine_balanced(const Point& c, int level) { return refiner().refine_balanced(c, level); }
 
   LatticeSize size_;
-  State g_;
+  L g_;
   double radius_;
   int frames_;
   double side_ = 0;

@@ -1,6 +1,7 @@
-// Workloads shared by the benchmarks: the two implementations behind one
-// static adapter, and the operation sequences every benchmark replays
-// through both (so every ratio compares the same sequence).
+// Workloads shared by the benchmarks: the operation sequences every
+// benchmark replays through both implementations (so every ratio compares
+// the same sequence), written once over the lattice vocabulary
+// (bccmis/lattice.h) and instantiated for Graph and fast::Lattice.
 #pragma once
 
 #include <algorithm>
@@ -16,43 +17,10 @@
 #include "bccmis/fast/lattice.h"
 #include "bccmis/format.h"
 #include "bccmis/graph.h"
+#include "bccmis/lattice.h"
 #include "bccmis/ops.h"
 
 namespace bccmis::bench {
-
-// ---- The implementations ---------------------------------------------------------------
-
-/// The reference core (std::set, Transaction): the oracle.
-struct Reference {
-  using State = Graph;
-  static constexpr const char* name = "reference";
-  static State make(const LatticeSize& s) { return make_lattice(s); }
-  static bool refine(State& g, const Point& c) { return bccmis::refine(g, c).applied(); }
-  static bool coarsen(State& g, const Point& n) { return bccmis::coarsen(g, n).applied(); }
-  static std::optional<RefineRefusal> can_refine(const State& g, const Point& c) { return bccmis::can_refine(g, c); }
-  static std::optional<CoarsenRefusal> can_coarsen(const State& g, const Point& n) {
-    return bccmis::can_coarsen(g, n);
-  }
-  static bool is_center(const State& g, const Point& c) { return g.is_center(c); }
-  static int level_of(const State& g, const Point& c) { return g.level_of(c); }
-  static std::size_t cells(const State& g) { return g.C.size(); }
-  static std::string canonical(const State& g) { return canonical_state(g); }
-};
-
-/// bccmis::fast::Lattice.
-struct Fast {
-  using State = fast::Lattice;
-  static constexpr const char* name = "fast";
-  static State make(const LatticeSize& s) { return fast::Lattice(s); }
-  static bool refine(State& g, const Point& c) { return g.refine(c).applied(); }
-  static bool coarsen(State& g, const Point& n) { return g.coarsen(n).applied(); }
-  static std::optional<RefineRefusal> can_refine(const State& g, const Point& c) { return g.can_refine(c); }
-  static std::optional<CoarsenRefusal> can_coarsen(const State& g, const Point& n) { return g.can_coarsen(n); }
-  static bool is_center(const State& g, const Point& c) { return g.is_center(c); }
-  static int level_of(const State& g, const Point& c) { return g.level_of(c); }
-  static std::size_t cells(const State& g) { return g.cell_count(); }
-  static std::string canonical(const State& g) { return fast::canonical_state(g); }
-};
 
 // ---- Geometry helpers --------------------------------------------------------------------
 
@@ -158,13 +126,12 @@ inline Mix make_mix(std::int64_t cells, std::size_t count, std::uint64_t seed) {
 /// position, and a coarser edge-neighbor in the way is refined first.
 /// `Search` is the order in which locate tries the levels: from level 0 down
 /// (cheap when the leaves are coarse) or from level L up (when they are fine).
-template <class Impl>
+template <AdaptiveLattice L>
 class LeafRefiner {
  public:
-  using State = typename Impl::State;
   enum class Search { CoarsestFirst, FinestFirst };
 
-  LeafRefiner(State& g, const LatticeSize& size, Search search, std::size_t& ops)
+  LeafRefiner(L& g, const LatticeSize& size, Search search, std::size_t& ops)
       : g_(g), size_(size), search_(search), ops_(ops) {}
 
   /// The leaf cell containing p (strictly inside a level-L cell), and its level.
@@ -173,7 +140,7 @@ class LeafRefiner {
     for (int l = up ? size_.L : 0;; l += up ? -1 : 1) {
       const std::int64_t s = cell_side(size_, l);
       const Point c{(p.x / s) * s + s / 2, (p.y / s) * s + s / 2};
-      if (Impl::is_center(g_, c) || l == (up ? 0 : size_.L)) {
+      if (is_center(g_, c) || l == (up ? 0 : size_.L)) {
         level = l;
         return c;
       }
@@ -192,7 +159,7 @@ class LeafRefiner {
 
   /// Refines c, first refining any coarser edge-neighbor (recursively).
   bool refine_balanced(const Point& c, int level) {
-    const auto why = Impl::can_refine(g_, c);
+    const auto why = can_refine(g_, c);
     if (why == RefineRefusal::CoarserNeighbor) {
       const std::int64_t h = cell_side(size_, level) / 2;
       const std::int64_t W = size_.W * level0_side(size_), H = size_.H * level0_side(size_);
@@ -201,29 +168,28 @@ class LeafRefiner {
         if (q.x < 0 || q.y < 0 || q.x >= W || q.y >= H) continue;
         int nl = 0;
         const Point x = locate(q, nl);
-        if (nl < level && Impl::is_center(g_, x)) refine_balanced(x, nl);
+        if (nl < level && is_center(g_, x)) refine_balanced(x, nl);
       }
     } else if (why) {
       return false;
     }
-    const bool ok = Impl::refine(g_, c);
+    const bool ok = refine(g_, c).applied();
     ops_ += ok;
     return ok;
   }
 
  private:
-  State& g_;
+  L& g_;
   LatticeSize size_;
   Search search_;
   std::size_t& ops_;
 };
 
-template <class Impl>
+template <AdaptiveLattice L>
 class MovingFeature {
  public:
-  using State = typename Impl::State;
   MovingFeature(const LatticeSize& size, double radius, int frames_per_turn)
-      : size_(size), g_(Impl::make(size)), radius_(radius), frames_(frames_per_turn) {
+      : size_(size), g_(size), radius_(radius), frames_(frames_per_turn) {
     side_ = static_cast<double>(level0_side(size));
     disk_ = position(0);
     for (const Point& p : disk_points(disk_)) refine_to(p, size_.L);
@@ -243,7 +209,7 @@ class MovingFeature {
       const double margin = radius_ + 2 * static_cast<double>(s);
       for (const Point& n : centers_in_box(old.x - margin, old.y - margin, old.x + margin, old.y + margin, s)) {
         if (meets(n, l, disk_)) continue;
-        if (!Impl::can_coarsen(g_, n)) ops_ += Impl::coarsen(g_, n);
+        if (!can_coarsen(g_, n)) ops_ += coarsen(g_, n).applied();
       }
     }
     // Refine where the disk arrived (cells it already covered are at level L).
@@ -252,7 +218,7 @@ class MovingFeature {
     return ops_;
   }
 
-  const State& state() const { return g_; }
+  const L& state() const { return g_; }
 
  private:
   struct Disk {
@@ -296,11 +262,11 @@ class MovingFeature {
   }
 
   void refine_to(const Point& p, int target) {
-    LeafRefiner<Impl>(g_, size_, LeafRefiner<Impl>::Search::CoarsestFirst, ops_).refine_to(p, target);
+    LeafRefiner<L>(g_, size_, LeafRefiner<L>::Search::CoarsestFirst, ops_).refine_to(p, target);
   }
 
   LatticeSize size_;
-  State g_;
+  L g_;
   double radius_;
   int frames_;
   double side_ = 0;

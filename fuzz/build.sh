@@ -11,8 +11,8 @@
 #
 # For every target it writes $OUT/<target>, $OUT/<target>_seed_corpus.zip (from
 # fuzz/corpus/<target>/), and $OUT/<target>.dict / .options when they exist.
-# Only the core, the checker and the fast implementation are compiled (no
-# GTest, CLI11 or CGAL), so the build needs nothing but a C++20 compiler.
+# Only the core, the checker, the fast implementation and tests/testing are
+# compiled (no GTest, CLI11 or CGAL), so the build needs nothing but a C++20 compiler.
 #
 # Local libFuzzer build:
 #   CXX=clang++ CXXFLAGS="-fsanitize=address,undefined,fuzzer-no-link -fno-sanitize-recover=all -g -O1" \
@@ -32,13 +32,15 @@ mkdir -p "$OUT"
 work=$(mktemp -d "${WORK:-/tmp}/bccmis-fuzz-build.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 
-includes=(-I"$root/src" -I"$here")
+includes=(-I"$root/src" -I"$root/tests" -I"$here")
 # The libraries the targets link: the reference core, the checker (layers
-# 1-4) and the fast implementation. Compiled once, with the service's flags.
+# 1-4), the fast implementation and the shared test library (tests/testing:
+# the lock-step twin, the byte programs). Compiled once, with the service's flags.
 # (fuzz_conformance also needs the oracle library, whose page template CMake
 # generates: it is built by the CMake fuzz preset only.)
 objects=()
-for source in "$root"/src/bccmis/*.cpp "$root"/src/bccmis/invariants/*.cpp "$root"/src/bccmis/fast/*.cpp; do
+for source in "$root"/src/bccmis/*.cpp "$root"/src/bccmis/invariants/*.cpp "$root"/src/bccmis/fast/*.cpp \
+              "$root"/tests/testing/*.cpp; do
   object="$work/$(basename "$(dirname "$source")")_$(basename "$source" .cpp).o"
   # shellcheck disable=SC2086  # CXXFLAGS is a list of flags
   $CXX $CXXFLAGS -std=c++20 "${includes[@]}" -c "$source" -o "$object"

@@ -34,7 +34,9 @@
 #include "bccmis/oracle/conformance.h"
 #include "bccmis/format.h"
 #include "bccmis/oracle/view.h"
+#include "bccmis/trace.h"
 #include "fuzz_util.h"
+#include "testing/byte_program.h"
 
 namespace {
 
@@ -54,7 +56,7 @@ auto guarded(const Trace& trace, std::string_view what, F&& f) -> decltype(f()) 
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  fuzz::Bytes in(data, size);
+  testing::Bytes in(data, size);
   std::mt19937_64 rng(in.next());
   const Trace trace = random_trace(rng, 12);
   const std::string reference = reference_output(trace);
@@ -96,7 +98,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   ImplRun completed = run;
   if (run.out.find("bccmis-state ") == std::string::npos) {
     std::string log;
-    completed.out += canonical_state(replay(trace, log));
+    completed.out += canonical_state(replay_on<Graph>(trace, log));
   }
   const std::string completed_verdict = guarded(trace, "compare_run", [&] { return compare_run(trace, completed); });
   const std::optional<ViewSide> side =

@@ -31,9 +31,11 @@
 
 #include "bccmis/invariants/checked.h"
 #include "bccmis/format.h"
+#include "bccmis/geometry.h"
 #include "bccmis/invariants/invariants.h"
 #include "bccmis/ops.h"
 #include "fuzz_util.h"
+#include "testing/byte_program.h"
 
 namespace {
 
@@ -42,8 +44,6 @@ using namespace bccmis;
 // The checker runs twice per operation (checked_*), so inputs stay small.
 constexpr std::size_t kMaxOps = 96;
 constexpr std::string_view kTarget = "fuzz_refine_coarsen";
-
-using fuzz::Bytes;
 
 class Run {
  public:
@@ -141,15 +141,11 @@ class Run {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 3) return 0;
-  Bytes in(data, size);
-  Run run(fuzz::decode_lattice(in, 3, 5));
-  for (std::size_t op = 0; op < kMaxOps && !in.empty(); ++op) {
-    const std::uint8_t s = in.next();
-    const bool invert = (s & 0x80) != 0;
-    fuzz::decode_operation(
-        in, s, run.graph(), [&](const Point& c) { run.refine_at(c, invert); },
-        [&](const Point& n) { run.coarsen_at(n, invert); });
-  }
+  testing::Bytes in(data, size);
+  Run run(testing::decode_lattice(in, 3, 5));
+  testing::run_program(
+      in, kMaxOps, run.graph(), [&](const Point& c, std::uint8_t s) { run.refine_at(c, (s & 0x80) != 0); },
+      [&](const Point& n, std::uint8_t s) { run.coarsen_at(n, (s & 0x80) != 0); }, [](std::uint8_t) {});
   run.coarsen_everything();
   return 0;
 }

@@ -24,6 +24,7 @@
 
 #include "bccmis/invariants/checked.h"
 #include "bccmis/format.h"
+#include "bccmis/geometry.h"
 #include "bccmis/invariants/invariants.h"
 #include "bccmis/ops.h"
 #include "fuzz_util.h"

@@ -5,8 +5,8 @@
 //   a hang or a huge allocation: TraceLimits caps the initial lattice).
 // - What parses must print back (format_trace) to a text that parses to the
 //   same trace.
-// - The first kMaxCommands commands are replayed with bccmis::replay (the
-//   CLI's code path); after every command find_violation must find nothing.
+// - The first kMaxCommands commands are replayed with replay_on<Graph> (the
+//   one replay of bccmis/trace.h); after every command find_violation must find nothing.
 //   Refusals are ordinary results. A violation or an exception aborts with
 //   the trace replayed so far.
 #include <cstddef>
@@ -17,6 +17,7 @@
 
 #include "bccmis/format.h"
 #include "bccmis/invariants/invariants.h"
+#include "bccmis/trace.h"
 #include "fuzz_util.h"
 
 namespace {
@@ -68,7 +69,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::string log;
   std::size_t decisions = 0;
   try {
-    replay(trace, log, [&](const TraceCommand& c, const Graph& g, std::string_view decision) {
+    replay_on<Graph>(trace, log, [&](const TraceCommand& c, const Graph& g, std::string_view decision) {
       so_far.commands.push_back(c);
       if (!decision.empty()) ++decisions;
       if (auto v = find_violation(g))

@@ -15,6 +15,7 @@
 
 #include "bccmis/apps/balance.h"
 #include "bccmis/format.h"
+#include "bccmis/geometry.h"
 #include "bccmis/invariants/invariants.h"
 #include "bccmis/ops.h"
 

@@ -3,6 +3,7 @@
 // wrong (the comment says what the literal reading does instead).
 #include <gtest/gtest.h>
 
+#include "bccmis/geometry.h"
 #include "test_util.h"
 
 namespace bccmis {

@@ -30,7 +30,7 @@ if(TARGET bccmis::fast)
   add_executable(fast_differential_test fast_differential_test.cpp)
   target_include_directories(fast_differential_test PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
   target_link_libraries(fast_differential_test PRIVATE rapidcheck_gtest GTest::gtest_main
-                        bccmis::fast bccmis::invariants bccmis::warnings)
+                        bccmis::testing bccmis::fast bccmis::invariants bccmis::warnings)
   gtest_discover_tests(fast_differential_test DISCOVERY_MODE PRE_TEST
     PROPERTIES LABELS property ENVIRONMENT "RC_PARAMS=seed=${BCCMIS_FAST_RC_SEED} max_success=100")
 endif()

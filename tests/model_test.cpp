@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "generators.h"
+#include "testing/generators.h"
 
 namespace bccmis::proptest {
 namespace {
@@ -38,8 +38,7 @@ Point point_of(const model::Pos& p) { return Point{p.x, p.y}; }
 
 // Runs op at `at` on the graph and compares everything with the model.
 void run_and_compare(OpKind op, const Point& at, const model::State& before, Sut& sut) {
-  sut.trace.commands.push_back(
-      TraceCommand{op == OpKind::Refine ? TraceCommand::Kind::Refine : TraceCommand::Kind::Coarsen, at, 0});
+  sut.trace.commands.push_back(TraceCommand{trace_kind(op), at, 0});
   auto fail = [&](const std::string& msg) {
     RC_FAIL(msg + "\nreproducer trace:\n" + format_trace(sut.trace));
   };

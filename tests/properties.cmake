@@ -9,7 +9,7 @@ set(BCCMIS_RC_SEED 20090303)  # the paper's publication date
 # RapidCheck properties of the reference core.
 add_executable(properties_test properties_test.cpp)
 target_include_directories(properties_test PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
-target_link_libraries(properties_test PRIVATE rapidcheck_gtest GTest::gtest_main
+target_link_libraries(properties_test PRIVATE rapidcheck_gtest GTest::gtest_main bccmis::testing
                       bccmis::core bccmis::invariants bccmis::warnings)
 target_compile_definitions(properties_test PRIVATE BCCMIS_REGRESSIONS_DIR="${CMAKE_CURRENT_SOURCE_DIR}/regressions")
 gtest_discover_tests(properties_test DISCOVERY_MODE PRE_TEST
@@ -18,7 +18,7 @@ gtest_discover_tests(properties_test DISCOVERY_MODE PRE_TEST
 # Model-based test: the graph against the independent quadtree-leaf model.
 add_executable(model_test model_test.cpp)
 target_include_directories(model_test PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
-target_link_libraries(model_test PRIVATE rapidcheck_gtest GTest::gtest_main
+target_link_libraries(model_test PRIVATE rapidcheck_gtest GTest::gtest_main bccmis::testing
                       bccmis::core bccmis::invariants bccmis::warnings)
 gtest_discover_tests(model_test DISCOVERY_MODE PRE_TEST
   PROPERTIES LABELS property ENVIRONMENT "RC_PARAMS=seed=${BCCMIS_RC_SEED} max_success=300")
@@ -40,7 +40,7 @@ if(TARGET bccmis::explore)
   # Planted-bug mutants: every property suite must be able to fail.
   add_executable(mutants_property_test mutants/mutant_ops.cpp mutants/mutants_test.cpp)
   target_include_directories(mutants_property_test PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
-  target_link_libraries(mutants_property_test PRIVATE rapidcheck_gtest GTest::gtest_main
+  target_link_libraries(mutants_property_test PRIVATE rapidcheck_gtest GTest::gtest_main bccmis::testing
                         bccmis::explore bccmis::core bccmis::invariants bccmis::warnings)
   target_compile_definitions(mutants_property_test PRIVATE
                              BCCMIS_REGRESSIONS_DIR="${CMAKE_CURRENT_SOURCE_DIR}/regressions")

@@ -15,7 +15,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "generators.h"
+#include "testing/generators.h"
 
 namespace bccmis::proptest {
 namespace {

@@ -24,6 +24,7 @@
 
 #include "bccmis/invariants/checked.h"
 #include "bccmis/format.h"
+#include "bccmis/geometry.h"
 #include "bccmis/graph.h"
 #include "bccmis/ops.h"
 

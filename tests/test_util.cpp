@@ -2,11 +2,13 @@
 
 #include <stdexcept>
 
+#include "bccmis/trace.h"
+
 namespace bccmis::test {
 
 Graph build(const std::string& trace_text) {
   std::string log;
-  Graph g = replay(parse_trace(trace_text, "<test>"), log);
+  Graph g = replay_on<Graph>(parse_trace(trace_text, "<test>"), log);
   if (log.find("refused") != std::string::npos)
     throw std::runtime_error("test setup: an operation was refused:\n" + log);
   return g;
@@ -14,7 +16,7 @@ Graph build(const std::string& trace_text) {
 
 std::string decisions(const std::string& trace_text) {
   std::string log;
-  replay(parse_trace(trace_text, "<test>"), log);
+  replay_on<Graph>(parse_trace(trace_text, "<test>"), log);
   return log;
 }
 

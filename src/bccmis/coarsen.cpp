@@ -20,9 +20,9 @@
 // and the equation as text. Deviations from the paper are marked
 // `type=deviation` and explained in spec/errata.toml.
 
-#include <bit>
 #include <stdexcept>
 
+#include "bccmis/geometry.h"
 #include "bccmis/ops.h"
 #include "bccmis/set_ops.h"
 #include "bccmis/transaction.h"
@@ -37,19 +37,6 @@ std::string_view code(CoarsenRefusal r) {
     case CoarsenRefusal::FinerNeighbor: return "finer-neighbor";
   }
   return "?";
-}
-
-std::optional<int> refined_center_level(const LatticeSize& size, const Point& p) {
-  const std::int64_t S = level0_side(size);
-  // Strictly inside the domain; W*S <= 2^62 so the products do not overflow.
-  if (p.x <= 0 || p.y <= 0 || p.x >= size.W * S || p.y >= size.H * S) return std::nullopt;
-  // A level-l center has both coordinates odd multiples of 2^(L-l).
-  const int tx = std::countr_zero(static_cast<std::uint64_t>(p.x));
-  const int ty = std::countr_zero(static_cast<std::uint64_t>(p.y));
-  if (tx != ty) return std::nullopt;
-  const int l = size.L - tx;
-  if (l < 0 || l >= size.L) return std::nullopt;  // grid node (l < 0) or level-L center
-  return l;
 }
 
 std::optional<CoarsenRefusal> can_coarsen(const Graph& g, const Point& n) {

@@ -21,11 +21,16 @@
 //   cell_count(g), node_count(g)   |C| and |N|
 //   write_canonical_state(out, g)  the canonical text of spec/formats.md
 //
+// contains(range, p) asks any of the point ranges above whether it holds p.
+// The lattice geometry written over this vocabulary (angular order, edge
+// and touching neighbors, refined_center_level) is bccmis/geometry.h.
+//
 // The point type and the dimension are properties of the lattice type
 // (L::point_type, L::size_type, L::dimension), so a lattice of another
 // dimension models the same concept with its own point type.
 #pragma once
 
+#include <algorithm>
 #include <concepts>
 #include <cstddef>
 #include <optional>
@@ -74,6 +79,16 @@ concept AdaptiveLattice =
       { node_count(cg) } -> std::same_as<std::size_t>;
       write_canonical_state(out, cg);
     };
+
+/// Whether a range of points (a neighbor set, Y, J, C, N) holds p: its own
+/// lookup where it has one (std::set, fast::SmallPoints), a scan otherwise.
+template <class P, PointRange<P> R>
+bool contains(const R& range, const P& p) {
+  if constexpr (requires { range.contains(p); })
+    return range.contains(p);
+  else
+    return std::ranges::find(range, p) != std::ranges::end(range);
+}
 
 /// The result types of refine and coarsen on lattice L.
 template <AdaptiveLattice L>

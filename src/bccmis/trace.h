@@ -1,9 +1,10 @@
 // bccmis: the one trace stepper, and replay on it.
 //
-// Every tool that runs a trace (the CLI's replay, explore's reproducers, the
-// viewer, conformance, the fuzz targets, the tests) runs it through step()
-// and replay() below, on any lattice that models AdaptiveLattice
-// (bccmis/lattice.h). The decision-log line of a command is the format of
+// Every tool that runs a trace (the CLI's replay, the viewer, conformance,
+// the fuzz targets, the lock-step twin of tests/testing, the tests) runs it
+// through step() and replay_on() below, on any lattice that models
+// AdaptiveLattice (bccmis/lattice.h); explore reports the calls it makes as
+// StepResults. The decision-log line of a command is the format of
 // spec/formats.md, "Decision log".
 #pragma once
 

@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "bccmis/explore/explore.h"
-#include "generators.h"
+#include "testing/generators.h"
 #include "mutants/mutant_ops.h"
 
 namespace bccmis::proptest {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "bccmis/fast/lattice.h"
-#include "bccmis/oracle/oracle.h"
+#include "bccmis/geometry.h"
 #include "bccmis/text_writer.h"
 
 namespace bccmis {

@@ -17,6 +17,7 @@
 
 #include "bccmis/format.h"
 #include "bccmis/invariants/invariants.h"
+#include "bccmis/trace.h"
 
 namespace bccmis {
 namespace {
@@ -276,11 +277,7 @@ class StateProcessor {
   }
 
  private:
-  // The outcome of one call: applied, or the refusal code.
-  struct Call {
-    bool applied = false;
-    std::string_view refusal;
-  };
+  using Call = StepResult<Graph>;  // applied, or the refusal code
 
   static std::string op_text(TraceCommand::Kind kind, const Point& v) {
     return (kind == TraceCommand::Kind::Refine ? "refine " : "coarsen ") + point_text(v);
@@ -289,14 +286,10 @@ class StateProcessor {
     return kind == TraceCommand::Kind::Refine ? TraceCommand::Kind::Coarsen : TraceCommand::Kind::Refine;
   }
 
-  // Runs one operation on g_; exceptions propagate.
+  // Runs one operation on g_ with the operations under test; exceptions propagate.
   Call call(TraceCommand::Kind kind, const Point& v) {
-    if (kind == TraceCommand::Kind::Refine) {
-      const RefineResult r = refine_(g_, v);
-      return r.applied() ? Call{true, {}} : Call{false, code(*r.refused)};
-    }
-    const CoarsenResult r = coarsen_(g_, v);
-    return r.applied() ? Call{true, {}} : Call{false, code(*r.refused)};
+    if (kind == TraceCommand::Kind::Refine) return {refine_(g_, v)};
+    return {coarsen_(g_, v)};
   }
 
   bool stop() const { return options_.stop_at_first_failure && out_->failed; }
@@ -324,10 +317,10 @@ class StateProcessor {
       } catch (const std::exception&) {
         continue;  // not the refused call that changed the state
       }
-      if (c.applied) continue;  // it was refused on the original state only if it is refused here too
+      if (c.applied()) continue;  // it was refused on the original state only if it is refused here too
       encode_into(g_, grid_, scratch_);
       if (scratch_ != *key_) {
-        message = op_text(kind, v) + " was refused (" + std::string(c.refusal) + ") but changed the state";
+        message = op_text(kind, v) + " was refused (" + std::string(c.refusal()) + ") but changed the state";
         extra = {TraceCommand{kind, v, 0}};
         break;
       }
@@ -350,7 +343,7 @@ class StateProcessor {
     } catch (const std::exception& e) {
       return fail_after_diagnosis(op_text(kind, v) + " threw: " + e.what(), {cmd});
     }
-    if (!r.applied) {
+    if (!r.applied()) {
       ++out_->refused;
       if (options_.try_every_op) pending_.emplace_back(kind, v);
       return;
@@ -372,9 +365,9 @@ class StateProcessor {
       return fail_after_diagnosis(op_text(back_kind, v) + " right after " + op_text(kind, v) + " threw: " + e.what(),
                                   {cmd, back_cmd});
     }
-    if (!back.applied)
+    if (!back.applied())
       return fail_after_diagnosis(pair + ": the " + (back_kind == TraceCommand::Kind::Refine ? "refine" : "coarsen") +
-                                      " was refused (" + std::string(back.refusal) + ")",
+                                      " was refused (" + std::string(back.refusal()) + ")",
                                   {cmd, back_cmd});
     encode_into(g_, grid_, scratch_);
     if (scratch_ != *key_) return fail_after_diagnosis(pair + " does not restore the state", {cmd, back_cmd});

@@ -398,7 +398,6 @@ class Lattice {
 
 // ---- The lattice vocabulary (bccmis/lattice.h): Lattice models AdaptiveLattice
 
-inline Lattice make_lattice(const LatticeSize& size) { return Lattice(size); }
 inline const LatticeSize& size_of(const Lattice& g) { return g.size(); }
 inline std::optional<RefineRefusal> can_refine(const Lattice& g, const Point& c) { return g.can_refine(c); }
 inline std::optional<CoarsenRefusal> can_coarsen(const Lattice& g, const Point& n) { return g.can_coarsen(n); }
@@ -427,9 +426,10 @@ void write_canonical_state(std::ostream& out, const Lattice& g);
 /// bccmis::canonical_state(g.to_graph()), printed from the pools directly.
 std::string canonical_state(const Lattice& g);
 
-/// Replays `trace` like bccmis::replay: one decision-log line per refine and
-/// coarsen appended to `log`; `after` (if set) is called after every command
-/// with the command and its decision line (empty for `check`).
+/// replay_on<Lattice> (bccmis/trace.h) with a std::function observer, for
+/// tools/fast_replay.cpp: one decision-log line per refine and coarsen
+/// appended to `log`; `after` (if set) is called after every command with the
+/// command and its decision line (empty for `check`).
 using FastReplayObserver = std::function<void(const TraceCommand&, const Lattice&, std::string_view decision)>;
 Lattice replay(const Trace& trace, std::string& log, const FastReplayObserver& after = {});
 

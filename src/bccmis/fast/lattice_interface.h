@@ -1,7 +1,9 @@
 // bccmis: one interface over both implementations, chosen at run time.
 //
-// Tools (the CLI's --impl=reference|fast, conformance harnesses, apps) hold a
-// LatticeInterface and never name an implementation:
+// The command-line tool (tools/bccmis, --impl=reference|fast) holds a
+// LatticeInterface and apps/apps.cpp reads --impl with parse_impl; every
+// other user runs both implementations through the vocabulary of
+// bccmis/lattice.h. A LatticeInterface never names an implementation:
 //
 //   auto g = bccmis::make_lattice(bccmis::Impl::Fast, {6, 6, 5});
 //   if (auto r = g->refine({8, 8}); !r.applied()) std::cout << bccmis::code(*r.refused);

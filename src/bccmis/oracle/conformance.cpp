@@ -15,6 +15,7 @@
 #include "bccmis/invariants/invariants.h"
 #include "bccmis/oracle/oracle.h"
 #include "bccmis/oracle/view.h"
+#include "bccmis/trace.h"
 
 namespace bccmis {
 
@@ -133,7 +134,7 @@ ImplRun run_implementation(const std::string& command, const std::string& trace_
 
 std::string reference_output(const Trace& trace) {
   std::string log;
-  const Graph g = replay(trace, log);
+  const Graph g = replay_on<Graph>(trace, log);
   return log + canonical_state(g);
 }
 
@@ -150,7 +151,7 @@ std::string compare_run(const Trace& trace, const ImplRun& run) {
            (first_err.empty() ? "" : ": " + first_err);
   }
   std::string log;
-  const Graph expected = replay(trace, log);
+  const Graph expected = replay_on<Graph>(trace, log);
   std::vector<std::string> want, got;
   std::string want_state, got_state;
   split_output(log, want, want_state);
@@ -202,8 +203,7 @@ Trace random_trace(std::mt19937_64& rng, int max_ops) {
       c.kind = r < 92 ? TraceCommand::Kind::Refine : TraceCommand::Kind::Coarsen;
       c.at = {uniform(-1, t.size.W * S + 1), uniform(-1, t.size.H * S + 1)};
     }
-    if (c.kind == TraceCommand::Kind::Refine) refine(g, c.at);
-    else coarsen(g, c.at);
+    step(g, c);
     t.commands.push_back(c);
   }
   return t;
@@ -264,7 +264,7 @@ std::optional<ViewSide> implementation_side(const Trace& trace, const ImplRun& f
     // Decisions only: compare them with the reference's final state appended.
     ImplRun with_state = full;
     std::string log;
-    with_state.out += canonical_state(replay(trace, log));
+    with_state.out += canonical_state(replay_on<Graph>(trace, log));
     side.message = compare_run(trace, with_state);
   } else {
     side.message = compare_run(trace, full);
@@ -273,7 +273,7 @@ std::optional<ViewSide> implementation_side(const Trace& trace, const ImplRun& f
   side.step = trace.commands.size();
   if (full.timed_out || full.signal != 0 || full.exit_code != 0) return side;
   std::string log;
-  replay(trace, log);
+  replay_on<Graph>(trace, log);
   std::vector<std::string> want, got;
   std::string want_state, impl_state;
   split_output(log, want, want_state);

@@ -5,6 +5,8 @@
 #include <set>
 #include <utility>
 
+#include "bccmis/geometry.h"
+
 namespace bccmis {
 
 namespace {
@@ -49,20 +51,6 @@ std::string xml_escape(const std::string& s) {
 
 }  // namespace
 
-// Counter-clockwise order of directions in atan2 order, (-pi, pi]: first the
-// directions with y < 0 or along +x, then the others; within each half, u
-// comes before v iff v is counter-clockwise of u. The boundary nodes of a
-// cell lie at its corners and side midpoints, so their directions from the
-// center are multiples of 45 degrees and the signs of the components decide
-// the order exactly (no overflow for any coordinates).
-bool angle_less(const Point& u0, const Point& v0) {
-  auto sgn = [](std::int64_t a) { return static_cast<int>(a > 0) - static_cast<int>(a < 0); };
-  const int ux = sgn(u0.x), uy = sgn(u0.y), vx = sgn(v0.x), vy = sgn(v0.y);
-  auto half = [](int x, int y) { return (y < 0 || (y == 0 && x > 0)) ? 0 : 1; };
-  if (half(ux, uy) != half(vx, vy)) return half(ux, uy) < half(vx, vy);
-  return ux * vy - uy * vx > 0;
-}
-
 std::vector<std::string> diff_states(const Graph& a, const Graph& b) {
   std::vector<std::string> out;
   if (!(a.size == b.size))
@@ -101,14 +89,6 @@ std::vector<std::string> diff_states(const Graph& a, const Graph& b) {
     }
   }
   return out;
-}
-
-std::vector<Point> boundary_in_angular_order(const Graph& g, const Point& c) {
-  std::vector<Point> b(g.nbr(c).begin(), g.nbr(c).end());
-  std::sort(b.begin(), b.end(), [&](const Point& p, const Point& q) {
-    return angle_less({p.x - c.x, p.y - c.y}, {q.x - c.x, q.y - c.y});
-  });
-  return b;
 }
 
 Stats stats(const Graph& g) {

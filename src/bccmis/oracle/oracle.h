@@ -30,15 +30,6 @@ Stats stats(const Graph& g);
 /// Stats as text, one `name value` line each (or JSON).
 std::string format_stats(const Stats& s, bool json);
 
-/// Directions from a cell's center to its boundary nodes (multiples of 45
-/// degrees) in counter-clockwise order, starting just above -pi: true iff u
-/// comes before v. Exact (compares signs only).
-bool angle_less(const Point& u, const Point& v);
-
-/// The boundary nodes of cell c in counter-clockwise order around c, starting
-/// from the lower-left corner: the hull of eq. (1) is the polygon through them.
-std::vector<Point> boundary_in_angular_order(const Graph& g, const Point& c);
-
 /// An SVG picture: cells shaded by level, graph edges (solid), hull edges of
 /// eq. (1) (dashed), nodes (dots) and junctions (rings).
 std::string render_svg(const Graph& g, const std::string& title);

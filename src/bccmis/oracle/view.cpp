@@ -4,8 +4,11 @@
 #include <cstdint>
 #include <cstdio>
 #include <stdexcept>
+#include <string_view>
+#include <variant>
 
 #include "bccmis/oracle/oracle.h"
+#include "bccmis/trace.h"
 #include "view_template.h"  // generated: kViewTemplate, the page with a placeholder for the model
 
 namespace bccmis {
@@ -249,49 +252,59 @@ std::string lattice_label(const LatticeSize& s) {
   return "lattice " + std::to_string(s.W) + " " + std::to_string(s.H) + " " + std::to_string(s.L);
 }
 
+/// The step of the page for one replayed command: its decision, and what it
+/// touched (c, Y and J+ for refine; n, the removed Y and J- for coarsen).
+ModelBuilder::Step trace_step(const TraceCommand& c, const Graph& g, const StepResult<Graph>& r) {
+  ModelBuilder::Step s;
+  s.label = command_text(c);
+  s.line = c.line;
+  if (const auto* refined = std::get_if<RefineResult>(&r.result)) {
+    s.op = "refine";
+    s.at = c.at;
+    // The level of c before the step: its children's level minus one once applied.
+    if (refined->applied())
+      s.level = level_or(g, *refined->Y.begin(), 0) - 1;
+    else
+      s.level = g.is_center(c.at) ? level_or(g, c.at, -1) : -1;
+    s.Y = refined->Y;
+    s.J = refined->J_plus;
+  } else if (const auto* coarsened = std::get_if<CoarsenResult>(&r.result)) {
+    s.op = "coarsen";
+    s.at = c.at;
+    if (coarsened->applied()) s.level = level_or(g, c.at, -1);
+    s.Y = coarsened->Y;
+    s.J = coarsened->J_minus;
+  } else {
+    s.op = "check";
+  }
+  if (!r.is_check()) s.decision = r.applied() ? "ok" : "refused " + std::string(r.refusal());
+  return s;
+}
+
 }  // namespace
 
 ViewResult view_trace(const Trace& trace, const ViewOptions& o) {
-  Graph g = make_lattice(trace.size);
-  const Graph initial = g;
+  const Graph initial = make_lattice(trace.size);
   ModelBuilder model(initial, o, lattice_label(trace.size), trace.commands.size() + 1);
   std::optional<Graph> side_main;
-  if (o.side && o.side->step == 0) side_main = g;
+  if (o.side && o.side->step == 0) side_main = initial;
   std::size_t step = 0;
-  for (const TraceCommand& c : trace.commands) {
-    ModelBuilder::Step s;
-    s.label = command_text(c);
-    s.line = c.line;
-    if (c.kind == TraceCommand::Kind::Refine) {
-      s.op = "refine";
-      s.at = c.at;
-      s.level = g.is_center(c.at) ? level_or(g, c.at, -1) : -1;
-      RefineResult r = refine(g, c.at);
-      s.decision = r.refused ? "refused " + std::string(code(*r.refused)) : "ok";
-      s.Y = std::move(r.Y);
-      s.J = std::move(r.J_plus);
-    } else if (c.kind == TraceCommand::Kind::Coarsen) {
-      s.op = "coarsen";
-      s.at = c.at;
-      CoarsenResult r = coarsen(g, c.at);
-      s.decision = r.refused ? "refused " + std::string(code(*r.refused)) : "ok";
-      if (r.applied()) s.level = level_or(g, c.at, -1);
-      s.Y = std::move(r.Y);
-      s.J = std::move(r.J_minus);
-    } else {
-      s.op = "check";
-    }
-    if (const auto vertices = static_cast<std::int64_t>(g.N.size() + g.C.size()); vertices > o.max_vertices)
-      throw ViewLimitError(c.line, "after '" + s.label + "' the lattice has " + std::to_string(vertices) +
-                                       " vertices, above the limit of " + std::to_string(o.max_vertices) +
-                                       " (--max-vertices)");
-    PointSet seeds = s.Y;
-    seeds.insert(s.J.begin(), s.J.end());
-    if (s.at) seeds.insert(*s.at);
-    model.add_local(s, g, std::move(seeds));
-    ++step;
-    if (o.side && o.side->step == step) side_main = g;
-  }
+  std::string log;
+  const Graph g = replay_on<Graph>(
+      trace, log,
+      [&](const TraceCommand& c, const Graph& now, std::string_view, const StepResult<Graph>& r) {
+        const ModelBuilder::Step s = trace_step(c, now, r);
+        if (const auto vertices = static_cast<std::int64_t>(now.N.size() + now.C.size()); vertices > o.max_vertices)
+          throw ViewLimitError(c.line, "after '" + s.label + "' the lattice has " + std::to_string(vertices) +
+                                           " vertices, above the limit of " + std::to_string(o.max_vertices) +
+                                           " (--max-vertices)");
+        PointSet seeds = s.Y;
+        seeds.insert(s.J.begin(), s.J.end());
+        if (s.at) seeds.insert(*s.at);
+        model.add_local(s, now, std::move(seeds));
+        ++step;
+        if (o.side && o.side->step == step) side_main = now;
+      });
   if (o.side) {
     if (!side_main) throw std::invalid_argument("view: the side state's step is past the end of the trace");
     model.set_side(*o.side, *side_main);

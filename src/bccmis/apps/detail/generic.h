@@ -5,11 +5,12 @@
 //
 // balance.cpp, animate.cpp and heightfield.cpp instantiate the templates for
 // Graph and for fast::Lattice (the overloads in balance.h, animate.h and
-// heightfield.h). A lattice is reached only through the overloads in the
-// `access` section below: the same queries and operations under the same
-// names, with the same (x, y)-sorted neighbor order, so both instantiations
-// make the same decisions in the same order (tests/apps_fast_test.cpp and
-// RunAnimate.FastImplMakesTheSameFramesAndState compare states and reports).
+// heightfield.h). A lattice is reached only through the vocabulary of
+// bccmis/lattice.h and the geometry of bccmis/geometry.h: the same queries
+// and operations, with the same (x, y)-sorted neighbor order, so both
+// instantiations make the same decisions in the same order
+// (tests/apps_fast_test.cpp and RunAnimate.FastImplMakesTheSameFramesAndState
+// compare states and reports).
 #pragma once
 
 #include <algorithm>
@@ -24,104 +25,61 @@
 
 #include "bccmis/apps/animate.h"
 #include "bccmis/apps/balance.h"
-#include "bccmis/fast/lattice.h"
-#include "bccmis/graph.h"
 #include "bccmis/apps/heightfield.h"
+#include "bccmis/fast/lattice.h"
+#include "bccmis/geometry.h"
+#include "bccmis/graph.h"
+#include "bccmis/lattice.h"
 #include "bccmis/ops.h"
-#include "bccmis/oracle/oracle.h"
 
 namespace bccmis::detail {
-
-// ---- access -----------------------------------------------------------------------
-
-
-/// 𝒩(v): a reference to the set (reference) or a sorted copy (fast).
-inline const PointSet& nbr_of(const Graph& g, const Point& v) { return g.nbr(v); }
-inline fast::SmallPoints<8> nbr_of(const fast::Lattice& g, const Point& v) { return g.nbr(v); }
-
-inline bool holds(const PointSet& s, const Point& p) { return s.count(p) != 0; }
-template <std::size_t K>
-bool holds(const fast::SmallPoints<K>& s, const Point& p) { return s.contains(p); }
-
-/// C, sorted by (x, y).
-inline const PointSet& cells_of(const Graph& g) { return g.C; }
-inline std::vector<Point> cells_of(const fast::Lattice& g) { return g.cells(); }
-/// N, sorted by (x, y).
-inline const PointSet& nodes_of(const Graph& g) { return g.N; }
-inline std::vector<Point> nodes_of(const fast::Lattice& g) { return g.nodes(); }
-
-inline std::optional<RefineRefusal> can_refine_at(const Graph& g, const Point& c) { return can_refine(g, c); }
-inline std::optional<RefineRefusal> can_refine_at(const fast::Lattice& g, const Point& c) { return g.can_refine(c); }
-inline std::optional<CoarsenRefusal> can_coarsen_at(const Graph& g, const Point& n) { return can_coarsen(g, n); }
-inline std::optional<CoarsenRefusal> can_coarsen_at(const fast::Lattice& g, const Point& n) {
-  return g.can_coarsen(n);
-}
-/// The operation; true when applied.
-inline bool refine_at(Graph& g, const Point& c) { return refine(g, c).applied(); }
-inline bool refine_at(fast::Lattice& g, const Point& c) { return g.refine(c).applied(); }
-inline bool coarsen_at(Graph& g, const Point& n) { return coarsen(g, n).applied(); }
-inline bool coarsen_at(fast::Lattice& g, const Point& n) { return g.coarsen(n).applied(); }
 
 // ---- balance (balance.h) ------------------------------------------------------------
 
 /// Calls f(x) for every neighbor x of center c under mode b (x may repeat):
-/// edge, the cells across a side piece of c (eq. 3's X, erratum E4): two
-/// boundary nodes of c share a second cell exactly when they are the ends of
-/// one side piece of c (a corner and a corner, or a corner and a junction);
-/// corner, every cell touching c: it meets c's boundary at a corner of c or
-/// along a side piece whose ends are boundary nodes of c, so it lists one.
-template <class Lat, class F>
+/// edge, the cells across a side piece of c (eq. 3's X); corner, every cell
+/// touching c (bccmis/geometry.h).
+template <AdaptiveLattice Lat, class F>
 void for_each_neighbor(const Lat& g, const Point& c, Balance b, const F& f) {
-  const auto& B = nbr_of(g, c);  // the set itself (reference) or a copy kept alive (fast)
-  if (b == Balance::Corner) {
-    for (const Point& p : B)
-      for (const Point& x : nbr_of(g, p))
-        if (x != c) f(x);
-    return;
-  }
-  for (auto bi = B.begin(); bi != B.end(); ++bi) {
-    const auto& Ni = nbr_of(g, *bi);
-    for (auto bj = std::next(bi); bj != B.end(); ++bj) {
-      const auto& Nj = nbr_of(g, *bj);
-      for (const Point& x : Ni)
-        if (x != c && holds(Nj, x)) f(x);
-    }
-  }
+  if (b == Balance::Corner)
+    for_each_touching_neighbor(g, c, f);
+  else
+    for_each_edge_neighbor(g, c, f);
 }
 
 /// The smallest (by (x, y)) neighbor of c under mode b that is coarser than
 /// c, i.e. the first coarser element of edge_neighbors / touching_neighbors.
-template <class Lat>
+template <AdaptiveLattice Lat>
 std::optional<Point> coarser_neighbor(const Lat& g, const Point& c, Balance b) {
-  const int l = g.level_of(c);
+  const int l = level_of(g, c);
   std::optional<Point> best;
   for_each_neighbor(g, c, b, [&](const Point& x) {
-    if (g.level_of(x) < l && (!best || x < *best)) best = x;
+    if (level_of(g, x) < l && (!best || x < *best)) best = x;
   });
   return best;
 }
 
-template <class Lat>
+template <AdaptiveLattice Lat>
 std::optional<RefineRefusal> can_refine_under(const Lat& g, const Point& c, Balance b) {
-  const std::optional<RefineRefusal> why = can_refine_at(g, c);
+  const std::optional<RefineRefusal> why = can_refine(g, c);
   if (why || b == Balance::Edge) return why;
   if (coarser_neighbor(g, c, Balance::Corner)) return RefineRefusal::CoarserNeighbor;
   return std::nullopt;
 }
 
-template <class Lat>
+template <AdaptiveLattice Lat>
 std::optional<CoarsenRefusal> can_coarsen_under(const Lat& g, const Point& n, Balance b) {
-  const std::optional<CoarsenRefusal> why = can_coarsen_at(g, n);
+  const std::optional<CoarsenRefusal> why = can_coarsen(g, n);
   if (why || b == Balance::Edge) return why;
   // The merged cell has the children's level minus one; a cell touching it
   // may be at most one level finer, i.e. at most the children's level.
-  const auto& Y = nbr_of(g, n);
+  const auto& Y = neighbors(g, n);
   for (const Point& y : Y) {
-    const int child = g.level_of(y);
-    for (const Point& p : nbr_of(g, y)) {
+    const int child = level_of(g, y);
+    for (const Point& p : neighbors(g, y)) {
       if (p == n) continue;
-      for (const Point& x : nbr_of(g, p))
-        if (!holds(Y, x) && g.level_of(x) > child) return CoarsenRefusal::FinerNeighbor;
+      for (const Point& x : neighbors(g, p))
+        if (!contains(Y, x) && level_of(g, x) > child) return CoarsenRefusal::FinerNeighbor;
     }
   }
   return std::nullopt;
@@ -129,23 +87,23 @@ std::optional<CoarsenRefusal> can_coarsen_under(const Lat& g, const Point& n, Ba
 
 // Precondition: c is a center below the maximum level. Every coarser
 // neighbor x has level(x) < level(c), so the recursion depth is at most L.
-template <class Lat>
+template <AdaptiveLattice Lat>
 void cascade(Lat& g, const Point& c, Balance b, std::vector<Point>& refined) {
   while (can_refine_under(g, c, b) == RefineRefusal::CoarserNeighbor) {
     const std::optional<Point> x = coarser_neighbor(g, c, b);
     if (!x) break;  // the refine below reports the inconsistency
     cascade(g, *x, b, refined);
   }
-  if (!refine_at(g, c))
+  if (!refine(g, c).applied())
     throw std::logic_error("refine_balanced: refine(" + std::to_string(c.x) + ", " + std::to_string(c.y) +
-                           ") refused with " + std::string(code(*can_refine_at(g, c))) + " after its cascade");
+                           ") refused with " + std::string(code(*can_refine(g, c))) + " after its cascade");
   refined.push_back(c);
 }
 
-template <class Lat>
+template <AdaptiveLattice Lat>
 BalancedRefineResult refine_balanced(Lat& g, const Point& c, Balance b) {
   BalancedRefineResult result;
-  if (const std::optional<RefineRefusal> why = can_refine_at(g, c);
+  if (const std::optional<RefineRefusal> why = can_refine(g, c);
       why == RefineRefusal::NoSuchCell || why == RefineRefusal::MaxLevel) {
     result.refused = why;
     return result;
@@ -155,7 +113,7 @@ BalancedRefineResult refine_balanced(Lat& g, const Point& c, Balance b) {
 }
 
 /// coarsen_sweep of balance.h; `allow(g, n)` decides each candidate.
-template <class Lat, class Allow>
+template <AdaptiveLattice Lat, class Allow>
 std::size_t coarsen_sweep(Lat& g, const Allow& allow, Balance b) {
   // Only refined centers can be coarsened; the position test is cheap and
   // keeps the pass from calling the predicate on grid nodes and midpoints.
@@ -163,37 +121,37 @@ std::size_t coarsen_sweep(Lat& g, const Allow& allow, Balance b) {
   // (one level up) or a neighbor blocked by a finer junction mergeable, so
   // one pass usually reaches the fixpoint.
   std::vector<std::pair<int, Point>> candidates;
-  for (const Point& n : nodes_of(g))
+  for (const Point& n : nodes(g))
     if (const std::optional<int> l = refined_center_level(size_of(g), n)) candidates.push_back({-*l, n});
   std::sort(candidates.begin(), candidates.end());
   std::size_t done = 0;
   for (const auto& [minus_level, n] : candidates) {
     if (can_coarsen_under(g, n, b) || !allow(g, n)) continue;
-    if (coarsen_at(g, n)) ++done;
+    if (coarsen(g, n).applied()) ++done;
   }
   return done;
 }
 
 /// coarsen_where of balance.h.
-template <class Lat, class Allow>
+template <AdaptiveLattice Lat, class Allow>
 std::size_t coarsen_where(Lat& g, const Allow& allow, Balance b) {
   std::size_t total = 0;
   while (const std::size_t done = coarsen_sweep(g, allow, b)) total += done;
   return total;
 }
 
-template <class Lat>
+template <AdaptiveLattice Lat>
 PointSet boundary_after_coarsen(const Lat& g, const Point& n) {
-  const auto& Y = nbr_of(g, n);
-  const int child_level = Y.empty() ? 0 : g.level_of(*Y.begin());
+  const auto& Y = neighbors(g, n);
+  const int child_level = Y.empty() ? 0 : level_of(g, *Y.begin());
   const std::int64_t half = cell_side(size_of(g), child_level);  // half the merged cell's side
   PointSet B;
   for (const Point& y : Y)
-    for (const Point& p : nbr_of(g, y)) {
+    for (const Point& p : neighbors(g, y)) {
       if (p == n || B.count(p) != 0) continue;
       const bool corner = (p.x == n.x - half || p.x == n.x + half) && (p.y == n.y - half || p.y == n.y + half);
       std::size_t outside = 0;
-      for (const Point& x : nbr_of(g, p)) outside += holds(Y, x) ? 0 : 1;
+      for (const Point& x : neighbors(g, p)) outside += contains(Y, x) ? 0 : 1;
       if (corner || outside >= 2) B.insert(p);
     }
   return B;
@@ -202,7 +160,7 @@ PointSet boundary_after_coarsen(const Lat& g, const Point& n) {
 // ---- moving feature (animate.h) --------------------------------------------------------
 
 /// adapt_to_disks of animate.h.
-template <class Lat>
+template <AdaptiveLattice Lat>
 AdaptReport adapt_to_disks(Lat& g, std::span<const Disk> disks, int target_level, Balance balance) {
   const LatticeSize size = size_of(g);
   const int target = std::clamp(target_level, 0, size.L);
@@ -215,16 +173,16 @@ AdaptReport adapt_to_disks(Lat& g, std::span<const Disk> disks, int target_level
   AdaptReport report;
   for (;;) {
     std::vector<Point> marked;
-    for (const Point& c : cells_of(g))
-      if (needs_refinement(c, g.level_of(c))) marked.push_back(c);
+    for (const Point& c : cells(g))
+      if (needs_refinement(c, level_of(g, c))) marked.push_back(c);
     if (marked.empty()) break;
     for (const Point& c : marked)
-      if (g.is_center(c)) report.refinements += refine_balanced(g, c, balance).refined.size();
+      if (is_center(g, c)) report.refinements += refine_balanced(g, c, balance).refined.size();
   }
   report.coarsenings = coarsen_where(
       g,
       [&](const Lat& now, const Point& n) {
-        const int merged_level = now.level_of(*nbr_of(now, n).begin()) - 1;
+        const int merged_level = level_of(now, *neighbors(now, n).begin()) - 1;
         return !needs_refinement(n, merged_level);
       },
       balance);
@@ -233,25 +191,14 @@ AdaptReport adapt_to_disks(Lat& g, std::span<const Disk> disks, int target_level
 
 // ---- height field (heightfield.h) ------------------------------------------------------
 
-/// The boundary nodes of a cell in counter-clockwise order (oracle's
-/// boundary_in_angular_order, for any lattice type).
-template <class Set>
-std::vector<Point> ccw_ring(const Point& c, const Set& boundary) {
-  std::vector<Point> ring(boundary.begin(), boundary.end());
-  std::sort(ring.begin(), ring.end(), [&](const Point& p, const Point& q) {
-    return angle_less({p.x - c.x, p.y - c.y}, {q.x - c.x, q.y - c.y});
-  });
-  return ring;
-}
-
-template <class Lat>
+template <AdaptiveLattice Lat>
 CellFan cell_fan(const Lat& g, const Point& c, const HeightSampler& s) {
-  return CellFan(c, g.level_of(c), ccw_ring(c, nbr_of(g, c)), s);
+  return CellFan(c, level_of(g, c), boundary_in_angular_order(g, c), s);
 }
 
 /// tessellate() of heightfield.h; `observer(sweep, g, operations)` after
 /// every sweep that changed something.
-template <class Lat, class Observer>
+template <AdaptiveLattice Lat, class Observer>
 TessellateReport tessellate(Lat& g, const HeightSampler& s, const TessellateSettings& t, const Observer& observer) {
   TessellateReport report;
   // Errors within rounding of the height scale count as zero, so a plane
@@ -263,8 +210,8 @@ TessellateReport tessellate(Lat& g, const HeightSampler& s, const TessellateSett
     // Merge four cells when the merged cell, with the boundary it would have,
     // interpolates the field within tolerance.
     const auto within = [&](const Lat& now, const Point& n) {
-      const int level = now.level_of(*nbr_of(now, n).begin()) - 1;
-      return cell_error(CellFan(n, level, ccw_ring(n, boundary_after_coarsen(now, n)), s), s, t.error) <= limit;
+      const int level = level_of(now, *neighbors(now, n).begin()) - 1;
+      return cell_error(CellFan(n, level, in_angular_order(n, boundary_after_coarsen(now, n)), s), s, t.error) <= limit;
     };
     while (budget_left()) {
       const std::size_t done = coarsen_sweep(g, within, t.balance);
@@ -278,8 +225,8 @@ TessellateReport tessellate(Lat& g, const HeightSampler& s, const TessellateSett
   report.converged = false;
   while (budget_left()) {
     std::vector<Point> marked;
-    for (const Point& c : cells_of(g))
-      if (g.level_of(c) < size_of(g).L && cell_error(cell_fan(g, c, s), s, t.error) > limit) marked.push_back(c);
+    for (const Point& c : cells(g))
+      if (level_of(g, c) < size_of(g).L && cell_error(cell_fan(g, c, s), s, t.error) > limit) marked.push_back(c);
     if (marked.empty()) {
       report.converged = true;
       break;
@@ -288,7 +235,7 @@ TessellateReport tessellate(Lat& g, const HeightSampler& s, const TessellateSett
     for (const Point& c : marked) {
       // A cascade earlier in this sweep may have refined c already; its
       // children are measured in the next sweep.
-      if (!g.is_center(c)) continue;
+      if (!is_center(g, c)) continue;
       done += refine_balanced(g, c, t.balance).refined.size();
     }
     report.refinements += done;

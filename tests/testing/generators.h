@@ -1,5 +1,6 @@
 // Shared RapidCheck generators and property bodies for the property suites
-// (tests/properties_test.cpp, tests/model_test.cpp, tests/mutants/).
+// (tests/properties_test.cpp, tests/model_test.cpp, tests/mutants/,
+// tests/fast_differential_test.cpp).
 //
 // A Scenario is a lattice size plus a list of Steps. A Step is generated
 // without looking at any state and resolved against the current graph only
@@ -61,6 +62,11 @@ struct Ops {
 enum class OpKind { Refine, Coarsen };
 enum class Pick { Live, WrongKind, Anywhere };
 
+/// The trace command kind of an operation.
+inline TraceCommand::Kind trace_kind(OpKind op) {
+  return op == OpKind::Refine ? TraceCommand::Kind::Refine : TraceCommand::Kind::Coarsen;
+}
+
 struct Step {
   OpKind op = OpKind::Refine;
   Pick pick = Pick::Live;
@@ -105,11 +111,11 @@ inline rc::Gen<LatticeSize> genLatticeSize() {
       });
 }
 
-inline rc::Gen<Step> genStep() {
+/// Steps whose operation and pick are drawn from `ops` and `picks`.
+inline rc::Gen<Step> genStep(rc::Gen<OpKind> ops, rc::Gen<Pick> picks) {
   return rc::gen::map(
-      rc::gen::tuple(rc::gen::weightedElement<OpKind>({{3, OpKind::Refine}, {2, OpKind::Coarsen}}),
-                     rc::gen::weightedElement<Pick>({{7, Pick::Live}, {1, Pick::WrongKind}, {2, Pick::Anywhere}}),
-                     rc::gen::arbitrary<std::uint32_t>(), rc::gen::arbitrary<std::uint32_t>()),
+      rc::gen::tuple(std::move(ops), std::move(picks), rc::gen::arbitrary<std::uint32_t>(),
+                     rc::gen::arbitrary<std::uint32_t>()),
       [](const std::tuple<OpKind, Pick, std::uint32_t, std::uint32_t>& t) {
         Step s;
         s.op = std::get<0>(t);
@@ -118,6 +124,11 @@ inline rc::Gen<Step> genStep() {
         s.b = std::get<3>(t);
         return s;
       });
+}
+
+inline rc::Gen<Step> genStep() {
+  return genStep(rc::gen::weightedElement<OpKind>({{3, OpKind::Refine}, {2, OpKind::Coarsen}}),
+                 rc::gen::weightedElement<Pick>({{7, Pick::Live}, {1, Pick::WrongKind}, {2, Pick::Anywhere}}));
 }
 
 /// Up to max_steps steps (scaled by RapidCheck's size; max_size 100 gives the full range).
@@ -280,8 +291,7 @@ class Walk {
 
   /// Runs op at p with the operations under test (records it in the trace).
   Outcome run(OpKind op, const Point& p) {
-    trace_.commands.push_back(
-        TraceCommand{op == OpKind::Refine ? TraceCommand::Kind::Refine : TraceCommand::Kind::Coarsen, p, 0});
+    trace_.commands.push_back(TraceCommand{trace_kind(op), p, 0});
     Outcome o;
     o.op = op;
     o.at = p;
