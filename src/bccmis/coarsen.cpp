@@ -1,4 +1,4 @@
-// §2.2 The coarsening operation: equations (8a)-(12b), with errata E2 and E3.
+// §2.2 The coarsening operation: equations (8a)-(12b), with errata E2, E3, E7 and E9.
 //
 // The paper's Fig. 3 configuration, with the names used below. Node n is the
 // center of a refined level-l cell; its four children Y (level l+1) are merged
@@ -159,7 +159,7 @@ CoarsenResult coarsen(Graph& g, const Point& n) {
     tx.remove_vertex(j_i);  // the J- vertices are deleted
   }
   //= erleben2009#eq-11d
-  //# N = N \ J-   (repeats eq. 10c; erratum E5)
+  //# N = N \ J-   (repeats eq. 10c; erratum E9)
   for (const Point& j_i : J_minus) tx.remove_node(j_i);
 
   // 4. Connect the coarse cell to its boundary (Fig. 3c): eq. (12a)-(12b).

@@ -73,7 +73,7 @@ CoarsenResult coarsen(Graph& g, const Point& n);
 /// The level of the refined cell whose center would be at `p`, judged from the
 /// position alone: a center of a level-l cell with l < L has both coordinates
 /// odd multiples of 2^(L-l). Empty for any other position (grid nodes, side
-/// midpoints, level-L centers, points outside the domain). spec/errata.toml E5.
+/// midpoints, level-L centers, points outside the domain). spec/errata.toml E7.
 std::optional<int> refined_center_level(const LatticeSize& size, const Point& p);
 
 }  // namespace bccmis

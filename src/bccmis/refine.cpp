@@ -1,4 +1,4 @@
-// §2.1 The refinement operation: equations (2a)-(7b), with errata E1 and E4.
+// §2.1 The refinement operation: equations (2a)-(7b), with errata E1, E4, E5 and E10.
 //
 // The paper's Fig. 2 configuration, with the names used below. Cell c (level l)
 // has corners p_1..p_4 (the pure nodes P) and one old junction j_1 (J) on its
@@ -82,7 +82,7 @@ std::optional<RefineRefusal> can_refine(const Graph& g, const Point& c) {
   if (!g.is_center(c)) return RefineRefusal::NoSuchCell;
   //= erleben2009#pre-refine-max-level
   //= type=deviation
-  //= reason=E5: the integer lattice bounds the level; the paper has no maximum
+  //= reason=E10: the integer lattice bounds the level; the paper has no maximum
   //# level(c) < L
   if (g.level_of(c) >= g.size.L) return RefineRefusal::MaxLevel;
   //= erleben2009#pre-refine-level
@@ -138,7 +138,7 @@ RefineResult refine(Graph& g, const Point& c) {
 
   // 2. Subdivide c (Fig. 2b): eq. (4a)-(4h). The paper pairs each p_i with one
   //    y_i without saying how; y_i is the child cell that has p_i as a corner,
-  //    centred halfway between c and p_i (erratum E5, a position use).
+  //    centred halfway between c and p_i (erratum E5, position use P1).
   std::array<Point, 4> y;                          // y[i] pairs with p[i]
   for (std::size_t i = 0; i < 4; ++i) y[i] = midpoint(c, p[i]);
 
