@@ -1,7 +1,4 @@
 # Included by tests/CMakeLists.txt: the apps' tests (issue 8).
-find_package(GTest REQUIRED)
-include(GoogleTest)
-
 add_executable(apps_tests
   ${CMAKE_CURRENT_LIST_DIR}/apps_balance_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/apps_image_test.cpp

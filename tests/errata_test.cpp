@@ -90,7 +90,7 @@ TEST(Errata, E4_DiagonalCoarserCellDoesNotBlockRefinement) {
   EXPECT_TRUE(refine(g, {6, 6}).applied());
 }
 
-TEST(Errata, E5_CoarsenedCellTakesTheLevelOfItsPosition) {
+TEST(Errata, E7_CoarsenedCellTakesTheLevelOfItsPosition) {
   Graph g = test::build("lattice 1 1 2\nrefine 4 4\nrefine 2 2\n");
   ASSERT_TRUE(coarsen(g, {2, 2}).applied());
   EXPECT_EQ(g.level_of({2, 2}), 1);
@@ -98,7 +98,7 @@ TEST(Errata, E5_CoarsenedCellTakesTheLevelOfItsPosition) {
   EXPECT_EQ(g.level_of({4, 4}), 0);
 }
 
-TEST(Errata, E5_RefinedCenterLevelFromPosition) {
+TEST(Errata, E7_RefinedCenterLevelFromPosition) {
   const LatticeSize s{3, 2, 2};  // S = 8
   EXPECT_EQ(refined_center_level(s, {4, 4}), 0);
   EXPECT_EQ(refined_center_level(s, {12, 4}), 0);

@@ -1,9 +1,4 @@
 # Included by tests/CMakeLists.txt: the checker's tests (issue 4).
-if(NOT TARGET GTest::gtest_main)
-  find_package(GTest REQUIRED)
-endif()
-include(GoogleTest)
-
 add_executable(invariants_test ${CMAKE_CURRENT_LIST_DIR}/invariants_test.cpp)
 target_link_libraries(invariants_test PRIVATE bccmis::invariants GTest::gtest_main bccmis::warnings)
 gtest_discover_tests(invariants_test DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)

@@ -5,8 +5,6 @@
 if(NOT TARGET bccmis::p4est)
   return()
 endif()
-find_package(GTest REQUIRED)
-include(GoogleTest)
 
 # One variable only: gtest_discover_tests flattens list-valued properties.
 set(_bccmis_p4est_env "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1")

@@ -27,23 +27,21 @@ gtest_discover_tests(model_test DISCOVERY_MODE PRE_TEST
 # 3 1 2, 2 2 2 and 1 1 3 (4250, 66641, 66642 states) under the `exhaustive`
 # label, which the test presets exclude. Run them in the release build:
 #   ctest --test-dir build/release -L exhaustive      (about 70 s CPU each for the two large ones)
-if(TARGET bccmis::explore)
-  add_executable(exhaustive_test exhaustive_test.cpp)
-  target_include_directories(exhaustive_test PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
-  target_link_libraries(exhaustive_test PRIVATE GTest::gtest_main
-                        bccmis::explore bccmis::core bccmis::invariants bccmis::warnings)
-  gtest_discover_tests(exhaustive_test DISCOVERY_MODE PRE_TEST NO_PRETTY_VALUES TEST_FILTER "-*ExhaustiveLarge.*"
-    PROPERTIES LABELS property)
-  gtest_discover_tests(exhaustive_test DISCOVERY_MODE PRE_TEST NO_PRETTY_VALUES TEST_FILTER "*ExhaustiveLarge.*"
-    PROPERTIES LABELS exhaustive TIMEOUT 1800)
+add_executable(exhaustive_test exhaustive_test.cpp)
+target_include_directories(exhaustive_test PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+target_link_libraries(exhaustive_test PRIVATE GTest::gtest_main
+                      bccmis::explore bccmis::core bccmis::invariants bccmis::warnings)
+gtest_discover_tests(exhaustive_test DISCOVERY_MODE PRE_TEST NO_PRETTY_VALUES TEST_FILTER "-*ExhaustiveLarge.*"
+  PROPERTIES LABELS property)
+gtest_discover_tests(exhaustive_test DISCOVERY_MODE PRE_TEST NO_PRETTY_VALUES TEST_FILTER "*ExhaustiveLarge.*"
+  PROPERTIES LABELS exhaustive TIMEOUT 1800)
 
-  # Planted-bug mutants: every property suite must be able to fail.
-  add_executable(mutants_property_test mutants/mutant_ops.cpp mutants/mutants_test.cpp)
-  target_include_directories(mutants_property_test PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
-  target_link_libraries(mutants_property_test PRIVATE rapidcheck_gtest GTest::gtest_main bccmis::testing
-                        bccmis::explore bccmis::core bccmis::invariants bccmis::warnings)
-  target_compile_definitions(mutants_property_test PRIVATE
-                             BCCMIS_REGRESSIONS_DIR="${CMAKE_CURRENT_SOURCE_DIR}/regressions")
-  gtest_discover_tests(mutants_property_test DISCOVERY_MODE PRE_TEST NO_PRETTY_VALUES TEST_FILTER "-MutantDemo.*"
-    PROPERTIES LABELS property ENVIRONMENT "RC_PARAMS=seed=${BCCMIS_RC_SEED}")
-endif()
+# Planted-bug mutants: every property suite must be able to fail.
+add_executable(mutants_property_test mutants/mutant_ops.cpp mutants/mutants_test.cpp)
+target_include_directories(mutants_property_test PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+target_link_libraries(mutants_property_test PRIVATE rapidcheck_gtest GTest::gtest_main bccmis::testing
+                      bccmis::explore bccmis::core bccmis::invariants bccmis::warnings)
+target_compile_definitions(mutants_property_test PRIVATE
+                           BCCMIS_REGRESSIONS_DIR="${CMAKE_CURRENT_SOURCE_DIR}/regressions")
+gtest_discover_tests(mutants_property_test DISCOVERY_MODE PRE_TEST NO_PRETTY_VALUES TEST_FILTER "-MutantDemo.*"
+  PROPERTIES LABELS property ENVIRONMENT "RC_PARAMS=seed=${BCCMIS_RC_SEED}")

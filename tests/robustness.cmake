@@ -83,8 +83,6 @@ endforeach()
 # /dev/null) is written in place, never renamed over.
 
 # Strong exception guarantee: every k-th allocation fails, for every k.
-if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/robustness_alloc_test.cpp)
-  add_executable(robustness_alloc_test robustness_alloc_test.cpp)
-  target_link_libraries(robustness_alloc_test PRIVATE bccmis::invariants bccmis::core GTest::gtest_main bccmis::warnings)
-  gtest_discover_tests(robustness_alloc_test DISCOVERY_MODE PRE_TEST PROPERTIES LABELS robustness)
-endif()
+add_executable(robustness_alloc_test robustness_alloc_test.cpp)
+target_link_libraries(robustness_alloc_test PRIVATE bccmis::invariants bccmis::core GTest::gtest_main bccmis::warnings)
+gtest_discover_tests(robustness_alloc_test DISCOVERY_MODE PRE_TEST PROPERTIES LABELS robustness)

@@ -1,11 +1,30 @@
 #!/usr/bin/env python3
 """Checks the citations between code, tests and spec/ (ctest label `spec`).
 
+A citation is a block of consecutive comment lines:
+
+    //= erleben2009#<id>                 the equation (spec/equations.toml)
+    //= type=deviation                   optional; then also
+    //= reason=<erratum>: <one line>     an entry of spec/errata.toml
+    //# <quote>                          the equation's `text`, verbatim
+
+Several `//#` lines in a row form one quote (joined by a space). A quote must
+equal the `text` of the equation cited above it, the whole text, after
+normalisation: Unicode NFC, every run of white space one space, none at the
+ends. Nothing else is normalised (no symbol variants, no case): a quote that
+does not read as the text reads is a drifted quote.
+
 Fails (exit 1, one line per problem) when
   - an equation with role = "update" has no implementation citation in src/;
   - an equation (any role) has no test citation in tests/;
   - a citation names an id that spec/equations.toml does not define;
-  - a `reason=E<n>` names an erratum that spec/errata.toml does not define;
+  - a citation in src/ has no quote, or a quote (in src/ or tests/) differs
+    from the equation's text, or a `//#` line follows no citation;
+  - a `reason=` names an erratum that spec/errata.toml does not define, or one
+    that the cited equation does not list in its `errata`; a deviation has no
+    reason, or a reason no `type=deviation`;
+  - an equation's `errata` and an erratum's `equations` disagree (each must
+    list the other; entries of kind "position" list equations only);
   - an erratum lists a test (Suite.Name) that no file in tests/ defines.
 """
 import pathlib
@@ -15,6 +34,7 @@ import subprocess
 import sys
 import tempfile
 import tomllib
+import unicodedata
 
 here = pathlib.Path(__file__).resolve()
 
@@ -24,8 +44,18 @@ if sys.argv[1:2] == ["--self-test"]:
     plants = [
         ("src/bccmis/refine.cpp", "//= erleben2009#eq-4c\n", "", "'eq-4c' has no implementation citation"),
         ("tests/refine_test.cpp", "//= erleben2009#eq-4d type=test", "//= erleben2009#eq-4z type=test", "unknown id 'eq-4z'"),
-        ("src/bccmis/coarsen.cpp", "reason=E2:", "reason=E9:", "unknown erratum 'E9'"),
+        ("src/bccmis/coarsen.cpp", "reason=E2:", "reason=E99:", "unknown erratum 'E99'"),
+        ("src/bccmis/refine.cpp", "reason=E4:", "reason=E1:", "'eq-3' does not list erratum 'E1'"),
+        ("src/bccmis/refine.cpp", "//= reason=E4:", "// reason=E4:", "deviation without a reason"),
         ("tests/errata_test.cpp", "E4_DiagonalCoarserCellDoesNotBlockRefinement", "E4_Renamed", "lists test"),
+        # A quote that drifts from the spec, in the code or in the spec.
+        ("src/bccmis/refine.cpp", "//# N(c) = Y\n", "//# N(c) = Y ∪ {c}\n", "quote of 'eq-4c' differs"),
+        ("src/bccmis/coarsen.cpp", "//# N(n) = B\n", "//# N(n) = B \\ {n}\n", "quote of 'eq-12a' differs"),
+        ("spec/equations.toml", 'text = "N(c) = Y"', 'text = "N(c) = {y_1, y_2, y_3, y_4}"', "quote of 'eq-4c' differs"),
+        ("src/bccmis/refine.cpp", "//# ||P|| = 4 and ||Y|| = 4\n", "//# ||P|| = 4\n", "quote of 'claim-P-has-4' differs"),
+        ("src/bccmis/refine.cpp", "  //# C = C ∪ Y\n", "", "'eq-4b' has no quote"),
+        ("src/bccmis/refine.cpp", "  //= erleben2009#eq-4b\n", "", "quote follows no citation"),
+        ("spec/errata.toml", '"eq-11d"]', '"eq-11c"]', "lists erratum 'E9', which does not list it"),
     ]
     src_root = here.parent.parent
     failures = 0
@@ -46,31 +76,75 @@ if sys.argv[1:2] == ["--self-test"]:
 root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else here.parent.parent)
 equations = tomllib.loads((root / "spec/equations.toml").read_text())["eq"]
 errata = tomllib.loads((root / "spec/errata.toml").read_text())["erratum"]
-ids = {e["id"] for e in equations}
-erratum_ids = {e["id"] for e in errata}
+by_id = {e["id"]: e for e in equations}
+errata_by_id = {e["id"]: e for e in errata}
 
-cite = re.compile(r"//= erleben2009#([A-Za-z0-9-]+)(.*)")
-reason = re.compile(r"//= reason=([A-Z][0-9]+)")
+
+def normalise(text):
+    return " ".join(unicodedata.normalize("NFC", text).split())
+
+
+cite = re.compile(r"^\s*//= erleben2009#([A-Za-z0-9-]+)(.*)$")
+attribute = re.compile(r"^\s*//= (.*)$")
+quote = re.compile(r"^\s*//#(?: (.*))?$")
+reason = re.compile(r"reason=([^:\s]+)")
 problems = []
 impl, tested = set(), set()
+
+
+def check_citation(c, is_test):
+    """c: the citation's id, location, attribute text and quote lines."""
+    eid, where, attrs, quote_lines = c["id"], c["where"], " ".join(c["attrs"]), c["quote"]
+    if eid not in by_id:
+        problems.append(f"{where}: citation of unknown id '{eid}'")
+        return
+    (tested if "type=test" in attrs else impl).add(eid)
+    if is_test and "type=test" not in attrs:
+        problems.append(f"{where}: citation in a test without 'type=test'")
+    if quote_lines:
+        q, t = normalise(" ".join(quote_lines)), normalise(by_id[eid]["text"])
+        if q != t:
+            problems.append(f"{where}: quote of '{eid}' differs from spec/equations.toml: '{q}' != '{t}'")
+    elif not is_test:
+        problems.append(f"{where}: citation of '{eid}' has no quote (//# and the equation's text)")
+    reasons = reason.findall(attrs)
+    if "type=deviation" in attrs and not reasons:
+        problems.append(f"{where}: deviation without a reason (//= reason=<erratum>: ...)")
+    if reasons and "type=deviation" not in attrs:
+        problems.append(f"{where}: reason without '//= type=deviation'")
+    for r in reasons:
+        if r not in errata_by_id:
+            problems.append(f"{where}: reason names unknown erratum '{r}'")
+        elif r not in by_id[eid].get("errata", []):
+            problems.append(f"{where}: reason {r}, but spec/equations.toml '{eid}' does not list erratum '{r}'")
 
 
 def scan(folder, is_test):
     for path in sorted((root / folder).rglob("*")):
         if path.suffix not in (".cpp", ".h") or not path.is_file():
             continue
+        current = None  # the citation whose block is open
         for lineno, line in enumerate(path.read_text(errors="replace").splitlines(), 1):
             where = f"{path.relative_to(root)}:{lineno}"
-            for m in cite.finditer(line):
-                eid, rest = m.group(1), m.group(2)
-                if eid not in ids:
-                    problems.append(f"{where}: citation of unknown id '{eid}'")
-                (tested if "type=test" in rest else impl).add(eid)
-                if is_test and "type=test" not in rest:
-                    problems.append(f"{where}: citation in a test without 'type=test'")
-            for m in reason.finditer(line):
-                if m.group(1) not in erratum_ids:
-                    problems.append(f"{where}: reason names unknown erratum '{m.group(1)}'")
+            if m := cite.match(line):
+                if current:
+                    check_citation(current, is_test)
+                current = {"id": m.group(1), "where": where, "attrs": [m.group(2)], "quote": []}
+            elif current and not current["quote"] and (m := attribute.match(line)):
+                current["attrs"].append(m.group(1))
+            elif m := quote.match(line):
+                if current:
+                    current["quote"].append(m.group(1) or "")
+                else:
+                    problems.append(f"{where}: quote follows no citation (//= erleben2009#<id> above it)")
+            else:
+                if current:
+                    check_citation(current, is_test)
+                current = None
+                if "//= reason=" in line or "//= type=" in line:
+                    problems.append(f"{where}: '//=' line outside a citation")
+        if current:
+            check_citation(current, is_test)
 
 
 scan("src", False)
@@ -81,9 +155,19 @@ for e in equations:
         problems.append(f"spec/equations.toml: update equation '{e['id']}' has no implementation citation in src/")
     if e["id"] not in tested:
         problems.append(f"spec/equations.toml: '{e['id']}' has no test citation in tests/")
+    for r in e.get("errata", []):
+        if r not in errata_by_id:
+            problems.append(f"spec/equations.toml: '{e['id']}' lists unknown erratum '{r}'")
+        elif e["id"] not in errata_by_id[r].get("equations", []):
+            problems.append(f"spec/equations.toml: '{e['id']}' lists erratum '{r}', which does not list it")
 
 test_text = "\n".join(p.read_text(errors="replace") for p in (root / "tests").rglob("*.cpp"))
 for e in errata:
+    for eid in e.get("equations", []):
+        if eid not in by_id:
+            problems.append(f"spec/errata.toml: erratum {e['id']} lists unknown equation '{eid}'")
+        elif e["kind"] != "position" and e["id"] not in by_id[eid].get("errata", []):
+            problems.append(f"spec/errata.toml: erratum {e['id']} lists '{eid}', whose errata do not include it")
     for t in e.get("tests", []):
         suite, name = t.split(".", 1)
         if not re.search(rf"TEST(_F|_P)?\(\s*{re.escape(suite)}\s*,\s*{re.escape(name)}\s*\)", test_text):
@@ -91,6 +175,6 @@ for e in errata:
 
 for p in problems:
     print(p)
-print(f"spec coverage: {len(ids)} equations, {len(impl & ids)} cited by src/, {len(tested & ids)} by tests/, "
-      f"{len(erratum_ids)} errata; {len(problems)} problems")
+print(f"spec coverage: {len(by_id)} equations, {len(impl & set(by_id))} cited by src/, "
+      f"{len(tested & set(by_id))} by tests/, {len(errata_by_id)} errata; {len(problems)} problems")
 sys.exit(1 if problems else 0)

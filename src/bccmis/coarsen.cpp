@@ -1,4 +1,4 @@
-// §2.2 The coarsening operation: equations (8a)-(12b), with errata E2 and E3.
+// §2.2 The coarsening operation: equations (8a)-(12b), with errata E2, E3, E7 and E9.
 //
 // The paper's Fig. 3 configuration, with the names used below. Node n is the
 // center of a refined level-l cell; its four children Y (level l+1) are merged
@@ -17,8 +17,9 @@
 //   b ------ j- ------ b ---+              b --------------- b ---+
 //
 // Each statement carries two comment lines: the spec id (spec/equations.toml)
-// and the equation as text. Deviations from the paper are marked
-// `type=deviation` and explained in spec/errata.toml.
+// and the equation's text from there, verbatim (tests/spec_coverage.py compares
+// them). Deviations from the paper are marked `type=deviation` and explained in
+// spec/errata.toml.
 
 #include <stdexcept>
 
@@ -46,7 +47,8 @@ std::optional<CoarsenRefusal> can_coarsen(const Graph& g, const Point& n) {
   //= erleben2009#pre-coarsen-refined-center
   //= type=deviation
   //= reason=E3: |N(n)| = 4 also holds at grid nodes and at midpoints between refined cells
-  //# n is the center of a refined level-l cell, l = L - log2(lowest set bit of n.x and n.y)
+  //# n is the center of a refined level-l cell
+  // From n's position (erratum E7): l = L - log2(lowest set bit of n.x and n.y).
   const std::optional<int> l = refined_center_level(g.size, n);
   if (!l) return CoarsenRefusal::NotARefinedCenter;
   //= erleben2009#pre-coarsen-not-junction
@@ -55,13 +57,13 @@ std::optional<CoarsenRefusal> can_coarsen(const Graph& g, const Point& n) {
   //= erleben2009#pre-coarsen-children-leaves
   //= type=deviation
   //= reason=E3: a refined child would leave overlapping cells
-  //# for all y in N(n): level(y) = l + 1
+  //# level(y) = l + 1  for all y in N(n)
   for (const Point& y : g.nbr(n))
     if (!g.is_center(y) || g.level_of(y) != *l + 1) return CoarsenRefusal::ChildrenRefined;
   //= erleben2009#pre-coarsen-balance
   //= type=deviation
   //= reason=E3: a junction on a child means an edge-neighbor of level l+2
-  //# for all y in N(n): |N(y)| = 4
+  //# |N(y)| = 4  for all y in N(n)
   for (const Point& y : g.nbr(n))
     if (g.nbr(y).size() != 4) return CoarsenRefusal::FinerNeighbor;
   return std::nullopt;
@@ -121,7 +123,8 @@ CoarsenResult coarsen(Graph& g, const Point& n) {
   //= erleben2009#eq-10a
   //= type=deviation
   //= reason=E2: |N(b)| = 1 alone deletes boundary corners and keeps boundary side midpoints
-  //# J- = { b in B : b is a side midpoint of the coarse cell and |N(b)| <= 1 }
+  //# J- = { b_i in B : |N(b_i)| = 1 }
+  // Implemented: J- = { b in B : b is a side midpoint of the coarse cell and |N(b)| <= 1 }.
   PointSet J_minus;
   for (const Point& b_i : side_midpoints)
     if (nb(b_i).size() <= 1) J_minus.insert(b_i);
@@ -146,7 +149,8 @@ CoarsenResult coarsen(Graph& g, const Point& n) {
     tx.remove_vertex(j_i);  // the J- vertices are deleted
   }
   //= erleben2009#eq-11d
-  //# N = N \ J-   (repeats eq. 10c; erratum E5)
+  //# N = N \ J-
+  // This repeats (10c), harmless (erratum E9).
   for (const Point& j_i : J_minus) tx.remove_node(j_i);
 
   // 4. Connect the coarse cell to its boundary (Fig. 3c): eq. (12a)-(12b).

@@ -41,7 +41,7 @@ inline bool are_side_adjacent(const Point& a, const Point& b) {
 /// The level of the refined cell whose center would be at `p`, judged from the
 /// position alone: a center of a level-l cell with l < L has both coordinates
 /// odd multiples of 2^(L-l). Empty for any other position (grid nodes, side
-/// midpoints, level-L centers, points outside the domain). spec/errata.toml E5.
+/// midpoints, level-L centers, points outside the domain). spec/errata.toml E7.
 inline std::optional<int> refined_center_level(const LatticeSize& size, const Point& p) {
   const std::int64_t S = level0_side(size);
   // Strictly inside the domain; W*S <= 2^62 so the products do not overflow.

@@ -1,4 +1,4 @@
-// §2.1 The refinement operation: equations (2a)-(7b), with errata E1 and E4.
+// §2.1 The refinement operation: equations (2a)-(7b), with errata E1, E4, E5 and E10.
 //
 // The paper's Fig. 2 configuration, with the names used below. Cell c (level l)
 // has corners p_1..p_4 (the pure nodes P) and one old junction j_1 (J) on its
@@ -20,8 +20,9 @@
 // edges drawn here are the hull edges of eq. (1).
 //
 // Each statement carries two comment lines: the spec id (spec/equations.toml)
-// and the equation as text. Deviations from the paper are marked
-// `type=deviation` and explained in spec/errata.toml.
+// and the equation's text from there, verbatim (tests/spec_coverage.py compares
+// them). Deviations from the paper are marked `type=deviation` and explained in
+// spec/errata.toml.
 
 #include <array>
 #include <stdexcept>
@@ -57,7 +58,7 @@ Neighborhood neighborhood(const Graph& g, const Point& c) {
   //# B = N(c)
   s.B = g.nbr(c);
   //= erleben2009#eq-2b
-  //# J = { b in B : |N(b)| = 3 }
+  //# J = { b_i in B : |N(b_i)| = 3 }
   for (const Point& b : s.B)
     if (g.nbr(b).size() == 3) s.J.insert(b);
   //= erleben2009#eq-2c
@@ -66,7 +67,7 @@ Neighborhood neighborhood(const Graph& g, const Point& c) {
   //= erleben2009#eq-3
   //= type=deviation
   //= reason=E4: the formula (edge neighbors) is implemented, not the sentence (all neighbors)
-  //# X = ( union over b_i != b_j in B of N(b_i) ∩ N(b_j) ) \ {c}
+  //# X = ( union over b_i, b_j in B, i != j, of N(b_i) ∩ N(b_j) ) \ {c}
   for (auto bi = s.B.begin(); bi != s.B.end(); ++bi)
     for (auto bj = std::next(bi); bj != s.B.end(); ++bj)
       s.X = unite(s.X, intersect(g.nbr(*bi), g.nbr(*bj)));
@@ -82,11 +83,11 @@ std::optional<RefineRefusal> can_refine(const Graph& g, const Point& c) {
   if (!g.is_center(c)) return RefineRefusal::NoSuchCell;
   //= erleben2009#pre-refine-max-level
   //= type=deviation
-  //= reason=E5: the integer lattice bounds the level; the paper has no maximum
+  //= reason=E10: the integer lattice bounds the level; the paper has no maximum
   //# level(c) < L
   if (g.level_of(c) >= g.size.L) return RefineRefusal::MaxLevel;
   //= erleben2009#pre-refine-level
-  //# for all x in X: level(x) >= level(c)
+  //# level(x) >= level(c)  for all x in X
   const Neighborhood s = neighborhood(g, c);
   for (const Point& x : s.X)
     if (g.level_of(x) < g.level_of(c)) return RefineRefusal::CoarserNeighbor;
@@ -106,7 +107,8 @@ RefineResult refine(Graph& g, const Point& c) {
   // 1. The neighborhood of c (Fig. 2a): eq. (2a)-(3).
   const auto [B, J, P, X] = neighborhood(g, c);
   //= erleben2009#claim-P-has-4
-  //# ||P|| = 4
+  //# ||P|| = 4 and ||Y|| = 4
+  // (Y is made below with one child per p_i, so ||P|| = 4 gives ||Y|| = 4.)
   if (P.size() != 4)
     throw std::logic_error("refine: ||P|| != 4 although no edge-neighbor is coarser; "
                            "the graph is not a valid lattice (run the checker)");
@@ -138,7 +140,7 @@ RefineResult refine(Graph& g, const Point& c) {
 
   // 2. Subdivide c (Fig. 2b): eq. (4a)-(4h). The paper pairs each p_i with one
   //    y_i without saying how; y_i is the child cell that has p_i as a corner,
-  //    centred halfway between c and p_i (erratum E5, a position use).
+  //    centred halfway between c and p_i (erratum E5, position use P1).
   std::array<Point, 4> y;                          // y[i] pairs with p[i]
   for (std::size_t i = 0; i < 4; ++i) y[i] = midpoint(c, p[i]);
 
@@ -171,7 +173,7 @@ RefineResult refine(Graph& g, const Point& c) {
   //= erleben2009#eq-5a
   //= type=deviation
   //= reason=E1: one new junction per side of c without an old junction (4 - ||J|| of them)
-  //# J+ = { j+_1, ..., j+_(4-||J||) }
+  //# J+ = { j+_1, ..., j+_(4 - ||J||) }
   PointSet J_plus;
   for (const Side& s : sides) J_plus.insert(s.j_plus);
   //= erleben2009#eq-5b
@@ -184,7 +186,7 @@ RefineResult refine(Graph& g, const Point& c) {
     //= erleben2009#eq-6a
     //= type=deviation
     //= reason=E1: x_k is the set N(p_i) ∩ N(p_j): one cell across the side, or none on the boundary
-    //# x_k = N(p_i) ∩ N(p_j)
+    //# x_k = N(p_i) ∩ N(p_j)  (for p_i, p_j in P, i != j, |N(p_i) ∩ N(p_j)| = 1)
     const PointSet x_k = intersect(nb(p_i), nb(p_j));
     //= erleben2009#eq-6b
     //# N(x_k) = N(x_k) ∪ {j+_k}
@@ -207,7 +209,7 @@ RefineResult refine(Graph& g, const Point& c) {
   for (const Point& j_k : J)
     for (std::size_t i = 0; i < 4; ++i) {
       //= erleben2009#eq-7-condition
-      //# if |N(j_k) ∩ N(p_i)| = 1
+      //# |N(j_k) ∩ N(p_i)| = 1 for j_k in J, p_i in P
       if (intersect(nb(j_k), nb(p[i])).size() != 1) continue;
       //= erleben2009#eq-7a
       //# N(j_k) = N(j_k) ∪ {y_i}

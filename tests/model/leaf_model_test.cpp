@@ -317,20 +317,12 @@ TEST(LeafModelCounts, LargeLatticesEnumeration) {
   EXPECT_EQ(n113, 1 + n222);
 }
 
-// The BFS over 66641 states takes ~0.8 s optimized but ~5 s at -O0, so it
-// runs by default only in optimized builds.
-TEST(LeafModelCounts, LargeLatticeBfs222) {
-#ifdef __OPTIMIZE__
-  expect_bfs(kLarge[0]);
-#else
-  GTEST_SKIP() << "slow without optimization; run with --gtest_also_run_disabled_tests "
-                  "(DISABLED_LargeLatticeBfsAll) or build optimized";
-#endif
-}
+// The BFS over the 66641 and 66642 states of the large lattices (about 1 s
+// each optimized, 5 s at -O0): ctest label `exhaustive` (tests/CMakeLists.txt),
+// run by `cmake --workflow --preset exhaustive` in the release build.
+TEST(LeafModelExhaustive, LargeLatticeBfs222) { expect_bfs(kLarge[0]); }
 
-TEST(LeafModelCounts, DISABLED_LargeLatticeBfsAll) {
-  for (const Expected& e : kLarge) expect_bfs(e);
-}
+TEST(LeafModelExhaustive, LargeLatticeBfs113) { expect_bfs(kLarge[1]); }
 
 }  // namespace
 }  // namespace bccmis::model

@@ -168,7 +168,7 @@ TEST_P(Mutant, IsCaughtByThePropertiesAndTheExplorer) {
 
 INSTANTIATE_TEST_SUITE_P(Flaws, Mutant, testing::ValuesIn(expectations()), name_of);
 
-// Forget10cOnly drops (10c) but keeps (11d), which repeats it (erratum E5 d):
+// Forget10cOnly drops (10c) but keeps (11d), which repeats it (erratum E9):
 // an equivalent mutant. Nothing may flag it, or the properties have false
 // positives; the explorer sees exactly the reference counts.
 TEST(MutantEquivalent, Forget10cOnlyIsIndistinguishableFromTheCore) {

@@ -480,7 +480,7 @@ Lattice Lattice::from_graph(const Graph& g) {
   return lat;
 }
 
-// ---- Refinement: §2.1, eq. (2a)-(7b) with errata E1, E4, E5 -----------------------
+// ---- Refinement: §2.1, eq. (2a)-(7b) with errata E1, E4, E5, E10 ------------------
 
 std::optional<RefineRefusal> Lattice::can_refine(const Point& c) const {
   Index ci = kNone;
@@ -492,7 +492,7 @@ std::optional<RefineRefusal> Lattice::refine_refusal(const Point& c, Index& ci) 
   ci = find_center(c);
   if (ci == kNone) return RefineRefusal::NoSuchCell;
   const Center& cc = centers_[ci];
-  // pre-refine-max-level (E5): level(c) < L
+  // pre-refine-max-level (E10): level(c) < L
   const int l = cc.level(size_.L);
   if (l >= size_.L) return RefineRefusal::MaxLevel;
   // pre-refine-level with X of eq. (3) (E4): the cells across the sides of c.
@@ -590,7 +590,7 @@ RefineResult Lattice::refine(const Point& c) {
   return out;
 }
 
-// ---- Coarsening: §2.2, eq. (8a)-(12b) with errata E2, E3, E5 ----------------------
+// ---- Coarsening: §2.2, eq. (8a)-(12b) with errata E2, E3, E7 ----------------------
 
 std::optional<CoarsenRefusal> Lattice::can_coarsen(const Point& n) const {
   Index ni = kNone;
@@ -602,7 +602,7 @@ std::optional<CoarsenRefusal> Lattice::coarsen_refusal(const Point& n, Index& ni
   // pre-coarsen-node: n in N
   ni = find_node(n);  // only refined centers are in the position table
   if (ni == kNone) return node_exists(n) ? CoarsenRefusal::NotARefinedCenter : CoarsenRefusal::NoSuchNode;
-  // pre-coarsen-refined-center (E3, E5): the level from n's position. n is in
+  // pre-coarsen-refined-center (E3, E7): the level from n's position. n is in
   // the table, so it sits where a cell center can be (bccmis::refined_center_level).
   const int l = size_.L - center_tz(n);  // n is in the table: center_tz(n) >= 0
   if (l >= size_.L) return CoarsenRefusal::NotARefinedCenter;
@@ -659,7 +659,7 @@ CoarsenResult Lattice::coarsen(const Point& n) {
   const Index nc = y[0];
   replace_ref(slot_of(ni | kNodeBit, home(n)), nc);
 
-  // 2. The children go (9a-9f) and n becomes a center of level l (9d, 9e, E5).
+  // 2. The children go (9a-9f) and n becomes a center of level l (9d, 9e, E7).
   Center& cc = centers_[nc];
   cc.set_position(n);
   // 4. N(n) = B (12a) and N(b_i) ∪ {n} (12b), for the corners ...
