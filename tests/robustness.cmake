@@ -74,7 +74,10 @@ bccmis_bad_input_test(missing_replay replay ${_bad}/no-such-file.trace "cannot o
 bccmis_bad_input_test(missing_check check ${_bad}/no-such-file.state "cannot open for reading" -DNO_LINE=1)
 
 # Output files.
-foreach(case parse_error_keeps_outputs success_leaves_only_outputs missing_output_directory output_is_a_fifo)
+foreach(case parse_error_keeps_outputs success_leaves_only_outputs missing_output_directory output_is_a_fifo
+             replay_outputs_all_or_nothing replay_state_keeps_log_on_stdout stdout_full
+             heightfield_outputs_all_or_nothing heightfield_replaces_atomically
+             animate_outputs_all_or_nothing animate_replaces_atomically)
   add_test(NAME robustness.outputs.${case}
            COMMAND sh ${_bad}/outputs.sh $<TARGET_FILE:bccmis> ${case} ${CMAKE_CURRENT_BINARY_DIR}/outputs_work/${case})
   set_tests_properties(robustness.outputs.${case} PROPERTIES LABELS robustness TIMEOUT 60)
