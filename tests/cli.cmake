@@ -154,3 +154,12 @@ add_test(NAME cli.conformance.readme_example
                  -P ${_run})
 set_tests_properties(cli.conformance.readme_example PROPERTIES LABELS cli TIMEOUT 300)
 
+# spec/cli.md names exactly the options of every subcommand's --help; the
+# self-test plants mismatches and requires that they are caught.
+find_package(Python3 COMPONENTS Interpreter QUIET)
+if(Python3_FOUND)
+  add_test(NAME cli.spec COMMAND Python3::Interpreter ${_cli}/check_cli_spec.py $<TARGET_FILE:bccmis> ${PROJECT_SOURCE_DIR}/spec/cli.md)
+  add_test(NAME cli.spec_self_test
+           COMMAND Python3::Interpreter ${_cli}/check_cli_spec.py $<TARGET_FILE:bccmis> ${PROJECT_SOURCE_DIR}/spec/cli.md --self-test)
+  set_tests_properties(cli.spec cli.spec_self_test PROPERTIES LABELS "cli;spec")
+endif()
