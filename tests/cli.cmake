@@ -128,6 +128,9 @@ bccmis_cli_test(missing_file_says_why 2 ARGS replay ${_cli}/no-such-file.trace
 # Negative counts are usage errors.
 bccmis_cli_test(explore_negative_threads 2 ARGS explore 1 1 1 --threads -1 STDERR_REGEX "--threads")
 bccmis_cli_test(explore_negative_max_states 2 ARGS explore 1 1 1 --max-states -5 STDERR_REGEX "--max-states")
+bccmis_cli_test(conformance_negative_seed 2 ARGS conformance --impl true --seed -1 STDERR_REGEX "--seed")
+bccmis_cli_test(heightfield_negative_seed 2 ARGS heightfield ${PROJECT_SOURCE_DIR}/apps/samples/terrain128.pgm --seed -1
+                STDERR_REGEX "--seed")
 bccmis_cli_test(conformance_negative_random 2 ARGS conformance --impl true --random -1 STDERR_REGEX "--random")
 
 # explore: a partial run is not a failure; an unreachable space is refused

@@ -43,15 +43,27 @@ std::string frame_title(const FrameReport& fr) {
                    : "frame " + std::to_string(fr.frame) + " at (" + fmt(fr.x, "%.3f") + ", " + fmt(fr.y, "%.3f") + ")";
 }
 
+/// The sums over the frames.
+struct Totals {
+  std::size_t refinements = 0, coarsenings = 0;
+  double seconds = 0;
+};
+
+Totals totals(const std::vector<FrameReport>& reports) {
+  Totals t;
+  for (const FrameReport& fr : reports) {
+    t.refinements += fr.refinements;
+    t.coarsenings += fr.coarsenings;
+    t.seconds += fr.seconds;
+  }
+  return t;
+}
+
 std::string stats_text(const std::vector<FrameReport>& reports, const LatticeSize& size, std::size_t cells,
                        std::size_t nodes, bool json) {
   std::string table, frames_json;
-  std::size_t refinements = 0, coarsenings = 0;
-  double seconds = 0;
+  const auto [refinements, coarsenings, seconds] = totals(reports);
   for (const FrameReport& fr : reports) {
-    refinements += fr.refinements;
-    coarsenings += fr.coarsenings;
-    seconds += fr.seconds;
     if (json) {
       frames_json += std::string(frames_json.empty() ? "" : ",\n  ") + "{\"frame\": " + std::to_string(fr.frame) +
                      ", \"lifted\": " + (fr.lifted ? "true" : "false") + ", \"x\": " + fmt(fr.x, "%.9g") +
@@ -127,13 +139,7 @@ int run_animate(const AnimateCommandOptions& o) {
   outputs.add(o.stats, stats_text(reports, size, cells, nodes, o.json));
   outputs.commit();
   if (!o.quiet) {
-    std::size_t refinements = 0, coarsenings = 0;
-    double seconds = 0;
-    for (const FrameReport& fr : reports) {
-      refinements += fr.refinements;
-      coarsenings += fr.coarsenings;
-      seconds += fr.seconds;
-    }
+    const auto [refinements, coarsenings, seconds] = totals(reports);
     std::cerr << kTool << ": " << reports.size() << " frames, " << refinements + coarsenings << " operations ("
               << refinements << " refine, " << coarsenings << " coarsen), final " << cells << " cells, "
               << fmt(seconds, "%.3f") << " s\n";

@@ -30,16 +30,20 @@ std::optional<Violation> check_graph(const Graph& g, int depth) {
   return v;
 }
 
+std::string summary(const std::map<int, std::size_t>& cells_per_level, std::size_t nodes) {
+  std::size_t cells = 0;
+  std::string levels;
+  for (const auto& [l, n] : cells_per_level) {
+    levels += (levels.empty() ? "" : ", ") + std::string("level ") + std::to_string(l) + ": " + std::to_string(n);
+    cells += n;
+  }
+  return std::to_string(cells) + " cells (" + levels + "), " + std::to_string(nodes) + " nodes";
+}
+
 std::string summary(const Graph& g) {
   std::map<int, std::size_t> per_level;
   for (const auto& [c, l] : g.level) ++per_level[l];
-  std::string s = std::to_string(g.C.size()) + " cells (";
-  bool first = true;
-  for (const auto& [l, n] : per_level) {
-    s += (first ? "" : ", ") + std::string("level ") + std::to_string(l) + ": " + std::to_string(n);
-    first = false;
-  }
-  return s + "), " + std::to_string(g.N.size()) + " nodes";
+  return summary(per_level, g.N.size());
 }
 
 int run(const CheckOptions& o) {

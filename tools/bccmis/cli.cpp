@@ -129,7 +129,7 @@ CLI::App* add_conformance(CLI::App& app, ConformanceCommandOptions& o) {
   cmd->add_option("--impl", o.impl, "Command to run; the trace file path is appended (spec/conformance.md)")->required();
   cmd->add_option("--traces", o.traces, "Directory of bundled *.trace files to run first");
   cmd->add_option("--random", o.random, "Number of random traces")->check(CLI::Range(0, 1000000))->capture_default_str();
-  cmd->add_option("--seed", o.seed, "Seed of the random traces")->capture_default_str();
+  cmd->add_option("--seed", o.seed, "Seed of the random traces")->check(CLI::NonNegativeNumber)->capture_default_str();
   cmd->add_option("--max-ops", o.max_ops, "Operations per random trace")->check(CLI::Range(1, 100000))->capture_default_str();
   cmd->add_option("--timeout", o.timeout_seconds, "Seconds per run of the implementation")
       ->check(CLI::Range(0.01, 86400.0))
@@ -181,7 +181,7 @@ CLI::App* add_heightfield(CLI::App& app, HeightfieldCommandOptions& o) {
       ->check(CLI::IsMember({"max", "samples"}))
       ->capture_default_str();
   cmd->add_option("--samples", o.samples, "Random points per cell for --measure=samples")->capture_default_str();
-  cmd->add_option("--seed", o.seed, "Seed of --measure=samples")->capture_default_str();
+  cmd->add_option("--seed", o.seed, "Seed of --measure=samples")->check(CLI::NonNegativeNumber)->capture_default_str();
   cmd->add_option("--balance", o.balance, "2:1 rule: edge (the core's) or corner")
       ->check(CLI::IsMember({"edge", "corner"}))
       ->capture_default_str();

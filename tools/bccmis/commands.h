@@ -4,7 +4,9 @@
 // that returns the exit code (io.h) or throws InputError / CheckFailure.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -39,7 +41,8 @@ const Graph& as_graph(const fast::Lattice& g, Graph& copy);
 int max_check_depth();
 /// The checker to `depth` (5 adds the CGAL triangulation layer).
 std::optional<Violation> check_graph(const Graph& g, int depth);
-/// "9 cells (level 0: 1, level 1: 8), 17 nodes".
+/// "9 cells (level 0: 1, level 1: 8), 17 nodes", from the cells per level.
+std::string summary(const std::map<int, std::size_t>& cells_per_level, std::size_t nodes);
 std::string summary(const Graph& g);
 
 // ---- The subcommands ------------------------------------------------------------------

@@ -21,13 +21,7 @@ std::string lattice_summary(const Graph& g) { return summary(g); }
 std::string lattice_summary(const fast::Lattice& g) {
   std::map<int, std::size_t> per_level;
   g.for_each_cell([&](const Point&, int level) { ++per_level[level]; });
-  std::string s = std::to_string(g.cell_count()) + " cells (";
-  bool first = true;
-  for (const auto& [l, n] : per_level) {
-    s += (first ? "" : ", ") + std::string("level ") + std::to_string(l) + ": " + std::to_string(n);
-    first = false;
-  }
-  return s + "), " + std::to_string(g.node_count()) + " nodes";
+  return summary(per_level, g.node_count());
 }
 
 // The decision log, one JSON string per line.
