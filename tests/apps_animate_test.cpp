@@ -1,6 +1,7 @@
 // Moving-feature adaptivity (src/bccmis/apps/animate.h, apps.h): the checker
 // after every frame, history independence, the lattice far from the feature
-// back at level 0, the lift back to the initial lattice, run_animate outputs.
+// back at level 0, the lift back to the initial lattice, both implementations.
+// The CLI's outputs (`bccmis animate`) are tested in tests/apps.cmake.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,6 +15,7 @@
 
 #include "bccmis/apps/animate.h"
 #include "bccmis/apps/apps.h"
+#include "bccmis/fast/lattice.h"
 #include "bccmis/format.h"
 #include "bccmis/invariants/invariants.h"
 
@@ -29,18 +31,16 @@ double distance_to_cell(const Graph& g, const Point& c, double x, double y) {
 }
 
 void many_frames(Balance mode) {
-  AnimateOptions o;
-  o.balance = std::string(name(mode));
-  o.width = 6;
-  o.height = 5;
-  o.max_level = 4;
+  AnimationSettings o;
+  o.balance = mode;
   o.radius = 0.3;
-  o.path = "0.5,0.5;5.5,4.5;3,0.2;0,4";
+  o.path = parse_path("0.5,0.5;5.5,4.5;3,0.2;0,4");
   o.frames = 60;
   const double S = static_cast<double>(level0_side({6, 5, 4}));
   int frames = 0;
   std::size_t operations = 0;
-  const Graph last = animate(o, [&](const FrameReport& fr, const Graph& g) {
+  Graph last = make_lattice({6, 5, 4});
+  animate(last, o, [&](const FrameReport& fr, const Graph& g) {
     ++frames;
     operations += fr.refinements + fr.coarsenings;
     ASSERT_TRUE(is_valid(g)) << "frame " << fr.frame << ": " << to_string(*find_violation(g));
@@ -76,15 +76,12 @@ TEST(Animate, ManyFramesStayValidAndDependOnlyOnTheFeature) { many_frames(Balanc
 TEST(Animate, CornerBalanceManyFramesStayValidAndDependOnlyOnTheFeature) { many_frames(Balance::Corner); }
 
 TEST(Animate, LiftReturnsToTheInitialLattice) {
-  AnimateOptions o;
-  o.width = 5;
-  o.height = 5;
-  o.max_level = 4;
-  o.path = "1,1;4,4;4,1";
+  AnimationSettings o;
+  o.path = parse_path("1,1;4,4;4,1");
   o.frames = 12;
   o.lift = true;
-  std::vector<FrameReport> reports;
-  const Graph g = animate(o, {}, &reports);
+  Graph g = make_lattice({5, 5, 4});
+  const std::vector<FrameReport> reports = animate(g, o);
   ASSERT_EQ(reports.size(), 13u);
   EXPECT_TRUE(reports.back().lifted);
   EXPECT_GT(reports.back().coarsenings, 0u);
@@ -133,75 +130,30 @@ TEST(Animate, PathParsingAndArcLength) {
   }
 }
 
-TEST(RunAnimate, WritesFramesStatsAndState) {
-  const auto dir = std::filesystem::temp_directory_path() / ("bccmis_apps_run_animate_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  AnimateOptions o;
-  o.width = 4;
-  o.height = 4;
-  o.max_level = 3;
-  o.path = "0.5,0.5;3.5,3.5";
-  o.frames = 5;
-  o.lift = true;
-  o.svg_dir = dir.string();
-  o.state = (dir / "final.state").string();
-  o.check = true;
-  std::ostringstream out, err;
-  ASSERT_EQ(run_animate(o, out, err), 0) << err.str();
-  for (int k = 0; k < 6; ++k) {
-    char name[32];
-    std::snprintf(name, sizeof name, "frame_%04d.svg", k);
-    std::ifstream in(dir / name);
-    std::stringstream svg;
-    svg << in.rdbuf();
-    EXPECT_EQ(svg.str().rfind("<svg", 0), 0u) << name;
-    EXPECT_EQ(svg.str().find("<circle cx") != std::string::npos && svg.str().find("fill=\"#e07020\"") != std::string::npos,
-              k < 5)
-        << name << ": the feature is drawn in the frames that have it";
-  }
-  std::ifstream st(o.state);
-  std::stringstream state;
-  state << st.rdbuf();
-  EXPECT_EQ(parse_state(state.str()), make_lattice({4, 4, 3}));
-  EXPECT_NE(out.str().find("# frame"), std::string::npos);
-  EXPECT_NE(out.str().find(" lifted\n"), std::string::npos);
-  EXPECT_NE(out.str().find("total frames 6 "), std::string::npos) << out.str();
-  EXPECT_NE(err.str().find("bccmis animate: 6 frames"), std::string::npos);
-
-  o.json = true;
-  o.svg_dir.clear();
-  o.state.clear();
-  out.str("");
-  ASSERT_EQ(run_animate(o, out, err), 0);
-  EXPECT_EQ(out.str().rfind("{\"lattice\": \"4 4 3\", \"frames\": [", 0), 0u) << out.str();
-  EXPECT_NE(out.str().find("\"total\": {\"frames\": 6"), std::string::npos);
-  std::filesystem::remove_all(dir);
-}
-
-TEST(RunAnimate, FastImplMakesTheSameFramesAndState) {
+TEST(Animate, FastImplMakesTheSameFramesAndState) {
   // Every frame's report (operations, cells, nodes) and the final state are
   // the reference's; the lattices given to the observer are equal frame by
   // frame. Corner mode too.
-  for (const char* balance : {"edge", "corner"}) {
-    SCOPED_TRACE(balance);
-    AnimateOptions o;
-    o.width = 5;
-    o.height = 4;
-    o.max_level = 4;
+  for (const Balance balance : {Balance::Edge, Balance::Corner}) {
+    SCOPED_TRACE(std::string(name(balance)));
+    AnimationSettings o;
     o.radius = 0.3;
-    o.path = "0.5,0.5;4.5,3.5;1,3";
+    o.path = parse_path("0.5,0.5;4.5,3.5;1,3");
     o.frames = 12;
     o.lift = true;
     o.balance = balance;
+    const LatticeSize size{5, 4, 4};
     std::vector<std::string> states[2];
     std::vector<FrameReport> reports[2];
     Graph finals[2];
-    for (int i = 0; i < 2; ++i) {
-      o.impl = i == 0 ? "reference" : "fast";
-      finals[i] = animate(o, [&](const FrameReport&, const Graph& g) { states[i].push_back(canonical_state(g)); },
-                          &reports[i]);
-    }
+    Graph reference = make_lattice(size);
+    reports[0] = animate(reference, o, [&](const FrameReport&, const Graph& g) { states[0].push_back(canonical_state(g)); });
+    finals[0] = reference;
+    fast::Lattice lattice(size);
+    reports[1] = animate(lattice, o, [&](const FrameReport&, const fast::Lattice& g) {
+      states[1].push_back(canonical_text(g));
+    });
+    finals[1] = lattice.to_graph();
     ASSERT_EQ(reports[0].size(), 13u);
     ASSERT_EQ(reports[1].size(), reports[0].size());
     std::size_t operations = 0;
@@ -218,38 +170,23 @@ TEST(RunAnimate, FastImplMakesTheSameFramesAndState) {
     EXPECT_EQ(finals[1], finals[0]);
     EXPECT_EQ(finals[0], make_lattice({5, 4, 4})) << "lifted: back to the initial lattice";
   }
-  AnimateOptions bad;
-  bad.impl = "quick";
-  std::ostringstream out, err;
-  EXPECT_EQ(run_animate(bad, out, err), 2);
-  EXPECT_EQ(err.str(), "bccmis animate: impl 'quick' is unknown: use reference or fast\n");
 }
 
-TEST(RunAnimate, BadOptionsExitTwo) {
-  std::ostringstream out, err;
-  AnimateOptions o;
-  o.path = "1,1;oops";
-  EXPECT_EQ(run_animate(o, out, err), 2);
-  EXPECT_EQ(err.str(), "bccmis animate: path point 2 'oops': expected x,y\n");
-  o = {};
+TEST(Animate, BadSettingsThrow) {
+  Graph g = make_lattice({8, 8, 5});
+  AnimationSettings o;
   o.target_level = 9;
-  err.str("");
-  EXPECT_EQ(run_animate(o, out, err), 2);
-  EXPECT_EQ(err.str(), "bccmis animate: target level 9 is out of range 0..5 (or -1 for the max level)\n");
-  o = {};
-  o.svg_dir = "/nonexistent/frames";
-  err.str("");
-  EXPECT_EQ(run_animate(o, out, err), 2);
-  EXPECT_EQ(err.str(), "bccmis animate: /nonexistent/frames: not an existing directory\n");
-  o = {};
-  o.state = "-";
-  err.str("");
-  EXPECT_EQ(run_animate(o, out, err), 2);
+  EXPECT_THROW(animate(g, o), std::invalid_argument);
   o = {};
   o.radius = -1;
-  err.str("");
-  EXPECT_EQ(run_animate(o, out, err), 2);
-  EXPECT_EQ(err.str(), "bccmis animate: radius must be a number >= 0\n");
+  EXPECT_THROW(animate(g, o), std::invalid_argument);
+  o = {};
+  o.frames = 0;
+  EXPECT_THROW(animate(g, o), std::invalid_argument);
+  o = {};
+  o.path.clear();
+  EXPECT_THROW(animate(g, o), std::invalid_argument);
+  EXPECT_EQ(g, make_lattice({8, 8, 5})) << "refused settings change nothing";
 }
 
 }  // namespace

@@ -87,7 +87,7 @@ bccmis_cli_test(conformance.crash 1
   ARGS conformance --impl "sh ${_conf}/crash_on_coarsen.sh $<TARGET_FILE:bccmis>" --random 50 --seed 1
   STDOUT_REGEX "${_minimal}.*crashed: signal 11")
 bccmis_cli_test(conformance.timeout 1
-  ARGS conformance --impl "sh ${_conf}/hang_on_long_traces.sh $<TARGET_FILE:bccmis>" --random 20 --seed 1 --timeout 0.5
+  ARGS conformance --impl "sh ${_conf}/hang_on_long_traces.sh $<TARGET_FILE:bccmis>" --random 20 --seed 1 --timeout 1.5
   STDOUT_REGEX "minimal trace \\(4 operations\\).*timed out")
 bccmis_cli_test(conformance.no_impl 2 ARGS conformance STDERR_REGEX "impl")
 bccmis_cli_test(conformance.bad_trace_dir 2 ARGS conformance --impl true --traces ${_cli}/no-such-dir STDERR_REGEX "not a directory")
@@ -113,3 +113,56 @@ bccmis_cli_test(explore_bad_lattice 2 ARGS explore 1 1 -1 STDERR_REGEX "L must b
 # replay --json: fig3 by hand (spec/examples/fig3.expected): three decisions, 6 cells, 13 nodes.
 bccmis_cli_test(replay_json 0 ARGS replay --json ${_examples}/fig3.trace
   STDOUT_REGEX "\"decisions\": \\[\"refine 10 2 ok\", \"refine 6 2 ok\", \"coarsen 6 2 ok\"\\].*\"cells\": 6, \"nodes\": 13, \"state\": \"bccmis-state 1\\\\nlattice 3 1 1\\\\n")
+
+# Messages for common slips (spec/cli.md, "Messages").
+bccmis_cli_test(did_you_mean 2 ARGS replya ${_examples}/fig2.trace STDERR_REGEX "unknown subcommand 'replya': did you mean 'replay'\\?")
+bccmis_cli_test(unknown_subcommand_lists 2 ARGS frobnicate STDERR_REGEX "unknown subcommand 'frobnicate' \\(subcommands: replay check")
+bccmis_cli_test(check_given_a_trace 2 ARGS check ${_examples}/fig2.trace
+                STDERR_REGEX "fig2.trace:1:1: expected 'bccmis-state 1'.*. this is a trace, not a canonical state: replay it with 'bccmis replay")
+bccmis_cli_test(stats_given_a_trace 2 ARGS stats ${_examples}/fig2.trace STDERR_REGEX "this is a trace, not a canonical state: give --from-trace")
+bccmis_cli_test(replay_given_a_state 2 ARGS replay ${_examples}/initial_1_1_0.state
+                STDERR_REGEX "initial_1_1_0.state:1:1: unknown command 'bccmis-state'.*. this is a canonical state, not a trace: check it with 'bccmis check'")
+bccmis_cli_test(missing_file_says_why 2 ARGS replay ${_cli}/no-such-file.trace
+                STDERR_REGEX "no-such-file.trace: cannot open for reading: No such file or directory")
+
+# Negative counts are usage errors.
+bccmis_cli_test(explore_negative_threads 2 ARGS explore 1 1 1 --threads -1 STDERR_REGEX "--threads")
+bccmis_cli_test(explore_negative_max_states 2 ARGS explore 1 1 1 --max-states -5 STDERR_REGEX "--max-states")
+bccmis_cli_test(conformance_negative_seed 2 ARGS conformance --impl true --seed -1 STDERR_REGEX "--seed")
+bccmis_cli_test(heightfield_negative_seed 2 ARGS heightfield ${PROJECT_SOURCE_DIR}/apps/samples/terrain128.pgm --seed -1
+                STDERR_REGEX "--seed")
+bccmis_cli_test(conformance_negative_random 2 ARGS conformance --impl true --random -1 STDERR_REGEX "--random")
+
+# explore: a partial run is not a failure; an unreachable space is refused
+# with its estimate (2 x 1 cells, L = 3: at least 2^(2*4^2) = 2^32 states).
+bccmis_cli_test(explore_partial 0 ARGS explore 1 1 2 --max-states 5 --no-progress
+                STDOUT_REGEX "^explore 1 1 2: 5 states, .* incomplete")
+bccmis_cli_test(explore_beyond_reach 2 ARGS explore 2 1 3
+                STDERR_REGEX "explore: lattice 2 1 3 has at least 4294967296 reachable states \\(at most [0-9]+\\), beyond reach.*--max-states")
+bccmis_cli_test(explore_beyond_reach_partial 0 ARGS explore 2 1 3 --max-states 3 --no-progress STDOUT_REGEX "3 states, .*incomplete")
+bccmis_cli_test(explore_help_example 0 ARGS explore --help STDOUT_REGEX "bccmis explore 1 1 2 .*bccmis explore 2 2 1 --json")
+
+# conformance: the default run checks random traces; an implementation that
+# cannot be run is a harness error.
+bccmis_cli_test(conformance.default_random 0 ARGS conformance --impl "$<TARGET_FILE:bccmis> replay --quiet --check=none"
+                STDOUT_REGEX "all 100 traces agree \\(0 bundled, 100 random, seed 1\\)")
+bccmis_cli_test(conformance.not_found 2 ARGS conformance --impl ./no-such-implementation --random 5
+                STDERR_REGEX "conformance: cannot run the implementation './no-such-implementation' \\(exit status 127, command not found\\)")
+bccmis_cli_test(conformance.not_executable 2 ARGS conformance --impl ${_cli}/fig2.log --random 5
+                STDERR_REGEX "cannot run the implementation .*\\(exit status 126, not executable\\)")
+# The README's example, as written, with bccmis on the PATH.
+add_test(NAME cli.conformance.readme_example
+         COMMAND ${CMAKE_COMMAND} "-DCMD=env|PATH=$<TARGET_FILE_DIR:bccmis>:$ENV{PATH}|bccmis|conformance|--impl|bccmis replay --quiet --check=none|--random|500|--seed|7"
+                 -DEXPECT_EXIT=0 "-DEXPECT_STDOUT_REGEX=all 500 traces agree" -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/cli_work/readme_example
+                 -P ${_run})
+set_tests_properties(cli.conformance.readme_example PROPERTIES LABELS cli TIMEOUT 300)
+
+# spec/cli.md names exactly the options of every subcommand's --help; the
+# self-test plants mismatches and requires that they are caught.
+find_package(Python3 COMPONENTS Interpreter QUIET)
+if(Python3_FOUND)
+  add_test(NAME cli.spec COMMAND Python3::Interpreter ${_cli}/check_cli_spec.py $<TARGET_FILE:bccmis> ${PROJECT_SOURCE_DIR}/spec/cli.md)
+  add_test(NAME cli.spec_self_test
+           COMMAND Python3::Interpreter ${_cli}/check_cli_spec.py $<TARGET_FILE:bccmis> ${PROJECT_SOURCE_DIR}/spec/cli.md --self-test)
+  set_tests_properties(cli.spec cli.spec_self_test PROPERTIES LABELS "cli;spec")
+endif()

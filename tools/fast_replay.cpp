@@ -6,7 +6,9 @@
 // checks the fast implementation against the reference (tests/fast.cmake).
 //
 // Exit codes: 0 ok; 2 unreadable file or malformed trace (one line on stderr).
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <fstream>
 #include <iostream>
@@ -15,6 +17,7 @@
 
 #include "bccmis/fast/lattice.h"
 #include "bccmis/format.h"
+#include "bccmis/trace.h"
 
 int main(int argc, char** argv) {
   if (argc != 2 || std::string(argv[1]) == "--help") {
@@ -23,9 +26,11 @@ int main(int argc, char** argv) {
     return argc == 2 ? 0 : 2;
   }
   const std::string path = argv[1];
+  errno = 0;
   std::ifstream in(path, std::ios::binary);
   if (!in) {
-    std::cerr << "bccmis-fast-replay: " << path << ": cannot open for reading\n";
+    std::cerr << "bccmis-fast-replay: " << path << ": cannot open for reading"
+              << (errno != 0 ? std::string(": ") + std::strerror(errno) : std::string()) << "\n";
     return 2;
   }
   std::ostringstream text;
@@ -33,8 +38,9 @@ int main(int argc, char** argv) {
   try {
     const bccmis::Trace trace = bccmis::parse_trace(text.str(), path);
     std::string log;
-    const bccmis::fast::Lattice g = bccmis::fast::replay(trace, log);
-    std::cout << log << bccmis::fast::canonical_state(g);
+    const auto g = bccmis::replay_on<bccmis::fast::Lattice>(trace, log);
+    std::cout << log;
+    write_canonical_state(std::cout, g);
     std::cout.flush();
     return std::cout ? 0 : 2;
   } catch (const bccmis::ParseError& e) {

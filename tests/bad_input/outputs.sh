@@ -1,7 +1,9 @@
 #!/bin/sh
-# Output-file robustness of `bccmis replay` (issue 6): files are written
-# atomically (temporary file + rename), a failed run leaves existing outputs
-# untouched, and no temporary file is ever left behind.
+# Output-file robustness of the CLI (issue 6, spec/cli.md "Outputs"): files
+# are written atomically (temporary file + rename), a run with several outputs
+# writes all or none of them, a failed run leaves existing outputs untouched,
+# a failed write to stdout is an error, and no temporary file is ever left
+# behind.
 #   sh outputs.sh BCCMIS CASE WORKDIR
 set -u
 bccmis=$1
@@ -67,6 +69,72 @@ case $case_name in
     wait "$reader"
     [ $rc -eq 0 ] || fail "exit code $rc, expected 0: $(cat stderr.txt)"
     [ "$(tail -n 1 got.txt)" = "end 5 11" ] || fail "the reader did not get the state"
+    no_temporaries
+    ;;
+  replay_outputs_all_or_nothing)
+    # The log is fine, the state cannot be written: neither is.
+    "$bccmis" replay --quiet --log ok.log --state /proc/x good.trace > stdout.txt 2> stderr.txt
+    rc=$?
+    [ $rc -eq 2 ] || fail "exit code $rc, expected 2"
+    [ -e ok.log ] && fail "ok.log was written although --state failed"
+    grep -q '/proc/x' stderr.txt || fail "stderr does not name /proc/x: $(cat stderr.txt)"
+    no_temporaries
+    ;;
+  replay_state_keeps_log_on_stdout)
+    # --state without --log: the decision log still goes to stdout.
+    "$bccmis" replay --quiet --state out.state good.trace > stdout.txt 2> stderr.txt
+    rc=$?
+    [ $rc -eq 0 ] || fail "exit code $rc, expected 0: $(cat stderr.txt)"
+    [ "$(cat stdout.txt)" = "refine 2 2 ok" ] || fail "stdout is not the decision log: $(cat stdout.txt)"
+    [ "$(tail -n 1 out.state)" = "end 5 11" ] || fail "out.state is incomplete"
+    no_temporaries
+    ;;
+  stdout_full)
+    # A failed write to standard output is an error, not a success.
+    [ -w /dev/full ] || { echo "skipped: no /dev/full"; exit 0; }
+    "$bccmis" replay --quiet good.trace > /dev/full 2> stderr.txt
+    rc=$?
+    [ $rc -eq 2 ] || fail "exit code $rc, expected 2"
+    grep -q 'standard output: write error' stderr.txt || fail "stderr: $(cat stderr.txt)"
+    ;;
+  heightfield_outputs_all_or_nothing)
+    printf 'P2\n2 2\n255\n0 10\n20 30\n' > tiny.pgm
+    "$bccmis" heightfield tiny.pgm -q --obj a.obj --svg /proc/x.svg > stdout.txt 2> stderr.txt
+    rc=$?
+    [ $rc -eq 2 ] || fail "exit code $rc, expected 2"
+    [ -e a.obj ] && fail "a.obj was written although --svg failed"
+    no_temporaries
+    ;;
+  heightfield_replaces_atomically)
+    # The output is replaced by a rename: a hard link to the old file keeps
+    # the old text (writing in place would change both).
+    printf 'P2\n2 2\n255\n0 10\n20 30\n' > tiny.pgm
+    printf 'old\n' > a.obj
+    ln a.obj old.obj
+    "$bccmis" heightfield tiny.pgm -q --obj a.obj --stats s.txt > stdout.txt 2> stderr.txt
+    rc=$?
+    [ $rc -eq 0 ] || fail "exit code $rc, expected 0: $(cat stderr.txt)"
+    [ "$(cat old.obj)" = "old" ] || fail "the old a.obj was written in place, not replaced"
+    grep -q '^v ' a.obj || fail "a.obj is not a mesh"
+    no_temporaries
+    ;;
+  animate_outputs_all_or_nothing)
+    # A failing --state: no frame is written either.
+    mkdir frames
+    "$bccmis" animate -q --frames 3 --svg-dir frames --state /proc/x.state > stdout.txt 2> stderr.txt
+    rc=$?
+    [ $rc -eq 2 ] || fail "exit code $rc, expected 2"
+    [ -z "$(ls frames)" ] || fail "frames were written although --state failed: $(ls frames | head -3)"
+    no_temporaries
+    ;;
+  animate_replaces_atomically)
+    printf 'old\n' > final.state
+    ln final.state old.state
+    "$bccmis" animate -q --frames 2 --state final.state > stdout.txt 2> stderr.txt
+    rc=$?
+    [ $rc -eq 0 ] || fail "exit code $rc, expected 0: $(cat stderr.txt)"
+    [ "$(cat old.state)" = "old" ] || fail "the old final.state was written in place, not replaced"
+    [ "$(head -n 1 final.state)" = "bccmis-state 1" ] || fail "final.state is not a state"
     no_temporaries
     ;;
   *)

@@ -352,7 +352,15 @@ int run_conformance(const ConformanceOptions& o, std::ostream& out) {
 
   auto run_trace = [&](const Trace& t) {
     TempFile file(format_trace(t));
-    return compare_run(t, run_implementation(o.impl, file.path(), o.timeout_seconds));
+    const ImplRun run = run_implementation(o.impl, file.path(), o.timeout_seconds);
+    if (!run.timed_out && run.signal == 0 && (run.exit_code == 126 || run.exit_code == 127)) {
+      const std::string first_err = run.err.substr(0, run.err.find('\n'));
+      throw ImplementationNotRunnable("cannot run the implementation '" + o.impl + "' (exit status " +
+                                      std::to_string(run.exit_code) + ", " +
+                                      (run.exit_code == 127 ? "command not found" : "not executable") + ")" +
+                                      (first_err.empty() ? "" : ": " + first_err));
+    }
+    return compare_run(t, run);
   };
   std::size_t agreed = 0;
   for (const auto& [name, trace] : work) {

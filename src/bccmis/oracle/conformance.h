@@ -8,6 +8,7 @@
 #include <optional>
 #include <ostream>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -71,6 +72,13 @@ std::optional<ViewSide> implementation_side(const Trace& trace, const ImplRun& f
 
 /// The viewer page for a disagreement on `trace` (see ConformanceOptions::write_view).
 std::string disagreement_page(const Trace& trace, const ConformanceOptions& options);
+
+/// Thrown by run_conformance when the implementation cannot be run at all:
+/// the shell's exit status 126 (not executable) or 127 (not found). A harness
+/// error, not a disagreement.
+struct ImplementationNotRunnable : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 /// Runs the harness; reports to `out` (progress and the verdict). Returns the
 /// exit code: 0 all agree, 1 a disagreement (minimal trace printed), 2 harness

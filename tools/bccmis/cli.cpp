@@ -1,0 +1,334 @@
+#include "cli.h"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cstring>
+#include <iostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "io.h"
+
+namespace bccmis::cli {
+
+namespace {
+
+// ---- One function per subcommand: its flags, bound to its options struct ----
+
+CLI::App* add_replay(CLI::App& app, ReplayOptions& o) {
+  CLI::App* cmd = app.add_subcommand("replay", "Replay a trace; print the decision log and the canonical state.");
+  cmd->add_option("trace", o.trace, "Trace file ('-' for stdin)")->required();
+  cmd->add_option("--log", o.log_file, "Write the decision log to this file (atomically) instead of stdout");
+  cmd->add_option("--state", o.state_file, "Write the canonical state to this file (atomically) instead of stdout");
+  cmd->add_option("--check", o.check, "When to run the invariant checker: every (after each command), end, none")
+      ->check(CLI::IsMember({"every", "end", "none"}))
+      ->capture_default_str();
+  cmd->add_option("--depth", o.depth, "Checker layers to run: 1-4, or 5 for the CGAL triangulation layer")
+      ->check(CLI::Range(1, max_check_depth()))
+      ->capture_default_str();
+  cmd->add_flag("-q,--quiet", o.quiet, "No summary on stderr");
+  cmd->add_flag("--json", o.json, "Print one JSON object (decisions, counts, canonical state) instead of the text");
+  cmd->add_option("--impl", o.impl, "Implementation to replay with: reference (the transcription) or fast")
+      ->check(CLI::IsMember({"reference", "fast"}))
+      ->capture_default_str();
+  cmd->add_option("--max-vertices", o.max_vertices, "Refuse a trace whose lattice grows beyond this many vertices (exit 2)")
+      ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 40))
+      ->capture_default_str();
+  cmd->footer("Example:\n  bccmis replay spec/examples/fig2.trace\n  bccmis replay run.trace --check=end --log run.log --state run.state");
+  return cmd;
+}
+
+CLI::App* add_check(CLI::App& app, CheckOptions& o) {
+  CLI::App* cmd = app.add_subcommand("check", "Check a canonical state against every invariant.");
+  cmd->add_option("state", o.state, "State file ('-' for stdin)")->required();
+  cmd->add_option("--depth", o.depth, "Checker layers to run: 1-4, or 5 for the CGAL triangulation layer")
+      ->check(CLI::Range(1, max_check_depth()))
+      ->capture_default_str();
+  cmd->add_flag("-q,--quiet", o.quiet, "Print nothing when the state is valid");
+  cmd->footer("Example:\n  bccmis replay spec/examples/fig2.trace --state fig2.state && bccmis check fig2.state");
+  return cmd;
+}
+
+CLI::App* add_diff(CLI::App& app, DiffOptions& o) {
+  CLI::App* cmd = app.add_subcommand("diff", "Semantic difference of two canonical states, by position.");
+  cmd->add_option("a", o.a, "First state file ('-' for stdin)")->required();
+  cmd->add_option("b", o.b, "Second state file")->required();
+  cmd->add_flag("-q,--quiet", o.quiet, "Only the exit code: 0 equal, 1 different");
+  cmd->footer("Exit codes: 0 equal, 1 different, 2 bad input.\nExample:\n  bccmis diff expected.state actual.state");
+  return cmd;
+}
+
+CLI::App* add_stats(CLI::App& app, StatsOptions& o) {
+  CLI::App* cmd =
+      app.add_subcommand("stats", "Counts of a state: cells per level, nodes, junctions, edges, memory estimate.");
+  cmd->add_option("state", o.state, "State file ('-' for stdin)")->required();
+  cmd->add_flag("--json", o.json, "JSON output");
+  cmd->add_flag("--from-trace", o.from_trace, "The input is a trace: replay it first");
+  cmd->footer("Example:\n  bccmis stats --from-trace spec/examples/fig2.trace --json");
+  return cmd;
+}
+
+CLI::App* add_render(CLI::App& app, RenderOptions& o) {
+  CLI::App* cmd =
+      app.add_subcommand("render", "Draw a state as SVG: cells by level, stored and hull edges, junctions.");
+  cmd->add_option("state", o.state, "State file ('-' for stdin)")->required();
+  cmd->add_option("-o,--output", o.output, "SVG file to write (atomically); '-' for stdout")->required();
+  cmd->add_flag("--from-trace", o.from_trace, "The input is a trace: replay it first");
+  cmd->footer("Example:\n  bccmis render --from-trace spec/examples/fig2.trace -o fig2.svg");
+  return cmd;
+}
+
+CLI::App* add_view(CLI::App& app, ViewCommandOptions& o) {
+  CLI::App* cmd = app.add_subcommand(
+      "view", "Write one self-contained HTML page that steps through a trace (or a sequence of states).");
+  cmd->add_option("trace", o.trace, "Trace file ('-' for stdin)");
+  cmd->add_option("--states", o.states,
+                  "Instead of a trace: canonical state files, one per step, or one directory of *.state files "
+                  "(taken in name order)");
+  cmd->add_option("-o,--output", o.output, "HTML file to write (atomically); '-' for stdout")->required();
+  cmd->add_option("--check", o.check,
+                  "When to run the invariant checker: every (each state; the page opens at the first violation), end, none")
+      ->check(CLI::IsMember({"every", "end", "none"}))
+      ->capture_default_str();
+  cmd->add_option("--depth", o.depth, "Checker layers to run: 1-4, or 5 for the CGAL triangulation layer")
+      ->check(CLI::Range(1, max_check_depth()))
+      ->capture_default_str();
+  cmd->add_option("--step", o.step, "Open the page at this step (default: the first violation, else step 0)")
+      ->check(CLI::Range(std::int64_t{0}, std::int64_t{1} << 40));
+  cmd->add_option("--from-log", o.from_log,
+                  "Another implementation's output on the trace (decision log, optionally followed by its "
+                  "canonical state, spec/conformance.md): mark the first disagreement with the reference");
+  cmd->add_option("--title", o.title, "Title of the page (default: the input's name)");
+  cmd->add_option("--max-vertices", o.max_vertices,
+                  "Refuse a trace whose lattice grows beyond this many vertices (exit 2), as replay does")
+      ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 40))
+      ->capture_default_str();
+  cmd->add_flag("-q,--quiet", o.quiet, "No summary on stderr");
+  cmd->footer(
+      "Step k shows the state after the k-th command (step 0: the initial lattice) and what the command\n"
+      "touched: the refined cell c, its children Y and new junctions J+; for coarsening the removed Y and\n"
+      "J-; or the refusal code. With --states, step k is the k-th state file and the page marks what\n"
+      "changed. Every state is checked; the page opens at the first violation with the offending\n"
+      "vertices marked. Controls: slider, buttons, arrow keys; the URL fragment #step=K opens step K.\n"
+      "With --from-log, the page opens at the first decision that differs from the log (or, when they\n"
+      "all agree, at the last step with the log's final state beside the reference's, differences marked).\n"
+      "Exit codes: 0 page written, 1 page written and a state violates an invariant or the log\n"
+      "disagrees, 2 bad input.\n"
+      "The embedded model is specified in spec/viewer.md.\n"
+      "Example:\n  bccmis view spec/examples/fig2.trace -o fig2.html\n"
+      "  bccmis view --states my-impl-states/ -o states.html   # 0000.state, 0001.state, ...\n"
+      "  ./my-lattice run.trace > run.out; bccmis view run.trace --from-log run.out -o run.html");
+  return cmd;
+}
+
+CLI::App* add_conformance(CLI::App& app, ConformanceCommandOptions& o) {
+  CLI::App* cmd = app.add_subcommand(
+      "conformance", "Check another implementation against the reference: decisions and final states, with shrinking.");
+  cmd->add_option("--impl", o.impl, "Command to run; the trace file path is appended (spec/conformance.md)")->required();
+  cmd->add_option("--traces", o.traces, "Directory of bundled *.trace files to run first");
+  cmd->add_option("--random", o.random, "Number of random traces")->check(CLI::Range(0, 1000000))->capture_default_str();
+  cmd->add_option("--seed", o.seed, "Seed of the random traces")->check(CLI::NonNegativeNumber)->capture_default_str();
+  cmd->add_option("--max-ops", o.max_ops, "Operations per random trace")->check(CLI::Range(1, 100000))->capture_default_str();
+  cmd->add_option("--timeout", o.timeout_seconds, "Seconds per run of the implementation")
+      ->check(CLI::Range(0.01, 86400.0))
+      ->capture_default_str();
+  cmd->add_option("--view", o.view,
+                  "On a disagreement, write a viewer page (bccmis view) for the minimal trace: the reference "
+                  "and the implementation's state side by side at the first disagreement");
+  cmd->footer(
+      "Exit codes: 0 all agree, 1 disagreement (the minimal trace is printed), 2 harness error (bad options,\n"
+      "unreadable trace, an implementation that cannot be run: exit status 126 or 127).\n"
+      "Example:\n  bccmis conformance --impl 'bccmis replay --quiet --check=none' --traces spec/examples --random 200 --seed 7\n"
+      "  bccmis conformance --impl './my-lattice replay' --random 200 --view disagreement.html");
+  return cmd;
+}
+
+CLI::App* add_explore(CLI::App& app, ExploreCommandOptions& o) {
+  CLI::App* cmd = app.add_subcommand(
+      "explore", "Breadth-first search over every state reachable from a lattice: check each, try every operation.");
+  cmd->add_option("W", o.W, "Level-0 cells across")->required();
+  cmd->add_option("H", o.H, "Level-0 cells up")->required();
+  cmd->add_option("L", o.L, "Maximum level")->required();
+  cmd->add_option("--depth", o.depth, "Checker layers on every state (0-4)")->check(CLI::Range(0, 4))->capture_default_str();
+  cmd->add_option("--max-states", o.max_states, "Stop after this many states (0: no limit); the result is then incomplete")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("--threads", o.threads, "Worker threads (0: one per core)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_flag("--json", o.json, "One line of JSON instead of the summary");
+  cmd->add_flag("--no-progress", o.no_progress, "No progress line on stderr");
+  cmd->footer(
+      "Exit codes: 0 every state processed is valid and every inverse exact (a run stopped by --max-states\n"
+      "says 'incomplete'), 1 a failure (a reproducing trace is printed), 2 bad input (a lattice whose\n"
+      "state space is beyond reach is refused with its estimate; give --max-states for a partial run).\n"
+      "Example:\n  bccmis explore 1 1 2        # 17 states\n  bccmis explore 2 2 1 --json  # 16 states");
+  return cmd;
+}
+
+CLI::App* add_heightfield(CLI::App& app, HeightfieldCommandOptions& o) {
+  CLI::App* cmd =
+      app.add_subcommand("heightfield", "Tessellate a height-field image adaptively (the paper's §3, Fig. 4-5).");
+  cmd->add_option("input", o.input, "PGM (P2/P5, 8/16-bit) or PNG image; '-' for stdin")->required();
+  cmd->add_option("-W,--width", o.width, "Initial lattice width in level-0 cells")->capture_default_str();
+  cmd->add_option("-H,--height", o.height, "Initial lattice height in level-0 cells")->capture_default_str();
+  cmd->add_option("-L,--max-level", o.max_level, "Maximum refinement level")->capture_default_str();
+  cmd->add_option("--vertical-scale", o.vertical_scale, "Height of a full-scale pixel")->capture_default_str();
+  cmd->add_option("-t,--tolerance", o.tolerance, "Refine cells whose error is above this")->capture_default_str();
+  cmd->add_option("--measure", o.measure, "Cell error: max (every pixel, exact) or samples (the paper's)")
+      ->check(CLI::IsMember({"max", "samples"}))
+      ->capture_default_str();
+  cmd->add_option("--samples", o.samples, "Random points per cell for --measure=samples")->capture_default_str();
+  cmd->add_option("--seed", o.seed, "Seed of --measure=samples")->check(CLI::NonNegativeNumber)->capture_default_str();
+  cmd->add_option("--balance", o.balance, "2:1 rule: edge (the core's) or corner")
+      ->check(CLI::IsMember({"edge", "corner"}))
+      ->capture_default_str();
+  cmd->add_option("--impl", o.impl, "Lattice implementation: reference or fast (same output, faster)")
+      ->check(CLI::IsMember({"reference", "fast"}))
+      ->capture_default_str();
+  cmd->add_option("--sweeps", o.sweeps, "Number of sweeps; 0 = until nothing changes")->capture_default_str();
+  cmd->add_option("--from", o.from, "Start from this canonical state (incremental re-tessellation)");
+  cmd->add_option("--obj", o.obj, "Write a Wavefront OBJ mesh");
+  cmd->add_option("--ply", o.ply, "Write an ASCII PLY mesh");
+  cmd->add_option("--vtu", o.vtu, "Write a VTK .vtu (level and error as cell data)");
+  cmd->add_option("--svg", o.svg, "Write an SVG top view");
+  cmd->add_option("--state", o.state, "Write the final canonical state");
+  cmd->add_option("--stats", o.stats, "Where the statistics go ('-' = stdout)")->capture_default_str();
+  cmd->add_flag("--json", o.json, "Statistics as JSON");
+  cmd->add_flag("--check", o.check, "Run the invariant checker after every sweep");
+  cmd->add_option("--progress", o.progress, "Progress lines on stderr: auto, always, never")
+      ->check(CLI::IsMember({"auto", "always", "never"}))
+      ->capture_default_str();
+  cmd->add_flag("-q,--quiet", o.quiet, "No summary line on stderr");
+  cmd->footer(
+      "Example:\n  bccmis heightfield apps/samples/terrain128.pgm --tolerance 0.02 --obj terrain.obj --svg terrain.svg");
+  return cmd;
+}
+
+CLI::App* add_animate(CLI::App& app, AnimateCommandOptions& o) {
+  CLI::App* cmd =
+      app.add_subcommand("animate", "A disk moves along a path; the lattice adapts around it (the paper's Fig. 6).");
+  cmd->add_option("-W,--width", o.width, "Lattice width in level-0 cells")->capture_default_str();
+  cmd->add_option("-H,--height", o.height, "Lattice height in level-0 cells")->capture_default_str();
+  cmd->add_option("-L,--max-level", o.max_level, "Maximum refinement level")->capture_default_str();
+  cmd->add_option("--target-level", o.target_level, "Level of the cells the feature meets; -1 = L")->capture_default_str();
+  cmd->add_option("--radius", o.radius, "Feature radius in level-0 cell units")->capture_default_str();
+  cmd->add_option("--path", o.path, "Path 'x,y;x,y;...' in level-0 cell units")->capture_default_str();
+  cmd->add_option("--balance", o.balance, "2:1 rule: edge or corner")
+      ->check(CLI::IsMember({"edge", "corner"}))
+      ->capture_default_str();
+  cmd->add_option("--frames", o.frames, "Number of frames")->capture_default_str();
+  cmd->add_option("--impl", o.impl, "Lattice implementation: reference or fast (same output, faster)")
+      ->check(CLI::IsMember({"reference", "fast"}))
+      ->capture_default_str();
+  cmd->add_flag("--lift", o.lift, "One more frame without the feature at the end");
+  cmd->add_option("--svg-dir", o.svg_dir, "Write frame_NNNN.svg into this existing directory");
+  cmd->add_option("--state", o.state, "Write the final canonical state");
+  cmd->add_option("--stats", o.stats, "Where the per-frame statistics go ('-' = stdout)")->capture_default_str();
+  cmd->add_flag("--json", o.json, "Statistics as JSON");
+  cmd->add_flag("--check", o.check, "Run the invariant checker after every frame");
+  cmd->add_flag("-q,--quiet", o.quiet, "No summary line on stderr");
+  cmd->footer("Example:\n  mkdir frames && bccmis animate --frames 60 --svg-dir frames --check");
+  return cmd;
+}
+
+// ---- Messages for common slips --------------------------------------------------
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// "unknown subcommand 'replya': did you mean 'replay'?" (the nearest name
+// within a third of its length, at least 2 edits), or the list of names.
+std::string unknown_subcommand(std::string_view given, const std::vector<std::string>& names) {
+  std::string best;
+  std::size_t best_distance = 0;
+  for (const std::string& n : names) {
+    const std::size_t d = edit_distance(given, n);
+    if (best.empty() || d < best_distance) {
+      best = n;
+      best_distance = d;
+    }
+  }
+  std::string message = "unknown subcommand '" + std::string(given) + "'";
+  if (!best.empty() && best_distance <= std::max<std::size_t>(2, best.size() / 3))
+    return message + ": did you mean '" + best + "'?";
+  message += " (subcommands:";
+  for (const std::string& n : names) message += " " + n;
+  return message + ")";
+}
+
+}  // namespace
+
+std::variant<int, Command> parse_command_line(int argc, char** argv) {
+  CLI::App app{"bccmis: reference implementation and oracle for Erleben's 2009 MIS graph "
+               "representation of adaptive 2D BCC lattices."};
+  app.set_version_flag("--version", std::string("bccmis ") + BCCMIS_VERSION);
+  app.require_subcommand(1);
+  app.footer(
+      "Exit codes: 0 success, 1 invariant violated, 2 bad input (usage, parse error, file), 3 internal error.\n"
+      "Formats: spec/formats.md. Run 'bccmis SUBCOMMAND --help' for examples.");
+
+  ReplayOptions replay;
+  CheckOptions check;
+  DiffOptions diff;
+  StatsOptions stats;
+  RenderOptions render;
+  ViewCommandOptions view;
+  ConformanceCommandOptions conformance;
+  ExploreCommandOptions explore;
+  HeightfieldCommandOptions heightfield;
+  AnimateCommandOptions animate;
+  // In the order --help lists them.
+  const std::vector<std::pair<CLI::App*, std::function<Command()>>> commands = {
+      {add_replay(app, replay), [&] { return Command(replay); }},
+      {add_check(app, check), [&] { return Command(check); }},
+      {add_diff(app, diff), [&] { return Command(diff); }},
+      {add_stats(app, stats), [&] { return Command(stats); }},
+      {add_render(app, render), [&] { return Command(render); }},
+      {add_view(app, view), [&] { return Command(view); }},
+      {add_conformance(app, conformance), [&] { return Command(conformance); }},
+      {add_explore(app, explore), [&] { return Command(explore); }},
+      {add_heightfield(app, heightfield), [&] { return Command(heightfield); }},
+      {add_animate(app, animate), [&] { return Command(animate); }},
+  };
+
+  if (argc > 1 && argv[1][0] != '-') {
+    std::vector<std::string> names;
+    for (const auto& [cmd, options] : commands) names.push_back(cmd->get_name());
+    if (std::find(names.begin(), names.end(), argv[1]) == names.end()) {
+      std::cerr << "bccmis: " << unknown_subcommand(argv[1], names) << "\nRun 'bccmis --help' for usage.\n";
+      return kExitInput;
+    }
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "bccmis: " << e.what() << "\nRun 'bccmis --help' for usage.\n";
+    return kExitInput;
+  }
+  for (const auto& [cmd, options] : commands)
+    if (*cmd) return options();
+  return kExitInternal;
+}
+
+}  // namespace bccmis::cli

@@ -1,0 +1,169 @@
+// bccmis CLI: the subcommands (spec/cli.md). Each has an options struct,
+// filled by the command line (cli.cpp, one field per flag, with the defaults
+// below), and a run function in its own file (replay.cpp, check.cpp, ...)
+// that returns the exit code (io.h) or throws InputError / CheckFailure.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+#include "bccmis/format.h"
+#include "bccmis/graph.h"
+#include "bccmis/invariants/invariants.h"
+
+namespace bccmis::fast {
+class Lattice;
+}
+
+namespace bccmis::cli {
+
+// ---- Shared by the subcommands (check.cpp) ----------------------------------------
+
+/// The lattice implementations of --impl, chosen once at the edge:
+/// std::visit([]<class L>(std::type_identity<L>) { ... }, implementation(name)).
+using Implementation = std::variant<std::type_identity<Graph>, std::type_identity<fast::Lattice>>;
+/// "reference" (Graph) or "fast" (fast::Lattice); throws InputError otherwise.
+Implementation implementation(std::string_view name);
+
+/// The lattice as a Graph, for the checker and the renderers: g itself, or
+/// (fast) its conversion, stored in `copy`.
+inline const Graph& as_graph(const Graph& g, Graph&) { return g; }
+const Graph& as_graph(const fast::Lattice& g, Graph& copy);
+
+/// The checker's deepest layer: 5 (the CGAL triangulation) when built with CGAL.
+int max_check_depth();
+/// The checker to `depth` (5 adds the CGAL triangulation layer).
+std::optional<Violation> check_graph(const Graph& g, int depth);
+/// "9 cells (level 0: 1, level 1: 8), 17 nodes", from the cells per level.
+std::string summary(const std::map<int, std::size_t>& cells_per_level, std::size_t nodes);
+std::string summary(const Graph& g);
+
+// ---- The subcommands ------------------------------------------------------------------
+
+struct ReplayOptions {
+  std::string trace;
+  std::string log_file;
+  std::string state_file;
+  std::string check = "every";  ///< every, end, none
+  int depth = 4;
+  bool quiet = false;
+  std::int64_t max_vertices = TraceLimits{}.max_vertices;
+  std::string impl = "reference";  ///< reference, fast
+  bool json = false;
+};
+int run(const ReplayOptions& o);
+
+struct CheckOptions {
+  std::string state;
+  int depth = 4;
+  bool quiet = false;
+};
+int run(const CheckOptions& o);
+
+struct DiffOptions {
+  std::string a, b;
+  bool quiet = false;
+};
+int run(const DiffOptions& o);
+
+struct StatsOptions {
+  std::string state;
+  bool json = false;
+  bool from_trace = false;
+};
+int run(const StatsOptions& o);
+
+struct RenderOptions {
+  std::string state;
+  std::string output;
+  bool from_trace = false;
+};
+int run(const RenderOptions& o);
+
+struct ViewCommandOptions {
+  std::string trace;
+  std::vector<std::string> states;
+  std::string output;
+  std::string check = "every";  ///< every, end, none
+  int depth = 4;
+  std::int64_t step = -1;  ///< -1: the first violation, else 0
+  std::string from_log;
+  std::string title;
+  std::int64_t max_vertices = TraceLimits{}.max_vertices;
+  bool quiet = false;
+};
+int run(const ViewCommandOptions& o);
+
+struct ConformanceCommandOptions {
+  std::string impl;
+  std::string traces;  ///< a directory of *.trace files
+  int random = 100;
+  std::uint64_t seed = 1;
+  int max_ops = 30;
+  double timeout_seconds = 10;
+  std::string view;  ///< the viewer page of a disagreement
+};
+int run(const ConformanceCommandOptions& o);
+
+struct ExploreCommandOptions {
+  std::int64_t W = 0, H = 0;
+  int L = 0;
+  int depth = 4;
+  std::int64_t max_states = 0;  ///< 0: no limit
+  int threads = 0;              ///< 0: one per core
+  bool json = false;
+  bool no_progress = false;
+};
+int run(const ExploreCommandOptions& o);
+
+struct HeightfieldCommandOptions {
+  std::string input;
+  std::int64_t width = 6;
+  std::int64_t height = 6;
+  int max_level = 5;
+  double vertical_scale = 1.0;
+  double tolerance = 0.02;
+  std::string measure = "max";  ///< max, samples
+  int samples = 16;
+  std::uint64_t seed = 1;
+  std::string balance = "edge";  ///< edge, corner
+  int sweeps = 0;
+  std::string impl = "reference";  ///< reference, fast
+  std::string from;
+  std::string obj, ply, vtu, svg, state;
+  std::string stats = "-";
+  bool json = false;
+  bool check = false;
+  std::string progress = "auto";  ///< auto, always, never
+  bool quiet = false;
+};
+int run(const HeightfieldCommandOptions& o);
+
+struct AnimateCommandOptions {
+  std::int64_t width = 8;
+  std::int64_t height = 8;
+  int max_level = 5;
+  int target_level = -1;
+  double radius = 0.5;
+  std::string path = "1,4;4,7;7,4;4,1;1,4";
+  std::string balance = "edge";  ///< edge, corner
+  int frames = 40;
+  std::string impl = "reference";  ///< reference, fast
+  bool lift = false;
+  std::string svg_dir;
+  std::string state;
+  std::string stats = "-";
+  bool json = false;
+  bool check = false;
+  bool quiet = false;
+};
+int run(const AnimateCommandOptions& o);
+
+}  // namespace bccmis::cli

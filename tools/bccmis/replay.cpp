@@ -1,0 +1,122 @@
+// bccmis replay TRACE: replays a trace on the implementation of --impl, with
+// the checker when --check asks; prints (or writes) the decision log and the
+// canonical state. The fast implementation is converted to a Graph only for
+// the checker: with --check=none its log and state are written from the
+// lattice itself.
+#include <iostream>
+#include <map>
+#include <string>
+
+#include "bccmis/fast/lattice.h"
+#include "bccmis/trace.h"
+#include "commands.h"
+#include "io.h"
+
+namespace bccmis::cli {
+
+namespace {
+
+/// "9 cells (level 0: 1, level 1: 8), 17 nodes" for either implementation.
+std::string lattice_summary(const Graph& g) { return summary(g); }
+std::string lattice_summary(const fast::Lattice& g) {
+  std::map<int, std::size_t> per_level;
+  g.for_each_cell([&](const Point&, int level) { ++per_level[level]; });
+  return summary(per_level, g.node_count());
+}
+
+// The decision log, one JSON string per line.
+std::string json_lines(const std::string& log) {
+  std::string out;
+  std::size_t start = 0;
+  bool first = true;
+  while (start < log.size()) {
+    const std::size_t nl = log.find('\n', start);
+    out += (first ? "" : ", ") + json_string(std::string_view(log).substr(start, nl - start));
+    first = false;
+    start = nl + 1;
+  }
+  return out;
+}
+
+template <class L>
+int replay_with(const ReplayOptions& o, const Trace& trace) {
+  const std::string name = display_name(o.trace);
+  std::string log;
+  std::size_t refines = 0, coarsens = 0, refused = 0, checks = 0;
+  std::optional<std::string> failure, limit_error;
+  struct Stop {};  // a violation or the vertex limit stops the replay at its command
+  Graph scratch;
+  auto observe = [&](const TraceCommand& c, const L& now, std::string_view decision) {
+    if (c.kind == TraceCommand::Kind::Refine) ++refines;
+    if (c.kind == TraceCommand::Kind::Coarsen) ++coarsens;
+    if (decision.find(" refused ") != std::string_view::npos) ++refused;
+    if (const auto v = static_cast<std::int64_t>(cell_count(now) + node_count(now)); v > o.max_vertices) {
+      limit_error = name + ":" + std::to_string(c.line) + ":1: after '" + command_text(c) + "' the lattice has " +
+                    std::to_string(v) + " vertices, above the limit of " + std::to_string(o.max_vertices) +
+                    " (--max-vertices)";
+      throw Stop{};
+    }
+    if (c.kind == TraceCommand::Kind::Check || o.check == "every") {
+      ++checks;
+      if (auto v = check_graph(as_graph(now, scratch), o.depth)) {
+        failure = name + ":" + std::to_string(c.line) + ": invariant violated after '" + command_text(c) +
+                  "': " + to_string(*v);
+        throw Stop{};
+      }
+    }
+  };
+  std::optional<L> result;
+  try {
+    result.emplace(replay_on<L>(trace, log, observe));
+  } catch (const Stop&) {
+  }
+  if (limit_error) throw InputError(*limit_error);
+  if (failure) {
+    std::cerr << "bccmis replay: " << *failure << "\n";
+    if (!o.log_file.empty()) write_atomically(o.log_file, log);
+    return kExitViolation;
+  }
+  const L& g = *result;
+  if (o.check == "end") {
+    ++checks;
+    if (auto v = check_graph(as_graph(g, scratch), o.depth)) {
+      std::cerr << "bccmis replay: " << name << ": invariant violated at the end: " << to_string(*v) << "\n";
+      return kExitViolation;
+    }
+  }
+  const Writer state = [&](std::ostream& out) { write_canonical_state(out, g); };
+  OutputSet outputs;
+  outputs.add(o.log_file, log);
+  outputs.add(o.state_file, state);
+  if (o.json) {
+    // One JSON object on stdout: the decisions, the canonical state and the counts.
+    outputs.add("-", "{\"trace\": " + json_string(name) + ", \"impl\": " + json_string(o.impl) + ", \"decisions\": [" +
+                         json_lines(log) + "], \"refines\": " + std::to_string(refines) +
+                         ", \"coarsens\": " + std::to_string(coarsens) + ", \"refused\": " + std::to_string(refused) +
+                         ", \"checks\": " + std::to_string(checks) + ", \"cells\": " + std::to_string(cell_count(g)) +
+                         ", \"nodes\": " + std::to_string(node_count(g)) +
+                         ", \"state\": " + json_string(canonical_text(g)) + "}\n");
+    outputs.commit();
+    return kExitOk;
+  }
+  // What is not written to a file goes to stdout: the log, then the state.
+  if (o.log_file.empty()) outputs.add("-", log);
+  if (o.state_file.empty()) outputs.add("-", state);
+  outputs.commit();
+  if (!o.quiet)
+    std::cerr << "bccmis replay: " << name << ": " << refines << " refine and " << coarsens << " coarsen commands ("
+              << refused << " refused), " << checks << " checks passed (depth " << o.depth << "); final state: "
+              << lattice_summary(g) << "\n";
+  return kExitOk;
+}
+
+}  // namespace
+
+int run(const ReplayOptions& o) {
+  TraceLimits limits;
+  limits.max_vertices = o.max_vertices;
+  const Trace trace = read_trace(o.trace, limits);
+  return std::visit([&]<class L>(std::type_identity<L>) { return replay_with<L>(o, trace); }, implementation(o.impl));
+}
+
+}  // namespace bccmis::cli
