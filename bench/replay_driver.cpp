@@ -5,7 +5,7 @@
 //   replay_driver fast|reference TRACE LOG STATE
 //
 // Reads TRACE, parses it (the text is freed before the replay), runs
-// replay_on<L>, writes the decision log to LOG and the canonical state to
+// replay<L>, writes the decision log to LOG and the canonical state to
 // STATE with write_canonical_state. Prints, per phase, the CPU time of the
 // process, the wall time and the peak RSS so far (getrusage), and the cell
 // count, to stderr. No Google Benchmark: the process holds only what a
@@ -74,7 +74,7 @@ int run(const char* trace_path, const char* log_path, const char* state_path) {
   }
   phases.end("parse");
   std::string log;
-  const L g = bccmis::replay_on<L>(trace, log);
+  const L g = bccmis::replay<L>(trace, log);
   phases.end("replay");
   {
     std::ofstream out(log_path, std::ios::binary | std::ios::trunc);

@@ -98,7 +98,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   ImplRun completed = run;
   if (run.out.find("bccmis-state ") == std::string::npos) {
     std::string log;
-    completed.out += canonical_state(replay_on<Graph>(trace, log));
+    completed.out += canonical_state(replay<Graph>(trace, log));
   }
   const std::string completed_verdict = guarded(trace, "compare_run", [&] { return compare_run(trace, completed); });
   const std::optional<ViewSide> side =

@@ -5,7 +5,7 @@
 //   a hang or a huge allocation: TraceLimits caps the initial lattice).
 // - What parses must print back (format_trace) to a text that parses to the
 //   same trace.
-// - The first kMaxCommands commands are replayed with replay_on<Graph> (the
+// - The first kMaxCommands commands are replayed with replay<Graph> (the
 //   one replay of bccmis/trace.h); after every command find_violation must find nothing.
 //   Refusals are ordinary results. A violation or an exception aborts with
 //   the trace replayed so far.
@@ -69,7 +69,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::string log;
   std::size_t decisions = 0;
   try {
-    replay_on<Graph>(trace, log, [&](const TraceCommand& c, const Graph& g, std::string_view decision) {
+    replay<Graph>(trace, log, [&](const TraceCommand& c, const Graph& g, std::string_view decision) {
       so_far.commands.push_back(c);
       if (!decision.empty()) ++decisions;
       if (auto v = find_violation(g))

@@ -14,7 +14,6 @@
 #include <vector>
 
 #include "bccmis/fast/lattice.h"
-#include "bccmis/fast/lattice_interface.h"
 #include "bccmis/format.h"
 #include "bccmis/invariants/invariants.h"
 #include "bccmis/lattice.h"
@@ -78,7 +77,7 @@ struct ReplayRun {
 
 ReplayRun run_reference(const Trace& t) {
   ReplayRun r;
-  const Graph g = replay_on<Graph>(t, r.log, [&](const TraceCommand&, const Graph& gr, std::string_view) {
+  const Graph g = replay<Graph>(t, r.log, [&](const TraceCommand&, const Graph& gr, std::string_view) {
     r.states.push_back(bccmis::canonical_state(gr));
   });
   r.final_state = bccmis::canonical_state(g);
@@ -87,7 +86,7 @@ ReplayRun run_reference(const Trace& t) {
 
 ReplayRun run_fast(const Trace& t) {
   ReplayRun r;
-  const Lattice g = replay_on<Lattice>(t, r.log, [&](const TraceCommand&, const Lattice& lat, std::string_view) {
+  const Lattice g = replay<Lattice>(t, r.log, [&](const TraceCommand&, const Lattice& lat, std::string_view) {
     r.states.push_back(canonical_state(lat));
     const auto problem = lat.audit();
     if (problem) ADD_FAILURE() << "audit: " << *problem;
@@ -328,13 +327,6 @@ TEST(FastLattice, RecordsAreCompact) {
 
 // ---- The implementation names and the vocabulary ---------------------------------------------------------------
 
-TEST(LatticeInterface, ParsesImplementationNames) {
-  EXPECT_EQ(parse_impl("reference"), Impl::Reference);
-  EXPECT_EQ(parse_impl("fast"), Impl::Fast);
-  EXPECT_EQ(parse_impl("Fast"), std::nullopt);
-  EXPECT_EQ(to_string(Impl::Fast), "fast");
-  EXPECT_EQ(to_string(Impl::Reference), "reference");
-}
 
 TEST(Vocabulary, BothImplementationsAnswerAlike) {
   const LatticeSize size{3, 2, 3};
@@ -378,13 +370,13 @@ TEST(Vocabulary, BothImplementationsAnswerAlike) {
 Graph as_graph(const Graph& g) { return g; }
 Graph as_graph(const Lattice& g) { return g.to_graph(); }
 
-/// replay_on<L> of `t`: its decision log and final canonical state; the
+/// replay<L> of `t`: its decision log and final canonical state; the
 /// checker passes at every `check`, and there is exactly one.
 template <AdaptiveLattice L>
 void expect_replay_output(const Trace& t, const std::string& want_log, const std::string& want_state) {
   std::string log;
   int checks = 0;
-  const L g = replay_on<L>(t, log, [&](const TraceCommand& cmd, const L& lat, std::string_view) {
+  const L g = replay<L>(t, log, [&](const TraceCommand& cmd, const L& lat, std::string_view) {
     if (cmd.kind == TraceCommand::Kind::Check) {
       ++checks;
       EXPECT_FALSE(find_violation(as_graph(lat)));
@@ -399,7 +391,7 @@ TEST(Vocabulary, ReplayGivesTheReferenceOutputForEitherImplementation) {
   const fs::path p = fs::path(BCCMIS_SOURCE_DIR) / "spec/examples/refusals.trace";
   const Trace t = parse_trace(read_file(p), p.string());
   std::string want_log;
-  const Graph want = replay_on<Graph>(t, want_log);
+  const Graph want = replay<Graph>(t, want_log);
   {
     SCOPED_TRACE("reference");
     expect_replay_output<Graph>(t, want_log, bccmis::canonical_state(want));

@@ -119,8 +119,8 @@ TEST(OutputPaths, StateLongerThanTheBuffer) {
   }
   const Trace trace = parse_trace(trace_text);
   std::string log_reference, log_fast;
-  const Graph reference = replay_on<Graph>(trace, log_reference);
-  const fast::Lattice lattice = replay_on<fast::Lattice>(trace, log_fast);
+  const Graph reference = replay<Graph>(trace, log_reference);
+  const fast::Lattice lattice = replay<fast::Lattice>(trace, log_fast);
   EXPECT_EQ(log_fast, log_reference);
   EXPECT_EQ(reference.C.size(), 16u * 16u * 16u);
   EXPECT_GT(spec_text(reference).size(), 4 * TextWriter::kBufferBytes);

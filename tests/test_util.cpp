@@ -8,7 +8,7 @@ namespace bccmis::test {
 
 Graph build(const std::string& trace_text) {
   std::string log;
-  Graph g = replay_on<Graph>(parse_trace(trace_text, "<test>"), log);
+  Graph g = replay<Graph>(parse_trace(trace_text, "<test>"), log);
   if (log.find("refused") != std::string::npos)
     throw std::runtime_error("test setup: an operation was refused:\n" + log);
   return g;
@@ -16,7 +16,7 @@ Graph build(const std::string& trace_text) {
 
 std::string decisions(const std::string& trace_text) {
   std::string log;
-  replay_on<Graph>(parse_trace(trace_text, "<test>"), log);
+  replay<Graph>(parse_trace(trace_text, "<test>"), log);
   return log;
 }
 

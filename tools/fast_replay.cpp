@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
   try {
     const bccmis::Trace trace = bccmis::parse_trace(text.str(), path);
     std::string log;
-    const auto g = bccmis::replay_on<bccmis::fast::Lattice>(trace, log);
+    const auto g = bccmis::replay<bccmis::fast::Lattice>(trace, log);
     std::cout << log;
     write_canonical_state(std::cout, g);
     std::cout.flush();

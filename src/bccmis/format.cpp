@@ -479,10 +479,5 @@ std::string decision_line(const TraceCommand& cmd, std::string_view refusal_code
   return out;
 }
 
-Graph replay(const Trace& trace, std::string& log, const ReplayObserver& after) {
-  return replay_on<Graph>(trace, log, [&](const TraceCommand& c, const Graph& g, std::string_view decision) {
-    if (after) after(c, g, decision);
-  });
-}
 
 }  // namespace bccmis

@@ -87,12 +87,4 @@ void append_decision_line(std::string& out, const TraceCommand& cmd, std::string
 /// Other bytes are copied as they are (UTF-8 stays UTF-8).
 std::string json_string(std::string_view text, bool html_safe = false);
 
-/// replay_on<Graph> (bccmis/trace.h) with a std::function observer, for the
-/// command-line tool (tools/bccmis): for every refine and coarsen it appends
-/// one decision-log line to `log`; after every command it calls `after` (if
-/// set) with the command, the graph and the command's decision line (empty
-/// for `check`). Returns the final graph.
-using ReplayObserver = std::function<void(const TraceCommand&, const Graph&, std::string_view decision)>;
-Graph replay(const Trace& trace, std::string& log, const ReplayObserver& after = {});
-
 }  // namespace bccmis

@@ -2,7 +2,7 @@
 //
 // Every tool that runs a trace (the CLI's replay, the viewer, conformance,
 // the fuzz targets, the lock-step twin of tests/testing, the tests) runs it
-// through step() and replay_on() below, on any lattice that models
+// through step() and replay() below, on any lattice that models
 // AdaptiveLattice (bccmis/lattice.h); explore reports the calls it makes as
 // StepResults. The decision-log line of a command is the format of
 // spec/formats.md, "Decision log".
@@ -89,7 +89,7 @@ struct NoObserver {
 /// argument, the StepResult (what the command touched). Returns the final
 /// lattice. An exception from `after` stops the replay.
 template <AdaptiveLattice L, class Observer = NoObserver>
-L replay_on(const Trace& trace, std::string& log, const Observer& after = {}) {
+L replay(const Trace& trace, std::string& log, const Observer& after = {}) {
   L g(trace.size);
   if constexpr (requires(std::size_t n) { reserve(g, n); }) reserve(g, max_cells(g, trace));
   for (const TraceCommand& cmd : trace.commands) {

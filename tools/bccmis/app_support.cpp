@@ -51,6 +51,10 @@ void run_check(const Graph& g, Balance balance, const std::string& when) {
 std::string levels_text(const Graph& g, std::string& json) {
   std::map<int, std::size_t> per_level;
   for (const auto& [c, l] : g.level) ++per_level[l];
+  return levels_text(per_level, json);
+}
+
+std::string levels_text(const std::map<int, std::size_t>& per_level, std::string& json) {
   std::string text;
   json = "{";
   for (const auto& [l, n] : per_level) {

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <chrono>
+#include <cstddef>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -46,6 +48,7 @@ std::optional<std::string> corner_violation(const Graph& g);
 void run_check(const Graph& g, Balance balance, const std::string& when);
 
 /// Cells per level as text ("0:4 1:12") and as a JSON object (into `json`).
+std::string levels_text(const std::map<int, std::size_t>& per_level, std::string& json);
 std::string levels_text(const Graph& g, std::string& json);
 
 /// Runs `body`, turning the apps library's errors on bad input (a bad

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <iostream>
 #include <map>
+#include <memory>
 
 #include <unistd.h>
 
@@ -75,6 +76,16 @@ int run_heightfield(const HeightfieldCommandOptions& o) {
   settings.balance = balance;
   TessellateReport report;
   double tessellate_seconds = 0;
+  MeshError error;
+  std::size_t node_total = 0, cell_total = 0;
+  std::map<int, std::size_t> per_level;
+  OutputSet outputs;
+  const std::string title =
+      "heightfield " + input_name + " (tolerance " + fmt(o.tolerance) + ", measure " + o.measure + ")";
+  const LatticeSize size = g.size;
+  // The tessellation and every output run on the chosen lattice; a Graph
+  // copy is made only for what only the reference answers (the checker, the
+  // SVG picture, the per-cell errors of --vtu).
   std::visit(
       [&]<class L>(std::type_identity<L>) {
         L lattice = [&] {
@@ -92,36 +103,41 @@ int run_heightfield(const HeightfieldCommandOptions& o) {
           }
         });
         tessellate_seconds = seconds_since(t0);
-        if constexpr (std::is_same_v<L, Graph>) g = std::move(lattice);
-        else g = lattice.to_graph();
+        Graph copy;
+        const bool needs_graph = o.check || !o.svg.empty() || !o.vtu.empty();
+        const Graph* graph = needs_graph ? &as_graph(lattice, copy) : nullptr;
+        if (o.check) run_check(*graph, balance, "at the end");
+        error = mesh_error(lattice, sampler);
+        node_total = node_count(lattice);
+        cell_total = cell_count(lattice);
+        for (const Point& c : cells(lattice)) ++per_level[level_of(lattice, c)];
+
+        // Outputs, all or nothing.
+        if (!o.obj.empty() || !o.ply.empty() || !o.vtu.empty()) {
+          auto mesh = std::make_shared<TriangleMesh>(triangulate(lattice, [&](const Point& p) { return sampler.at(p); }));
+          const std::string comment = "bccmis " + title;
+          if (!o.obj.empty()) outputs.add(o.obj, [mesh, comment](std::ostream& out) { write_obj(out, *mesh, comment); });
+          if (!o.ply.empty()) outputs.add(o.ply, [mesh, comment](std::ostream& out) { write_ply(out, *mesh, comment); });
+          if (!o.vtu.empty()) {
+            std::map<Point, double> cell_err;
+            for (const Point& c : graph->C) cell_err[c] = cell_error(*graph, c, sampler, {ErrorMeasure::MaxPixel, 0, 0});
+            for (const Point& c : mesh->triangle_cell) mesh->triangle_error.push_back(cell_err.at(c));
+            outputs.add(o.vtu, [mesh](std::ostream& out) { write_vtu(out, *mesh); });
+          }
+        }
+        if (!o.svg.empty()) outputs.add(o.svg, render_svg(*graph, title));
+        if (!o.state.empty()) {
+          auto kept = std::make_shared<L>(std::move(lattice));
+          outputs.add(o.state, [kept](std::ostream& out) { write_canonical_state(out, *kept); });
+        }
       },
       impl);
-  if (o.check) run_check(g, balance, "at the end");
-  const MeshError error = mesh_error(g, sampler);
-
-  // Outputs, all or nothing.
-  OutputSet outputs;
-  const std::string title =
-      "heightfield " + input_name + " (tolerance " + fmt(o.tolerance) + ", measure " + o.measure + ")";
-  if (!o.obj.empty() || !o.ply.empty() || !o.vtu.empty()) {
-    TriangleMesh mesh = triangulate(g, [&](const Point& p) { return sampler.at(p); });
-    if (!o.obj.empty()) outputs.add(o.obj, format_obj(mesh, "bccmis " + title));
-    if (!o.ply.empty()) outputs.add(o.ply, format_ply(mesh, "bccmis " + title));
-    if (!o.vtu.empty()) {
-      std::map<Point, double> cell_err;
-      for (const Point& c : g.C) cell_err[c] = cell_error(g, c, sampler, {ErrorMeasure::MaxPixel, 0, 0});
-      for (const Point& c : mesh.triangle_cell) mesh.triangle_error.push_back(cell_err.at(c));
-      outputs.add(o.vtu, format_vtu(mesh));
-    }
-  }
-  if (!o.svg.empty()) outputs.add(o.svg, render_svg(g, title));
-  outputs.add(o.state, [&](std::ostream& out) { write_canonical_state(out, g); });
 
   Record r;
   r.add("input", input_name);
   r.add("image", std::to_string(field.width) + "x" + std::to_string(field.height) + " " + field.format + " maxval " +
                      std::to_string(field.maxval));
-  r.add("lattice", std::to_string(g.size.W) + " " + std::to_string(g.size.H) + " " + std::to_string(g.size.L));
+  r.add("lattice", std::to_string(size.W) + " " + std::to_string(size.H) + " " + std::to_string(size.L));
   if (!o.from.empty()) r.add("from", o.from);
   r.add("impl", o.impl);
   r.add("balance", o.balance);
@@ -137,10 +153,10 @@ int run_heightfield(const HeightfieldCommandOptions& o) {
   r.add("operations", static_cast<std::int64_t>(report.refinements + report.coarsenings));
   r.add("refinements", static_cast<std::int64_t>(report.refinements));
   r.add("coarsenings", static_cast<std::int64_t>(report.coarsenings));
-  r.add("nodes", static_cast<std::int64_t>(g.N.size()));
-  r.add("cells", static_cast<std::int64_t>(g.C.size()));
+  r.add("nodes", static_cast<std::int64_t>(node_total));
+  r.add("cells", static_cast<std::int64_t>(cell_total));
   std::string levels_json;
-  const std::string levels = levels_text(g, levels_json);
+  const std::string levels = levels_text(per_level, levels_json);
   r.add_raw_json("cells_per_level", levels_json, levels);
   r.add("max_error", error.max_abs);
   r.add("rms_error", error.rms);
@@ -151,7 +167,7 @@ int run_heightfield(const HeightfieldCommandOptions& o) {
   outputs.commit();
 
   if (!o.quiet)
-    std::cerr << kTool << ": " << input_name << ": " << g.N.size() << " nodes, " << g.C.size() << " cells, "
+    std::cerr << kTool << ": " << input_name << ": " << node_total << " nodes, " << cell_total << " cells, "
               << report.refinements + report.coarsenings << " operations in " << report.sweeps
               << " sweeps; max error " << fmt(error.max_abs) << " (tolerance " << fmt(o.tolerance) << "), "
               << fmt(tessellate_seconds, "%.3f") << " s\n";

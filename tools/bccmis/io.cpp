@@ -83,7 +83,7 @@ Graph read_state(const std::string& path, std::string_view trace_hint) {
 Graph read_state_or_trace(const std::string& path, bool from_trace) {
   if (!from_trace) return read_state(path, "give --from-trace to replay it first");
   std::string log;
-  return replay_on<Graph>(read_trace(path, {}, "leave out --from-trace"), log);
+  return replay<Graph>(read_trace(path, {}, "leave out --from-trace"), log);
 }
 
 // ---- OutputSet ----------------------------------------------------------------

@@ -67,7 +67,7 @@ int replay_with(const ReplayOptions& o, const Trace& trace) {
   };
   std::optional<L> result;
   try {
-    result.emplace(replay_on<L>(trace, log, observe));
+    result.emplace(replay<L>(trace, log, observe));
   } catch (const Stop&) {
   }
   if (limit_error) throw InputError(*limit_error);

@@ -1013,11 +1013,6 @@ void write_canonical_state(std::ostream& out, const Lattice& g) {
 
 std::string canonical_state(const Lattice& g) { return canonical_text(g); }
 
-Lattice replay(const Trace& trace, std::string& log, const FastReplayObserver& after) {
-  return replay_on<Lattice>(trace, log, [&](const TraceCommand& c, const Lattice& g, std::string_view decision) {
-    if (after) after(c, g, decision);
-  });
-}
 
 // ---- Memory and audit -------------------------------------------------------------------
 

@@ -411,7 +411,7 @@ inline std::vector<Point> cells(const Lattice& g) { return g.cells(); }
 inline std::vector<Point> nodes(const Lattice& g) { return g.nodes(); }
 inline std::size_t cell_count(const Lattice& g) { return g.cell_count(); }
 inline std::size_t node_count(const Lattice& g) { return g.node_count(); }
-/// Optional in the vocabulary (replay_on calls it when a lattice has it):
+/// Optional in the vocabulary (replay calls it when a lattice has it):
 /// room for `cells` cells, a hint, of at most kMaxReserveHint cells. The
 /// pools' capacity is address space until it is used; the position table is
 /// sized for that many cells (about 9-18 bytes a cell, so at most 32 MiB for
@@ -425,13 +425,6 @@ void write_canonical_state(std::ostream& out, const Lattice& g);
 /// The canonical text of spec/formats.md, byte-identical to
 /// bccmis::canonical_state(g.to_graph()), printed from the pools directly.
 std::string canonical_state(const Lattice& g);
-
-/// replay_on<Lattice> (bccmis/trace.h) with a std::function observer, for
-/// tools/fast_replay.cpp: one decision-log line per refine and coarsen
-/// appended to `log`; `after` (if set) is called after every command with the
-/// command and its decision line (empty for `check`).
-using FastReplayObserver = std::function<void(const TraceCommand&, const Lattice&, std::string_view decision)>;
-Lattice replay(const Trace& trace, std::string& log, const FastReplayObserver& after = {});
 
 }  // namespace bccmis::fast
 

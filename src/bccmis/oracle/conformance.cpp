@@ -134,7 +134,7 @@ ImplRun run_implementation(const std::string& command, const std::string& trace_
 
 std::string reference_output(const Trace& trace) {
   std::string log;
-  const Graph g = replay_on<Graph>(trace, log);
+  const Graph g = replay<Graph>(trace, log);
   return log + canonical_state(g);
 }
 
@@ -151,7 +151,7 @@ std::string compare_run(const Trace& trace, const ImplRun& run) {
            (first_err.empty() ? "" : ": " + first_err);
   }
   std::string log;
-  const Graph expected = replay_on<Graph>(trace, log);
+  const Graph expected = replay<Graph>(trace, log);
   std::vector<std::string> want, got;
   std::string want_state, got_state;
   split_output(log, want, want_state);
@@ -264,7 +264,7 @@ std::optional<ViewSide> implementation_side(const Trace& trace, const ImplRun& f
     // Decisions only: compare them with the reference's final state appended.
     ImplRun with_state = full;
     std::string log;
-    with_state.out += canonical_state(replay_on<Graph>(trace, log));
+    with_state.out += canonical_state(replay<Graph>(trace, log));
     side.message = compare_run(trace, with_state);
   } else {
     side.message = compare_run(trace, full);
@@ -273,7 +273,7 @@ std::optional<ViewSide> implementation_side(const Trace& trace, const ImplRun& f
   side.step = trace.commands.size();
   if (full.timed_out || full.signal != 0 || full.exit_code != 0) return side;
   std::string log;
-  replay_on<Graph>(trace, log);
+  replay<Graph>(trace, log);
   std::vector<std::string> want, got;
   std::string want_state, impl_state;
   split_output(log, want, want_state);

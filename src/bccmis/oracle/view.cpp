@@ -290,7 +290,7 @@ ViewResult view_trace(const Trace& trace, const ViewOptions& o) {
   if (o.side && o.side->step == 0) side_main = initial;
   std::size_t step = 0;
   std::string log;
-  const Graph g = replay_on<Graph>(
+  const Graph g = replay<Graph>(
       trace, log,
       [&](const TraceCommand& c, const Graph& now, std::string_view, const StepResult<Graph>& r) {
         const ModelBuilder::Step s = trace_step(c, now, r);
