@@ -112,6 +112,27 @@ TEST(D3Coarsen, K3a_KeepsMidpointsOfFinerNeighbours) {
   EXPECT_EQ(g, test::build("lattice 2 1 1 2\nrefine 12 4 4\n"));
 }
 
+TEST(D3Coarsen, K3a_DeletesInteriorMidpointsLeftWithThreeCoarseCells) {
+  //= bccmis3d#eq-K3a type=test
+  // lattice 2 2 2 1 (S = 4): refine and coarsen the cube (2,2,2). After K2a
+  // the interior edge midpoint (4,4,2) keeps the 3 other level-0 cubes around
+  // its edge and the interior face center (4,2,2) keeps 1: neither is a corner
+  // of a remaining cell, so both are deleted, although a count of 3 means
+  // "keep" for a corner on a domain face (spec/lattice3d.md §5).
+  Graph3 g = test::build("lattice 2 2 2 1\nrefine 2 2 2\n");
+  EXPECT_EQ(g.nbr({4, 4, 2}).size(), 5u);
+  EXPECT_EQ(g.nbr({4, 2, 2}).size(), 5u);
+  const CoarsenResult r = coarsen(g, {2, 2, 2});
+  ASSERT_TRUE(r.applied());
+  EXPECT_TRUE(r.J_minus.count({4, 4, 2}));
+  EXPECT_TRUE(r.J_minus.count({4, 2, 2}));
+  EXPECT_EQ(r.J_minus.size(), 18u);
+  EXPECT_EQ(g, Graph3(LatticeSize3{2, 2, 2, 1}));
+  // A corner of the coarse cube is never in M: (4,0,0), on a domain edge, kept
+  // 1 cell after K2a (the count the 2D rule deletes at) and stays.
+  EXPECT_EQ(g.nbr({4, 0, 0}), vs({{2, 2, 2}, {6, 2, 2}}));
+}
+
 TEST(D3Coarsen, Claim_InverseOfRefine) {
   //= bccmis3d#claim-inverse type=test
   Graph3 g = test::build("lattice 2 1 1 2\n");
