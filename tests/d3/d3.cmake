@@ -18,6 +18,15 @@ target_link_libraries(d3_property_tests PRIVATE bccmis::d3 GTest::gtest_main bcc
 target_compile_definitions(d3_property_tests PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
 gtest_discover_tests(d3_property_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS property)
 
+# RapidCheck properties (the seed of tests/properties.cmake; a smaller budget,
+# each case checks every state against the geometric model).
+find_package(rapidcheck REQUIRED CONFIG)
+add_executable(d3_rapidcheck_tests d3/properties_test.cpp)
+target_link_libraries(d3_rapidcheck_tests PRIVATE bccmis::d3 rapidcheck_gtest GTest::gtest_main bccmis::warnings)
+target_compile_definitions(d3_rapidcheck_tests PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
+gtest_discover_tests(d3_rapidcheck_tests DISCOVERY_MODE PRE_TEST
+  PROPERTIES LABELS property ENVIRONMENT "RC_PARAMS=seed=20090303 max_success=60")
+
 # Strong exception guarantee under injected allocation failures (replaces the
 # global operator new, so it is its own executable).
 add_executable(d3_exception_safety_test d3/exception_safety_test.cpp)
