@@ -26,6 +26,11 @@ Fails (exit 1, one line per problem) when
   - an equation's `errata` and an erratum's `equations` disagree (each must
     list the other; entries of kind "position" list equations only);
   - an erratum lists a test (Suite.Name) that no file in tests/ defines.
+
+The 3D lattice's own equations (spec/equations3d.toml, cited as
+`//= bccmis3d#<id>`) are checked by the same rules against their own tables:
+a `reason=<id>` there names an entry of spec/choices3d.toml, and since the 3D
+equations are ours, a reason needs no `type=deviation`.
 """
 import pathlib
 import re
@@ -56,6 +61,16 @@ if sys.argv[1:2] == ["--self-test"]:
         ("src/bccmis/refine.cpp", "  //# C = C ∪ Y\n", "", "'eq-4b' has no quote"),
         ("src/bccmis/refine.cpp", "  //= erleben2009#eq-4b\n", "", "quote follows no citation"),
         ("spec/errata.toml", '"eq-11d"]', '"eq-11c"]', "lists erratum 'E9', which does not list it"),
+        # The 3D equations (spec/equations3d.toml) and choices (spec/choices3d.toml).
+        ("src/bccmis/d3/refine.cpp", "//= bccmis3d#eq-R2c\n", "", "'bccmis3d#eq-R2c' has no implementation citation"),
+        ("tests/d3/coarsen_test.cpp", "//= bccmis3d#eq-K2d type=test", "//= bccmis3d#eq-K2d-x type=test",
+         "unknown id 'bccmis3d#eq-K2d-x'"),
+        ("tests/d3/coarsen_test.cpp", "//= bccmis3d#eq-K2d type=test\n", "", "'bccmis3d#eq-K2d' has no test citation"),
+        ("src/bccmis/d3/coarsen.cpp", "//# J- = { b in M : level(x) <= l", "//# J- = { b in M : level(x) < l",
+         "quote of 'bccmis3d#eq-K3a' differs"),
+        ("src/bccmis/d3/coarsen.cpp", "reason=V3:", "reason=V9:", "unknown erratum 'V9'"),
+        ("tests/d3/refusals_test.cpp", "TEST(D3Refusals, MaxLevel)", "TEST(D3Refusals, MaxLevelRenamed)",
+         "choice V5 lists test"),
     ]
     src_root = here.parent.parent
     failures = 0
@@ -74,49 +89,73 @@ if sys.argv[1:2] == ["--self-test"]:
     sys.exit(1 if failures else 0)
 
 root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else here.parent.parent)
-equations = tomllib.loads((root / "spec/equations.toml").read_text())["eq"]
-errata = tomllib.loads((root / "spec/errata.toml").read_text())["erratum"]
-by_id = {e["id"]: e for e in equations}
-errata_by_id = {e["id"]: e for e in errata}
 
+
+def load(name, key):
+    return tomllib.loads((root / "spec" / name).read_text())[key]
+
+
+class Namespace:
+    """One citation namespace: its equations, its errata (or choices), and
+    the ids cited by src/ and by tests/."""
+
+    def __init__(self, name, equations_file, equations, errata_file, errata, errata_kind, deviations):
+        self.name, self.equations_file, self.errata_file = name, equations_file, errata_file
+        self.equations, self.errata, self.errata_kind = equations, errata, errata_kind
+        self.by_id = {e["id"]: e for e in equations}
+        self.errata_by_id = {e["id"]: e for e in errata}
+        self.deviations = deviations  # a reason needs `type=deviation` (the paper's equations)
+        self.impl, self.tested = set(), set()
+
+    def label(self, eid):
+        return eid if self.name == "erleben2009" else f"{self.name}#{eid}"
+
+
+namespaces = {
+    "erleben2009": Namespace("erleben2009", "equations.toml", load("equations.toml", "eq"), "errata.toml",
+                             load("errata.toml", "erratum"), "erratum", True),
+    "bccmis3d": Namespace("bccmis3d", "equations3d.toml", load("equations3d.toml", "eq"), "choices3d.toml",
+                          load("choices3d.toml", "choice"), "choice", False),
+}
 
 def normalise(text):
     return " ".join(unicodedata.normalize("NFC", text).split())
 
 
-cite = re.compile(r"^\s*//= erleben2009#([A-Za-z0-9-]+)(.*)$")
+cite = re.compile(r"^\s*//= (erleben2009|bccmis3d)#([A-Za-z0-9-]+)(.*)$")
 attribute = re.compile(r"^\s*//= (.*)$")
 quote = re.compile(r"^\s*//#(?: (.*))?$")
 reason = re.compile(r"reason=([^:\s]+)")
 problems = []
-impl, tested = set(), set()
 
 
 def check_citation(c, is_test):
-    """c: the citation's id, location, attribute text and quote lines."""
-    eid, where, attrs, quote_lines = c["id"], c["where"], " ".join(c["attrs"]), c["quote"]
-    if eid not in by_id:
-        problems.append(f"{where}: citation of unknown id '{eid}'")
+    """c: the citation's namespace, id, location, attribute text and quote lines."""
+    ns, eid, where, attrs, quote_lines = namespaces[c["ns"]], c["id"], c["where"], " ".join(c["attrs"]), c["quote"]
+    label = ns.label(eid)
+    if eid not in ns.by_id:
+        problems.append(f"{where}: citation of unknown id '{label}'")
         return
-    (tested if "type=test" in attrs else impl).add(eid)
+    (ns.tested if "type=test" in attrs else ns.impl).add(eid)
     if is_test and "type=test" not in attrs:
         problems.append(f"{where}: citation in a test without 'type=test'")
     if quote_lines:
-        q, t = normalise(" ".join(quote_lines)), normalise(by_id[eid]["text"])
+        q, t = normalise(" ".join(quote_lines)), normalise(ns.by_id[eid]["text"])
         if q != t:
-            problems.append(f"{where}: quote of '{eid}' differs from spec/equations.toml: '{q}' != '{t}'")
+            problems.append(f"{where}: quote of '{label}' differs from spec/{ns.equations_file}: '{q}' != '{t}'")
     elif not is_test:
-        problems.append(f"{where}: citation of '{eid}' has no quote (//# and the equation's text)")
+        problems.append(f"{where}: citation of '{label}' has no quote (//# and the equation's text)")
     reasons = reason.findall(attrs)
     if "type=deviation" in attrs and not reasons:
         problems.append(f"{where}: deviation without a reason (//= reason=<erratum>: ...)")
-    if reasons and "type=deviation" not in attrs:
+    if ns.deviations and reasons and "type=deviation" not in attrs:
         problems.append(f"{where}: reason without '//= type=deviation'")
     for r in reasons:
-        if r not in errata_by_id:
+        if r not in ns.errata_by_id:
             problems.append(f"{where}: reason names unknown erratum '{r}'")
-        elif r not in by_id[eid].get("errata", []):
-            problems.append(f"{where}: reason {r}, but spec/equations.toml '{eid}' does not list erratum '{r}'")
+        elif r not in ns.by_id[eid].get("errata", []):
+            problems.append(f"{where}: reason {r}, but spec/{ns.equations_file} '{eid}' does not list "
+                            f"{ns.errata_kind} '{r}'")
 
 
 def scan(folder, is_test):
@@ -129,7 +168,7 @@ def scan(folder, is_test):
             if m := cite.match(line):
                 if current:
                     check_citation(current, is_test)
-                current = {"id": m.group(1), "where": where, "attrs": [m.group(2)], "quote": []}
+                current = {"ns": m.group(1), "id": m.group(2), "where": where, "attrs": [m.group(3)], "quote": []}
             elif current and not current["quote"] and (m := attribute.match(line)):
                 current["attrs"].append(m.group(1))
             elif m := quote.match(line):
@@ -150,31 +189,37 @@ def scan(folder, is_test):
 scan("src", False)
 scan("tests", True)
 
-for e in equations:
-    if e["role"] == "update" and e["id"] not in impl:
-        problems.append(f"spec/equations.toml: update equation '{e['id']}' has no implementation citation in src/")
-    if e["id"] not in tested:
-        problems.append(f"spec/equations.toml: '{e['id']}' has no test citation in tests/")
-    for r in e.get("errata", []):
-        if r not in errata_by_id:
-            problems.append(f"spec/equations.toml: '{e['id']}' lists unknown erratum '{r}'")
-        elif e["id"] not in errata_by_id[r].get("equations", []):
-            problems.append(f"spec/equations.toml: '{e['id']}' lists erratum '{r}', which does not list it")
-
 test_text = "\n".join(p.read_text(errors="replace") for p in (root / "tests").rglob("*.cpp"))
-for e in errata:
-    for eid in e.get("equations", []):
-        if eid not in by_id:
-            problems.append(f"spec/errata.toml: erratum {e['id']} lists unknown equation '{eid}'")
-        elif e["kind"] != "position" and e["id"] not in by_id[eid].get("errata", []):
-            problems.append(f"spec/errata.toml: erratum {e['id']} lists '{eid}', whose errata do not include it")
-    for t in e.get("tests", []):
-        suite, name = t.split(".", 1)
-        if not re.search(rf"TEST(_F|_P)?\(\s*{re.escape(suite)}\s*,\s*{re.escape(name)}\s*\)", test_text):
-            problems.append(f"spec/errata.toml: erratum {e['id']} lists test '{t}', which tests/ does not define")
+for ns in namespaces.values():
+    for e in ns.equations:
+        label = ns.label(e["id"])
+        if e["role"] == "update" and e["id"] not in ns.impl:
+            problems.append(f"spec/{ns.equations_file}: update equation '{label}' has no implementation citation in src/")
+        if e["id"] not in ns.tested:
+            problems.append(f"spec/{ns.equations_file}: '{label}' has no test citation in tests/")
+        for r in e.get("errata", []):
+            if r not in ns.errata_by_id:
+                problems.append(f"spec/{ns.equations_file}: '{label}' lists unknown {ns.errata_kind} '{r}'")
+            elif e["id"] not in ns.errata_by_id[r].get("equations", []):
+                problems.append(f"spec/{ns.equations_file}: '{label}' lists {ns.errata_kind} '{r}', which does not list it")
+    for e in ns.errata:
+        for eid in e.get("equations", []):
+            if eid not in ns.by_id:
+                problems.append(f"spec/{ns.errata_file}: {ns.errata_kind} {e['id']} lists unknown equation '{eid}'")
+            elif e["kind"] != "position" and e["id"] not in ns.by_id[eid].get("errata", []):
+                problems.append(f"spec/{ns.errata_file}: {ns.errata_kind} {e['id']} lists '{eid}', "
+                                "whose errata do not include it")
+        for t in e.get("tests", []):
+            suite, name = t.split(".", 1)
+            if not re.search(rf"TEST(_F|_P)?\(\s*{re.escape(suite)}\s*,\s*{re.escape(name)}\s*\)", test_text):
+                problems.append(f"spec/{ns.errata_file}: {ns.errata_kind} {e['id']} lists test '{t}', "
+                                "which tests/ does not define")
 
 for p in problems:
     print(p)
-print(f"spec coverage: {len(by_id)} equations, {len(impl & set(by_id))} cited by src/, "
-      f"{len(tested & set(by_id))} by tests/, {len(errata_by_id)} errata; {len(problems)} problems")
+summary = "; ".join(
+    f"{ns.name}: {len(ns.by_id)} equations, {len(ns.impl & set(ns.by_id))} cited by src/, "
+    f"{len(ns.tested & set(ns.by_id))} by tests/, {len(ns.errata_by_id)} {ns.errata_kind} entries"
+    for ns in namespaces.values())
+print(f"spec coverage: {summary}; {len(problems)} problems")
 sys.exit(1 if problems else 0)

@@ -1,0 +1,35 @@
+# The 3D lattice's tests (spec/lattice3d.md): equation by equation on the
+# hand examples, every refusal code, the spec/examples/d3_* expectations, the
+# cardinality facts and the independent structural check in every state of
+# random operation sequences, round trips, and state counts by BFS against a
+# direct enumeration of balanced leaf sets.
+add_executable(d3_tests
+  d3/lattice_test.cpp
+  d3/refine_test.cpp
+  d3/coarsen_test.cpp
+  d3/refusals_test.cpp
+  d3/examples_test.cpp)
+target_link_libraries(d3_tests PRIVATE bccmis::d3 GTest::gtest_main bccmis::warnings)
+target_compile_definitions(d3_tests PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
+gtest_discover_tests(d3_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
+
+add_executable(d3_property_tests d3/facts_test.cpp d3/counts_test.cpp)
+target_link_libraries(d3_property_tests PRIVATE bccmis::d3 GTest::gtest_main bccmis::warnings)
+target_compile_definitions(d3_property_tests PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
+gtest_discover_tests(d3_property_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS property)
+
+# RapidCheck properties (the seed of tests/properties.cmake; a smaller budget,
+# each case checks every state against the geometric model).
+find_package(rapidcheck REQUIRED CONFIG)
+add_executable(d3_rapidcheck_tests d3/properties_test.cpp)
+target_link_libraries(d3_rapidcheck_tests PRIVATE bccmis::d3 rapidcheck_gtest GTest::gtest_main bccmis::warnings)
+target_compile_definitions(d3_rapidcheck_tests PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
+gtest_discover_tests(d3_rapidcheck_tests DISCOVERY_MODE PRE_TEST
+  PROPERTIES LABELS property ENVIRONMENT "RC_PARAMS=seed=20090303 max_success=60")
+
+# Strong exception guarantee under injected allocation failures (replaces the
+# global operator new, so it is its own executable).
+add_executable(d3_exception_safety_test d3/exception_safety_test.cpp)
+target_link_libraries(d3_exception_safety_test PRIVATE bccmis::d3 GTest::gtest_main bccmis::warnings)
+target_compile_definitions(d3_exception_safety_test PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
+gtest_discover_tests(d3_exception_safety_test DISCOVERY_MODE PRE_TEST PROPERTIES LABELS robustness)
