@@ -30,11 +30,11 @@
 #include <string>
 #include <vector>
 
+#include "bccmis/apps/heightfield.h"
+#include "bccmis/apps/image.h"
 #include "bccmis/fast/lattice.h"
 #include "bccmis/format.h"
 #include "bccmis/geometry.h"
-#include "bccmis/apps/heightfield.h"
-#include "bccmis/apps/image.h"
 #include "bench_main.h"
 
 namespace bccmis::bench {
@@ -91,7 +91,8 @@ void BM_Heightfield(benchmark::State& st) {
 std::vector<Point> refinements_of(const Graph& g) {
   std::vector<std::vector<Point>> by_level(static_cast<std::size_t>(g.size.L) + 1);
   for (const Point& n : g.N)
-    if (const std::optional<int> l = refined_center_level(g.size, n)) by_level[static_cast<std::size_t>(*l)].push_back(n);
+    if (const std::optional<int> l = refined_center_level(g.size, n))
+      by_level[static_cast<std::size_t>(*l)].push_back(n);
   std::vector<Point> order;
   for (const auto& level : by_level) order.insert(order.end(), level.begin(), level.end());
   return order;
@@ -115,8 +116,8 @@ void BM_HeightfieldOps(benchmark::State& st) {
     }
   }
   st.counters["ops"] = static_cast<double>(order.size());
-  st.counters["ns_per_op"] = benchmark::Counter(static_cast<double>(order.size()),
-                                                benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  st.counters["ns_per_op"] = benchmark::Counter(
+      static_cast<double>(order.size()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 int verify() {
@@ -138,8 +139,8 @@ int verify() {
       std::cerr << "bench_heightfield: the recorded refinements do not reach the tessellation\n";
       return 1;
     }
-    std::cerr << "bench_heightfield: verified measure " << measure << ": " << g.C.size() << " cells, "
-              << a.refinements << " refinements, " << a.sweeps << " sweeps, equal states\n";
+    std::cerr << "bench_heightfield: verified measure " << measure << ": " << g.C.size() << " cells, " << a.refinements
+              << " refinements, " << a.sweeps << " sweeps, equal states\n";
   }
   return 0;
 }

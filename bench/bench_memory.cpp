@@ -138,7 +138,7 @@ Triangulation triangulation_of(const fast::Lattice& g) {
     const Point p = centers[c].position();
     t.points.push_back({static_cast<double>(p.x), static_cast<double>(p.y)});
     // Counter-clockwise from the south-west corner: SW, S, SE, E, NE, N, NW, W.
-    const fast::Lattice::Index ring[8] = {centers[c].corner[0], centers[c].mid[0], centers[c].corner[1],
+    const fast::Lattice::Index ring[8] = {centers[c].corner[0], centers[c].mid[0],    centers[c].corner[1],
                                           centers[c].mid[1],    centers[c].corner[3], centers[c].mid[2],
                                           centers[c].corner[2], centers[c].mid[3]};
     std::vector<std::uint32_t> b;
@@ -191,8 +191,7 @@ void BM_Fast(benchmark::State& st, bool shrink) {
     report(st, m, g->cell_count());
     st.counters["self_reported_bytes_per_cell"] =
         static_cast<double>(g->memory_bytes()) / static_cast<double>(g->cell_count());
-    st.counters["stored_edges_per_cell"] =
-        static_cast<double>(stored_edges(*g)) / static_cast<double>(g->cell_count());
+    st.counters["stored_edges_per_cell"] = static_cast<double>(stored_edges(*g)) / static_cast<double>(g->cell_count());
     st.PauseTiming();
     g.reset();
     st.ResumeTiming();
@@ -215,8 +214,7 @@ void BM_SurfaceMesh(benchmark::State& st, bool point3, bool reserve) {
     report(st, Measured{s.bytes, heap}, g.cell_count());
     st.counters["edges_per_cell"] = static_cast<double>(s.edges) / static_cast<double>(g.cell_count());
     st.counters["faces_per_cell"] = static_cast<double>(s.faces) / static_cast<double>(g.cell_count());
-    st.counters["graph_edges_over_mesh_edges"] =
-        static_cast<double>(stored_edges(g)) / static_cast<double>(s.edges);
+    st.counters["graph_edges_over_mesh_edges"] = static_cast<double>(stored_edges(g)) / static_cast<double>(s.edges);
   }
 }
 

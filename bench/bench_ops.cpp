@@ -43,11 +43,11 @@
 //                     the instructions per operation (bench/RESULTS.md)
 #include <benchmark/benchmark.h>
 
-#include <ctime>
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <algorithm>
+#include <ctime>
 #include <map>
 #include <memory>
 #include <numeric>
@@ -311,8 +311,8 @@ void BM_LoadLatency(benchmark::State& st) {
     for (int k = 0; k < 1024; ++k) at = next[at];
     benchmark::DoNotOptimize(at);
   }
-  st.counters["ns_per_load"] =
-      benchmark::Counter(1024.0 * static_cast<double>(st.iterations()), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  st.counters["ns_per_load"] = benchmark::Counter(1024.0 * static_cast<double>(st.iterations()),
+                                                  benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 // ---- Registration -------------------------------------------------------------------------------

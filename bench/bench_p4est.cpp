@@ -214,9 +214,11 @@ void register_all() {
     const std::string n = "/leaves:" + std::to_string(w.leaves);
     benchmark::RegisterBenchmark(("Batch/bccmis_fast" + n).c_str(), batch_bccmis<LocalFeature<fast::Lattice>>, w)
         ->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("Batch/bccmis_fast_reserved" + n).c_str(), batch_bccmis<LocalFeature<fast::Lattice>, true>, w)
+    benchmark::RegisterBenchmark(("Batch/bccmis_fast_reserved" + n).c_str(),
+                                 batch_bccmis<LocalFeature<fast::Lattice>, true>, w)
         ->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("Batch/bccmis_fast_pointwise" + n).c_str(), batch_bccmis<MovingFeature<fast::Lattice>>, w)
+    benchmark::RegisterBenchmark(("Batch/bccmis_fast_pointwise" + n).c_str(),
+                                 batch_bccmis<MovingFeature<fast::Lattice>>, w)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("Batch/p4est" + n).c_str(), batch_p4est, w)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("Step/bccmis_fast" + n).c_str(), step_bccmis<LocalFeature<fast::Lattice>>, w)
@@ -244,10 +246,11 @@ int verify_one(const Workload& w, int turn, int frames) {
     }
     const std::vector<p4est_bridge::Leaf> mine = leaves_of(ours.state());
     if (mine != leaves_of(brick, theirs.forest()) || mine != leaves_of(scan.state())) {
-      std::printf("verify FAILED: leaves:%lld, %d frames a turn, frame %d: bccmis local %zu, bccmis box scan %zu, "
-                  "p4est %lld leaves (leaf sets differ)\n",
-                  static_cast<long long>(w.leaves), turn, f, ours.state().cell_count(), scan.state().cell_count(),
-                  static_cast<long long>(theirs.forest()->global_num_quadrants));
+      std::printf(
+          "verify FAILED: leaves:%lld, %d frames a turn, frame %d: bccmis local %zu, bccmis box scan %zu, "
+          "p4est %lld leaves (leaf sets differ)\n",
+          static_cast<long long>(w.leaves), turn, f, ours.state().cell_count(), scan.state().cell_count(),
+          static_cast<long long>(theirs.forest()->global_num_quadrants));
       return 1;
     }
   }
@@ -261,9 +264,10 @@ int verify_one(const Workload& w, int turn, int frames) {
     std::printf("verify FAILED: %s\n", e.what());
     return 1;
   }
-  std::printf("verify leaves:%lld, %d frames a turn: %zu leaves, %d frames (%zu / %zu bccmis operations, local / box "
-              "scan): same leaf sets in all three\n",
-              static_cast<long long>(w.leaves), turn, ours.state().cell_count(), frames, ops, scan_ops);
+  std::printf(
+      "verify leaves:%lld, %d frames a turn: %zu leaves, %d frames (%zu / %zu bccmis operations, local / box "
+      "scan): same leaf sets in all three\n",
+      static_cast<long long>(w.leaves), turn, ours.state().cell_count(), frames, ops, scan_ops);
   return 0;
 }
 

@@ -20,8 +20,8 @@ HalfedgeMeshStats build(const Triangulation& t, Make make_point, bool reserve,
     // Euler: E = V + F - 1 for a triangulated disk.
     if (reserve)
       mesh.reserve(static_cast<typename CGAL::Surface_mesh<P>::size_type>(t.points.size()),
-                 static_cast<typename CGAL::Surface_mesh<P>::size_type>(t.points.size() + t.triangles.size()),
-                 static_cast<typename CGAL::Surface_mesh<P>::size_type>(t.triangles.size()));
+                   static_cast<typename CGAL::Surface_mesh<P>::size_type>(t.points.size() + t.triangles.size()),
+                   static_cast<typename CGAL::Surface_mesh<P>::size_type>(t.triangles.size()));
     std::vector<typename CGAL::Surface_mesh<P>::Vertex_index> v;
     v.reserve(t.points.size());
     for (const auto& p : t.points) v.push_back(mesh.add_vertex(make_point(p)));
@@ -46,8 +46,8 @@ HalfedgeMeshStats surface_mesh_of(const Triangulation& t, bool point3, bool rese
   if (point3)
     return build<K::Point_3>(
         t, [](const std::array<double, 2>& p) { return K::Point_3(p[0], p[1], 0); }, reserve, live_bytes);
-  return build<K::Point_2>(t, [](const std::array<double, 2>& p) { return K::Point_2(p[0], p[1]); }, reserve,
-                           live_bytes);
+  return build<K::Point_2>(
+      t, [](const std::array<double, 2>& p) { return K::Point_2(p[0], p[1]); }, reserve, live_bytes);
 }
 
 }  // namespace bccmis::bench

@@ -33,7 +33,7 @@ class LocalFeature {
   /// grow during the build).
   LocalFeature(const LatticeSize& size, double radius, int frames_per_turn, std::size_t reserve_cells = 0)
       : size_(size), g_(size), radius_(radius), frames_(frames_per_turn) {
-    if constexpr (requires(L& s) { s.reserve(reserve_cells); })
+    if constexpr (requires(L & s) { s.reserve(reserve_cells); })
       if (reserve_cells > 0) g_.reserve(reserve_cells);
     side_ = static_cast<double>(level0_side(size));
     disk_ = position(0);
@@ -109,8 +109,10 @@ class LocalFeature {
   void for_cells(int l, const Disk& d, double r, const Disk* minus, double minus_r, F&& f) const {
     const std::int64_t s = cell_side(size_, l);
     const std::int64_t columns = size_.W << l, rows = size_.H << l;
-    const auto j0 = std::max<std::int64_t>(0, static_cast<std::int64_t>(std::floor((d.y - r) / static_cast<double>(s))) - 1);
-    const auto j1 = std::min<std::int64_t>(rows - 1, static_cast<std::int64_t>(std::floor((d.y + r) / static_cast<double>(s))) + 1);
+    const auto j0 =
+        std::max<std::int64_t>(0, static_cast<std::int64_t>(std::floor((d.y - r) / static_cast<double>(s))) - 1);
+    const auto j1 =
+        std::min<std::int64_t>(rows - 1, static_cast<std::int64_t>(std::floor((d.y + r) / static_cast<double>(s))) + 1);
     for (std::int64_t j = j0; j <= j1; ++j) {
       auto [a0, a1] = row_range(j, s, d, r);
       a0 = std::max<std::int64_t>(a0, 0);

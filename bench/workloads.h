@@ -163,8 +163,8 @@ class LeafRefiner {
     if (why == RefineRefusal::CoarserNeighbor) {
       const std::int64_t h = cell_side(size_, level) / 2;
       const std::int64_t W = size_.W * level0_side(size_), H = size_.H * level0_side(size_);
-      for (const Point q : {Point{c.x + h + 1, c.y}, Point{c.x - h - 1, c.y}, Point{c.x, c.y + h + 1},
-                            Point{c.x, c.y - h - 1}}) {
+      for (const Point q :
+           {Point{c.x + h + 1, c.y}, Point{c.x - h - 1, c.y}, Point{c.x, c.y + h + 1}, Point{c.x, c.y - h - 1}}) {
         if (q.x < 0 || q.y < 0 || q.x >= W || q.y >= H) continue;
         int nl = 0;
         const Point x = locate(q, nl);
@@ -255,8 +255,8 @@ class MovingFeature {
   /// The centers of the level-L cells that meet the disk.
   std::vector<Point> disk_points(const Disk& d) const {
     std::vector<Point> out;
-    for (const Point& c : centers_in_box(d.x - radius_, d.y - radius_, d.x + radius_, d.y + radius_,
-                                         cell_side(size_, size_.L)))
+    for (const Point& c :
+         centers_in_box(d.x - radius_, d.y - radius_, d.x + radius_, d.y + radius_, cell_side(size_, size_.L)))
       if (meets(c, size_.L, d)) out.push_back(c);
     return out;
   }

@@ -31,8 +31,8 @@
 #include <string>
 #include <string_view>
 
-#include "bccmis/oracle/conformance.h"
 #include "bccmis/format.h"
+#include "bccmis/oracle/conformance.h"
 #include "bccmis/oracle/view.h"
 #include "bccmis/trace.h"
 #include "fuzz_util.h"
@@ -104,8 +104,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::optional<ViewSide> side =
       guarded(trace, "implementation_side", [&] { return implementation_side(trace, run, {}, false); });
   if (side.has_value() == completed_verdict.empty())
-    fuzz::fail(kTarget, side ? "implementation_side shows a disagreement where there is none"
-                             : "implementation_side misses the disagreement: " + completed_verdict,
+    fuzz::fail(kTarget,
+               side ? "implementation_side shows a disagreement where there is none"
+                    : "implementation_side misses the disagreement: " + completed_verdict,
                &trace);
   if (side && side->step > trace.commands.size())
     fuzz::fail(kTarget, "implementation_side puts the disagreement after the last step", &trace);

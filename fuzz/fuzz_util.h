@@ -42,8 +42,7 @@ inline void check_parse_error(std::string_view target, const ParseError& e, std:
   auto bad = [&](const std::string& why) { fail(target, "malformed ParseError (" + why + "): " + e.what()); };
   const std::string what = e.what();
   if (e.file != file) bad("wrong file name");
-  const std::string prefix =
-      std::string(file) + ":" + std::to_string(e.line) + ":" + std::to_string(e.column) + ": ";
+  const std::string prefix = std::string(file) + ":" + std::to_string(e.line) + ":" + std::to_string(e.column) + ": ";
   if (what.compare(0, prefix.size(), prefix) != 0 || what.size() == prefix.size()) bad("not file:line:column: message");
   if (what.substr(prefix.size()) != e.message) bad("what() does not end with message");
   for (char ch : what) {

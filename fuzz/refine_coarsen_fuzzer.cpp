@@ -29,9 +29,9 @@
 #include <string>
 #include <vector>
 
-#include "bccmis/invariants/checked.h"
 #include "bccmis/format.h"
 #include "bccmis/geometry.h"
+#include "bccmis/invariants/checked.h"
 #include "bccmis/invariants/invariants.h"
 #include "bccmis/ops.h"
 #include "fuzz_util.h"

@@ -22,9 +22,9 @@
 #include <string_view>
 #include <vector>
 
-#include "bccmis/invariants/checked.h"
 #include "bccmis/format.h"
 #include "bccmis/geometry.h"
+#include "bccmis/invariants/checked.h"
 #include "bccmis/invariants/invariants.h"
 #include "bccmis/ops.h"
 #include "fuzz_util.h"
@@ -81,7 +81,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     fuzz::check_parse_error(kTarget, e, kFile, text);
     return 0;
   }
-  if (canonical_state(g) != text) fail_with_state("parse_state accepted a text that does not print back byte-identically", text);
+  if (canonical_state(g) != text)
+    fail_with_state("parse_state accepted a text that does not print back byte-identically", text);
 
   // find_violation must be total: no exception, whatever the graph.
   std::optional<Violation> violation;
@@ -114,7 +115,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::vector<Point> refined;
   for (const Point& n : g.N)
     if (refined_center_level(g.size, n)) refined.push_back(n);
-  if (!refined.empty())
-    round_trip(g, refined[pick % refined.size()], text, "coarsen", checked_coarsen, checked_refine);
+  if (!refined.empty()) round_trip(g, refined[pick % refined.size()], text, "coarsen", checked_coarsen, checked_refine);
   return 0;
 }

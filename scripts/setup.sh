@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  cmake ninja-build g++ clang-14 libclang-rt-14-dev llvm-14 pkg-config python3
+  cmake ninja-build g++ clang-14 clang-format-14 libclang-rt-14-dev llvm-14 pkg-config python3 git
   libgtest-dev libgmock-dev googletest librapidcheck-dev libbenchmark-dev
   libcgal-dev libgmp-dev libmpfr-dev libcli11-dev libstb-dev
   # optional components: the p4est bridge (p4est is built with OpenMPI, whose

@@ -122,7 +122,8 @@ TEST(Animate, PathParsingAndArcLength) {
   EXPECT_DOUBLE_EQ(mid[0], 3);
   EXPECT_DOUBLE_EQ(mid[1], 0.5);
   EXPECT_EQ(point_on_path(parse_path("2,2"), 0.7), (std::array<double, 2>{2, 2}));
-  for (const char* bad : {"", "1,2;", "1;2", "a,1", "1,2x", "1,nan"}) EXPECT_THROW(parse_path(bad), std::invalid_argument) << bad;
+  for (const char* bad : {"", "1,2;", "1;2", "a,1", "1,2x", "1,nan"})
+    EXPECT_THROW(parse_path(bad), std::invalid_argument) << bad;
   try {
     parse_path("1,1;2,b");
   } catch (const std::invalid_argument& e) {
@@ -147,12 +148,12 @@ TEST(Animate, FastImplMakesTheSameFramesAndState) {
     std::vector<FrameReport> reports[2];
     Graph finals[2];
     Graph reference = make_lattice(size);
-    reports[0] = animate(reference, o, [&](const FrameReport&, const Graph& g) { states[0].push_back(canonical_state(g)); });
+    reports[0] =
+        animate(reference, o, [&](const FrameReport&, const Graph& g) { states[0].push_back(canonical_state(g)); });
     finals[0] = reference;
     fast::Lattice lattice(size);
-    reports[1] = animate(lattice, o, [&](const FrameReport&, const fast::Lattice& g) {
-      states[1].push_back(canonical_text(g));
-    });
+    reports[1] = animate(lattice, o,
+                         [&](const FrameReport&, const fast::Lattice& g) { states[1].push_back(canonical_text(g)); });
     finals[1] = lattice.to_graph();
     ASSERT_EQ(reports[0].size(), 13u);
     ASSERT_EQ(reports[1].size(), reports[0].size());

@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <map>
 #include <cstdlib>
+#include <map>
 #include <random>
 #include <set>
 #include <tuple>
@@ -51,8 +51,8 @@ struct Closure {
       const auto [l, i, j] = c;
       if (l == 0) continue;
       work.push_back({l - 1, i / 2, j / 2});
-      for (const auto& [di, dj] : std::array<std::pair<int, int>, 8>{
-               {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {1, -1}, {-1, 1}, {-1, -1}}}) {
+      for (const auto& [di, dj] :
+           std::array<std::pair<int, int>, 8>{{{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {1, -1}, {-1, 1}, {-1, -1}}}) {
         if (!corner && di != 0 && dj != 0) continue;
         const QCell n{l, i + di, j + dj};
         if (inside(n)) work.push_back({l - 1, (i + di) / 2, (j + dj) / 2});
@@ -307,8 +307,7 @@ TEST(CoarsenWhere, BoundaryAfterCoarsenPredictsCoarsen) {
 struct FineGrid {
   std::int64_t w, h;
   std::vector<int> level;
-  explicit FineGrid(const LatticeSize& s)
-      : w(s.W << s.L), h(s.H << s.L), level(static_cast<std::size_t>(w * h), -1) {}
+  explicit FineGrid(const LatticeSize& s) : w(s.W << s.L), h(s.H << s.L), level(static_cast<std::size_t>(w * h), -1) {}
   void fill(const LatticeSize& s, int l, std::int64_t i, std::int64_t j) {
     const std::int64_t k = std::int64_t{1} << (s.L - l);
     for (std::int64_t a = i * k; a < (i + 1) * k; ++a)
@@ -392,7 +391,8 @@ std::size_t count_reachable_states(const LatticeSize& s, Balance mode) {
   for (int l = 0; l < s.L; ++l) {
     const std::int64_t side = cell_side(s, l);
     for (std::int64_t i = 0; i < (s.W << l); ++i)
-      for (std::int64_t j = 0; j < (s.H << l); ++j) splittable.push_back({l, {i * side + side / 2, j * side + side / 2}});
+      for (std::int64_t j = 0; j < (s.H << l); ++j)
+        splittable.push_back({l, {i * side + side / 2, j * side + side / 2}});
   }
   EXPECT_LE(splittable.size(), 64u);
   std::map<Point, int> bit;
@@ -461,7 +461,8 @@ TEST(CornerBalance, CoarsenWhereKeepsCornerBalance) {
         Balance::Corner);
     EXPECT_TRUE(is_valid(g));
     EXPECT_FALSE(find_corner_imbalance(g));
-    coarsen_where(g, [](const Graph&, const Point&) { return true; }, Balance::Corner);
+    coarsen_where(
+        g, [](const Graph&, const Point&) { return true; }, Balance::Corner);
     EXPECT_EQ(g, make_lattice({3, 3, 4}));
   }
 }

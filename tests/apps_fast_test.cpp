@@ -14,10 +14,10 @@
 #include <vector>
 
 #include "bccmis/apps/balance.h"
-#include "bccmis/fast/lattice.h"
-#include "bccmis/format.h"
 #include "bccmis/apps/heightfield.h"
 #include "bccmis/apps/image.h"
+#include "bccmis/fast/lattice.h"
+#include "bccmis/format.h"
 #include "bccmis/invariants/invariants.h"
 
 namespace bccmis {

@@ -16,10 +16,10 @@
 
 #include <unistd.h>
 
-#include "bccmis/format.h"
 #include "bccmis/apps/heightfield.h"
-#include "bccmis/invariants/invariants.h"
 #include "bccmis/apps/mesh.h"
+#include "bccmis/format.h"
+#include "bccmis/invariants/invariants.h"
 
 namespace bccmis {
 namespace {
@@ -36,7 +36,8 @@ HeightField synthetic(std::int64_t w, std::int64_t h, const std::function<double
   for (std::int64_t row = 0; row < h; ++row)
     for (std::int64_t col = 0; col < w; ++col)
       field.values[static_cast<std::size_t>(row * w + col)] =
-          f(static_cast<double>(col) / static_cast<double>(w - 1), static_cast<double>(h - 1 - row) / static_cast<double>(h - 1));
+          f(static_cast<double>(col) / static_cast<double>(w - 1),
+            static_cast<double>(h - 1 - row) / static_cast<double>(h - 1));
   return field;
 }
 
@@ -47,15 +48,14 @@ struct Tessellation {
 };
 
 Tessellation tessellated(const HeightField& field, const LatticeSize& size, double tolerance,
-                ErrorMeasure measure = ErrorMeasure::MaxPixel) {
+                         ErrorMeasure measure = ErrorMeasure::MaxPixel) {
   Tessellation r{make_lattice(size), {}, {}};
   const HeightSampler s(field, size, 1.0);
   TessellateSettings t;
   t.tolerance = tolerance;
   t.error.measure = measure;
-  r.report = tessellate(r.g, s, t, [](int, const Graph& g, std::size_t) {
-    ASSERT_TRUE(is_valid(g)) << to_string(*find_violation(g));
-  });
+  r.report = tessellate(
+      r.g, s, t, [](int, const Graph& g, std::size_t) { ASSERT_TRUE(is_valid(g)) << to_string(*find_violation(g)); });
   r.error = mesh_error(r.g, s);
   EXPECT_TRUE(is_valid(r.g)) << to_string(*find_violation(r.g));
   EXPECT_TRUE(r.report.converged);
@@ -170,8 +170,8 @@ void expect_watertight_cover(const TriangleMesh& m, double W, double H) {
       // A boundary edge: both ends on the same side of the domain.
       const auto& p = m.vertices[e.first];
       const auto& q = m.vertices[e.second];
-      const bool on_side = (p[0] == 0 && q[0] == 0) || (p[0] == W && q[0] == W) || (p[1] == 0 && q[1] == 0) ||
-                           (p[1] == H && q[1] == H);
+      const bool on_side =
+          (p[0] == 0 && q[0] == 0) || (p[0] == W && q[0] == W) || (p[1] == 0 && q[1] == 0) || (p[1] == H && q[1] == H);
       EXPECT_TRUE(on_side) << "an unpaired edge inside the domain: a crack";
     }
     edges += paired ? 1 : 2;  // an interior edge is counted from both sides

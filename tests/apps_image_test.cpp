@@ -104,9 +104,7 @@ TEST(Pgm, ErrorsNameTheFileAndThePlace) {
             "f.pgm:1:4: image of 4x4 = 16 pixels exceeds the limit of 10 pixels");
 }
 
-TEST(Pgm, UnreadableFileIsAnImageError) {
-  EXPECT_THROW(read_height_field("/nonexistent/dir/x.pgm"), ImageError);
-}
+TEST(Pgm, UnreadableFileIsAnImageError) { EXPECT_THROW(read_height_field("/nonexistent/dir/x.pgm"), ImageError); }
 
 // ---- PNG -------------------------------------------------------------------------
 
@@ -200,7 +198,8 @@ TEST(Png, BrokenFilesAreImageErrors) {
 TEST(Images, MutatedFilesParseOrFailCleanly) {
   // Flipped, dropped and inserted bytes: every result is a parse or an
   // ImageError (the sanitizer builds check that nothing else goes wrong).
-  std::vector<std::string> seeds = {"P2\n# c\n3 2\n9\n0 1 2\n3 4 9\n", std::string("P5\n2 2\n300\n\x00\x01\x01\x2c\x00\x00\x00\x05", 20),
+  std::vector<std::string> seeds = {"P2\n# c\n3 2\n9\n0 1 2\n3 4 9\n",
+                                    std::string("P5\n2 2\n300\n\x00\x01\x01\x2c\x00\x00\x00\x05", 20),
                                     std::string("P5 2 1 255\n\x07\x08", 13)};
   if (png_supported()) seeds.push_back(make_png(3, 3, 1, 16, {1, 2, 3, 4, 5, 6, 7, 8, 9}));
   std::uint64_t state = 12345;

@@ -34,8 +34,8 @@ std::string abc(const std::array<std::size_t, 3>& t, std::size_t base) {
 }
 
 std::string spec_obj(const TriangleMesh& m, const std::string& comment) {
-  std::string out = "# " + comment + "\n# " + num(m.vertices.size()) + " vertices, " + num(m.triangles.size()) +
-                    " triangles\n";
+  std::string out =
+      "# " + comment + "\n# " + num(m.vertices.size()) + " vertices, " + num(m.triangles.size()) + " triangles\n";
   for (const auto& v : m.vertices) out += "v " + xyz(v) + "\n";
   for (const auto& t : m.triangles) out += "f " + abc(t, 1) + "\n";
   return out;
@@ -44,7 +44,8 @@ std::string spec_obj(const TriangleMesh& m, const std::string& comment) {
 std::string spec_ply(const TriangleMesh& m, const std::string& comment) {
   std::string out = "ply\nformat ascii 1.0\ncomment " + comment + "\nelement vertex " + num(m.vertices.size()) +
                     "\nproperty double x\nproperty double y\nproperty double z\nelement face " +
-                    num(m.triangles.size()) + "\nproperty list uchar int vertex_indices\nproperty int level\nend_header\n";
+                    num(m.triangles.size()) +
+                    "\nproperty list uchar int vertex_indices\nproperty int level\nend_header\n";
   for (const auto& v : m.vertices) out += xyz(v) + "\n";
   for (std::size_t i = 0; i < m.triangles.size(); ++i)
     out += "3 " + abc(m.triangles[i], 0) + " " + std::to_string(m.triangle_level[i]) + "\n";
@@ -53,10 +54,12 @@ std::string spec_ply(const TriangleMesh& m, const std::string& comment) {
 
 std::string spec_vtu(const TriangleMesh& m) {
   const std::string in = "          ";
-  std::string out = "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" "
-                    "byte_order=\"LittleEndian\">\n  <UnstructuredGrid>\n    <Piece NumberOfPoints=\"" +
-                    num(m.vertices.size()) + "\" NumberOfCells=\"" + num(m.triangles.size()) + "\">\n";
-  out += "      <PointData Scalars=\"height\">\n        <DataArray type=\"Float64\" Name=\"height\" format=\"ascii\">\n";
+  std::string out =
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" "
+      "byte_order=\"LittleEndian\">\n  <UnstructuredGrid>\n    <Piece NumberOfPoints=\"" +
+      num(m.vertices.size()) + "\" NumberOfCells=\"" + num(m.triangles.size()) + "\">\n";
+  out +=
+      "      <PointData Scalars=\"height\">\n        <DataArray type=\"Float64\" Name=\"height\" format=\"ascii\">\n";
   for (const auto& v : m.vertices) out += in + num(v[2]) + "\n";
   out += "        </DataArray>\n      </PointData>\n";
   out += "      <CellData Scalars=\"level\">\n        <DataArray type=\"Int32\" Name=\"level\" format=\"ascii\">\n";
@@ -108,8 +111,8 @@ TEST(AppsOutput, RandomStatesBothLatticesEveryFormat) {
   for (const LatticeSize size : {LatticeSize{1, 1, 4}, LatticeSize{3, 2, 5}, LatticeSize{2, 3, 12}}) {
     const HeightSampler s(f, size, 2.5);
     for (std::uint32_t seed = 1; seed <= 4; ++seed) {
-      SCOPED_TRACE("lattice " + std::to_string(size.W) + " " + std::to_string(size.H) + " " +
-                   std::to_string(size.L) + ", seed " + std::to_string(seed));
+      SCOPED_TRACE("lattice " + std::to_string(size.W) + " " + std::to_string(size.H) + " " + std::to_string(size.L) +
+                   ", seed " + std::to_string(seed));
       fast::Lattice lattice(size);
       std::mt19937 rng(seed);
       for (int k = 0; k < 80; ++k) {

@@ -133,8 +133,7 @@ TEST(CoarsenRefusal, FinerNeighbor_WhenAChildHasAJunction) {
   // Lattice 2 1 2 (S = 8): both cells refined, then the right cell's child
   // (10,2) beside the left cell's child (6,2) refined: coarsening (4,4) would
   // put a level-0 cell beside level-2 cells.
-  expect_refused("lattice 2 1 2\nrefine 4 4\nrefine 12 4\nrefine 10 2\n", {4, 4},
-                 CoarsenRefusal::FinerNeighbor);
+  expect_refused("lattice 2 1 2\nrefine 4 4\nrefine 12 4\nrefine 10 2\n", {4, 4}, CoarsenRefusal::FinerNeighbor);
 }
 
 }  // namespace

@@ -123,7 +123,7 @@ TEST(Errata, E6_TheGraphStoresTwoThirdsOfTheEdges) {
     EXPECT_EQ(stored, 4 * W * H);
     const std::size_t hull = W * (H + 1) + H * (W + 1);
     EXPECT_EQ(3 * stored, 2 * (stored + hull - W - H));  // exactly 2/3 of the edges off the boundary
-    EXPECT_GT(3 * stored, stored + hull);                       // more than one third, always
+    EXPECT_GT(3 * stored, stored + hull);                // more than one third, always
   }
 }
 

@@ -23,9 +23,9 @@
 #include <string>
 #include <vector>
 
+#include "bccmis/explore/explore.h"
 #include "bccmis/format.h"
 #include "bccmis/ops.h"
-#include "bccmis/explore/explore.h"
 #include "model/leaf_model.h"
 
 namespace bccmis {
@@ -55,8 +55,8 @@ std::string name_of(const testing::TestParamInfo<Expected>& info) {
 void expect_explored_counts(const Expected& e) {
   const LatticeSize size{e.W, e.H, e.L};
   const ExploreResult r = explore(size);
-  ASSERT_FALSE(r.first_failure.has_value())
-      << r.first_failure->message << "\nreproducer trace:\n" << r.first_failure->trace;
+  ASSERT_FALSE(r.first_failure.has_value()) << r.first_failure->message << "\nreproducer trace:\n"
+                                            << r.first_failure->trace;
   EXPECT_TRUE(r.complete);
   EXPECT_TRUE(r.ok()) << summary(r);
   EXPECT_EQ(r.states, e.states) << summary(r);
@@ -82,10 +82,10 @@ TEST_P(ExhaustiveSmall, EveryReachableStateIsValidAndCountsMatchTheModel) { expe
 // model methods), plus transposes and a 4 x 1 strip (2^4 states, 4 * 2^3 refines).
 INSTANTIATE_TEST_SUITE_P(Lattices, ExhaustiveSmall,
                          testing::Values(Expected{1, 1, 0, 1, 0}, Expected{1, 1, 1, 2, 1}, Expected{2, 1, 1, 4, 4},
-                                         Expected{3, 1, 1, 8, 12}, Expected{4, 1, 1, 16, 32},
-                                         Expected{2, 2, 1, 16, 32}, Expected{3, 2, 1, 64, 192},
-                                         Expected{3, 3, 1, 512, 2304}, Expected{1, 1, 2, 17, 33},
-                                         Expected{2, 1, 2, 265, 1042}, Expected{1, 2, 2, 265, 1042}),
+                                         Expected{3, 1, 1, 8, 12}, Expected{4, 1, 1, 16, 32}, Expected{2, 2, 1, 16, 32},
+                                         Expected{3, 2, 1, 64, 192}, Expected{3, 3, 1, 512, 2304},
+                                         Expected{1, 1, 2, 17, 33}, Expected{2, 1, 2, 265, 1042},
+                                         Expected{1, 2, 2, 265, 1042}),
                          name_of);
 
 class ExhaustiveLarge : public testing::TestWithParam<Expected> {};

@@ -50,7 +50,8 @@ TEST(FastLattice, InitialLatticeEqualsTheReference) {
   for (const LatticeSize size : {LatticeSize{1, 1, 0}, LatticeSize{1, 1, 1}, LatticeSize{3, 1, 1}, LatticeSize{2, 5, 3},
                                  LatticeSize{6, 6, 5}, LatticeSize{1, 1, 61}, LatticeSize{7, 3, 0}}) {
     expect_same_state(bccmis::make_lattice(size), Lattice(size),
-                      "lattice " + std::to_string(size.W) + " " + std::to_string(size.H) + " " + std::to_string(size.L));
+                      "lattice " + std::to_string(size.W) + " " + std::to_string(size.H) + " " +
+                          std::to_string(size.L));
   }
 }
 
@@ -327,13 +328,13 @@ TEST(FastLattice, RecordsAreCompact) {
 
 // ---- The implementation names and the vocabulary ---------------------------------------------------------------
 
-
 TEST(Vocabulary, BothImplementationsAnswerAlike) {
   const LatticeSize size{3, 2, 3};
   Graph ref(size);
   Lattice fst(size);
   EXPECT_EQ(size_of(fst), size);
-  for (const Point c : {Point{8, 8}, Point{24, 8}, Point{28, 4}, Point{30, 6}, Point{12, 12}, Point{8, 24}, Point{6, 6}}) {
+  for (const Point c :
+       {Point{8, 8}, Point{24, 8}, Point{28, 4}, Point{30, 6}, Point{12, 12}, Point{8, 24}, Point{6, 6}}) {
     const bccmis::RefineResult a = refine(ref, c);
     const bccmis::RefineResult b = to_sets(refine(fst, c));
     EXPECT_EQ(a.refused, b.refused);

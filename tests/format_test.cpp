@@ -72,7 +72,8 @@ TEST_P(StateErrors, NamesLineColumnAndProblem) {
     EXPECT_EQ(e.line, b.line) << e.what();
     EXPECT_EQ(e.column, b.column) << e.what();
     EXPECT_NE(e.message.find(b.message_part), std::string::npos) << e.what();
-    EXPECT_EQ(std::string(e.what()).rfind("s.txt:" + std::to_string(b.line) + ":" + std::to_string(b.column) + ": ", 0), 0u);
+    EXPECT_EQ(std::string(e.what()).rfind("s.txt:" + std::to_string(b.line) + ":" + std::to_string(b.column) + ": ", 0),
+              0u);
   }
 }
 
@@ -112,7 +113,8 @@ INSTANTIATE_TEST_SUITE_P(
 // ---- Traces ------------------------------------------------------------------
 
 TEST(Trace, ParsesCommandsCommentsAndBlankLines) {
-  const Trace t = parse_trace("# a comment\n\nlattice 2 1 1   # trailing comment\n\trefine 2 2\ncoarsen 2 2\ncheck\r\n");
+  const Trace t =
+      parse_trace("# a comment\n\nlattice 2 1 1   # trailing comment\n\trefine 2 2\ncoarsen 2 2\ncheck\r\n");
   EXPECT_EQ(t.size, (LatticeSize{2, 1, 1}));
   EXPECT_EQ(t.lattice_line, 3);
   ASSERT_EQ(t.commands.size(), 3u);
@@ -157,21 +159,20 @@ TEST_P(TraceErrors, NamesLineColumnAndProblem) {
 
 INSTANTIATE_TEST_SUITE_P(
     Format, TraceErrors,
-    testing::Values(
-        BadTrace{"unknown", "lattice 1 1 1\nsplit 2 2\n", 2, 1, "unknown command 'split'"},
-        BadTrace{"no lattice", "# nothing\nrefine 2 2\n", 2, 1, "before the 'lattice W H L' command"},
-        BadTrace{"empty", "", 1, 1, "no 'lattice W H L' command"},
-        BadTrace{"two lattices", "lattice 1 1 1\nlattice 1 1 1\n", 2, 1, "second 'lattice'"},
-        BadTrace{"few args", "lattice 1 1 1\nrefine 2\n", 2, 9, "too few arguments"},
-        BadTrace{"many args", "lattice 1 1 1\n  refine 2 2 2\n", 2, 14, "too many arguments"},
-        BadTrace{"not int", "lattice 1 1 1\nrefine 2 two\n", 2, 10, "expected y coordinate"},
-        BadTrace{"overflow", "lattice 1 1 1\ncoarsen 9223372036854775808 0\n", 2, 9, "out of range"},
-        BadTrace{"zero width", "lattice 0 1 1\n", 1, 9, "W must be >= 1"},
-        BadTrace{"negative L", "lattice 1 1 -1\n", 1, 13, "L must be >= 0"},
-        BadTrace{"huge L", "lattice 1 1 62\n", 1, 13, "above 61"},
-        BadTrace{"domain too big", "lattice 3 1 60\n", 1, 1, "exceed 2^62"},
-        BadTrace{"too many cells", "lattice 3000 3000 0\n", 1, 1, "exceeds the limit"},
-        BadTrace{"binary", "lattice 1 1 1\nrefine \x01 2\n", 2, 8, "unexpected byte '\\x01'"}),
+    testing::Values(BadTrace{"unknown", "lattice 1 1 1\nsplit 2 2\n", 2, 1, "unknown command 'split'"},
+                    BadTrace{"no lattice", "# nothing\nrefine 2 2\n", 2, 1, "before the 'lattice W H L' command"},
+                    BadTrace{"empty", "", 1, 1, "no 'lattice W H L' command"},
+                    BadTrace{"two lattices", "lattice 1 1 1\nlattice 1 1 1\n", 2, 1, "second 'lattice'"},
+                    BadTrace{"few args", "lattice 1 1 1\nrefine 2\n", 2, 9, "too few arguments"},
+                    BadTrace{"many args", "lattice 1 1 1\n  refine 2 2 2\n", 2, 14, "too many arguments"},
+                    BadTrace{"not int", "lattice 1 1 1\nrefine 2 two\n", 2, 10, "expected y coordinate"},
+                    BadTrace{"overflow", "lattice 1 1 1\ncoarsen 9223372036854775808 0\n", 2, 9, "out of range"},
+                    BadTrace{"zero width", "lattice 0 1 1\n", 1, 9, "W must be >= 1"},
+                    BadTrace{"negative L", "lattice 1 1 -1\n", 1, 13, "L must be >= 0"},
+                    BadTrace{"huge L", "lattice 1 1 62\n", 1, 13, "above 61"},
+                    BadTrace{"domain too big", "lattice 3 1 60\n", 1, 1, "exceed 2^62"},
+                    BadTrace{"too many cells", "lattice 3000 3000 0\n", 1, 1, "exceeds the limit"},
+                    BadTrace{"binary", "lattice 1 1 1\nrefine \x01 2\n", 2, 8, "unexpected byte '\\x01'"}),
     [](const testing::TestParamInfo<BadTrace>& p) {
       std::string n = p.param.name;
       for (char& ch : n)

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "bccmis/invariants/checked.h"
 #include "bccmis/format.h"
+#include "bccmis/invariants/checked.h"
 #include "bccmis/invariants/invariants.h"
 
 namespace bccmis {
@@ -87,7 +87,8 @@ void expect_violation(const Graph& g, const std::string& code, int layer, const 
   EXPECT_EQ(v->layer, layer) << to_string(*v);
   EXPECT_EQ(v->where, where) << to_string(*v);
   EXPECT_EQ(v->message.rfind(code + ": ", 0), 0U) << v->message;
-  for (const Point& p : where) EXPECT_NE(v->message.find(pos(p)), std::string::npos) << v->message << " misses " << pos(p);
+  for (const Point& p : where)
+    EXPECT_NE(v->message.find(pos(p)), std::string::npos) << v->message << " misses " << pos(p);
   EXPECT_FALSE(v->section.empty());
   EXPECT_EQ(v->section.rfind("§", 0), 0U) << v->section;
   EXPECT_EQ(v->message.find('\n'), std::string::npos);
@@ -363,9 +364,9 @@ TEST(Layer3, TwoLevelJumpIsCaughtByLayer2) {
         link(jump, yi, p);
       }
   }
-  link(jump, {4, 4}, {8, 2});   // (6b): the coarse cell gets the new junction
-  link(jump, {14, 2}, {12, 2}); // (6b) on the right side
-  link(jump, {10, 6}, {10, 4}); // (6b) on the top side
+  link(jump, {4, 4}, {8, 2});    // (6b): the coarse cell gets the new junction
+  link(jump, {14, 2}, {12, 2});  // (6b) on the right side
+  link(jump, {10, 6}, {10, 4});  // (6b) on the top side
   const auto v = find_violation(jump);
   ASSERT_TRUE(v.has_value());
   EXPECT_EQ(v->code, "center-neighbor") << to_string(*v);
@@ -462,11 +463,10 @@ TEST(Layer4, CoverageMissingLevel0Cell) {
 // ---- Valid states ----------------------------------------------------------
 
 TEST(Valid, InitialLattices) {
-  for (const LatticeSize size : {LatticeSize{1, 1, 0}, LatticeSize{1, 1, 3}, LatticeSize{2, 1, 2},
-                                 LatticeSize{3, 5, 1}, LatticeSize{6, 6, 4}, LatticeSize{1, 1, 61},
-                                 LatticeSize{2, 2, 60}})
-    EXPECT_TRUE(is_valid(make_lattice(size))) << size.W << " " << size.H << " " << size.L << ": "
-                                               << to_string(*find_violation(make_lattice(size)));
+  for (const LatticeSize size : {LatticeSize{1, 1, 0}, LatticeSize{1, 1, 3}, LatticeSize{2, 1, 2}, LatticeSize{3, 5, 1},
+                                 LatticeSize{6, 6, 4}, LatticeSize{1, 1, 61}, LatticeSize{2, 2, 60}})
+    EXPECT_TRUE(is_valid(make_lattice(size)))
+        << size.W << " " << size.H << " " << size.L << ": " << to_string(*find_violation(make_lattice(size)));
 }
 
 TEST(Valid, UniformRefinement) {
@@ -511,8 +511,8 @@ TEST(Valid, DepthZeroChecksNothing) {
 TEST(Checked, RefusedOperationsReturnTheRefusal) {
   Graph g = make_lattice({1, 1, 1});
   const Graph before = g;
-  EXPECT_FALSE(checked_refine(g, {0, 0}).applied());  // a node: no-such-cell
-  EXPECT_FALSE(checked_coarsen(g, {2, 2}).applied()); // a center: no-such-node
+  EXPECT_FALSE(checked_refine(g, {0, 0}).applied());   // a node: no-such-cell
+  EXPECT_FALSE(checked_coarsen(g, {2, 2}).applied());  // a center: no-such-node
   EXPECT_EQ(g, before);
   ASSERT_TRUE(checked_refine(g, {2, 2}).applied());
   EXPECT_FALSE(checked_refine(g, {1, 1}).applied());  // level L: max-level

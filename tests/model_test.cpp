@@ -39,9 +39,7 @@ Point point_of(const model::Pos& p) { return Point{p.x, p.y}; }
 // Runs op at `at` on the graph and compares everything with the model.
 void run_and_compare(OpKind op, const Point& at, const model::State& before, Sut& sut) {
   sut.trace.commands.push_back(TraceCommand{trace_kind(op), at, 0});
-  auto fail = [&](const std::string& msg) {
-    RC_FAIL(msg + "\nreproducer trace:\n" + format_trace(sut.trace));
-  };
+  auto fail = [&](const std::string& msg) { RC_FAIL(msg + "\nreproducer trace:\n" + format_trace(sut.trace)); };
   const std::string expected = model_decision(before, op, at);
   std::string have;
   try {
@@ -79,8 +77,8 @@ std::vector<model::Pos> corners_of_leaves(const model::State& m) {
   std::set<model::Pos> corners;
   for (const model::Leaf& c : m.leaves) {
     const model::Rect r = model::rect_of(m.lat, c);
-    for (const model::Pos p : {model::Pos{r.x0, r.y0}, model::Pos{r.x1, r.y0}, model::Pos{r.x0, r.y1},
-                               model::Pos{r.x1, r.y1}})
+    for (const model::Pos p :
+         {model::Pos{r.x0, r.y0}, model::Pos{r.x1, r.y0}, model::Pos{r.x0, r.y1}, model::Pos{r.x1, r.y1}})
       corners.insert(p);
   }
   return {corners.begin(), corners.end()};
@@ -95,8 +93,7 @@ Point any_position(const model::State& m) {
 
 struct Refine : Cmd {
   Point at;
-  explicit Refine(const model::State& m)
-      : at(point_of(model::center_of(m.lat, *rc::gen::elementOf(m.leaves)))) {}
+  explicit Refine(const model::State& m) : at(point_of(model::center_of(m.lat, *rc::gen::elementOf(m.leaves)))) {}
   void apply(model::State& m) const override { apply_to_model(OpKind::Refine, at, m); }
   void run(const model::State& m, Sut& sut) const override { run_and_compare(OpKind::Refine, at, m, sut); }
   void show(std::ostream& os) const override { os << "Refine" << point_text(at); }
@@ -118,8 +115,10 @@ struct RefineIllegal : Cmd {
   Point at;
   explicit RefineIllegal(const model::State& m) {
     switch (*rc::gen::inRange(0, 3)) {
-      case 0: at = point_of(*rc::gen::elementOf(corners_of_leaves(m))); break;          // a node
-      case 1: at = point_of(model::center_of(m.lat, *rc::gen::elementOf(m.leaves))); break;  // a leaf (max level, coarser neighbor)
+      case 0: at = point_of(*rc::gen::elementOf(corners_of_leaves(m))); break;  // a node
+      case 1:
+        at = point_of(model::center_of(m.lat, *rc::gen::elementOf(m.leaves)));
+        break;  // a leaf (max level, coarser neighbor)
       default: at = any_position(m); break;
     }
     RC_PRE(model_decision(m, OpKind::Refine, at) != "ok");
@@ -134,7 +133,7 @@ struct CoarsenIllegal : Cmd {
   explicit CoarsenIllegal(const model::State& m) {
     const std::vector<model::Leaf> parents = parents_of_leaves(m);
     switch (*rc::gen::inRange(0, 4)) {
-      case 0: at = point_of(*rc::gen::elementOf(corners_of_leaves(m))); break;  // grid node, junction, ...
+      case 0: at = point_of(*rc::gen::elementOf(corners_of_leaves(m))); break;               // grid node, junction, ...
       case 1: at = point_of(model::center_of(m.lat, *rc::gen::elementOf(m.leaves))); break;  // a center
       case 2:  // a refined cell whose children are refined or have finer neighbors
         RC_PRE(!parents.empty());
@@ -157,9 +156,9 @@ RC_GTEST_PROP(ModelBased, GraphAgreesWithTheLeafModelOnEveryCommand, ()) {
   const model::State initial = model_initial(size);
   Sut sut(size);
   RC_ASSERT(!projection_mismatch(sut.g, initial).has_value());
-  rc::state::check(initial, sut,
-                   rc::state::gen::execOneOfWithArgs<Refine, Refine, Refine, Coarsen, Coarsen, RefineIllegal,
-                                                     CoarsenIllegal>());
+  rc::state::check(
+      initial, sut,
+      rc::state::gen::execOneOfWithArgs<Refine, Refine, Refine, Coarsen, Coarsen, RefineIllegal, CoarsenIllegal>());
 }
 
 // The projection check itself can fail: a graph one refine ahead of the model,

@@ -38,9 +38,7 @@ RC_GTEST_PROP(Property, RefusedOperationLeavesTheStateUnchangedWithTheExpectedCo
   prop_refusal_leaves_state_unchanged(Ops{}, *genScenario());
 }
 
-RC_GTEST_PROP(Property, VertexCountsChangeExactlyAsTheEquationsImply, ()) {
-  prop_vertex_counts(Ops{}, *genScenario());
-}
+RC_GTEST_PROP(Property, VertexCountsChangeExactlyAsTheEquationsImply, ()) { prop_vertex_counts(Ops{}, *genScenario()); }
 
 RC_GTEST_PROP(Property, CoarseningEverythingReturnsTheInitialLattice, ()) {
   prop_coarsen_everything(Ops{}, *genScenario());
@@ -48,9 +46,7 @@ RC_GTEST_PROP(Property, CoarseningEverythingReturnsTheInitialLattice, ()) {
 
 //= erleben2009#pre-refine-level type=test
 //= erleben2009#pre-coarsen-balance type=test
-RC_GTEST_PROP(Property, DecisionsEqualTheGeometricRule, ()) {
-  prop_decisions_match_geometry(Ops{}, *genScenario());
-}
+RC_GTEST_PROP(Property, DecisionsEqualTheGeometricRule, ()) { prop_decisions_match_geometry(Ops{}, *genScenario()); }
 
 // The generators reach what they are meant to: deep states, both operations
 // accepted, and refusals of every kind. A generator that drifted into trivial
@@ -69,9 +65,9 @@ TEST(PropertyGenerators, ReachDeepStatesAndEveryDecision) {
   });
   EXPECT_TRUE(ok);
   EXPECT_EQ(max_level, 3);
-  for (const char* want : {"refine ok", "refine no-such-cell", "refine max-level", "refine coarser-neighbor",
-                           "coarsen ok", "coarsen no-such-node", "coarsen not-a-refined-center",
-                           "coarsen children-refined", "coarsen finer-neighbor"})
+  for (const char* want :
+       {"refine ok", "refine no-such-cell", "refine max-level", "refine coarser-neighbor", "coarsen ok",
+        "coarsen no-such-node", "coarsen not-a-refined-center", "coarsen children-refined", "coarsen finer-neighbor"})
     EXPECT_EQ(codes.count(want), 1u) << want;
 }
 

@@ -145,9 +145,9 @@ void expect_refused(const std::string& setup, const Point& at, RefineRefusal exp
 
 TEST(RefineRefusal, NoSuchCell_ForANodeAGapAndAPointOutside) {
   //= erleben2009#pre-refine-cell type=test
-  expect_refused("lattice 2 2 1\n", {0, 0}, RefineRefusal::NoSuchCell);       // a node
-  expect_refused("lattice 2 2 1\n", {1, 1}, RefineRefusal::NoSuchCell);       // nothing there
-  expect_refused("lattice 2 2 1\n", {-2, 2}, RefineRefusal::NoSuchCell);      // outside
+  expect_refused("lattice 2 2 1\n", {0, 0}, RefineRefusal::NoSuchCell);              // a node
+  expect_refused("lattice 2 2 1\n", {1, 1}, RefineRefusal::NoSuchCell);              // nothing there
+  expect_refused("lattice 2 2 1\n", {-2, 2}, RefineRefusal::NoSuchCell);             // outside
   expect_refused("lattice 1 1 1\nrefine 2 2\n", {2, 2}, RefineRefusal::NoSuchCell);  // now a node
 }
 

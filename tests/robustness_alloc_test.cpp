@@ -22,10 +22,10 @@
 #include <string>
 #include <vector>
 
-#include "bccmis/invariants/checked.h"
 #include "bccmis/format.h"
 #include "bccmis/geometry.h"
 #include "bccmis/graph.h"
+#include "bccmis/invariants/checked.h"
 #include "bccmis/ops.h"
 
 namespace {
@@ -77,8 +77,8 @@ std::string describe(const Trace& walk, const Op& op, long k) {
   c.at = op.at;
   Trace t = walk;
   t.commands.push_back(c);
-  return "allocation #" + std::to_string(k) + " failed during " + (op.checked ? "checked " : "") +
-         command_text(c) + "; reproducer (the last command is the operation):\n" + format_trace(t);
+  return "allocation #" + std::to_string(k) + " failed during " + (op.checked ? "checked " : "") + command_text(c) +
+         "; reproducer (the last command is the operation):\n" + format_trace(t);
 }
 
 // Applies op to g; throws whatever the operation throws.

@@ -42,13 +42,17 @@ TEST(RoundTrip, RefineThenCoarsenOnInteriorBoundaryAndCornerCells) {
     expect_every_refine_undone(make_lattice(s));
   }
   // Mixed levels: a 3x3 lattice with junctions on several sides.
-  expect_every_refine_undone(test::build("lattice 3 3 2\nrefine 12 12\nrefine 4 12\nrefine 12 4\nrefine 10 10\nrefine 20 4\n"));
+  expect_every_refine_undone(
+      test::build("lattice 3 3 2\nrefine 12 12\nrefine 4 12\nrefine 12 4\nrefine 10 10\nrefine 20 4\n"));
 }
 
 TEST(RoundTrip, CoarsenThenRefineOnMixedLevels) {
   //= erleben2009#claim-inverse type=test
-  expect_every_coarsen_undone(test::build("lattice 3 3 2\nrefine 12 12\nrefine 4 12\nrefine 12 4\nrefine 10 10\nrefine 20 4\n"));
-  expect_every_coarsen_undone(test::build("lattice 2 2 3\nrefine 8 8\nrefine 24 8\nrefine 8 24\nrefine 24 24\nrefine 12 12\nrefine 20 12\nrefine 12 20\nrefine 14 14\n"));
+  expect_every_coarsen_undone(
+      test::build("lattice 3 3 2\nrefine 12 12\nrefine 4 12\nrefine 12 4\nrefine 10 10\nrefine 20 4\n"));
+  expect_every_coarsen_undone(
+      test::build("lattice 2 2 3\nrefine 8 8\nrefine 24 8\nrefine 8 24\nrefine 24 24\nrefine 12 12\nrefine 20 "
+                  "12\nrefine 12 20\nrefine 14 14\n"));
 }
 
 TEST(RoundTrip, RefineEverythingToLevel2AndCoarsenEverythingBack) {

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "bccmis/format.h"
+#include "bccmis/invariants/cgal/triangulation_check.h"
 #include "bccmis/invariants/invariants.h"
 #include "bccmis/ops.h"
-#include "bccmis/invariants/cgal/triangulation_check.h"
 
 namespace bccmis {
 namespace {

@@ -15,8 +15,8 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <string>
 #include <exception>
+#include <string>
 #include <vector>
 
 #include "bccmis/apps/balance.h"

@@ -8,16 +8,15 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
-#include <cstdio>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <optional>
 
 namespace bccmis {
 
 ParseError::ParseError(std::string file_, int line_, int column_, std::string message_)
-    : std::runtime_error(file_ + ":" + std::to_string(line_) + ":" + std::to_string(column_) +
-                         ": " + message_),
+    : std::runtime_error(file_ + ":" + std::to_string(line_) + ":" + std::to_string(column_) + ": " + message_),
       file(std::move(file_)),
       line(line_),
       column(column_),
@@ -97,10 +96,8 @@ class LineParser {
   std::int64_t integer(const Token& t, bool strict, std::string_view what) const {
     bool out_of_range = false;
     const auto v = to_int(t.text, strict, out_of_range);
-    if (out_of_range)
-      fail(t.column, std::string(what) + " " + shown(t.text) + " is out of range (64-bit signed)");
-    if (!v)
-      fail(t.column, "expected " + std::string(what) + " (a decimal integer), got " + shown(t.text));
+    if (out_of_range) fail(t.column, std::string(what) + " " + shown(t.text) + " is out of range (64-bit signed)");
+    if (!v) fail(t.column, "expected " + std::string(what) + " (a decimal integer), got " + shown(t.text));
     return *v;
   }
 
@@ -160,8 +157,8 @@ TraceTokens trace_tokens(std::string_view line, const LineParser& lp) {
     while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '#') {
       const auto u = static_cast<unsigned char>(line[i]);
       if (u < 0x20 || u >= 0x7f)
-        lp.fail(static_cast<int>(i) + 1, "unexpected byte " + shown(line.substr(i, 1)) +
-                                             " (traces are plain ASCII text)");
+        lp.fail(static_cast<int>(i) + 1,
+                "unexpected byte " + shown(line.substr(i, 1)) + " (traces are plain ASCII text)");
       ++i;
     }
     tokens.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
@@ -283,15 +280,17 @@ Graph parse_state(std::string_view text, std::string_view file) {
     const auto t = state_tokens(lines[0], lp);
     if (t[0].text != "bccmis-state") lp.fail(1, "expected 'bccmis-state 1', got " + shown(lines[0]));
     if (t.size() != 2) lp.fail(1, "expected 'bccmis-state 1', got " + shown(lines[0]));
-    if (t[1].text != "1") lp.fail(t[1].column, "unsupported state format version " + shown(t[1].text) + " (this reader knows version 1)");
+    if (t[1].text != "1")
+      lp.fail(t[1].column, "unsupported state format version " + shown(t[1].text) + " (this reader knows version 1)");
   }
   // Line 2: lattice.
-  if (nlines < 3) at(nlines - 1).fail(static_cast<int>(lines[nlines - 1].size()) + 1, "unexpected end of file, expected 'lattice W H L'");
+  if (nlines < 3)
+    at(nlines - 1)
+        .fail(static_cast<int>(lines[nlines - 1].size()) + 1, "unexpected end of file, expected 'lattice W H L'");
   {
     const LineParser lp = at(1);
     const auto t = state_tokens(lines[1], lp);
-    if (t[0].text != "lattice" || t.size() != 4)
-      lp.fail(1, "expected 'lattice W H L', got " + shown(lines[1]));
+    if (t[0].text != "lattice" || t.size() != 4) lp.fail(1, "expected 'lattice W H L', got " + shown(lines[1]));
     g.size = lp.lattice(t[1], t[2], t[3], 1, true);
   }
 
@@ -315,14 +314,13 @@ Graph parse_state(std::string_view text, std::string_view file) {
         lp.fail(t[1].column, "center count " + std::to_string(nc) + " does not match the " +
                                  std::to_string(g.C.size()) + " C lines");
       if (nn != static_cast<std::int64_t>(g.N.size()))
-        lp.fail(t[2].column, "node count " + std::to_string(nn) + " does not match the " +
-                                 std::to_string(g.N.size()) + " N lines");
+        lp.fail(t[2].column,
+                "node count " + std::to_string(nn) + " does not match the " + std::to_string(g.N.size()) + " N lines");
       if (i + 1 != nlines - 1) at(i + 1).fail(1, "text after the 'end' line");
       if (!lines[i + 1].empty()) at(i + 1).fail(1, "text after the 'end' line");
       return g;
     }
-    if (kind != "C" && kind != "N")
-      lp.fail(1, "expected a 'C', 'N' or 'end' line, got " + shown(t[0].text));
+    if (kind != "C" && kind != "N") lp.fail(1, "expected a 'C', 'N' or 'end' line, got " + shown(t[0].text));
     const bool center = kind == "C";
     if (center && in_nodes) lp.fail(1, "C line after an N line (all C lines come first)");
     if (!center && !in_nodes) {
@@ -349,15 +347,14 @@ Graph parse_state(std::string_view text, std::string_view file) {
     } else {
       g.N.insert(v);
     }
-    if ((t.size() - colon - 1) % 2 != 0)
-      lp.fail(t.back().column, "neighbor list has an odd number of coordinates");
+    if ((t.size() - colon - 1) % 2 != 0) lp.fail(t.back().column, "neighbor list has an odd number of coordinates");
     PointSet& nbrs = g.neighbors[v];
     std::optional<Point> prev_nbr;
     for (std::size_t k = colon + 1; k < t.size(); k += 2) {
       const Point w{lp.integer(t[k], true, "x coordinate"), lp.integer(t[k + 1], true, "y coordinate")};
       if (prev_nbr && !(*prev_nbr < w))
-        lp.fail(t[k].column, "neighbors must be sorted by (x, y) without repeats; " + shown(w) +
-                                 " follows " + shown(*prev_nbr));
+        lp.fail(t[k].column,
+                "neighbors must be sorted by (x, y) without repeats; " + shown(w) + " follows " + shown(*prev_nbr));
       prev_nbr = w;
       nbrs.insert(w);
     }
@@ -391,12 +388,15 @@ Trace parse_trace(std::string_view text, std::string_view file, const TraceLimit
                 std::string(t.size() > n + 1 ? "too many arguments" : "too few arguments") + "; usage: " + usage);
     };
     if (cmd == "lattice") {
-      if (have_lattice) lp.fail(t[0].column, "second 'lattice' command (the first is on line " + std::to_string(trace.lattice_line) + ")");
+      if (have_lattice)
+        lp.fail(t[0].column,
+                "second 'lattice' command (the first is on line " + std::to_string(trace.lattice_line) + ")");
       arity(3, "lattice W H L");
       trace.size = lp.lattice(t[1], t[2], t[3], t[0].column, false);
       if (const std::int64_t v = initial_vertex_count(trace.size); v > limits.max_vertices)
         lp.fail(t[0].column, "lattice of " + std::to_string(trace.size.W) + " x " + std::to_string(trace.size.H) +
-                                 " cells exceeds the limit of " + std::to_string(limits.max_vertices) + " vertices (it has " +
+                                 " cells exceeds the limit of " + std::to_string(limits.max_vertices) +
+                                 " vertices (it has " +
                                  (v == INT64_MAX ? std::string("more than 2^63") : std::to_string(v)) + ")");
       trace.lattice_line = line_no;
       have_lattice = true;
@@ -478,6 +478,5 @@ std::string decision_line(const TraceCommand& cmd, std::string_view refusal_code
   append_decision_line(out, cmd, refusal_code);
   return out;
 }
-
 
 }  // namespace bccmis

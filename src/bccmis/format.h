@@ -39,8 +39,8 @@ Graph parse_state(std::string_view text, std::string_view file = "<state>");
 struct TraceCommand {
   enum class Kind { Refine, Coarsen, Check };
   Kind kind = Kind::Check;
-  Point at;       ///< the cell center (refine) or node (coarsen)
-  int line = 0;   ///< 1-based line in the trace file
+  Point at;      ///< the cell center (refine) or node (coarsen)
+  int line = 0;  ///< 1-based line in the trace file
 };
 
 struct Trace {
@@ -61,8 +61,7 @@ struct TraceLimits {
 std::int64_t initial_vertex_count(const LatticeSize& size);
 
 /// Parses a trace; throws ParseError on the first malformed line.
-Trace parse_trace(std::string_view text, std::string_view file = "<trace>",
-                  const TraceLimits& limits = {});
+Trace parse_trace(std::string_view text, std::string_view file = "<trace>", const TraceLimits& limits = {});
 
 /// Prints a trace in the format parse_trace reads (used to print reproducers).
 std::string format_trace(const Trace& trace);

@@ -28,15 +28,11 @@ namespace bccmis {
 
 /// The midpoint of a and b. Callers only pass points whose coordinate
 /// differences are even; written to avoid overflow near 2^62.
-inline Point midpoint(const Point& a, const Point& b) {
-  return {a.x + (b.x - a.x) / 2, a.y + (b.y - a.y) / 2};
-}
+inline Point midpoint(const Point& a, const Point& b) { return {a.x + (b.x - a.x) / 2, a.y + (b.y - a.y) / 2}; }
 
 /// Two corners of one cell are the ends of a side (not a diagonal) iff they
 /// share a coordinate.
-inline bool are_side_adjacent(const Point& a, const Point& b) {
-  return a != b && (a.x == b.x || a.y == b.y);
-}
+inline bool are_side_adjacent(const Point& a, const Point& b) { return a != b && (a.x == b.x || a.y == b.y); }
 
 /// The level of the refined cell whose center would be at `p`, judged from the
 /// position alone: a center of a level-l cell with l < L has both coordinates
@@ -89,8 +85,7 @@ std::vector<Point> in_angular_order(const Point& c, const R& boundary) {
 /// The boundary nodes of cell c in counter-clockwise order around c, starting
 /// from the lower-left corner: the hull of eq. (1) is the polygon through them.
 template <AdaptiveLattice L>
-  requires std::same_as<point_type_t<L>, Point>
-std::vector<Point> boundary_in_angular_order(const L& g, const Point& c) {
+requires std::same_as<point_type_t<L>, Point> std::vector<Point> boundary_in_angular_order(const L& g, const Point& c) {
   return in_angular_order(c, neighbors(g, c));
 }
 

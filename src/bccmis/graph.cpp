@@ -26,18 +26,16 @@ void validate_lattice_size(const LatticeSize& size) {
   const std::int64_t S = level0_side(size);
   const std::int64_t max_cells = kMaxDomainSide / S;  // W*S <= 2^62  <=>  W <= 2^62 / S
   if (size.W > max_cells)
-    throw LatticeError("lattice width W = " + std::to_string(size.W) + " with L = " +
-                       std::to_string(size.L) + " makes the domain side W*2^(L+1) exceed 2^62");
+    throw LatticeError("lattice width W = " + std::to_string(size.W) + " with L = " + std::to_string(size.L) +
+                       " makes the domain side W*2^(L+1) exceed 2^62");
   if (size.H > max_cells)
-    throw LatticeError("lattice height H = " + std::to_string(size.H) + " with L = " +
-                       std::to_string(size.L) + " makes the domain side H*2^(L+1) exceed 2^62");
+    throw LatticeError("lattice height H = " + std::to_string(size.H) + " with L = " + std::to_string(size.L) +
+                       " makes the domain side H*2^(L+1) exceed 2^62");
 }
 
 std::int64_t level0_side(const LatticeSize& size) { return std::int64_t{1} << (size.L + 1); }
 
-std::int64_t cell_side(const LatticeSize& size, int level) {
-  return std::int64_t{1} << (size.L + 1 - level);
-}
+std::int64_t cell_side(const LatticeSize& size, int level) { return std::int64_t{1} << (size.L + 1 - level); }
 
 const PointSet& Graph::nbr(const Point& v) const {
   static const PointSet kEmpty;
@@ -57,8 +55,8 @@ Graph make_lattice(const LatticeSize& size) {
       const Point c{i * S + S / 2, j * S + S / 2};
       g.C.insert(c);
       g.level[c] = 0;
-      for (const Point p : {Point{i * S, j * S}, Point{(i + 1) * S, j * S},
-                             Point{i * S, (j + 1) * S}, Point{(i + 1) * S, (j + 1) * S}}) {
+      for (const Point p : {Point{i * S, j * S}, Point{(i + 1) * S, j * S}, Point{i * S, (j + 1) * S},
+                            Point{(i + 1) * S, (j + 1) * S}}) {
         g.neighbors[c].insert(p);
         g.neighbors[p].insert(c);
       }

@@ -80,7 +80,7 @@ struct Graph {
   LatticeSize size;
   PointSet N;                           ///< node vertices
   PointSet C;                           ///< cell-center vertices
-  std::map<Point, PointSet> neighbors; ///< 𝒩(v) for every v in N ∪ C
+  std::map<Point, PointSet> neighbors;  ///< 𝒩(v) for every v in N ∪ C
   std::map<Point, int> level;           ///< refinement level of every c in C
 
   /// 𝒩(v); the empty set for a vertex not in the graph.

@@ -21,12 +21,12 @@ enum class RefineRefusal {
 
 /// Why coarsen(n) was refused, in the order the preconditions are tested.
 enum class CoarsenRefusal {
-  NoSuchNode,          ///< n is not a node                                   (`no-such-node`)
-  NotARefinedCenter,   ///< n is a grid node or a side midpoint, not the center
-                       ///< of a refined cell                                 (`not-a-refined-center`)
-  ChildrenRefined,     ///< a cell around n is finer than n's children        (`children-refined`)
-  FinerNeighbor,       ///< a child has a junction: an edge-neighbor two
-                       ///< levels finer than the coarse cell would be        (`finer-neighbor`)
+  NoSuchNode,         ///< n is not a node                                   (`no-such-node`)
+  NotARefinedCenter,  ///< n is a grid node or a side midpoint, not the center
+                      ///< of a refined cell                                 (`not-a-refined-center`)
+  ChildrenRefined,    ///< a cell around n is finer than n's children        (`children-refined`)
+  FinerNeighbor,      ///< a child has a junction: an edge-neighbor two
+                      ///< levels finer than the coarse cell would be        (`finer-neighbor`)
 };
 
 /// The refusal codes of the trace and decision-log formats (spec/formats.md).

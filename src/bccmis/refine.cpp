@@ -69,8 +69,7 @@ Neighborhood neighborhood(const Graph& g, const Point& c) {
   //= reason=E4: the formula (edge neighbors) is implemented, not the sentence (all neighbors)
   //# X = ( union over b_i, b_j in B, i != j, of N(b_i) ∩ N(b_j) ) \ {c}
   for (auto bi = s.B.begin(); bi != s.B.end(); ++bi)
-    for (auto bj = std::next(bi); bj != s.B.end(); ++bj)
-      s.X = unite(s.X, intersect(g.nbr(*bi), g.nbr(*bj)));
+    for (auto bj = std::next(bi); bj != s.B.end(); ++bj) s.X = unite(s.X, intersect(g.nbr(*bi), g.nbr(*bj)));
   s.X = minus(s.X, PointSet{c});
   return s;
 }
@@ -110,8 +109,9 @@ RefineResult refine(Graph& g, const Point& c) {
   //# ||P|| = 4 and ||Y|| = 4
   // (Y is made below with one child per p_i, so ||P|| = 4 gives ||Y|| = 4.)
   if (P.size() != 4)
-    throw std::logic_error("refine: ||P|| != 4 although no edge-neighbor is coarser; "
-                           "the graph is not a valid lattice (run the checker)");
+    throw std::logic_error(
+        "refine: ||P|| != 4 although no edge-neighbor is coarser; "
+        "the graph is not a valid lattice (run the checker)");
 
   const std::vector<Point> p(P.begin(), P.end());  // p[0..3] = p_1..p_4
 
@@ -135,13 +135,14 @@ RefineResult refine(Graph& g, const Point& c) {
     }
 
   if (sides.size() != 4 - J.size())
-    throw std::logic_error("refine: an old junction is not a side midpoint of c; "
-                           "the graph is not a valid lattice (run the checker)");
+    throw std::logic_error(
+        "refine: an old junction is not a side midpoint of c; "
+        "the graph is not a valid lattice (run the checker)");
 
   // 2. Subdivide c (Fig. 2b): eq. (4a)-(4h). The paper pairs each p_i with one
   //    y_i without saying how; y_i is the child cell that has p_i as a corner,
   //    centred halfway between c and p_i (erratum E5, position use P1).
-  std::array<Point, 4> y;                          // y[i] pairs with p[i]
+  std::array<Point, 4> y;  // y[i] pairs with p[i]
   for (std::size_t i = 0; i < 4; ++i) y[i] = midpoint(c, p[i]);
 
   //= erleben2009#eq-4a

@@ -34,11 +34,11 @@ class BasicTransaction {
   /// The staged 𝒩(v), copied from the graph on first use (empty for a new vertex).
   PointSet& nb(const Point& v);
 
-  void add_node(const Point& v);                  ///< N = N ∪ {v}
-  void remove_node(const Point& v);               ///< N = N \ {v}
-  void add_center(const Point& v, int level);     ///< C = C ∪ {v}, with its level
-  void remove_center(const Point& v);             ///< C = C \ {v}, and its level
-  void remove_vertex(const Point& v);             ///< v is deleted: drop 𝒩(v) entirely
+  void add_node(const Point& v);               ///< N = N ∪ {v}
+  void remove_node(const Point& v);            ///< N = N \ {v}
+  void add_center(const Point& v, int level);  ///< C = C ∪ {v}, with its level
+  void remove_center(const Point& v);          ///< C = C \ {v}, and its level
+  void remove_vertex(const Point& v);          ///< v is deleted: drop 𝒩(v) entirely
 
   /// Applies every staged change to the graph. Never throws.
   void commit() noexcept;

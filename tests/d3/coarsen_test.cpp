@@ -12,11 +12,27 @@ using test::vs;
 constexpr const char* kRefinedLeft = "lattice 2 1 1 2\nrefine 4 4 4\n";
 constexpr const char* kRefinedBoth = "lattice 2 1 1 2\nrefine 4 4 4\nrefine 12 4 4\n";
 const Point3 n{4, 4, 4};
-const PointSet3 kChildren = vs({{2, 2, 2}, {2, 2, 6}, {2, 6, 2}, {2, 6, 6}, {6, 2, 2}, {6, 2, 6}, {6, 6, 2}, {6, 6, 6}});
+const PointSet3 kChildren =
+    vs({{2, 2, 2}, {2, 2, 6}, {2, 6, 2}, {2, 6, 6}, {6, 2, 2}, {6, 2, 6}, {6, 6, 2}, {6, 6, 6}});
 // The 12 edge midpoints and 6 face centers of [0,8]^3.
-const PointSet3 kMidpoints = vs({{4, 0, 0}, {4, 0, 8}, {4, 8, 0}, {4, 8, 8}, {0, 4, 0}, {0, 4, 8}, {8, 4, 0}, {8, 4, 8},
-                                 {0, 0, 4}, {0, 8, 4}, {8, 0, 4}, {8, 8, 4}, {0, 4, 4}, {8, 4, 4}, {4, 0, 4}, {4, 8, 4},
-                                 {4, 4, 0}, {4, 4, 8}});
+const PointSet3 kMidpoints = vs({{4, 0, 0},
+                                 {4, 0, 8},
+                                 {4, 8, 0},
+                                 {4, 8, 8},
+                                 {0, 4, 0},
+                                 {0, 4, 8},
+                                 {8, 4, 0},
+                                 {8, 4, 8},
+                                 {0, 0, 4},
+                                 {0, 8, 4},
+                                 {8, 0, 4},
+                                 {8, 8, 4},
+                                 {0, 4, 4},
+                                 {8, 4, 4},
+                                 {4, 0, 4},
+                                 {4, 8, 4},
+                                 {4, 4, 0},
+                                 {4, 4, 8}});
 const PointSet3 kShared = vs({{8, 0, 4}, {8, 4, 0}, {8, 4, 4}, {8, 4, 8}, {8, 8, 4}});
 
 TEST(D3Coarsen, K1_BoundaryIsTwentySixNodesClassifiedByChildren) {

@@ -62,8 +62,8 @@ struct Case {
   int steps;
 };
 
-const Case kCases[] = {{{1, 1, 1, 3}, 120}, {{2, 1, 1, 2}, 120}, {{2, 2, 1, 2}, 100}, {{2, 2, 2, 1}, 60},
-                       {{3, 1, 2, 2}, 80}};
+const Case kCases[] = {
+    {{1, 1, 1, 3}, 120}, {{2, 1, 1, 2}, 120}, {{2, 2, 1, 2}, 100}, {{2, 2, 2, 1}, 60}, {{3, 1, 2, 2}, 80}};
 constexpr std::uint64_t kSeeds[] = {20090303, 2};
 
 std::string lattice_line(const LatticeSize3& s) {

@@ -41,8 +41,8 @@ std::string point_text(const Point3& p) {
 }
 
 rc::Gen<std::vector<Op>> ops() {
-  return rc::gen::container<std::vector<Op>>(rc::gen::construct<Op>(rc::gen::weightedElement<bool>({{3, true}, {2, false}}),
-                                                                    rc::gen::inRange<std::size_t>(0, 4096)));
+  return rc::gen::container<std::vector<Op>>(rc::gen::construct<Op>(
+      rc::gen::weightedElement<bool>({{3, true}, {2, false}}), rc::gen::inRange<std::size_t>(0, 4096)));
 }
 
 RC_GTEST_PROP(D3Properties, EveryStateIsTheGeometricGraphOfItsLeaves, ()) {

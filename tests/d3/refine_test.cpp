@@ -47,13 +47,15 @@ TEST(D3Refine, R1_FaceNeighbourJunctions) {
   // B = N(right): its 8 corners and the 5 nodes the refinement put on the face x = 8.
   const PointSet3 face_nodes = vs({{8, 0, 4}, {8, 4, 0}, {8, 4, 4}, {8, 4, 8}, {8, 8, 4}});
   PointSet3 B = face_nodes;
-  for (const Point3& p : vs({{8, 0, 0}, {8, 0, 8}, {8, 8, 0}, {8, 8, 8}, {16, 0, 0}, {16, 0, 8}, {16, 8, 0}, {16, 8, 8}}))
+  for (const Point3& p :
+       vs({{8, 0, 0}, {8, 0, 8}, {8, 8, 0}, {8, 8, 8}, {16, 0, 0}, {16, 0, 8}, {16, 8, 0}, {16, 8, 8}}))
     B.insert(p);
   EXPECT_EQ(g.nbr(right), B);
   // R1b: J by cardinality: the face center has 5 cells, the four edge
   // midpoints (on the domain boundary) 3; the corners have 1 or 2 (pure).
   EXPECT_EQ(g.nbr({8, 4, 4}).size(), 5u);
-  for (const Point3& j : vs({{8, 0, 4}, {8, 4, 0}, {8, 4, 8}, {8, 8, 4}})) EXPECT_EQ(g.nbr(j).size(), 3u) << to_string(j);
+  for (const Point3& j : vs({{8, 0, 4}, {8, 4, 0}, {8, 4, 8}, {8, 8, 4}}))
+    EXPECT_EQ(g.nbr(j).size(), 3u) << to_string(j);
   for (const Point3& p : vs({{8, 0, 0}, {8, 0, 8}, {8, 8, 0}, {8, 8, 8}})) EXPECT_EQ(g.nbr(p).size(), 2u);
   for (const Point3& p : vs({{16, 0, 0}, {16, 0, 8}, {16, 8, 0}, {16, 8, 8}})) EXPECT_EQ(g.nbr(p).size(), 1u);
   // R1d: for the child (6,2,2) beside the face, X holds the level-0 cube: refused.
@@ -103,17 +105,43 @@ TEST(D3Refine, R3a_JPlusIsTheMissingMidpointsAndFaceCenters) {
   const RefineResult first = refine(g, {4, 4, 4});
   ASSERT_TRUE(first.applied());
   // J = ∅: all 12 edge midpoints and 6 face centers of [0,8]^3 are new.
-  const PointSet3 left_new = vs({{4, 0, 0}, {4, 0, 8}, {4, 8, 0}, {4, 8, 8}, {0, 4, 0}, {0, 4, 8}, {8, 4, 0}, {8, 4, 8},
-                                 {0, 0, 4}, {0, 8, 4}, {8, 0, 4}, {8, 8, 4}, {0, 4, 4}, {8, 4, 4}, {4, 0, 4}, {4, 8, 4},
-                                 {4, 4, 0}, {4, 4, 8}});
+  const PointSet3 left_new = vs({{4, 0, 0},
+                                 {4, 0, 8},
+                                 {4, 8, 0},
+                                 {4, 8, 8},
+                                 {0, 4, 0},
+                                 {0, 4, 8},
+                                 {8, 4, 0},
+                                 {8, 4, 8},
+                                 {0, 0, 4},
+                                 {0, 8, 4},
+                                 {8, 0, 4},
+                                 {8, 8, 4},
+                                 {0, 4, 4},
+                                 {8, 4, 4},
+                                 {4, 0, 4},
+                                 {4, 8, 4},
+                                 {4, 4, 0},
+                                 {4, 4, 8}});
   EXPECT_EQ(first.J_plus, left_new);
   for (const Point3& j : first.J_plus) EXPECT_TRUE(g.is_node(j));
   // Refining the right cube: the 5 nodes on x = 8 are old junctions (J), so
   // J+ is the other 13 midpoints and face centers of [8,16] x [0,8] x [0,8].
   const RefineResult second = refine(g, {12, 4, 4});
   ASSERT_TRUE(second.applied());
-  EXPECT_EQ(second.J_plus, vs({{12, 0, 0}, {12, 0, 8}, {12, 8, 0}, {12, 8, 8}, {16, 4, 0}, {16, 4, 8}, {16, 0, 4},
-                               {16, 8, 4}, {16, 4, 4}, {12, 0, 4}, {12, 8, 4}, {12, 4, 0}, {12, 4, 8}}));
+  EXPECT_EQ(second.J_plus, vs({{12, 0, 0},
+                               {12, 0, 8},
+                               {12, 8, 0},
+                               {12, 8, 8},
+                               {16, 4, 0},
+                               {16, 4, 8},
+                               {16, 0, 4},
+                               {16, 8, 4},
+                               {16, 4, 4},
+                               {12, 0, 4},
+                               {12, 8, 4},
+                               {12, 4, 0},
+                               {12, 4, 8}}));
 }
 
 TEST(D3Refine, R3_NewNodesOnTheDomainBoundaryJoinOnlyChildren) {
@@ -169,8 +197,10 @@ TEST(D3Refine, R4_OldJunctionsJoinTheChildrenBesideThem) {
   EXPECT_EQ(g.nbr({8, 4, 0}), vs({{6, 2, 2}, {6, 6, 2}, {10, 2, 2}, {10, 6, 2}}));
   EXPECT_EQ(g.nbr({8, 0, 4}), vs({{6, 2, 2}, {6, 2, 6}, {10, 2, 2}, {10, 2, 6}}));
   // R4b and the claim: each child of the right cube has exactly its 8 corners.
-  EXPECT_EQ(g.nbr({10, 2, 2}), vs({{8, 0, 0}, {8, 0, 4}, {8, 4, 0}, {8, 4, 4}, {12, 0, 0}, {12, 0, 4}, {12, 4, 0}, {12, 4, 4}}));
-  EXPECT_EQ(g.nbr({14, 6, 6}), vs({{12, 4, 4}, {12, 4, 8}, {12, 8, 4}, {12, 8, 8}, {16, 4, 4}, {16, 4, 8}, {16, 8, 4}, {16, 8, 8}}));
+  EXPECT_EQ(g.nbr({10, 2, 2}),
+            vs({{8, 0, 0}, {8, 0, 4}, {8, 4, 0}, {8, 4, 4}, {12, 0, 0}, {12, 0, 4}, {12, 4, 0}, {12, 4, 4}}));
+  EXPECT_EQ(g.nbr({14, 6, 6}),
+            vs({{12, 4, 4}, {12, 4, 8}, {12, 8, 4}, {12, 8, 8}, {16, 4, 4}, {16, 4, 8}, {16, 8, 4}, {16, 8, 8}}));
 }
 
 TEST(D3Refine, R4_InteriorEdgeMidpointCountsFiveSixSevenEight) {

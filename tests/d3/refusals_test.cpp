@@ -33,8 +33,8 @@ constexpr const char* kTwo = "lattice 2 1 1 2\n";
 
 TEST(D3Refusals, NoSuchCell) {
   //= bccmis3d#pre-refine-cell type=test
-  expect_refine_refused(kTwo, {5, 5, 5}, RefineRefusal::NoSuchCell);                    // nothing there
-  expect_refine_refused(kTwo, {8, 0, 0}, RefineRefusal::NoSuchCell);                    // a node
+  expect_refine_refused(kTwo, {5, 5, 5}, RefineRefusal::NoSuchCell);                                  // nothing there
+  expect_refine_refused(kTwo, {8, 0, 0}, RefineRefusal::NoSuchCell);                                  // a node
   expect_refine_refused(std::string(kTwo) + "refine 4 4 4\n", {4, 4, 4}, RefineRefusal::NoSuchCell);  // refined
 }
 

@@ -25,8 +25,8 @@
 #include <deque>
 #include <functional>
 #include <optional>
-#include <set>
 #include <ostream>
+#include <set>
 #include <string_view>
 #include <unordered_set>
 #include <vector>
@@ -49,9 +49,7 @@ struct Pos {
 inline std::ostream& operator<<(std::ostream& os, const Leaf& c) {
   return os << "(" << c.level << "," << c.i << "," << c.j << ")";
 }
-inline std::ostream& operator<<(std::ostream& os, const Pos& p) {
-  return os << "(" << p.x << "," << p.y << ")";
-}
+inline std::ostream& operator<<(std::ostream& os, const Pos& p) { return os << "(" << p.x << "," << p.y << ")"; }
 
 struct Lattice {
   int W = 1;
@@ -65,8 +63,7 @@ struct Lattice {
   std::int64_t ny(int level) const { return std::int64_t{H} << level; }
 
   bool valid_cell(const Leaf& c) const {
-    return c.level >= 0 && c.level <= L && c.i >= 0 && c.i < nx(c.level) && c.j >= 0 &&
-           c.j < ny(c.level);
+    return c.level >= 0 && c.level <= L && c.i >= 0 && c.i < nx(c.level) && c.j >= 0 && c.j < ny(c.level);
   }
 };
 
@@ -218,8 +215,7 @@ inline RefineResult check_refine(const State& s, const Leaf& c) {
   if (c.level >= s.lat.L) return RefineResult::max_level;
   for (const Leaf& ch : children_of(c))
     for (const Leaf& o : s.leaves)
-      if (o != c && std::abs(o.level - ch.level) > 1 && share_edge(s.lat, ch, o))
-        return RefineResult::coarser_neighbor;
+      if (o != c && std::abs(o.level - ch.level) > 1 && share_edge(s.lat, ch, o)) return RefineResult::coarser_neighbor;
   return RefineResult::ok;
 }
 
@@ -298,8 +294,7 @@ inline CoarsenResult check_coarsen_at(const State& s, const Pos& p) {
 // level 0..L-1 has no refinable center -> not-a-refined-center; otherwise
 // this is check_coarsen_at(center).
 inline CoarsenResult check_coarsen(const State& s, const Leaf& parent) {
-  if (!s.lat.valid_cell(parent) || parent.level >= s.lat.L)
-    return CoarsenResult::not_a_refined_center;
+  if (!s.lat.valid_cell(parent) || parent.level >= s.lat.L) return CoarsenResult::not_a_refined_center;
   return check_coarsen_at(s, center_of(s.lat, parent));
 }
 
@@ -331,16 +326,15 @@ struct KeyHash {
   std::size_t operator()(const std::vector<Leaf>& k) const {
     std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the leaf fields
     for (const Leaf& c : k)
-      for (std::uint64_t v : {static_cast<std::uint64_t>(c.level), static_cast<std::uint64_t>(c.i),
-                              static_cast<std::uint64_t>(c.j)})
+      for (std::uint64_t v :
+           {static_cast<std::uint64_t>(c.level), static_cast<std::uint64_t>(c.i), static_cast<std::uint64_t>(c.j)})
         h = (h ^ v) * 1099511628211ull;
     return static_cast<std::size_t>(h);
   }
 };
 
 // `visit` (optional) is called once per reachable state.
-inline ReachableCount count_reachable_states(int W, int H, int L,
-                                             const std::function<void(const State&)>& visit = {}) {
+inline ReachableCount count_reachable_states(int W, int H, int L, const std::function<void(const State&)>& visit = {}) {
   ReachableCount rc;
   const State init = initial_state(W, H, L);
   std::unordered_set<std::vector<Leaf>, KeyHash> seen{init.key()};

@@ -83,9 +83,9 @@ TEST(LeafModelGeometry, ShareEdge) {
 
 TEST(LeafModelOps, RefineReasons) {
   State s = initial_state(2, 1, 2);
-  EXPECT_EQ(check_refine(s, Leaf{1, 0, 0}), RefineResult::no_such_cell);   // not a leaf
-  EXPECT_EQ(check_refine(s, Leaf{0, 2, 0}), RefineResult::no_such_cell);   // out of range
-  EXPECT_EQ(check_refine_at(s, Pos{0, 0}), RefineResult::no_such_cell);    // not a center
+  EXPECT_EQ(check_refine(s, Leaf{1, 0, 0}), RefineResult::no_such_cell);  // not a leaf
+  EXPECT_EQ(check_refine(s, Leaf{0, 2, 0}), RefineResult::no_such_cell);  // out of range
+  EXPECT_EQ(check_refine_at(s, Pos{0, 0}), RefineResult::no_such_cell);   // not a center
   EXPECT_EQ(check_refine_at(s, Pos{4, 4}), RefineResult::ok);
   s = refined(s, {Leaf{0, 0, 0}});
   EXPECT_EQ(s.leaves.size(), 5u);
@@ -117,17 +117,17 @@ TEST(LeafModelOps, CoarsenReasons) {
   EXPECT_EQ(check_coarsen_at(s, Pos{8, 8}), CoarsenResult::not_a_refined_center);
   EXPECT_EQ(check_coarsen_at(s, Pos{4, 0}), CoarsenResult::not_a_refined_center);  // root side midpoint
   EXPECT_EQ(check_coarsen_at(s, Pos{2, 0}), CoarsenResult::not_a_refined_center);  // level-1 side midpoint
-  EXPECT_EQ(check_coarsen_at(s, Pos{1, 1}), CoarsenResult::no_such_node);  // center of a level-2 leaf
-  EXPECT_EQ(check_coarsen_at(s, Pos{6, 6}), CoarsenResult::no_such_node);  // center of a level-1 leaf
-  EXPECT_EQ(check_coarsen_at(s, Pos{6, 5}), CoarsenResult::no_such_node);  // interior point
+  EXPECT_EQ(check_coarsen_at(s, Pos{1, 1}), CoarsenResult::no_such_node);          // center of a level-2 leaf
+  EXPECT_EQ(check_coarsen_at(s, Pos{6, 6}), CoarsenResult::no_such_node);          // center of a level-1 leaf
+  EXPECT_EQ(check_coarsen_at(s, Pos{6, 5}), CoarsenResult::no_such_node);          // interior point
   EXPECT_EQ(check_coarsen_at(s, Pos{4, 2}), CoarsenResult::not_a_refined_center);  // T-junction
-  EXPECT_EQ(check_coarsen_at(s, Pos{6, 4}), CoarsenResult::no_such_node);  // mid of a level-1 side
+  EXPECT_EQ(check_coarsen_at(s, Pos{6, 4}), CoarsenResult::no_such_node);          // mid of a level-1 side
   EXPECT_EQ(check_coarsen_at(s, Pos{100, 100}), CoarsenResult::no_such_node);
   EXPECT_EQ(check_coarsen_at(s, Pos{-4, 4}), CoarsenResult::no_such_node);
   // Cell-named variant.
   EXPECT_EQ(check_coarsen(s, Leaf{0, 0, 0}), CoarsenResult::children_refined);
   EXPECT_EQ(check_coarsen(s, Leaf{1, 0, 0}), CoarsenResult::ok);
-  EXPECT_EQ(check_coarsen(s, Leaf{1, 1, 1}), CoarsenResult::no_such_node);  // it is a leaf
+  EXPECT_EQ(check_coarsen(s, Leaf{1, 1, 1}), CoarsenResult::no_such_node);          // it is a leaf
   EXPECT_EQ(check_coarsen(s, Leaf{2, 0, 0}), CoarsenResult::not_a_refined_center);  // level L
   EXPECT_EQ(check_coarsen(s, Leaf{0, 1, 0}), CoarsenResult::not_a_refined_center);  // out of range
   // Initial state: the root center is not a node.
@@ -153,8 +153,7 @@ TEST(LeafModelOps, DiagonalContactIsNotConstrained) {
   // 2x2, L = 2 (S = 8).  Refine roots (0,1), (1,0), (1,1) and then the
   // lower-left child (1,2,2) of root (1,1): its level-2 children touch the
   // unrefined root (0,0) only at the corner (8,8).
-  State s = refined(initial_state(2, 2, 2),
-                    {Leaf{0, 0, 1}, Leaf{0, 1, 0}, Leaf{0, 1, 1}, Leaf{1, 2, 2}});
+  State s = refined(initial_state(2, 2, 2), {Leaf{0, 0, 1}, Leaf{0, 1, 0}, Leaf{0, 1, 1}, Leaf{1, 2, 2}});
   EXPECT_TRUE(is_balanced(s));
   EXPECT_TRUE(s.has(Leaf{0, 0, 0}));
   EXPECT_TRUE(s.has(Leaf{2, 4, 4}));
@@ -191,8 +190,7 @@ void cross_check_all_states(int W, int H, int L) {
     std::set<Pos> corners;
     for (const Leaf& c : s.leaves) {
       const Rect r = rect_of(s.lat, c);
-      for (const Pos p : {Pos{r.x0, r.y0}, Pos{r.x1, r.y0}, Pos{r.x0, r.y1}, Pos{r.x1, r.y1}})
-        corners.insert(p);
+      for (const Pos p : {Pos{r.x0, r.y0}, Pos{r.x1, r.y0}, Pos{r.x0, r.y1}, Pos{r.x1, r.y1}}) corners.insert(p);
     }
     for (std::int64_t x = -1; x <= W * S + 1; ++x)
       for (std::int64_t y = -1; y <= H * S + 1; ++y) {
@@ -268,9 +266,8 @@ struct Expected {
 //                2x2 lattice of level-1 cells with 2 more levels.
 //                Refines 1 + 529720.
 const Expected kSmall[] = {
-    {1, 1, 0, 1, 0},      {1, 1, 1, 2, 1},     {2, 1, 1, 4, 4},       {3, 1, 1, 8, 12},
-    {2, 2, 1, 16, 32},    {3, 2, 1, 64, 192},  {3, 3, 1, 512, 2304},  {1, 1, 2, 17, 33},
-    {2, 1, 2, 265, 1042}, {3, 1, 2, 4250, 25165},
+    {1, 1, 0, 1, 0},    {1, 1, 1, 2, 1},      {2, 1, 1, 4, 4},   {3, 1, 1, 8, 12},     {2, 2, 1, 16, 32},
+    {3, 2, 1, 64, 192}, {3, 3, 1, 512, 2304}, {1, 1, 2, 17, 33}, {2, 1, 2, 265, 1042}, {3, 1, 2, 4250, 25165},
 };
 const Expected kLarge[] = {
     {2, 2, 2, 66641, 529720},

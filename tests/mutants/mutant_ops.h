@@ -24,7 +24,7 @@ enum class Flaw {
   WeakCoarsenGuard,       ///< can_coarsen: only n in N and |N(n)| = 4 (the paper's literal test)
   CoarsenDifferentState,  ///< coarsen: also coarsens the first other coarsenable node (valid, but not the inverse)
   CornerBalance,          ///< can_refine: every cell at a corner of c counts, not only edge neighbors (E4's sentence)
-  RefusalRefinesNeighbor ///< refine: refused for a coarser neighbor, but refines that neighbor anyway
+  RefusalRefinesNeighbor  ///< refine: refused for a coarser neighbor, but refines that neighbor anyway
 };
 
 struct FlawInfo {

@@ -10,22 +10,22 @@
 // shrinking) so that each mutant gets its own budget and no console noise.
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
-#include <rapidcheck/gtest.h>
 #include <rapidcheck/detail/TestListener.h>
+#include <rapidcheck/gtest.h>
 
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <iostream>
 #include <map>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "bccmis/explore/explore.h"
-#include "testing/generators.h"
 #include "mutants/mutant_ops.h"
+#include "testing/generators.h"
 
 namespace bccmis::proptest {
 namespace {
@@ -89,8 +89,7 @@ Verdict run_property(const PropertyBody& p, const Ops& ops, int budget = kBudget
   metadata.id = ops.name + "/" + p.name;
   metadata.description = metadata.id;
   QuietListener quiet;
-  const auto result =
-      rc::detail::checkTestable([&] { p.body(ops, *genScenario()); }, metadata, params, quiet);
+  const auto result = rc::detail::checkTestable([&] { p.body(ops, *genScenario()); }, metadata, params, quiet);
   Verdict v;
   if (result.template is<rc::detail::FailureResult>()) {
     v.caught = true;
@@ -111,9 +110,9 @@ Verdict run_property(const PropertyBody& p, const Ops& ops, int budget = kBudget
 struct Expectation {
   Flaw flaw;
   std::string name;
-  std::set<std::string> must_catch;      // properties that must fail
-  std::set<std::string> must_pass;       // properties that must not fail (the checker alone cannot see it)
-  bool explorer_catches;                 // explore(2 1 2) reports a failure
+  std::set<std::string> must_catch;  // properties that must fail
+  std::set<std::string> must_pass;   // properties that must not fail (the checker alone cannot see it)
+  bool explorer_catches;             // explore(2 1 2) reports a failure
 };
 
 const std::vector<Expectation>& expectations() {
@@ -220,8 +219,7 @@ RC_GTEST_PROP(MutantDemo, DISABLED_RefineThenCoarsenOnCoarsenDifferentState, ())
 TEST(MutantRegressions, EachTraceStillCatchesItsMutant) {
   int traces = 0;
   for (const mutants::FlawInfo& f : mutants::all_flaws()) {
-    const std::filesystem::path path =
-        std::filesystem::path(BCCMIS_REGRESSIONS_DIR) / ("mutant-" + f.name + ".trace");
+    const std::filesystem::path path = std::filesystem::path(BCCMIS_REGRESSIONS_DIR) / ("mutant-" + f.name + ".trace");
     if (f.flaw == Flaw::Forget10cOnly) {
       EXPECT_FALSE(std::filesystem::exists(path)) << "an equivalent mutant has no reproducer";
       continue;

@@ -39,13 +39,9 @@ void differential(Balance mode, p4est_connect_type_t connect, int trials) {
   EXPECT_GT(leaves_seen, static_cast<std::size_t>(trials) * 20) << "the targets refine too little to test much";
 }
 
-TEST(Differential, RefineBalancedMatchesP4estFaceBalance) {
-  differential(Balance::Edge, P4EST_CONNECT_FACE, 150);
-}
+TEST(Differential, RefineBalancedMatchesP4estFaceBalance) { differential(Balance::Edge, P4EST_CONNECT_FACE, 150); }
 
-TEST(Differential, CornerModeMatchesP4estFullBalance) {
-  differential(Balance::Corner, P4EST_CONNECT_FULL, 150);
-}
+TEST(Differential, CornerModeMatchesP4estFullBalance) { differential(Balance::Corner, P4EST_CONNECT_FULL, 150); }
 
 }  // namespace
 }  // namespace bccmis::p4est_bridge

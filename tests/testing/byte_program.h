@@ -66,9 +66,7 @@ void decode_operation(Bytes& in, std::uint8_t s, const Graph& g, const Refine& r
   switch (s & 7) {
     case 0:
     case 1:
-    case 2:
-      refine(nth(g.C, in.index(g.C.size())));
-      break;
+    case 2: refine(nth(g.C, in.index(g.C.size()))); break;
     case 3:
     case 4: {
       std::vector<Point> refined;
@@ -78,9 +76,7 @@ void decode_operation(Bytes& in, std::uint8_t s, const Graph& g, const Refine& r
       coarsen(refined[in.index(refined.size())]);
       break;
     }
-    case 5:
-      coarsen(nth(g.N, in.index(g.N.size())));
-      break;
+    case 5: coarsen(nth(g.N, in.index(g.N.size()))); break;
     default: {
       const std::int64_t S = level0_side(g.size);
       auto coordinate = [&](std::int64_t extent) -> std::int64_t {

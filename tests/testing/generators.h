@@ -99,31 +99,29 @@ inline std::ostream& operator<<(std::ostream& os, const Scenario& sc) {
 
 /// W, H in 1..4 and L in 0..3, weighted towards lattices with room to refine.
 inline rc::Gen<LatticeSize> genLatticeSize() {
-  return rc::gen::map(
-      rc::gen::tuple(rc::gen::inRange<std::int64_t>(1, 5), rc::gen::inRange<std::int64_t>(1, 5),
-                     rc::gen::weightedElement<int>({{1, 0}, {3, 1}, {4, 2}, {2, 3}})),
-      [](const std::tuple<std::int64_t, std::int64_t, int>& t) {
-        LatticeSize s;
-        s.W = std::get<0>(t);
-        s.H = std::get<1>(t);
-        s.L = std::get<2>(t);
-        return s;
-      });
+  return rc::gen::map(rc::gen::tuple(rc::gen::inRange<std::int64_t>(1, 5), rc::gen::inRange<std::int64_t>(1, 5),
+                                     rc::gen::weightedElement<int>({{1, 0}, {3, 1}, {4, 2}, {2, 3}})),
+                      [](const std::tuple<std::int64_t, std::int64_t, int>& t) {
+                        LatticeSize s;
+                        s.W = std::get<0>(t);
+                        s.H = std::get<1>(t);
+                        s.L = std::get<2>(t);
+                        return s;
+                      });
 }
 
 /// Steps whose operation and pick are drawn from `ops` and `picks`.
 inline rc::Gen<Step> genStep(rc::Gen<OpKind> ops, rc::Gen<Pick> picks) {
-  return rc::gen::map(
-      rc::gen::tuple(std::move(ops), std::move(picks), rc::gen::arbitrary<std::uint32_t>(),
-                     rc::gen::arbitrary<std::uint32_t>()),
-      [](const std::tuple<OpKind, Pick, std::uint32_t, std::uint32_t>& t) {
-        Step s;
-        s.op = std::get<0>(t);
-        s.pick = std::get<1>(t);
-        s.a = std::get<2>(t);
-        s.b = std::get<3>(t);
-        return s;
-      });
+  return rc::gen::map(rc::gen::tuple(std::move(ops), std::move(picks), rc::gen::arbitrary<std::uint32_t>(),
+                                     rc::gen::arbitrary<std::uint32_t>()),
+                      [](const std::tuple<OpKind, Pick, std::uint32_t, std::uint32_t>& t) {
+                        Step s;
+                        s.op = std::get<0>(t);
+                        s.pick = std::get<1>(t);
+                        s.a = std::get<2>(t);
+                        s.b = std::get<3>(t);
+                        return s;
+                      });
 }
 
 inline rc::Gen<Step> genStep() {
@@ -137,10 +135,9 @@ inline rc::Gen<std::vector<Step>> genSteps(int max_steps = 50) {
 }
 
 inline rc::Gen<Scenario> genScenario(int max_steps = 50) {
-  return rc::gen::map(rc::gen::tuple(genLatticeSize(), genSteps(max_steps)),
-                      [](const std::tuple<LatticeSize, std::vector<Step>>& t) {
-                        return Scenario(std::get<0>(t), std::get<1>(t));
-                      });
+  return rc::gen::map(
+      rc::gen::tuple(genLatticeSize(), genSteps(max_steps)),
+      [](const std::tuple<LatticeSize, std::vector<Step>>& t) { return Scenario(std::get<0>(t), std::get<1>(t)); });
 }
 
 // ---- Geometry from the independent leaf model -------------------------------
@@ -187,9 +184,7 @@ inline Projection project(const model::State& m) {
   return p;
 }
 
-inline std::string point_text(const Point& p) {
-  return to_string(p);
-}
+inline std::string point_text(const Point& p) { return to_string(p); }
 
 /// Empty when g's centers (position, level) are exactly the model's leaves and
 /// g's nodes exactly the leaves' corners; otherwise the first difference.
@@ -242,8 +237,7 @@ inline Point resolve(const Graph& g, const Step& s) {
         if (!candidates.empty()) return candidates[s.a % candidates.size()];
         return nth(g.N, s.a);
       }
-    case Pick::WrongKind:
-      return s.op == OpKind::Refine ? nth(g.N, s.a) : nth(g.C, s.a);
+    case Pick::WrongKind: return s.op == OpKind::Refine ? nth(g.N, s.a) : nth(g.C, s.a);
     case Pick::Anywhere:
       return Point{static_cast<std::int64_t>(s.a % static_cast<std::uint64_t>(g.size.W * S + 5)) - 2,
                    static_cast<std::int64_t>(s.b % static_cast<std::uint64_t>(g.size.H * S + 5)) - 2};
@@ -266,8 +260,7 @@ struct Outcome {
 /// after the caller compared the decisions).
 class Walk {
  public:
-  Walk(Ops ops, const LatticeSize& size)
-      : ops_(std::move(ops)), g_(make_lattice(size)), m_(model_initial(size)) {
+  Walk(Ops ops, const LatticeSize& size) : ops_(std::move(ops)), g_(make_lattice(size)), m_(model_initial(size)) {
     trace_.size = size;
   }
 
@@ -357,9 +350,9 @@ inline void prop_refine_then_coarsen(const Ops& ops, const Scenario& sc) {
     Walk back = w;  // the walk goes on from the refined state
     const Outcome c = back.run(OpKind::Coarsen, o.at);
     back.require(c.applied, "coarsen " + point_text(o.at) + " right after refining it was refused (" + c.code + ")");
-    back.require(canonical_state(back.graph()) == before,
-                 "refine " + point_text(o.at) + " then coarsen " + point_text(o.at) +
-                     " does not give back the canonical state");
+    back.require(canonical_state(back.graph()) == before, "refine " + point_text(o.at) + " then coarsen " +
+                                                              point_text(o.at) +
+                                                              " does not give back the canonical state");
   }
 }
 
@@ -373,9 +366,9 @@ inline void prop_coarsen_then_refine(const Ops& ops, const Scenario& sc) {
     Walk back = w;
     const Outcome r = back.run(OpKind::Refine, o.at);
     back.require(r.applied, "refine " + point_text(o.at) + " right after coarsening it was refused (" + r.code + ")");
-    back.require(canonical_state(back.graph()) == before,
-                 "coarsen " + point_text(o.at) + " then refine " + point_text(o.at) +
-                     " does not give back the canonical state");
+    back.require(canonical_state(back.graph()) == before, "coarsen " + point_text(o.at) + " then refine " +
+                                                              point_text(o.at) +
+                                                              " does not give back the canonical state");
   }
 }
 
@@ -388,8 +381,7 @@ inline void prop_refusal_leaves_state_unchanged(const Ops& ops, const Scenario& 
     const std::string expected = w.expected(s.op, p);
     const std::string before = canonical_state(w.graph());
     const Outcome o = w.run(s.op, p);
-    if (!o.applied)
-      w.require(canonical_state(w.graph()) == before, "refused " + describe(o) + " changed the state");
+    if (!o.applied) w.require(canonical_state(w.graph()) == before, "refused " + describe(o) + " changed the state");
     w.sync_model(o, expected);
   }
 }
@@ -427,17 +419,18 @@ inline void prop_vertex_counts(const Ops& ops, const Scenario& sc) {
     } else {
       w.require(dc == -3, what + ", expected |C| - 3");
       w.require(dn == -1 - static_cast<std::int64_t>(o.coarsen.J_minus.size()),
-                what + ", expected |N| - 1 - |J-| = " + std::to_string(-1 - static_cast<std::int64_t>(o.coarsen.J_minus.size())));
+                what + ", expected |N| - 1 - |J-| = " +
+                    std::to_string(-1 - static_cast<std::int64_t>(o.coarsen.J_minus.size())));
       w.require(o.coarsen.Y.size() == 4, what + ": |Y| = " + std::to_string(o.coarsen.Y.size()));
     }
     w.sync_model(o, expected);
     const Projection want = project(w.model());
-    w.require(g.C.size() == want.centers.size(),
-              "after " + describe(o) + ": |C| = " + std::to_string(g.C.size()) + ", the model has " +
-                  std::to_string(want.centers.size()) + " leaves");
-    w.require(g.N.size() == want.nodes.size(),
-              "after " + describe(o) + ": |N| = " + std::to_string(g.N.size()) + ", the model's leaves have " +
-                  std::to_string(want.nodes.size()) + " corners");
+    w.require(g.C.size() == want.centers.size(), "after " + describe(o) + ": |C| = " + std::to_string(g.C.size()) +
+                                                     ", the model has " + std::to_string(want.centers.size()) +
+                                                     " leaves");
+    w.require(g.N.size() == want.nodes.size(), "after " + describe(o) + ": |N| = " + std::to_string(g.N.size()) +
+                                                   ", the model's leaves have " + std::to_string(want.nodes.size()) +
+                                                   " corners");
   }
 }
 
@@ -540,7 +533,8 @@ inline std::optional<std::string> check_trace(const Ops& ops, const Trace& trace
       model_apply(m, op, cmd.at);
       if (const auto v = find_violation(g)) return where + to_string(*v);
       Graph back = g;
-      const bool undone = op == OpKind::Refine ? ops.coarsen(back, cmd.at).applied() : ops.refine(back, cmd.at).applied();
+      const bool undone =
+          op == OpKind::Refine ? ops.coarsen(back, cmd.at).applied() : ops.refine(back, cmd.at).applied();
       if (!undone || canonical_state(back) != before) return where + "the inverse operation does not restore the state";
     } catch (const std::exception& e) {
       return where + "threw: " + e.what();

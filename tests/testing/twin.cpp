@@ -57,9 +57,8 @@ void Twin::run(TraceCommand::Kind kind, const Point& at, bool batch) {
   };
   if (batch) {
     const std::span<const Point> one(&at, 1);
-    const std::size_t n = guarded([&] {
-      return kind == TraceCommand::Kind::Refine ? lat_.refine_each(one) : lat_.coarsen_each(one);
-    });
+    const std::size_t n =
+        guarded([&] { return kind == TraceCommand::Kind::Refine ? lat_.refine_each(one) : lat_.coarsen_each(one); });
     if ((n == 1) != want.applied()) fail(what + ": the batch applied " + std::to_string(n));
   } else {
     const StepResult<fast::Lattice> got = guarded([&] { return step(lat_, cmd); });
@@ -99,8 +98,7 @@ void Twin::reseat(bool from_reference) {
 void Twin::compare_guards(const Point& p) const {
   const std::string at = to_string(p);
   if (decision(can_refine(lat_, p)) != decision(can_refine(g_, p)))
-    fail("can_refine " + at + ": fast " + decision(can_refine(lat_, p)) + ", reference " +
-         decision(can_refine(g_, p)));
+    fail("can_refine " + at + ": fast " + decision(can_refine(lat_, p)) + ", reference " + decision(can_refine(g_, p)));
   if (decision(can_coarsen(lat_, p)) != decision(can_coarsen(g_, p)))
     fail("can_coarsen " + at + ": fast " + decision(can_coarsen(lat_, p)) + ", reference " +
          decision(can_coarsen(g_, p)));
@@ -120,8 +118,8 @@ void Twin::compare_queries() const {
   std::vector<Point> at(g_.C.begin(), g_.C.end());
   at.insert(at.end(), g_.N.begin(), g_.N.end());
   const std::int64_t S = level0_side(g_.size);
-  for (const Point p : {Point{-1, -1}, Point{0, 0}, Point{g_.size.W * S, g_.size.H * S},
-                        Point{g_.size.W * S + 1, 1}, Point{1, 1}, Point{S / 2, 0}})
+  for (const Point p : {Point{-1, -1}, Point{0, 0}, Point{g_.size.W * S, g_.size.H * S}, Point{g_.size.W * S + 1, 1},
+                        Point{1, 1}, Point{S / 2, 0}})
     at.push_back(p);
   for (const Point& p : at) {
     const auto nbrs = neighbors(lat_, p);

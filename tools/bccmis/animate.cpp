@@ -7,11 +7,11 @@
 #include <filesystem>
 #include <iostream>
 
+#include "app_support.h"
 #include "bccmis/apps/animate.h"
 #include "bccmis/apps/apps.h"
 #include "bccmis/fast/lattice.h"
 #include "bccmis/oracle/oracle.h"
-#include "app_support.h"
 #include "commands.h"
 #include "io.h"
 
@@ -68,8 +68,9 @@ std::string stats_text(const std::vector<FrameReport>& reports, const LatticeSiz
       frames_json += std::string(frames_json.empty() ? "" : ",\n  ") + "{\"frame\": " + std::to_string(fr.frame) +
                      ", \"lifted\": " + (fr.lifted ? "true" : "false") + ", \"x\": " + fmt(fr.x, "%.9g") +
                      ", \"y\": " + fmt(fr.y, "%.9g") + ", \"refinements\": " + std::to_string(fr.refinements) +
-                     ", \"coarsenings\": " + std::to_string(fr.coarsenings) + ", \"cells\": " + std::to_string(fr.cells) +
-                     ", \"nodes\": " + std::to_string(fr.nodes) + ", \"seconds\": " + fmt(fr.seconds, "%.9g") + "}";
+                     ", \"coarsenings\": " + std::to_string(fr.coarsenings) +
+                     ", \"cells\": " + std::to_string(fr.cells) + ", \"nodes\": " + std::to_string(fr.nodes) +
+                     ", \"seconds\": " + fmt(fr.seconds, "%.9g") + "}";
     } else {
       char line[200];
       std::snprintf(line, sizeof line, "%5d %9.4f %9.4f %8zu %8zu %8zu %8zu %10.6f%s\n", fr.frame, fr.x, fr.y,
@@ -119,17 +120,18 @@ int run_animate(const AnimateCommandOptions& o) {
         // The observer (and with --impl fast its Graph copy) only when a
         // frame needs the lattice: the check and the pictures.
         FrameObserver<L> after;
-        if (o.check || !o.svg_dir.empty()) after = [&](const FrameReport& fr, const L& now) {
-          Graph copy;
-          const Graph& graph = as_graph(now, copy);
-          if (o.check) run_check(graph, settings.balance, "after frame " + std::to_string(fr.frame));
-          if (!o.svg_dir.empty()) {
-            char name[32];
-            std::snprintf(name, sizeof name, "frame_%04d.svg", fr.frame);
-            outputs.add((std::filesystem::path(o.svg_dir) / name).string(),
-                        frame_svg(graph, fr, o.radius, frame_title(fr)));
-          }
-        };
+        if (o.check || !o.svg_dir.empty())
+          after = [&](const FrameReport& fr, const L& now) {
+            Graph copy;
+            const Graph& graph = as_graph(now, copy);
+            if (o.check) run_check(graph, settings.balance, "after frame " + std::to_string(fr.frame));
+            if (!o.svg_dir.empty()) {
+              char name[32];
+              std::snprintf(name, sizeof name, "frame_%04d.svg", fr.frame);
+              outputs.add((std::filesystem::path(o.svg_dir) / name).string(),
+                          frame_svg(graph, fr, o.radius, frame_title(fr)));
+            }
+          };
         reports = animate(g, settings, after);
         cells = cell_count(g);
         nodes = node_count(g);

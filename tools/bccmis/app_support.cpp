@@ -88,7 +88,9 @@ std::string Record::json() const {
   for (std::size_t i = 0; i < items_.size(); ++i) {
     const auto& it = items_[i];
     out += (i ? ", " : "") + json_string(it.name) + ": " +
-           (!it.json.empty() ? it.json : it.quoted ? json_string(it.text) : it.text);
+           (!it.json.empty() ? it.json
+            : it.quoted      ? json_string(it.text)
+                             : it.text);
   }
   return out + "}";
 }

@@ -33,10 +33,13 @@ CLI::App* add_replay(CLI::App& app, ReplayOptions& o) {
   cmd->add_option("--impl", o.impl, "Implementation to replay with: reference (the transcription) or fast")
       ->check(CLI::IsMember({"reference", "fast"}))
       ->capture_default_str();
-  cmd->add_option("--max-vertices", o.max_vertices, "Refuse a trace whose lattice grows beyond this many vertices (exit 2)")
+  cmd->add_option("--max-vertices", o.max_vertices,
+                  "Refuse a trace whose lattice grows beyond this many vertices (exit 2)")
       ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 40))
       ->capture_default_str();
-  cmd->footer("Example:\n  bccmis replay spec/examples/fig2.trace\n  bccmis replay run.trace --check=end --log run.log --state run.state");
+  cmd->footer(
+      "Example:\n  bccmis replay spec/examples/fig2.trace\n  bccmis replay run.trace --check=end --log run.log --state "
+      "run.state");
   return cmd;
 }
 
@@ -88,8 +91,9 @@ CLI::App* add_view(CLI::App& app, ViewCommandOptions& o) {
                   "Instead of a trace: canonical state files, one per step, or one directory of *.state files "
                   "(taken in name order)");
   cmd->add_option("-o,--output", o.output, "HTML file to write (atomically); '-' for stdout")->required();
-  cmd->add_option("--check", o.check,
-                  "When to run the invariant checker: every (each state; the page opens at the first violation), end, none")
+  cmd->add_option(
+         "--check", o.check,
+         "When to run the invariant checker: every (each state; the page opens at the first violation), end, none")
       ->check(CLI::IsMember({"every", "end", "none"}))
       ->capture_default_str();
   cmd->add_option("--depth", o.depth, "Checker layers to run: 1-4, or 5 for the CGAL triangulation layer")
@@ -126,11 +130,16 @@ CLI::App* add_view(CLI::App& app, ViewCommandOptions& o) {
 CLI::App* add_conformance(CLI::App& app, ConformanceCommandOptions& o) {
   CLI::App* cmd = app.add_subcommand(
       "conformance", "Check another implementation against the reference: decisions and final states, with shrinking.");
-  cmd->add_option("--impl", o.impl, "Command to run; the trace file path is appended (spec/conformance.md)")->required();
+  cmd->add_option("--impl", o.impl, "Command to run; the trace file path is appended (spec/conformance.md)")
+      ->required();
   cmd->add_option("--traces", o.traces, "Directory of bundled *.trace files to run first");
-  cmd->add_option("--random", o.random, "Number of random traces")->check(CLI::Range(0, 1000000))->capture_default_str();
+  cmd->add_option("--random", o.random, "Number of random traces")
+      ->check(CLI::Range(0, 1000000))
+      ->capture_default_str();
   cmd->add_option("--seed", o.seed, "Seed of the random traces")->check(CLI::NonNegativeNumber)->capture_default_str();
-  cmd->add_option("--max-ops", o.max_ops, "Operations per random trace")->check(CLI::Range(1, 100000))->capture_default_str();
+  cmd->add_option("--max-ops", o.max_ops, "Operations per random trace")
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
   cmd->add_option("--timeout", o.timeout_seconds, "Seconds per run of the implementation")
       ->check(CLI::Range(0.01, 86400.0))
       ->capture_default_str();
@@ -140,7 +149,8 @@ CLI::App* add_conformance(CLI::App& app, ConformanceCommandOptions& o) {
   cmd->footer(
       "Exit codes: 0 all agree, 1 disagreement (the minimal trace is printed), 2 harness error (bad options,\n"
       "unreadable trace, an implementation that cannot be run: exit status 126 or 127).\n"
-      "Example:\n  bccmis conformance --impl 'bccmis replay --quiet --check=none' --traces spec/examples --random 200 --seed 7\n"
+      "Example:\n  bccmis conformance --impl 'bccmis replay --quiet --check=none' --traces spec/examples --random 200 "
+      "--seed 7\n"
       "  bccmis conformance --impl './my-lattice replay' --random 200 --view disagreement.html");
   return cmd;
 }
@@ -151,8 +161,11 @@ CLI::App* add_explore(CLI::App& app, ExploreCommandOptions& o) {
   cmd->add_option("W", o.W, "Level-0 cells across")->required();
   cmd->add_option("H", o.H, "Level-0 cells up")->required();
   cmd->add_option("L", o.L, "Maximum level")->required();
-  cmd->add_option("--depth", o.depth, "Checker layers on every state (0-4)")->check(CLI::Range(0, 4))->capture_default_str();
-  cmd->add_option("--max-states", o.max_states, "Stop after this many states (0: no limit); the result is then incomplete")
+  cmd->add_option("--depth", o.depth, "Checker layers on every state (0-4)")
+      ->check(CLI::Range(0, 4))
+      ->capture_default_str();
+  cmd->add_option("--max-states", o.max_states,
+                  "Stop after this many states (0: no limit); the result is then incomplete")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_option("--threads", o.threads, "Worker threads (0: one per core)")
@@ -203,7 +216,8 @@ CLI::App* add_heightfield(CLI::App& app, HeightfieldCommandOptions& o) {
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", o.quiet, "No summary line on stderr");
   cmd->footer(
-      "Example:\n  bccmis heightfield apps/samples/terrain128.pgm --tolerance 0.02 --obj terrain.obj --svg terrain.svg");
+      "Example:\n  bccmis heightfield apps/samples/terrain128.pgm --tolerance 0.02 --obj terrain.obj --svg "
+      "terrain.svg");
   return cmd;
 }
 
@@ -213,7 +227,8 @@ CLI::App* add_animate(CLI::App& app, AnimateCommandOptions& o) {
   cmd->add_option("-W,--width", o.width, "Lattice width in level-0 cells")->capture_default_str();
   cmd->add_option("-H,--height", o.height, "Lattice height in level-0 cells")->capture_default_str();
   cmd->add_option("-L,--max-level", o.max_level, "Maximum refinement level")->capture_default_str();
-  cmd->add_option("--target-level", o.target_level, "Level of the cells the feature meets; -1 = L")->capture_default_str();
+  cmd->add_option("--target-level", o.target_level, "Level of the cells the feature meets; -1 = L")
+      ->capture_default_str();
   cmd->add_option("--radius", o.radius, "Feature radius in level-0 cell units")->capture_default_str();
   cmd->add_option("--path", o.path, "Path 'x,y;x,y;...' in level-0 cell units")->capture_default_str();
   cmd->add_option("--balance", o.balance, "2:1 rule: edge or corner")
@@ -274,8 +289,9 @@ std::string unknown_subcommand(std::string_view given, const std::vector<std::st
 }  // namespace
 
 std::variant<int, Command> parse_command_line(int argc, char** argv) {
-  CLI::App app{"bccmis: reference implementation and oracle for Erleben's 2009 MIS graph "
-               "representation of adaptive 2D BCC lattices."};
+  CLI::App app{
+      "bccmis: reference implementation and oracle for Erleben's 2009 MIS graph "
+      "representation of adaptive 2D BCC lattices."};
   app.set_version_flag("--version", std::string("bccmis ") + BCCMIS_VERSION);
   app.require_subcommand(1);
   app.footer(

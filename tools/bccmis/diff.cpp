@@ -8,7 +8,8 @@
 namespace bccmis::cli {
 
 int run(const DiffOptions& o) {
-  const std::string hint = "'bccmis diff' compares two states; replay the trace with 'bccmis replay TRACE --state FILE' first";
+  const std::string hint =
+      "'bccmis diff' compares two states; replay the trace with 'bccmis replay TRACE --state FILE' first";
   const Graph a = read_state(o.a, hint);
   const Graph b = read_state(o.b, hint);
   const std::vector<std::string> d = diff_states(a, b);

@@ -66,10 +66,10 @@ int run(const ExploreCommandOptions& o) {
   }
   const StateBounds bounds = state_bounds(size);
   if (o.max_states == 0 && bounds.log2_lower > std::log2(kMaxStates))
-    throw InputError("explore: lattice " + std::to_string(o.W) + " " + std::to_string(o.H) + " " +
-                     std::to_string(o.L) + " has at least " + power_of_two(bounds.log2_lower) +
-                     " reachable states (at most " + power_of_two(bounds.log2_upper) +
-                     "), beyond reach of a full search (limit " + power_of_two(std::log2(kMaxStates)) + "); give --max-states N for a partial run");
+    throw InputError("explore: lattice " + std::to_string(o.W) + " " + std::to_string(o.H) + " " + std::to_string(o.L) +
+                     " has at least " + power_of_two(bounds.log2_lower) + " reachable states (at most " +
+                     power_of_two(bounds.log2_upper) + "), beyond reach of a full search (limit " +
+                     power_of_two(std::log2(kMaxStates)) + "); give --max-states N for a partial run");
   ExploreOptions ex;
   ex.check_depth = o.depth;
   ex.max_states = o.max_states;

@@ -11,6 +11,7 @@
 
 #include <unistd.h>
 
+#include "app_support.h"
 #include "bccmis/apps/balance.h"
 #include "bccmis/apps/heightfield.h"
 #include "bccmis/apps/image.h"
@@ -19,7 +20,6 @@
 #include "bccmis/oracle/oracle.h"
 #include "commands.h"
 #include "io.h"
-#include "app_support.h"
 
 namespace bccmis::cli {
 
@@ -44,9 +44,9 @@ int run_heightfield(const HeightfieldCommandOptions& o) {
 
   const std::string input_name = display_name(o.input);
   const HeightField field = parse_height_field(read_input(o.input), input_name);
-  require(field.width >= 2 && field.height >= 2,
-          input_name + ": a height field needs at least 2x2 pixels, this one has " + std::to_string(field.width) +
-              "x" + std::to_string(field.height));
+  require(field.width >= 2 && field.height >= 2, input_name +
+                                                     ": a height field needs at least 2x2 pixels, this one has " +
+                                                     std::to_string(field.width) + "x" + std::to_string(field.height));
 
   Graph g;
   if (!o.from.empty()) {
@@ -89,14 +89,16 @@ int run_heightfield(const HeightfieldCommandOptions& o) {
   std::visit(
       [&]<class L>(std::type_identity<L>) {
         L lattice = [&] {
-          if constexpr (std::is_same_v<L, Graph>) return std::move(g);
-          else return L::from_graph(g);
+          if constexpr (std::is_same_v<L, Graph>)
+            return std::move(g);
+          else
+            return L::from_graph(g);
         }();
         const auto t0 = Clock::now();
         report = tessellate(lattice, sampler, settings, [&](int sweep, const L& now, std::size_t ops) {
           if (progress)
-            std::cerr << kTool << ": sweep " << sweep << ": " << ops << " operations, " << cell_count(now)
-                      << " cells, " << fmt(seconds_since(t0), "%.2f") << " s" << std::endl;
+            std::cerr << kTool << ": sweep " << sweep << ": " << ops << " operations, " << cell_count(now) << " cells, "
+                      << fmt(seconds_since(t0), "%.2f") << " s" << std::endl;
           if (o.check) {
             Graph copy;
             run_check(as_graph(now, copy), balance, "after sweep " + std::to_string(sweep));
@@ -114,13 +116,17 @@ int run_heightfield(const HeightfieldCommandOptions& o) {
 
         // Outputs, all or nothing.
         if (!o.obj.empty() || !o.ply.empty() || !o.vtu.empty()) {
-          auto mesh = std::make_shared<TriangleMesh>(triangulate(lattice, [&](const Point& p) { return sampler.at(p); }));
+          auto mesh =
+              std::make_shared<TriangleMesh>(triangulate(lattice, [&](const Point& p) { return sampler.at(p); }));
           const std::string comment = "bccmis " + title;
-          if (!o.obj.empty()) outputs.add(o.obj, [mesh, comment](std::ostream& out) { write_obj(out, *mesh, comment); });
-          if (!o.ply.empty()) outputs.add(o.ply, [mesh, comment](std::ostream& out) { write_ply(out, *mesh, comment); });
+          if (!o.obj.empty())
+            outputs.add(o.obj, [mesh, comment](std::ostream& out) { write_obj(out, *mesh, comment); });
+          if (!o.ply.empty())
+            outputs.add(o.ply, [mesh, comment](std::ostream& out) { write_ply(out, *mesh, comment); });
           if (!o.vtu.empty()) {
             std::map<Point, double> cell_err;
-            for (const Point& c : graph->C) cell_err[c] = cell_error(*graph, c, sampler, {ErrorMeasure::MaxPixel, 0, 0});
+            for (const Point& c : graph->C)
+              cell_err[c] = cell_error(*graph, c, sampler, {ErrorMeasure::MaxPixel, 0, 0});
             for (const Point& c : mesh->triangle_cell) mesh->triangle_error.push_back(cell_err.at(c));
             outputs.add(o.vtu, [mesh](std::ostream& out) { write_vtu(out, *mesh); });
           }
@@ -168,9 +174,9 @@ int run_heightfield(const HeightfieldCommandOptions& o) {
 
   if (!o.quiet)
     std::cerr << kTool << ": " << input_name << ": " << node_total << " nodes, " << cell_total << " cells, "
-              << report.refinements + report.coarsenings << " operations in " << report.sweeps
-              << " sweeps; max error " << fmt(error.max_abs) << " (tolerance " << fmt(o.tolerance) << "), "
-              << fmt(tessellate_seconds, "%.3f") << " s\n";
+              << report.refinements + report.coarsenings << " operations in " << report.sweeps << " sweeps; max error "
+              << fmt(error.max_abs) << " (tolerance " << fmt(o.tolerance) << "), " << fmt(tessellate_seconds, "%.3f")
+              << " s\n";
   return kExitOk;
 }
 

@@ -105,8 +105,8 @@ int replay_with(const ReplayOptions& o, const Trace& trace) {
   outputs.commit();
   if (!o.quiet)
     std::cerr << "bccmis replay: " << name << ": " << refines << " refine and " << coarsens << " coarsen commands ("
-              << refused << " refused), " << checks << " checks passed (depth " << o.depth << "); final state: "
-              << lattice_summary(g) << "\n";
+              << refused << " refused), " << checks << " checks passed (depth " << o.depth
+              << "); final state: " << lattice_summary(g) << "\n";
   return kExitOk;
 }
 

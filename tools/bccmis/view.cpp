@@ -81,8 +81,8 @@ int run(const ViewCommandOptions& v) {
     return kExitViolation;
   }
   if (r.first_violation) {
-    std::cerr << "bccmis view: invariant violated at step " << *r.first_violation << " (the page opens there): "
-              << r.violation << "\n";
+    std::cerr << "bccmis view: invariant violated at step " << *r.first_violation
+              << " (the page opens there): " << r.violation << "\n";
     return kExitViolation;
   }
   if (!v.quiet && v.output != "-")

@@ -36,8 +36,8 @@ std::vector<std::array<double, 2>> parse_path(std::string_view text) {
     s = trim(s);
     const auto r = std::from_chars(s.data(), s.data() + s.size(), out);
     if (s.empty() || r.ec != std::errc() || r.ptr != s.data() + s.size() || !std::isfinite(out))
-      throw std::invalid_argument("path point " + std::to_string(path.size() + 1) + " '" + std::string(point) +
-                                  "': '" + std::string(s) + "' is not a number");
+      throw std::invalid_argument("path point " + std::to_string(path.size() + 1) + " '" + std::string(point) + "': '" +
+                                  std::string(s) + "' is not a number");
   };
   std::size_t start = 0;
   while (start <= text.size()) {

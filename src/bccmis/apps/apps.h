@@ -42,14 +42,14 @@ struct AnimationSettings {
 
 /// One frame of an animation.
 struct FrameReport {
-  int frame = 0;               ///< 0-based
-  bool lifted = false;         ///< the extra frame without the feature (AnimationSettings::lift)
-  double x = 0, y = 0;         ///< feature center, level-0 cell units
+  int frame = 0;        ///< 0-based
+  bool lifted = false;  ///< the extra frame without the feature (AnimationSettings::lift)
+  double x = 0, y = 0;  ///< feature center, level-0 cell units
   std::size_t refinements = 0;
   std::size_t coarsenings = 0;
   std::size_t cells = 0;
   std::size_t nodes = 0;
-  double seconds = 0;          ///< wall time of the frame's adaptation
+  double seconds = 0;  ///< wall time of the frame's adaptation
 };
 
 /// Called after every frame with its report and the lattice.

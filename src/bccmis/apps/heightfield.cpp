@@ -24,8 +24,8 @@ std::int64_t ceil_div(std::int64_t a, std::int64_t b) {  // b > 0
 
 // Indices i in [0, n-1] with i * side / (n-1) in [lo, hi] (or [lo, hi) when
 // half_open and hi < side). Exact integer arithmetic.
-std::pair<std::int64_t, std::int64_t> pixel_range(std::int64_t lo, std::int64_t hi, std::int64_t side,
-                                                  std::int64_t n, bool half_open) {
+std::pair<std::int64_t, std::int64_t> pixel_range(std::int64_t lo, std::int64_t hi, std::int64_t side, std::int64_t n,
+                                                  bool half_open) {
   const std::int64_t m = n - 1;
   std::int64_t first = ceil_div(lo * m, side);
   std::int64_t last = (half_open && hi < side) ? ceil_div(hi * m, side) - 1 : floor_div(hi * m, side);
@@ -73,10 +73,10 @@ HeightSampler::HeightSampler(const HeightField& field, const LatticeSize& size, 
 
 double HeightSampler::at(double x, double y) const {
   const std::int64_t w = field_->width, h = field_->height;
-  const double u = std::clamp(x * static_cast<double>(w - 1) / static_cast<double>(domain_w_), 0.0,
-                              static_cast<double>(w - 1));
-  const double v = std::clamp(y * static_cast<double>(h - 1) / static_cast<double>(domain_h_), 0.0,
-                              static_cast<double>(h - 1));
+  const double u =
+      std::clamp(x * static_cast<double>(w - 1) / static_cast<double>(domain_w_), 0.0, static_cast<double>(w - 1));
+  const double v =
+      std::clamp(y * static_cast<double>(h - 1) / static_cast<double>(domain_h_), 0.0, static_cast<double>(h - 1));
   const auto i0 = std::min(static_cast<std::int64_t>(u), w - 2);
   const auto j0 = std::min(static_cast<std::int64_t>(v), h - 2);
   const double fu = u - static_cast<double>(i0), fv = v - static_cast<double>(j0);

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "bccmis/apps/balance.h"
-#include "bccmis/graph.h"
 #include "bccmis/apps/image.h"
+#include "bccmis/graph.h"
 
 namespace bccmis {
 
@@ -68,8 +68,8 @@ std::string_view name(ErrorMeasure m);
 
 struct ErrorSettings {
   ErrorMeasure measure = ErrorMeasure::MaxPixel;
-  int samples = 16;         ///< random points per cell (RandomSamples)
-  std::uint64_t seed = 1;   ///< RandomSamples seed
+  int samples = 16;        ///< random points per cell (RandomSamples)
+  std::uint64_t seed = 1;  ///< RandomSamples seed
 };
 
 /// The piecewise-linear interpolant of one cell: its fan of triangles
@@ -101,10 +101,10 @@ double cell_error(const Graph& g, const Point& c, const HeightSampler& s, const 
 
 /// The error of the whole mesh against every pixel (each pixel counted once).
 struct MeshError {
-  double max_abs = 0;         ///< max over all pixels of |interpolated - pixel|
-  double rms = 0;             ///< root mean square over all pixels
-  std::int64_t pixels = 0;    ///< pixels visited (width * height for a valid lattice)
-  Point worst_cell;           ///< center of a cell attaining max_abs
+  double max_abs = 0;       ///< max over all pixels of |interpolated - pixel|
+  double rms = 0;           ///< root mean square over all pixels
+  std::int64_t pixels = 0;  ///< pixels visited (width * height for a valid lattice)
+  Point worst_cell;         ///< center of a cell attaining max_abs
 };
 MeshError mesh_error(const Graph& g, const HeightSampler& s);
 /// The same report from the fast lattice (cells visited in the same order).
@@ -117,10 +117,10 @@ inline constexpr double kRoundingSlack = 1e-12;
 
 /// Settings of tessellate().
 struct TessellateSettings {
-  double tolerance = 0.02;   ///< refine cells whose error is above this (height units)
+  double tolerance = 0.02;  ///< refine cells whose error is above this (height units)
   ErrorSettings error;
-  int max_sweeps = 0;        ///< stop after this many sweeps; 0: until nothing changes
-  bool coarsen = false;      ///< first merge cells whose merged error is within tolerance (re-tessellation)
+  int max_sweeps = 0;               ///< stop after this many sweeps; 0: until nothing changes
+  bool coarsen = false;             ///< first merge cells whose merged error is within tolerance (re-tessellation)
   Balance balance = Balance::Edge;  ///< the 2:1 rule the cascade and the merges keep
 };
 

@@ -45,9 +45,8 @@ void check_size(std::int64_t w, std::int64_t h, const ImageLimits& limits, const
     throw ImageError(where + "image of " + std::to_string(w) + "x" + std::to_string(h) +
                      " pixels exceeds the limit of " + std::to_string(limits.max_side) + " pixels per side");
   if (w * h > limits.max_pixels)
-    throw ImageError(where + "image of " + std::to_string(w) + "x" + std::to_string(h) + " = " +
-                     std::to_string(w * h) + " pixels exceeds the limit of " + std::to_string(limits.max_pixels) +
-                     " pixels");
+    throw ImageError(where + "image of " + std::to_string(w) + "x" + std::to_string(h) + " = " + std::to_string(w * h) +
+                     " pixels exceeds the limit of " + std::to_string(limits.max_pixels) + " pixels");
 }
 
 // A cursor over a PGM file that knows its line and column (1-based).
@@ -69,7 +68,9 @@ class Cursor {
     ++pos_;
   }
 
-  static bool is_space(unsigned char b) { return b == ' ' || b == '\t' || b == '\n' || b == '\r' || b == '\v' || b == '\f'; }
+  static bool is_space(unsigned char b) {
+    return b == ' ' || b == '\t' || b == '\n' || b == '\r' || b == '\v' || b == '\f';
+  }
 
   // Whitespace and `#` comments (to the end of the line).
   void skip_blanks() {
@@ -144,14 +145,21 @@ HeightField parse_pgm(std::string_view bytes, std::string_view file, const Image
 
   HeightField f;
   f.format = kind == '2' ? "P2" : "P5";
-  const Cursor width_at = [&] { Cursor c = cur; c.skip_blanks(); return c; }();
+  const Cursor width_at = [&] {
+    Cursor c = cur;
+    c.skip_blanks();
+    return c;
+  }();
   const std::int64_t w = cur.number("the width");
   const std::int64_t h = cur.number("the height");
   check_size(w, h, limits, width_at.where());
-  const Cursor maxval_at = [&] { Cursor c = cur; c.skip_blanks(); return c; }();
+  const Cursor maxval_at = [&] {
+    Cursor c = cur;
+    c.skip_blanks();
+    return c;
+  }();
   const std::int64_t maxval = cur.number("the maxval");
-  if (maxval < 1 || maxval > 65535)
-    maxval_at.fail("maxval " + std::to_string(maxval) + " is out of range 1..65535");
+  if (maxval < 1 || maxval > 65535) maxval_at.fail("maxval " + std::to_string(maxval) + " is out of range 1..65535");
   f.width = w;
   f.height = h;
   f.maxval = static_cast<int>(maxval);
@@ -169,10 +177,10 @@ HeightField parse_pgm(std::string_view bytes, std::string_view file, const Image
     const std::size_t need = count * bps;
     const std::size_t have = bytes.size() - start;
     if (have < need)
-      throw ImageError(std::string(file) + ": byte " + std::to_string(bytes.size()) + ": truncated raster: " +
-                       std::to_string(w) + "x" + std::to_string(h) + " samples of " + std::to_string(bps) +
-                       (bps == 1 ? " byte" : " bytes") + " need " + std::to_string(need) + " bytes from byte " +
-                       std::to_string(start) + ", the file has " + std::to_string(have));
+      throw ImageError(std::string(file) + ": byte " + std::to_string(bytes.size()) +
+                       ": truncated raster: " + std::to_string(w) + "x" + std::to_string(h) + " samples of " +
+                       std::to_string(bps) + (bps == 1 ? " byte" : " bytes") + " need " + std::to_string(need) +
+                       " bytes from byte " + std::to_string(start) + ", the file has " + std::to_string(have));
     f.values.resize(count);
     const auto* p = reinterpret_cast<const unsigned char*>(bytes.data() + start);
     for (std::size_t i = 0; i < count; ++i) {
@@ -219,7 +227,8 @@ HeightField parse_png(std::string_view bytes, std::string_view file, const Image
   const int len = static_cast<int>(bytes.size());
   int w = 0, h = 0, channels = 0;
   if (!stbi_info_from_memory(data, len, &w, &h, &channels))
-    throw ImageError(name + ": not a readable PNG: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown error"));
+    throw ImageError(name +
+                     ": not a readable PNG: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown error"));
   check_size(w, h, limits, name + ": ");
   const bool sixteen = stbi_is_16_bit_from_memory(data, len) != 0;
   HeightField f;
@@ -234,21 +243,24 @@ HeightField parse_png(std::string_view bytes, std::string_view file, const Image
     std::unique_ptr<stbi_us, void (*)(void*)> px(stbi_load_16_from_memory(data, len, &w2, &h2, &channels, 1),
                                                  stbi_image_free);
     if (!px || w2 != w || h2 != h)
-      throw ImageError(name + ": cannot decode the PNG: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown error"));
+      throw ImageError(name +
+                       ": cannot decode the PNG: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown error"));
     for (std::size_t i = 0; i < count; ++i) f.values[i] = static_cast<double>(px.get()[i]) / 65535.0;
   } else {
     std::unique_ptr<stbi_uc, void (*)(void*)> px(stbi_load_from_memory(data, len, &w2, &h2, &channels, 1),
                                                  stbi_image_free);
     if (!px || w2 != w || h2 != h)
-      throw ImageError(name + ": cannot decode the PNG: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown error"));
+      throw ImageError(name +
+                       ": cannot decode the PNG: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown error"));
     for (std::size_t i = 0; i < count; ++i) f.values[i] = static_cast<double>(px.get()[i]) / 255.0;
   }
   return f;
 #else
   (void)bytes;
   (void)limits;
-  throw ImageError(name + ": PNG input is not available in this build (stb_image was not found; install libstb-dev "
-                          "and reconfigure, or convert the image with `pngtopam x.png > x.pgm`)");
+  throw ImageError(name +
+                   ": PNG input is not available in this build (stb_image was not found; install libstb-dev "
+                   "and reconfigure, or convert the image with `pngtopam x.png > x.pgm`)");
 #endif
 }
 
@@ -258,8 +270,8 @@ HeightField parse_height_field(std::string_view bytes, std::string_view file, co
   if (bytes.size() >= 2 && bytes[0] == 'P' && bytes[1] >= '1' && bytes[1] <= '7') return parse_pgm(bytes, file, limits);
   const std::string name(file);
   if (bytes.empty()) throw ImageError(name + ": empty file, expected a PGM or PNG image");
-  throw ImageError(name + ": not a PGM (P2/P5) or PNG image: it starts with " +
-                   describe(bytes, 0) + (bytes.size() > 1 ? " " + describe(bytes, 1) : std::string()));
+  throw ImageError(name + ": not a PGM (P2/P5) or PNG image: it starts with " + describe(bytes, 0) +
+                   (bytes.size() > 1 ? " " + describe(bytes, 1) : std::string()));
 }
 
 HeightField read_height_field(const std::string& path, const ImageLimits& limits) {

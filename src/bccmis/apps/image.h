@@ -17,11 +17,9 @@ struct HeightField {
   std::int64_t width = 0;
   std::int64_t height = 0;
   std::vector<double> values;
-  int maxval = 0;       ///< the file's maxval (255 or 65535 for PNG)
-  std::string format;   ///< "P2", "P5" or "PNG"
-  double at(std::int64_t col, std::int64_t row) const {
-    return values[static_cast<std::size_t>(row * width + col)];
-  }
+  int maxval = 0;      ///< the file's maxval (255 or 65535 for PNG)
+  std::string format;  ///< "P2", "P5" or "PNG"
+  double at(std::int64_t col, std::int64_t row) const { return values[static_cast<std::size_t>(row * width + col)]; }
 };
 
 /// A malformed or unsupported image. what() names the file and where:
@@ -33,7 +31,7 @@ struct ImageError : std::runtime_error {
 
 /// Limits that keep a hostile header from exhausting memory.
 struct ImageLimits {
-  std::int64_t max_side = 65536;             ///< width and height at most this
+  std::int64_t max_side = 65536;                    ///< width and height at most this
   std::int64_t max_pixels = std::int64_t{1} << 26;  ///< width * height at most this (64 Mi)
 };
 

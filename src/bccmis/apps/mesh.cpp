@@ -261,7 +261,8 @@ void write_vtu(std::ostream& out, const TriangleMesh& m) {
   w.put("\" NumberOfCells=\"");
   w.put_int(static_cast<std::int64_t>(m.triangles.size()));
   w.put("\">\n");
-  w.put("      <PointData Scalars=\"height\">\n        <DataArray type=\"Float64\" Name=\"height\" format=\"ascii\">\n");
+  w.put(
+      "      <PointData Scalars=\"height\">\n        <DataArray type=\"Float64\" Name=\"height\" format=\"ascii\">\n");
   // One number (or three) a line after the indent.
   auto line = [&](const auto& write) {
     char* p = w.room(kLine + indent.size());
@@ -291,7 +292,8 @@ void write_vtu(std::ostream& out, const TriangleMesh& m) {
   for (std::size_t i = 0; i < m.triangles.size(); ++i)
     line([&](char* p) { return TextWriter::write_uint(p, 3 * (i + 1)); });
   w.put("        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
-  for (std::size_t i = 0; i < m.triangles.size(); ++i) line([](char* p) {
+  for (std::size_t i = 0; i < m.triangles.size(); ++i)
+    line([](char* p) {
       *p = '5';
       return p + 1;
     });

@@ -26,11 +26,11 @@ namespace bccmis {
 /// position order (nodes first).
 struct TriangleMesh {
   std::vector<std::array<double, 3>> vertices;
-  std::vector<Point> vertex_position;               ///< lattice position of each vertex
+  std::vector<Point> vertex_position;                 ///< lattice position of each vertex
   std::vector<std::array<std::size_t, 3>> triangles;  ///< 0-based vertex indices
-  std::vector<Point> triangle_cell;                 ///< the center of the cell each triangle belongs to
-  std::vector<int> triangle_level;                  ///< that cell's level
-  std::vector<double> triangle_error;               ///< optional: that cell's error (empty: none)
+  std::vector<Point> triangle_cell;                   ///< the center of the cell each triangle belongs to
+  std::vector<int> triangle_level;                    ///< that cell's level
+  std::vector<double> triangle_error;                 ///< optional: that cell's error (empty: none)
 };
 
 /// The fan triangulation of g (one triangle per stored center-node edge),

@@ -108,8 +108,9 @@ CoarsenResult coarsen(Graph3& g, const Point3& n) {
     if (k == 2 || k == 4) M.insert(b);
   }
   if (B.size() != 26 || M.size() != 18)
-    throw std::logic_error("coarsen: the children's boundary is not 8 corners, 12 edge midpoints and "
-                           "6 face centers; the graph is not a valid lattice");
+    throw std::logic_error(
+        "coarsen: the children's boundary is not 8 corners, 12 edge midpoints and "
+        "6 face centers; the graph is not a valid lattice");
 
   // 2. Unhook and delete the children: K2a-K2f.
   //= bccmis3d#eq-K2a

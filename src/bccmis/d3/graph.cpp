@@ -31,8 +31,8 @@ void validate_lattice_size(const LatticeSize3& size) {
   } extents[] = {{"width W", size.W}, {"height H", size.H}, {"depth D", size.D}};
   for (const auto& [name, count] : extents)
     if (count > max_cubes)
-      throw LatticeError(std::string("lattice ") + name + " = " + std::to_string(count) + " with L = " +
-                         std::to_string(size.L) + " makes the domain extent " + std::to_string(count) +
+      throw LatticeError(std::string("lattice ") + name + " = " + std::to_string(count) +
+                         " with L = " + std::to_string(size.L) + " makes the domain extent " + std::to_string(count) +
                          "*2^(L+1) exceed 2^62");
 }
 

@@ -66,10 +66,10 @@ struct Graph3 {
   explicit Graph3(const LatticeSize3& size);
 
   LatticeSize3 size;
-  PointSet3 N;                             ///< node vertices
-  PointSet3 C;                             ///< cell-center vertices
+  PointSet3 N;                            ///< node vertices
+  PointSet3 C;                            ///< cell-center vertices
   std::map<Point3, PointSet3> neighbors;  ///< N(v) for every v in N ∪ C
-  std::map<Point3, int> level;             ///< refinement level of every c in C
+  std::map<Point3, int> level;            ///< refinement level of every c in C
 
   /// N(v); the empty set for a vertex not in the graph.
   const PointSet3& nbr(const Point3& v) const;

@@ -123,8 +123,9 @@ RefineResult refine(Graph3& g, const Point3& c) {
         for (std::int64_t dz : {-half, half}) p[i++] = {c.x + dx, c.y + dy, c.z + dz};
   }
   if (P != PointSet3(p.begin(), p.end()))
-    throw std::logic_error("refine: P is not the 8 corners of c although no face or edge neighbour is "
-                           "coarser; the graph is not a valid lattice");
+    throw std::logic_error(
+        "refine: P is not the 8 corners of c although no face or edge neighbour is "
+        "coarser; the graph is not a valid lattice");
 
   // The edges and faces of c (choice Q2), each with its midpoint m and, when
   // m is not an old junction, the cells around it other than c (R1e, R1f),
@@ -132,14 +133,14 @@ RefineResult refine(Graph3& g, const Point3& c) {
   struct Edge {
     CubeEdge e;
     Point3 m;
-    bool old;         // m is an old junction (step 4), else a new node (step 3)
-    PointSet3 X_e;    // the cells around the edge other than c (new nodes only)
+    bool old;       // m is an old junction (step 4), else a new node (step 3)
+    PointSet3 X_e;  // the cells around the edge other than c (new nodes only)
   };
   struct Face {
     CubeFace f;
     Point3 m;
     bool old;
-    PointSet3 X_f;    // the cell across the face, if any (new nodes only)
+    PointSet3 X_f;  // the cell across the face, if any (new nodes only)
   };
   std::vector<Edge> edges;
   for (const CubeEdge& e : cube_edges(p)) {
@@ -167,8 +168,8 @@ RefineResult refine(Graph3& g, const Point3& c) {
     //= type=choice
     //= reason=V7: 0 or 1 cell, none on the domain boundary
     //# X_f = ( N(p_i) ∩ N(p_j) ∩ N(p_k) ∩ N(p_m) ) \ {c}  for each face f of c with m(f) not in J
-    PointSet3 X_f = minus(intersect(intersect(g.nbr(p[i]), g.nbr(p[j])), intersect(g.nbr(p[k]), g.nbr(p[m4]))),
-                          PointSet3{c});
+    PointSet3 X_f =
+        minus(intersect(intersect(g.nbr(p[i]), g.nbr(p[j])), intersect(g.nbr(p[k]), g.nbr(p[m4]))), PointSet3{c});
     faces.push_back({f, m, false, std::move(X_f)});
   }
   //= bccmis3d#claim-J-on-edges-and-faces
@@ -177,8 +178,9 @@ RefineResult refine(Graph3& g, const Point3& c) {
   for (const Edge& e : edges) old_junctions += e.old;
   for (const Face& f : faces) old_junctions += f.old;
   if (old_junctions != J.size())
-    throw std::logic_error("refine: a junction of c is not an edge midpoint or face center of c; "
-                           "the graph is not a valid lattice");
+    throw std::logic_error(
+        "refine: a junction of c is not an edge midpoint or face center of c; "
+        "the graph is not a valid lattice");
 
   // 2. Subdivide c: R2a-R2h. y_i is the child whose cube has corner p_i,
   //    centred halfway between c and p_i (choice Q1, a position use).

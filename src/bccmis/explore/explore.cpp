@@ -52,9 +52,7 @@ std::uint64_t zigzag(std::int64_t v) {
   return (static_cast<std::uint64_t>(v) << 1) ^ static_cast<std::uint64_t>(v >> 63);
 }
 
-std::int64_t unzigzag(std::uint64_t v) {
-  return static_cast<std::int64_t>(v >> 1) ^ -static_cast<std::int64_t>(v & 1);
-}
+std::int64_t unzigzag(std::uint64_t v) { return static_cast<std::int64_t>(v >> 1) ^ -static_cast<std::int64_t>(v & 1); }
 
 struct Reader {
   const std::string& s;
@@ -230,8 +228,8 @@ struct StateWork {
   std::vector<std::pair<std::string, Origin>> children;  // successors not seen before the batch
   std::int64_t refine_edges = 0, coarsen_edges = 0, ops_tried = 0, refused = 0, vertices = 0;
   bool failed = false;
-  std::string message;                 // the first failure in this state
-  std::vector<TraceCommand> extra;     // the commands after the state that reproduce it
+  std::string message;              // the first failure in this state
+  std::vector<TraceCommand> extra;  // the commands after the state that reproduce it
 };
 
 using RefineFn = std::function<RefineResult(Graph&, const Point&)>;
@@ -394,8 +392,7 @@ constexpr std::int64_t kBatch = 256;
 
 class Explorer {
  public:
-  Explorer(const LatticeSize& size, const ExploreOptions& options)
-      : size_(size), options_(options), grid_(size) {
+  Explorer(const LatticeSize& size, const ExploreOptions& options) : size_(size), options_(options), grid_(size) {
     refine_ = options.refine ? options.refine : [](Graph& g, const Point& c) { return bccmis::refine(g, c); };
     coarsen_ = options.coarsen ? options.coarsen : [](Graph& g, const Point& n) { return bccmis::coarsen(g, n); };
     threads_ = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
@@ -426,7 +423,8 @@ class Explorer {
       };
       const int helpers = static_cast<int>(std::min<std::int64_t>(threads_, end - begin)) - 1;
       std::vector<std::thread> pool;
-      for (int t = 0; t < helpers; ++t) pool.emplace_back(worker, std::ref(processors[static_cast<std::size_t>(t + 1)]));
+      for (int t = 0; t < helpers; ++t)
+        pool.emplace_back(worker, std::ref(processors[static_cast<std::size_t>(t + 1)]));
       worker(processors[0]);
       for (std::thread& t : pool) t.join();
 
@@ -459,9 +457,7 @@ class Explorer {
   }
 
  private:
-  double elapsed() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
+  double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
 
   ExploreProgress progress() const {
     ExploreProgress p;
@@ -521,9 +517,7 @@ std::string encode_state_key(const Graph& g) {
   return out;
 }
 
-Graph decode_state_key(const std::string& key, const LatticeSize& size) {
-  return decode(key, size, Grid(size));
-}
+Graph decode_state_key(const std::string& key, const LatticeSize& size) { return decode(key, size, Grid(size)); }
 
 ExploreResult explore(const LatticeSize& size, const ExploreOptions& options) {
   validate_lattice_size(size);
@@ -550,15 +544,14 @@ std::string summary(const ExploreResult& r) {
 std::string to_json(const ExploreResult& r) {
   char secs[32];
   std::snprintf(secs, sizeof secs, "%.3f", r.seconds);
-  std::string out = "{\"W\": " + std::to_string(r.size.W) + ", \"H\": " + std::to_string(r.size.H) +
-                    ", \"L\": " + std::to_string(r.size.L) + ", \"states\": " + std::to_string(r.states) +
-                    ", \"refine_edges\": " + std::to_string(r.refine_edges) +
-                    ", \"coarsen_edges\": " + std::to_string(r.coarsen_edges) +
-                    ", \"ops_tried\": " + std::to_string(r.ops_tried) + ", \"refused\": " + std::to_string(r.refused) +
-                    ", \"failures\": " + std::to_string(r.failures) +
-                    ", \"max_vertices\": " + std::to_string(r.max_vertices) +
-                    ", \"complete\": " + (r.complete ? "true" : "false") + ", \"ok\": " + (r.ok() ? "true" : "false") +
-                    ", \"seconds\": " + secs;
+  std::string out =
+      "{\"W\": " + std::to_string(r.size.W) + ", \"H\": " + std::to_string(r.size.H) +
+      ", \"L\": " + std::to_string(r.size.L) + ", \"states\": " + std::to_string(r.states) +
+      ", \"refine_edges\": " + std::to_string(r.refine_edges) +
+      ", \"coarsen_edges\": " + std::to_string(r.coarsen_edges) + ", \"ops_tried\": " + std::to_string(r.ops_tried) +
+      ", \"refused\": " + std::to_string(r.refused) + ", \"failures\": " + std::to_string(r.failures) +
+      ", \"max_vertices\": " + std::to_string(r.max_vertices) + ", \"complete\": " + (r.complete ? "true" : "false") +
+      ", \"ok\": " + (r.ok() ? "true" : "false") + ", \"seconds\": " + secs;
   if (r.first_failure)
     out += ", \"failure\": {\"message\": " + json_string(r.first_failure->message) +
            ", \"trace\": " + json_string(r.first_failure->trace) + "}";

@@ -26,12 +26,12 @@
 #include "bccmis/trace.h"
 
 #include <algorithm>
-#include <ostream>
 #include <array>
 #include <bit>
 #include <charconv>
 #include <cstring>
 #include <limits>
+#include <ostream>
 #include <stdexcept>
 
 #if defined(__linux__)
@@ -81,7 +81,8 @@ std::uint64_t mix(const Point& p) {
   return h;
 }
 
-constexpr std::size_t kMaxPool = (std::size_t{1} << 26) - 1;  // indices below 2^26 (the position table's reference field)
+constexpr std::size_t kMaxPool =
+    (std::size_t{1} << 26) - 1;  // indices below 2^26 (the position table's reference field)
 
 // The level of the cell centered at p, from p alone (spec/formats.md: a
 // level-l center has both coordinates odd multiples of 2^(L-l)); empty if p
@@ -152,7 +153,6 @@ void detail::advise_huge_pages(void* p, std::size_t bytes) noexcept {
 
 // ---- SmallPoints / outcomes --------------------------------------------------
 
-
 // ---- Records -----------------------------------------------------------------
 
 Point Lattice::Center::position() const {
@@ -204,7 +204,6 @@ Point Lattice::node_position(Index n) const {
 // spacing keeps their runs apart (homes in consecutive slots make long Robin
 // Hood runs). The load factor stays at most 0.6.
 
-
 std::size_t Lattice::home(const Point& p) const {
   return home_at(p, std::countr_zero(static_cast<std::uint64_t>(p.x)));
 }
@@ -212,7 +211,7 @@ std::size_t Lattice::home(const Point& p) const {
 std::size_t Lattice::home_at(const Point& p, int t) const {
   // p is a cell center position: both coordinates odd multiples of 2^t.
   if (t >= size_.L) return static_cast<std::size_t>(mix(p) >> table_shift_);  // level 0: no parent
-  const std::int64_t s = std::int64_t{1} << (t + 2);  // the parent's side
+  const std::int64_t s = std::int64_t{1} << (t + 2);                          // the parent's side
   const Point parent{(p.x & ~(s - 1)) | (s / 2), (p.y & ~(s - 1)) | (s / 2)};
   const std::size_t q = ((p.x & (s / 2)) ? 1u : 0u) | ((p.y & (s / 2)) ? 2u : 0u);
   return child_home(static_cast<std::size_t>(mix(parent) >> table_shift_), q);
@@ -457,8 +456,8 @@ Lattice Lattice::from_graph(const Graph& g) {
         for (int k = 0; k < 2; ++k) lat.nodes_[n].cell[kInwardQuad[s][k]] = ci;
       } else {
         throw std::invalid_argument("from_graph: node (" + std::to_string(b.x) + ", " + std::to_string(b.y) +
-                                    ") is neither a corner nor a side midpoint of cell (" + std::to_string(c.x) +
-                                    ", " + std::to_string(c.y) + ")");
+                                    ") is neither a corner nor a side midpoint of cell (" + std::to_string(c.x) + ", " +
+                                    std::to_string(c.y) + ")");
       }
     }
     for (int q = 0; q < 4; ++q)
@@ -887,8 +886,8 @@ void for_each_sorted(const Pool& pool, std::size_t live, int coord_bits, int pay
     for (std::size_t i = 0; i < pool.size(); ++i)
       if (pool[i].live()) {
         const Point p = position(static_cast<Index>(i));
-        keys.push_back(static_cast<std::uint64_t>(p.x) << x_shift |
-                       static_cast<std::uint64_t>(p.y) << payload_bits | payload(static_cast<Index>(i)));
+        keys.push_back(static_cast<std::uint64_t>(p.x) << x_shift | static_cast<std::uint64_t>(p.y) << payload_bits |
+                       payload(static_cast<Index>(i)));
       }
     sort_by_high_bits(keys, payload_bits, 2 * coord_bits);
     for (const std::uint64_t k : keys)
@@ -1012,7 +1011,6 @@ void write_canonical_state(std::ostream& out, const Lattice& g) {
 }
 
 std::string canonical_state(const Lattice& g) { return canonical_text(g); }
-
 
 // ---- Memory and audit -------------------------------------------------------------------
 

@@ -211,9 +211,7 @@ class Lattice {
     void set_position(const Point& p);
     bool live() const { return corner[3] != kFreeMark; }
     /// The level of this center in a lattice of maximum level L.
-    int level(int L) const {
-      return L - std::countr_zero(std::uint64_t{xy[0]} | (std::uint64_t{xy[1]} << 32));
-    }
+    int level(int L) const { return L - std::countr_zero(std::uint64_t{xy[0]} | (std::uint64_t{xy[1]} << 32)); }
   };
   /// A node: the leaf cell in each quadrant around it (kNone outside the
   /// domain). 16 bytes. A free slot has cell[3] == kFreeMark and cell[0]
@@ -263,7 +261,7 @@ class Lattice {
   // live and consistent.
   static constexpr Index kNodeBit = 1u << 26;
   static constexpr std::uint32_t kRefMask = (1u << 27) - 1;  ///< a slot's reference bits
-  static constexpr int kDistShift = 27;                       ///< a slot's 1 + displacement bits
+  static constexpr int kDistShift = 27;                      ///< a slot's 1 + displacement bits
   static constexpr std::uint32_t kDistSaturated = 31;
   /// A slot holding ref at `displacement` from its home.
   static constexpr std::uint32_t encode(Index ref, std::size_t displacement) {

@@ -72,11 +72,10 @@ void check_refine_result(const Graph& before, const Graph& g, const RefineResult
                          const std::string& op) {
   if (!r.applied()) {
     if (!(g == before))
-      throw ViolationError(inv::violation(0, "refused-changed", {c},
-                                          op + " was refused (" + std::string(code(*r.refused)) +
-                                              ") but changed the state",
-                                          "§2.1 ¶1"),
-                           "after " + op);
+      throw ViolationError(
+          inv::violation(0, "refused-changed", {c},
+                         op + " was refused (" + std::string(code(*r.refused)) + ") but changed the state", "§2.1 ¶1"),
+          "after " + op);
     return;
   }
   validate(g, "after " + op);
@@ -118,11 +117,10 @@ void check_coarsen_result(const Graph& before, const Graph& g, const CoarsenResu
                           const std::string& op) {
   if (!r.applied()) {
     if (!(g == before))
-      throw ViolationError(inv::violation(0, "refused-changed", {n},
-                                          op + " was refused (" + std::string(code(*r.refused)) +
-                                              ") but changed the state",
-                                          "§2.2 ¶1"),
-                           "after " + op);
+      throw ViolationError(
+          inv::violation(0, "refused-changed", {n},
+                         op + " was refused (" + std::string(code(*r.refused)) + ") but changed the state", "§2.2 ¶1"),
+          "after " + op);
     return;
   }
   validate(g, "after " + op);

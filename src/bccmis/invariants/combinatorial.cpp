@@ -35,14 +35,13 @@ std::optional<Violation> check_combinatorial(const Graph& g) {
   // layer computes 2^(L+1) and W*S).
   {
     const LatticeSize& s = g.size;
-    const std::string text = "lattice " + std::to_string(s.W) + " " + std::to_string(s.H) + " " +
-                             std::to_string(s.L) + " is out of range: ";
+    const std::string text =
+        "lattice " + std::to_string(s.W) + " " + std::to_string(s.H) + " " + std::to_string(s.L) + " is out of range: ";
     if (s.W < 1 || s.H < 1) return violation(layer, "lattice-size", {}, text + "W and H must be >= 1", "§1");
     if (s.L < 0 || s.L > 61) return violation(layer, "lattice-size", {}, text + "L must be in 0..61", "§1");
     const std::int64_t max_cells = (std::int64_t{1} << 62) >> (s.L + 1);  // W*S <= 2^62
     if (s.W > max_cells || s.H > max_cells)
-      return violation(layer, "lattice-size", {}, text + "the domain side W*2^(L+1) or H*2^(L+1) exceeds 2^62",
-                       "§1");
+      return violation(layer, "lattice-size", {}, text + "the domain side W*2^(L+1) or H*2^(L+1) exceeds 2^62", "§1");
   }
 
   // partition: N ∩ C = ∅ (§2 "two disjoint vertex sets"). The first node
@@ -65,10 +64,9 @@ std::optional<Violation> check_combinatorial(const Graph& g) {
     for (const Point& v : set) {
       while (e != g.neighbors.end() && e->first < v) ++e;
       if (e == g.neighbors.end() || e->first != v)
-        return violation(layer, "neighbor-entry", {v},
-                         std::string(kind(centers)) + " " + pos(v) +
-                             " has no neighbor set (no entry in the neighbor map)",
-                         "§2");
+        return violation(
+            layer, "neighbor-entry", {v},
+            std::string(kind(centers)) + " " + pos(v) + " has no neighbor set (no entry in the neighbor map)", "§2");
     }
   }
 
@@ -121,10 +119,9 @@ std::optional<Violation> check_combinatorial(const Graph& g) {
                                       (v_center ? "nodes" : "centers"),
                                   "§2");
         } else if (!symmetry && !entry->second.count(v)) {
-          symmetry = violation(layer, "symmetry", {v, w},
-                               k + " " + pos(v) + " lists " + kind(w_center) + " " + pos(w) +
-                                   ", which does not list it",
-                               "§2");
+          symmetry = violation(
+              layer, "symmetry", {v, w},
+              k + " " + pos(v) + " lists " + kind(w_center) + " " + pos(w) + ", which does not list it", "§2");
         }
       }
     }

@@ -81,9 +81,10 @@ std::optional<Violation> check_geometry(const Graph& g) {
       const Point a = ancestor(domain, c, k);
       if (g.C.count(a))
         return violation(layer, "overlap", {a, c},
-                         "the level-" + std::to_string(g.level.at(c)) + " cell " + square(c, domain.half(g.level.at(c))) +
-                             " of center " + pos(c) + " lies inside the level-" + std::to_string(k) + " cell " +
-                             square(a, domain.half(k)) + " of center " + pos(a),
+                         "the level-" + std::to_string(g.level.at(c)) + " cell " +
+                             square(c, domain.half(g.level.at(c))) + " of center " + pos(c) +
+                             " lies inside the level-" + std::to_string(k) + " cell " + square(a, domain.half(k)) +
+                             " of center " + pos(a),
                          "§1 ¶7");
       if (!refined.insert(a).second) break;  // a and its ancestors were walked already
     }
@@ -116,8 +117,8 @@ std::optional<Violation> check_geometry(const Graph& g) {
   for (const Point& r : refined) {
     const int k = *domain.center_level(r);
     const std::int64_t q = domain.half(k + 1);
-    for (const Point child : {Point{r.x - q, r.y - q}, Point{r.x - q, r.y + q}, Point{r.x + q, r.y - q},
-                              Point{r.x + q, r.y + q}})
+    for (const Point child :
+         {Point{r.x - q, r.y - q}, Point{r.x - q, r.y + q}, Point{r.x + q, r.y - q}, Point{r.x + q, r.y + q}})
       if (!g.C.count(child) && !refined.count(child)) return gap(child, k + 1);
   }
   // Every present level-0 cell is a cell or refined, so a missing one turns up

@@ -28,9 +28,7 @@ namespace bccmis::inv {
 
 namespace {
 
-std::string neighbors_text(std::size_t k) {
-  return std::to_string(k) + (k == 1 ? " neighbor" : " neighbors");
-}
+std::string neighbors_text(std::size_t k) { return std::to_string(k) + (k == 1 ? " neighbor" : " neighbors"); }
 
 }  // namespace
 
@@ -50,8 +48,8 @@ std::optional<Violation> check_structural(const Graph& g) {
     if (!level) continue;  // not a cell center: layer 4
     const std::int64_t h = domain.half(*level);
     // center-corner: the four corners, in sorted order.
-    for (const Point corner : {Point{c.x - h, c.y - h}, Point{c.x - h, c.y + h}, Point{c.x + h, c.y - h},
-                               Point{c.x + h, c.y + h}})
+    for (const Point corner :
+         {Point{c.x - h, c.y - h}, Point{c.x - h, c.y + h}, Point{c.x + h, c.y - h}, Point{c.x + h, c.y + h}})
       if (!nbrs.count(corner))
         return violation(layer, "center-corner", {c, corner},
                          "center " + pos(c) + " does not list " + pos(corner) + ", a corner of its level-" +
@@ -61,8 +59,9 @@ std::optional<Violation> check_structural(const Graph& g) {
     for (const Point& n : nbrs)
       if (role_of(c, h, n) == Role::None)
         return violation(layer, "center-neighbor", {c, n},
-                         "center " + pos(c) + " lists " + pos(n) + ", which is neither a corner nor a side midpoint of its level-" +
-                             std::to_string(*level) + " cell " + square(c, h),
+                         "center " + pos(c) + " lists " + pos(n) +
+                             ", which is neither a corner nor a side midpoint of its level-" + std::to_string(*level) +
+                             " cell " + square(c, h),
                          "§2.1");
   }
 
@@ -121,8 +120,9 @@ std::optional<Violation> check_structural(const Graph& g) {
                                                       : "interior node";
       std::string text = std::string(kind) + " " + pos(n) + " has " + neighbors_text(as_corner) + ", ";
       if (place == Place::Interior)
-        text += "none of which has it as a side midpoint; an interior corner has 4 (a junction 3, one of them the "
-                "coarse cell that has it as a side midpoint)";
+        text +=
+            "none of which has it as a side midpoint; an interior corner has 4 (a junction 3, one of them the "
+            "coarse cell that has it as a side midpoint)";
       else
         text += std::string("a ") + kind + " has " + std::to_string(expected);
       return violation(layer, "node-degree", {n}, text, "§1 ¶5");

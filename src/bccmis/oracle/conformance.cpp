@@ -104,7 +104,8 @@ ImplRun run_implementation(const std::string& command, const std::string& trace_
   int open_fds = 2;
   char buf[65536];
   while (open_fds > 0) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0) {
       run.timed_out = true;
       ::kill(-pid, SIGKILL);
@@ -178,7 +179,9 @@ std::string compare_run(const Trace& trace, const ImplRun& run) {
 }
 
 Trace random_trace(std::mt19937_64& rng, int max_ops) {
-  auto uniform = [&](std::int64_t lo, std::int64_t hi) { return std::uniform_int_distribution<std::int64_t>(lo, hi)(rng); };
+  auto uniform = [&](std::int64_t lo, std::int64_t hi) {
+    return std::uniform_int_distribution<std::int64_t>(lo, hi)(rng);
+  };
   Trace t;
   t.size = {uniform(1, 3), uniform(1, 3), static_cast<int>(uniform(1, 3))};
   Graph g = make_lattice(t.size);
@@ -298,7 +301,8 @@ std::optional<ViewSide> implementation_side(const Trace& trace, const ImplRun& f
       prefix.commands.resize(side.step);
       const std::optional<ImplRun> part = rerun(prefix);
       std::vector<std::string> ignored;
-      if (part && !part->timed_out && part->signal == 0 && part->exit_code == 0) split_output(part->out, ignored, impl_state);
+      if (part && !part->timed_out && part->signal == 0 && part->exit_code == 0)
+        split_output(part->out, ignored, impl_state);
     }
   }
   if (!impl_state.empty()) {
@@ -319,7 +323,8 @@ std::string disagreement_page(const Trace& trace, const ConformanceOptions& o) {
   ViewOptions vo;
   vo.title = "conformance: first disagreement of '" + o.impl + "' with the reference";
   vo.check = [](const Graph& g) { return find_violation(g, 4); };
-  vo.side = implementation_side(trace, run(trace), [&](const Trace& t) { return std::optional<ImplRun>(run(t)); }, true);
+  vo.side = implementation_side(
+      trace, run(trace), [&](const Trace& t) { return std::optional<ImplRun>(run(t)); }, true);
   if (vo.side) vo.open_step = vo.side->step;
   return view_trace(trace, vo).html;
 }

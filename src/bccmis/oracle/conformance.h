@@ -18,12 +18,12 @@
 namespace bccmis {
 
 struct ConformanceOptions {
-  std::string impl;                    ///< shell command; the trace file path is appended
-  std::vector<std::string> trace_files;///< bundled traces to run first
-  int random = 0;                      ///< number of random traces
-  std::uint64_t seed = 1;              ///< seed of the random traces
-  int max_ops = 30;                    ///< operations per random trace
-  double timeout_seconds = 10;         ///< per run of the implementation
+  std::string impl;                      ///< shell command; the trace file path is appended
+  std::vector<std::string> trace_files;  ///< bundled traces to run first
+  int random = 0;                        ///< number of random traces
+  std::uint64_t seed = 1;                ///< seed of the random traces
+  int max_ops = 30;                      ///< operations per random trace
+  double timeout_seconds = 10;           ///< per run of the implementation
   /// If set, called with a viewer page (bccmis view) for the minimal trace of
   /// the first disagreement: the reference replay, with the implementation's
   /// state beside the reference state at the first disagreement.
@@ -32,8 +32,8 @@ struct ConformanceOptions {
 
 /// The output of one run of the implementation.
 struct ImplRun {
-  int exit_code = 0;       ///< exit status when it exited normally
-  int signal = 0;          ///< terminating signal, 0 if none
+  int exit_code = 0;  ///< exit status when it exited normally
+  int signal = 0;     ///< terminating signal, 0 if none
   bool timed_out = false;
   std::string out, err;
 };

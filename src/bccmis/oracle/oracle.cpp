@@ -53,8 +53,7 @@ std::string xml_escape(const std::string& s) {
 
 std::vector<std::string> diff_states(const Graph& a, const Graph& b) {
   std::vector<std::string> out;
-  if (!(a.size == b.size))
-    out.push_back("lattice: A is " + lattice_text(a.size) + ", B is " + lattice_text(b.size));
+  if (!(a.size == b.size)) out.push_back("lattice: A is " + lattice_text(a.size) + ", B is " + lattice_text(b.size));
   PointSet all;
   for (const Graph* g : {&a, &b}) {
     all.insert(g->N.begin(), g->N.end());
@@ -77,8 +76,8 @@ std::vector<std::string> diff_states(const Graph& a, const Graph& b) {
       continue;
     }
     if (a.is_center(p) && a.level.count(p) && b.level.count(p) && a.level.at(p) != b.level.at(p))
-      out.push_back(pos(p) + ": level " + std::to_string(a.level.at(p)) + " in A, " +
-                    std::to_string(b.level.at(p)) + " in B");
+      out.push_back(pos(p) + ": level " + std::to_string(a.level.at(p)) + " in A, " + std::to_string(b.level.at(p)) +
+                    " in B");
     const PointSet& na = a.nbr(p);
     const PointSet& nb = b.nbr(p);
     if (na != nb) {
@@ -115,8 +114,8 @@ Stats stats(const Graph& g) {
   // libstdc++ red-black tree nodes: 32 bytes of header plus the value, rounded
   // to 8. Point = 16 bytes; a std::set header = 48 bytes.
   const std::size_t set_node = 32 + 16, nbr_map_node = 32 + 16 + 48, level_node = 32 + 16 + 8;
-  s.reference_bytes = set_node * (g.N.size() + g.C.size()) + nbr_map_node * g.neighbors.size() +
-                      set_node * entries + level_node * g.level.size();
+  s.reference_bytes = set_node * (g.N.size() + g.C.size()) + nbr_map_node * g.neighbors.size() + set_node * entries +
+                      level_node * g.level.size();
   return s;
 }
 
@@ -136,7 +135,8 @@ std::string format_stats(const Stats& s, bool json) {
     return out;
   }
   out += "cells " + std::to_string(s.cells) + "\n";
-  for (const auto& [l, n] : s.cells_per_level) out += "cells_level_" + std::to_string(l) + " " + std::to_string(n) + "\n";
+  for (const auto& [l, n] : s.cells_per_level)
+    out += "cells_level_" + std::to_string(l) + " " + std::to_string(n) + "\n";
   out += "nodes " + std::to_string(s.nodes) + "\n";
   out += "junctions " + std::to_string(s.junctions) + "\n";
   out += "graph_edges " + std::to_string(s.graph_edges) + "\n";
@@ -184,7 +184,8 @@ std::string render_svg(const Graph& g, const std::string& title) {
   }
   out += "<g stroke=\"#2060b0\" stroke-width=\"1.2\" stroke-dasharray=\"4 3\">\n";
   for (const auto& [p, q] : hull) {
-    std::snprintf(buf, sizeof buf, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\"/>\n", X(p.x), Y(p.y), X(q.x), Y(q.y));
+    std::snprintf(buf, sizeof buf, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\"/>\n", X(p.x), Y(p.y), X(q.x),
+                  Y(q.y));
     out += buf;
   }
   out += "</g>\n";
@@ -192,7 +193,8 @@ std::string render_svg(const Graph& g, const std::string& title) {
   out += "<g stroke=\"#333333\" stroke-width=\"0.8\">\n";
   for (const Point& c : g.C)
     for (const Point& n : g.nbr(c)) {
-      std::snprintf(buf, sizeof buf, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\"/>\n", X(c.x), Y(c.y), X(n.x), Y(n.y));
+      std::snprintf(buf, sizeof buf, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\"/>\n", X(c.x), Y(c.y),
+                    X(n.x), Y(n.y));
       out += buf;
     }
   out += "</g>\n";
@@ -205,12 +207,14 @@ std::string render_svg(const Graph& g, const std::string& title) {
   out += "<g>\n";
   for (const Point& n : g.N) {
     const bool junction = g.nbr(n).size() == 3;
-    std::snprintf(buf, sizeof buf, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\" fill=\"#2a7a2a\"/>\n", X(n.x), Y(n.y), r_node);
+    std::snprintf(buf, sizeof buf, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\" fill=\"#2a7a2a\"/>\n", X(n.x), Y(n.y),
+                  r_node);
     out += buf;
     if (junction) {
-      std::snprintf(buf, sizeof buf,
-                    "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\" fill=\"none\" stroke=\"#d02020\" stroke-width=\"%.2f\"/>\n",
-                    X(n.x), Y(n.y), r_ring, r_ring / 3);
+      std::snprintf(
+          buf, sizeof buf,
+          "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\" fill=\"none\" stroke=\"#d02020\" stroke-width=\"%.2f\"/>\n",
+          X(n.x), Y(n.y), r_ring, r_ring / 3);
       out += buf;
     }
   }

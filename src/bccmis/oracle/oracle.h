@@ -20,9 +20,9 @@ std::vector<std::string> diff_states(const Graph& a, const Graph& b);
 struct Stats {
   std::map<int, std::size_t> cells_per_level;
   std::size_t cells = 0, nodes = 0, junctions = 0;
-  std::size_t graph_edges = 0;   ///< stored node-center edges (each counted once)
-  std::size_t hull_edges = 0;    ///< edges of eq. (1): sides of cells between consecutive boundary nodes
-  std::size_t triangles = 0;     ///< one per (cell, hull edge) pair
+  std::size_t graph_edges = 0;      ///< stored node-center edges (each counted once)
+  std::size_t hull_edges = 0;       ///< edges of eq. (1): sides of cells between consecutive boundary nodes
+  std::size_t triangles = 0;        ///< one per (cell, hull edge) pair
   std::size_t reference_bytes = 0;  ///< estimate of the reference std::set/std::map storage
 };
 Stats stats(const Graph& g);

@@ -121,13 +121,13 @@ class ModelBuilder {
   }
 
   struct Step {
-    std::string label;     ///< what the step did, e.g. "refine 4 4" or a file name
-    std::string op;        ///< initial, refine, coarsen, check, state
-    int line = 0;          ///< trace line, 0 if none
+    std::string label;  ///< what the step did, e.g. "refine 4 4" or a file name
+    std::string op;     ///< initial, refine, coarsen, check, state
+    int line = 0;       ///< trace line, 0 if none
     std::optional<Point> at;
     std::string decision;  ///< "ok", "refused <code>", or empty
     int level = -1;        ///< refine: level of c; coarsen: level of the new cell
-    PointSet Y, J;        ///< refine: Y and J+; coarsen: removed Y and J-
+    PointSet Y, J;         ///< refine: Y and J+; coarsen: removed Y and J-
   };
 
   /// A step whose changes are anywhere: compares every vertex.
@@ -142,7 +142,8 @@ class ModelBuilder {
     for (int ring = 0; ring < 2; ++ring) {
       PointSet next = region;
       for (const Point& p : region)
-        for (const Graph* g : {static_cast<const Graph*>(&prev_), &now}) next.insert(g->nbr(p).begin(), g->nbr(p).end());
+        for (const Graph* g : {static_cast<const Graph*>(&prev_), &now})
+          next.insert(g->nbr(p).begin(), g->nbr(p).end());
       region = std::move(next);
     }
     std::vector<Point> changed;
@@ -291,8 +292,7 @@ ViewResult view_trace(const Trace& trace, const ViewOptions& o) {
   std::size_t step = 0;
   std::string log;
   const Graph g = replay<Graph>(
-      trace, log,
-      [&](const TraceCommand& c, const Graph& now, std::string_view, const StepResult<Graph>& r) {
+      trace, log, [&](const TraceCommand& c, const Graph& now, std::string_view, const StepResult<Graph>& r) {
         const ModelBuilder::Step s = trace_step(c, now, r);
         if (const auto vertices = static_cast<std::int64_t>(now.N.size() + now.C.size()); vertices > o.max_vertices)
           throw ViewLimitError(c.line, "after '" + s.label + "' the lattice has " + std::to_string(vertices) +

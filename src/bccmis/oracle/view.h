@@ -7,9 +7,9 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <stdexcept>
 #include <functional>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -52,11 +52,11 @@ struct ViewLimitError : std::runtime_error {
 };
 
 struct ViewResult {
-  std::string html;                             ///< the page
-  std::string json;                             ///< the model embedded in it (spec/viewer.md)
-  std::size_t steps = 0;                        ///< steps after the initial state
-  std::optional<std::size_t> first_violation;   ///< step of the first violated invariant
-  std::string violation;                        ///< its message (to_string of the violation)
+  std::string html;                            ///< the page
+  std::string json;                            ///< the model embedded in it (spec/viewer.md)
+  std::size_t steps = 0;                       ///< steps after the initial state
+  std::optional<std::size_t> first_violation;  ///< step of the first violated invariant
+  std::string violation;                       ///< its message (to_string of the violation)
 };
 
 /// The page for `trace`, replayed with the reference from its initial

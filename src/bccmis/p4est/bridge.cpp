@@ -33,9 +33,7 @@ Leaf ancestor(const LatticeSize& size, const Leaf& leaf, int k) {
 }
 
 // Coarsest first, then by position: the order in which import refines.
-bool level_first(const Leaf& a, const Leaf& b) {
-  return a.level != b.level ? a.level < b.level : a.center < b.center;
-}
+bool level_first(const Leaf& a, const Leaf& b) { return a.level != b.level ? a.level < b.level : a.center < b.center; }
 
 int g_sessions = 0;
 bool g_owns_mpi = false;
@@ -78,17 +76,17 @@ void ForestDeleter::operator()(p4est_t* p) const noexcept { p4est_destroy(p); }
 Brick::Brick(const LatticeSize& size) : size_(size) {
   validate_lattice_size(size);
   if (size.L > P4EST_QMAXLEVEL)
-    throw std::invalid_argument("bccmis::p4est_bridge: L = " + std::to_string(size.L) + " exceeds P4EST_QMAXLEVEL = " +
-                                std::to_string(P4EST_QMAXLEVEL));
+    throw std::invalid_argument("bccmis::p4est_bridge: L = " + std::to_string(size.L) +
+                                " exceeds P4EST_QMAXLEVEL = " + std::to_string(P4EST_QMAXLEVEL));
   if (size.W > std::numeric_limits<std::int32_t>::max() / size.H)
-    throw std::invalid_argument("bccmis::p4est_bridge: W x H = " + std::to_string(size.W) + " x " + std::to_string(size.H) +
-                                " trees exceed p4est's tree index");
+    throw std::invalid_argument("bccmis::p4est_bridge: W x H = " + std::to_string(size.W) + " x " +
+                                std::to_string(size.H) + " trees exceed p4est's tree index");
   shift_ = P4EST_QMAXLEVEL - size.L;
   conn_.reset(p4est_connectivity_new_brick(static_cast<int>(size.W), static_cast<int>(size.H), 0, 0));
   const auto trees = static_cast<std::size_t>(size.W * size.H);
   if (static_cast<std::size_t>(conn_->num_trees) != trees)
-    throw std::logic_error("bccmis::p4est_bridge: the brick has " + std::to_string(conn_->num_trees) + " trees, expected " +
-                           std::to_string(trees));
+    throw std::logic_error("bccmis::p4est_bridge: the brick has " + std::to_string(conn_->num_trees) +
+                           " trees, expected " + std::to_string(trees));
   // The brick's tree numbering, read from its vertex coordinates: tree t's
   // corners are tree_to_vertex[4t + k], k = 0..3 in p4est's z-order
   // (x fastest), at (i, j), (i+1, j), (i, j+1), (i+1, j+1).
@@ -128,8 +126,8 @@ Quadrant Brick::to_quadrant(const Leaf& leaf) const {
 
 Leaf Brick::to_leaf(const Quadrant& q) const {
   if (q.tree < 0 || static_cast<std::size_t>(q.tree) >= cell_of_tree_.size())
-    throw ImportError("bccmis::p4est_bridge: " + describe(q) + ": no such tree in the " + std::to_string(size_.W) + " x " +
-                      std::to_string(size_.H) + " brick");
+    throw ImportError("bccmis::p4est_bridge: " + describe(q) + ": no such tree in the " + std::to_string(size_.W) +
+                      " x " + std::to_string(size_.H) + " brick");
   if (q.level < 0 || q.level > size_.L)
     throw ImportError("bccmis::p4est_bridge: " + describe(q) + ": level " + std::to_string(q.level) +
                       (q.level < 0 ? " is negative" : " is deeper than the lattice's L = " + std::to_string(size_.L)));
@@ -195,7 +193,8 @@ ForestPtr make_forest(const Brick& brick, std::span<const Leaf> leaves, sc_MPI_C
 }
 
 ForestPtr export_forest(const Brick& brick, const Graph& g, sc_MPI_Comm comm) {
-  if (!(g.size == brick.size())) throw std::invalid_argument("bccmis::p4est_bridge: the graph and the brick differ in size");
+  if (!(g.size == brick.size()))
+    throw std::invalid_argument("bccmis::p4est_bridge: the graph and the brick differ in size");
   const std::vector<Leaf> all = leaves(g);
   return make_forest(brick, all, comm);
 }
@@ -245,7 +244,8 @@ Graph import_leaves(const LatticeSize& size, std::span<const Leaf> input) {
   std::vector<Leaf> sorted(input.begin(), input.end());
   std::sort(sorted.begin(), sorted.end());
   for (std::size_t k = 1; k < sorted.size(); ++k)
-    if (sorted[k] == sorted[k - 1]) throw ImportError("bccmis::p4est_bridge: " + describe(sorted[k]) + " is listed twice");
+    if (sorted[k] == sorted[k - 1])
+      throw ImportError("bccmis::p4est_bridge: " + describe(sorted[k]) + " is listed twice");
   // Every proper ancestor of a leaf is a refined cell of the lattice.
   std::vector<Leaf> refined;
   const std::int64_t width = size.W * level0_side(size), height = size.H * level0_side(size);
@@ -262,7 +262,8 @@ Graph import_leaves(const LatticeSize& size, std::span<const Leaf> input) {
   refined.erase(std::unique(refined.begin(), refined.end()), refined.end());
   for (const Leaf& leaf : sorted)
     if (std::binary_search(refined.begin(), refined.end(), leaf))
-      throw ImportError("bccmis::p4est_bridge: leaves overlap: " + describe(leaf) + " is a leaf and contains other leaves");
+      throw ImportError("bccmis::p4est_bridge: leaves overlap: " + describe(leaf) +
+                        " is a leaf and contains other leaves");
   // Refine coarsest first. Before level k, every refined cell coarser than k
   // is refined, so a cell coarser than k is a leaf of the input. refine(c)
   // (eq. 3, erratum E4) refuses exactly when an edge-neighbor of c is such
@@ -277,7 +278,8 @@ Graph import_leaves(const LatticeSize& size, std::span<const Leaf> input) {
                         " holds leaves of level " + std::to_string(c.level + 1) +
                         " or finer, but an edge-neighbor is a leaf coarser than level " + std::to_string(c.level));
     if (!r.applied())
-      throw ImportError("bccmis::p4est_bridge: " + describe(c) + " cannot be refined: " + std::string(code(*r.refused)));
+      throw ImportError("bccmis::p4est_bridge: " + describe(c) +
+                        " cannot be refined: " + std::string(code(*r.refused)));
   }
   if (g.C.size() != sorted.size()) {
     for (const auto& [c, l] : g.level)

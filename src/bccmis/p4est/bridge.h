@@ -110,9 +110,9 @@ class Brick {
  private:
   LatticeSize size_;
   std::unique_ptr<p4est_connectivity_t, ConnectivityDeleter> conn_;
-  std::vector<std::int32_t> tree_of_cell_;   // j * W + i -> tree
-  std::vector<std::int64_t> cell_of_tree_;   // tree -> j * W + i
-  int shift_ = 0;                            // 29 - L
+  std::vector<std::int32_t> tree_of_cell_;  // j * W + i -> tree
+  std::vector<std::int64_t> cell_of_tree_;  // tree -> j * W + i
+  int shift_ = 0;                           // 29 - L
 };
 
 /// The leaves of g (its cells and their levels), sorted.

@@ -33,7 +33,7 @@ std::string pos(const Point& p) { return to_string(p); }
 // An int64 as an exact number (doubles are exact up to 2^53).
 K::FT exact(std::int64_t v) {
   if (v > -(std::int64_t{1} << 53) && v < (std::int64_t{1} << 53)) return K::FT(static_cast<double>(v));
-  const std::int64_t hi = v >> 32;                           // arithmetic shift: v = hi * 2^32 + lo
+  const std::int64_t hi = v >> 32;  // arithmetic shift: v = hi * 2^32 + lo
   const auto lo = static_cast<std::uint32_t>(v & 0xffffffff);
   return K::FT(static_cast<double>(hi)) * K::FT(4294967296.0) + K::FT(static_cast<double>(lo));
 }
@@ -182,7 +182,8 @@ std::optional<Violation> find_triangulation_violation(const Graph& g) {
     for (const Point corner : {Point{0, 0}, Point{0, height}, Point{width, 0}, Point{width, height}})
       if (!handle.count(corner))
         return violation("hull-domain", {corner},
-                         "the domain corner " + pos(corner) + " is not a vertex, so the triangulation does not cover the domain",
+                         "the domain corner " + pos(corner) +
+                             " is not a vertex, so the triangulation does not cover the domain",
                          "§1 ¶6");
     if (t.dimension() == 2) {
       auto circ = t.incident_vertices(t.infinite_vertex()), done = circ;
@@ -190,7 +191,8 @@ std::optional<Violation> find_triangulation_violation(const Graph& g) {
         const Point p = vertex.at(circ);
         if (p.x != 0 && p.y != 0 && p.x != width && p.y != height)
           return violation("hull-domain", {p},
-                           "the vertex " + pos(p) + " is on the convex hull of the vertices but not on the domain boundary",
+                           "the vertex " + pos(p) +
+                               " is on the convex hull of the vertices but not on the domain boundary",
                            "§1 ¶6");
       } while (++circ != done);
     }

@@ -18,22 +18,17 @@
 namespace bccmis::inv {
 
 /// "(x, y)"
-inline std::string pos(const Point& p) {
-  return to_string(p);
-}
+inline std::string pos(const Point& p) { return to_string(p); }
 
 /// Where a point lies relative to the domain [0, W*S] x [0, H*S].
 enum class Place { Outside, Interior, Boundary, DomainCorner };
 
 struct Domain {
-  explicit Domain(const LatticeSize& s)
-      : L(s.L), S(std::int64_t{1} << (s.L + 1)), width(s.W * S), height(s.H * S) {}
+  explicit Domain(const LatticeSize& s) : L(s.L), S(std::int64_t{1} << (s.L + 1)), width(s.W * S), height(s.H * S) {}
   int L;
   std::int64_t S, width, height;
 
-  bool contains(const Point& p) const {
-    return p.x >= 0 && p.y >= 0 && p.x <= width && p.y <= height;
-  }
+  bool contains(const Point& p) const { return p.x >= 0 && p.y >= 0 && p.x <= width && p.y <= height; }
   Place place(const Point& p) const {
     if (!contains(p)) return Place::Outside;
     const bool on_x = p.x == 0 || p.x == width;

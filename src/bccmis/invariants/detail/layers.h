@@ -16,8 +16,8 @@ std::optional<Violation> check_grading(const Graph& g);        // layer 3, gradi
 std::optional<Violation> check_geometry(const Graph& g);       // layer 4, geometry.cpp
 
 /// A Violation whose message is "<code>: <text>".
-inline Violation violation(int layer, std::string code, std::vector<Point> where,
-                           const std::string& text, std::string section) {
+inline Violation violation(int layer, std::string code, std::vector<Point> where, const std::string& text,
+                           std::string section) {
   Violation v;
   v.message = code + ": " + text;
   v.code = std::move(code);
