@@ -30,6 +30,7 @@ gtest_discover_tests(d3_rapidcheck_tests DISCOVERY_MODE PRE_TEST
 # Strong exception guarantee under injected allocation failures (replaces the
 # global operator new, so it is its own executable).
 add_executable(d3_exception_safety_test d3/exception_safety_test.cpp)
+target_include_directories(d3_exception_safety_test PRIVATE ${PROJECT_SOURCE_DIR}/tests)
 target_link_libraries(d3_exception_safety_test PRIVATE bccmis::d3 GTest::gtest_main bccmis::warnings)
 target_compile_definitions(d3_exception_safety_test PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
 gtest_discover_tests(d3_exception_safety_test DISCOVERY_MODE PRE_TEST PROPERTIES LABELS robustness)

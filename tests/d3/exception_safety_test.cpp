@@ -5,62 +5,14 @@
 // does for 2D).
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <new>
+#include "testing/fault_injection.h"
 
 #include "util3.h"
-
-namespace {
-// Allocations left before the injected failure; negative: no injection.
-long g_countdown = -1;
-long g_failures = 0;
-}  // namespace
-
-void* operator new(std::size_t n) {
-  if (g_countdown == 0) {
-    g_countdown = -1;
-    ++g_failures;
-    throw std::bad_alloc();
-  }
-  if (g_countdown > 0) --g_countdown;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace bccmis::d3 {
 namespace {
 
-// Runs op on copies of g, failing allocation k = 0, 1, 2, ... until op
-// succeeds; after each failure the copy must equal g. Returns the number of
-// failure points exercised.
-template <class Op>
-long exercise(const Graph3& g, Op op) {
-  const std::string before = canonical_state(g);
-  for (long k = 0;; ++k) {
-    Graph3 h = g;
-    const long failures_before = g_failures;
-    bool threw = false;
-    g_countdown = k;
-    try {
-      op(h);
-    } catch (const std::bad_alloc&) {
-      threw = true;
-    }
-    g_countdown = -1;
-    if (!threw) {
-      EXPECT_EQ(g_failures, failures_before);
-      return k;
-    }
-    EXPECT_EQ(canonical_state(h), before) << "allocation " << k << " failed and the graph changed";
-    EXPECT_EQ(h, g);
-    if (k > 1000000) {
-      ADD_FAILURE() << "operation never completed";
-      return k;
-    }
-  }
-}
+using bccmis::testing::exercise;
 
 TEST(D3ExceptionSafety, RefineWithOldJunctionsIsAllOrNothing) {
   const Graph3 g = test::build("lattice 2 1 1 2\nrefine 4 4 4\n");
