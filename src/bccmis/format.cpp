@@ -2,6 +2,7 @@
 
 #include <ostream>
 
+#include "bccmis/detail/parse.h"
 #include "bccmis/text_writer.h"
 #include "bccmis/trace.h"
 
@@ -12,6 +13,8 @@
 #include <cstdio>
 #include <limits>
 #include <optional>
+#include <type_traits>
+#include <utility>
 
 namespace bccmis {
 
@@ -22,177 +25,11 @@ ParseError::ParseError(std::string file_, int line_, int column_, std::string me
       column(column_),
       message(std::move(message_)) {}
 
-namespace {
-
-// A word of a line and the 1-based column where it starts.
-struct Token {
-  std::string_view text;
-  int column;
-};
-
-// Shows a token in an error message, shortened and with control bytes escaped.
-std::string shown(std::string_view t) {
-  std::string r;
-  for (char ch : t.substr(0, 40)) {
-    const auto u = static_cast<unsigned char>(ch);
-    if (u < 0x20 || u >= 0x7f) {
-      static const char* hex = "0123456789abcdef";
-      r += "\\x";
-      r += hex[u >> 4];
-      r += hex[u & 15];
-    } else {
-      r += ch;
-    }
-  }
-  if (t.size() > 40) r += "...";
-  return "'" + r + "'";
-}
-
-// Splits a text into lines at '\n'. The last element is what follows the final
-// newline (empty for a text that ends with a newline).
-std::vector<std::string_view> split_lines(std::string_view text) {
-  std::vector<std::string_view> lines;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t nl = text.find('\n', start);
-    if (nl == std::string_view::npos) {
-      lines.push_back(text.substr(start));
-      return lines;
-    }
-    lines.push_back(text.substr(start, nl - start));
-    start = nl + 1;
-  }
-}
-
-// Parses a decimal int64. `strict` rejects leading zeros and "-0" (the
-// canonical form); otherwise they are accepted.
-std::optional<std::int64_t> to_int(std::string_view t, bool strict, bool& out_of_range) {
-  out_of_range = false;
-  if (t.empty()) return std::nullopt;
-  std::string_view digits = t[0] == '-' ? t.substr(1) : t;
-  if (digits.empty()) return std::nullopt;
-  for (char ch : digits)
-    if (ch < '0' || ch > '9') return std::nullopt;
-  if (strict && digits.size() > 1 && digits[0] == '0') return std::nullopt;
-  if (strict && t == "-0") return std::nullopt;
-  std::int64_t v = 0;
-  const auto [ptr, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
-  if (ec == std::errc::result_out_of_range) {
-    out_of_range = true;
-    return std::nullopt;
-  }
-  if (ec != std::errc() || ptr != t.data() + t.size()) return std::nullopt;
-  return v;
-}
-
-class LineParser {
- public:
-  LineParser(std::string_view file, int line) : file_(file), line_(line) {}
-
-  [[noreturn]] void fail(int column, const std::string& message) const {
-    throw ParseError(std::string(file_), line_, column, message);
-  }
-
-  std::int64_t integer(const Token& t, bool strict, std::string_view what) const {
-    bool out_of_range = false;
-    const auto v = to_int(t.text, strict, out_of_range);
-    if (out_of_range) fail(t.column, std::string(what) + " " + shown(t.text) + " is out of range (64-bit signed)");
-    if (!v) fail(t.column, "expected " + std::string(what) + " (a decimal integer), got " + shown(t.text));
-    return *v;
-  }
-
-  // Checks W, H, L of a `lattice` line; `keyword` is the column of "lattice".
-  LatticeSize lattice(const Token& w, const Token& h, const Token& l, int keyword, bool strict) const {
-    LatticeSize size;
-    size.W = integer(w, strict, "lattice width W");
-    size.H = integer(h, strict, "lattice height H");
-    const std::int64_t L = integer(l, strict, "maximum level L");
-    if (size.W < 1) fail(w.column, "lattice width W must be >= 1, got " + std::to_string(size.W));
-    if (size.H < 1) fail(h.column, "lattice height H must be >= 1, got " + std::to_string(size.H));
-    if (L < 0) fail(l.column, "maximum level L must be >= 0, got " + std::to_string(L));
-    if (L > 61) fail(l.column, "maximum level L = " + std::to_string(L) + " is above 61 (cell side 2^(L+1) > 2^62)");
-    size.L = static_cast<int>(L);
-    try {
-      validate_lattice_size(size);
-    } catch (const LatticeError& e) {
-      fail(keyword, e.what());
-    }
-    return size;
-  }
-
- private:
-  std::string_view file_;
-  int line_;
-};
-
-// Trace tokens: separated by spaces or tabs; '#' starts a comment; a trailing
-// '\r' (CRLF files) is ignored. Other control bytes are errors.
-// A command has at most four tokens: the first five are kept (an arity error
-// names the column of the first extra one), the rest only counted.
-struct TraceTokens {
-  static constexpr std::size_t kKept = 5;
-  std::array<Token, kKept> kept{};
-  std::size_t count = 0;
-  bool empty() const { return count == 0; }
-  std::size_t size() const { return count; }
-  const Token& operator[](std::size_t i) const { return kept[i]; }
-  void push_back(const Token& t) {
-    if (count < kKept) kept[count] = t;
-    ++count;
-  }
-};
-
-TraceTokens trace_tokens(std::string_view line, const LineParser& lp) {
-  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-  TraceTokens tokens;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    const char ch = line[i];
-    if (ch == '#') break;
-    if (ch == ' ' || ch == '\t') {
-      ++i;
-      continue;
-    }
-    const std::size_t start = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '#') {
-      const auto u = static_cast<unsigned char>(line[i]);
-      if (u < 0x20 || u >= 0x7f)
-        lp.fail(static_cast<int>(i) + 1,
-                "unexpected byte " + shown(line.substr(i, 1)) + " (traces are plain ASCII text)");
-      ++i;
-    }
-    tokens.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
-  }
-  return tokens;
-}
-
-// State tokens: exactly one space between tokens, none at either end.
-std::vector<Token> state_tokens(std::string_view line, const LineParser& lp) {
-  std::vector<Token> tokens;
-  if (line.empty()) lp.fail(1, "empty line (canonical states have no blank lines)");
-  std::size_t start = 0;
-  for (std::size_t i = 0; i <= line.size(); ++i) {
-    if (i < line.size()) {
-      const auto u = static_cast<unsigned char>(line[i]);
-      if (u == '\r') lp.fail(static_cast<int>(i) + 1, "carriage return (canonical states use '\\n' line ends)");
-      if (u != ' ' && (u < 0x20 || u >= 0x7f))
-        lp.fail(static_cast<int>(i) + 1, "unexpected byte " + shown(line.substr(i, 1)));
-      if (u != ' ') continue;
-    }
-    if (i == start) {
-      if (i == line.size()) lp.fail(static_cast<int>(i), "trailing space");
-      lp.fail(static_cast<int>(i) + 1, "expected a single space between fields");
-    }
-    tokens.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
-    start = i + 1;
-  }
-  return tokens;
-}
-
-// A position in an error message.
-std::string shown(const Point& p) { return to_string(p); }
-
-}  // namespace
+using detail::LineParser;
+using detail::shown;
+using detail::split_lines;
+using detail::state_tokens;
+using detail::trace_tokens;
 
 // ---- JSON ---------------------------------------------------------------------
 
@@ -266,101 +103,7 @@ void write_canonical_state(std::ostream& out, const Graph& g) {
 
 std::string canonical_state(const Graph& g) { return canonical_text(g); }
 
-Graph parse_state(std::string_view text, std::string_view file) {
-  const std::vector<std::string_view> lines = split_lines(text);
-  Graph g;
-  const int nlines = static_cast<int>(lines.size());
-
-  auto at = [&](int index) { return LineParser(file, index + 1); };
-
-  // Line 1: header.
-  if (text.empty()) at(0).fail(1, "empty file, expected 'bccmis-state 1'");
-  {
-    const LineParser lp = at(0);
-    const auto t = state_tokens(lines[0], lp);
-    if (t[0].text != "bccmis-state") lp.fail(1, "expected 'bccmis-state 1', got " + shown(lines[0]));
-    if (t.size() != 2) lp.fail(1, "expected 'bccmis-state 1', got " + shown(lines[0]));
-    if (t[1].text != "1")
-      lp.fail(t[1].column, "unsupported state format version " + shown(t[1].text) + " (this reader knows version 1)");
-  }
-  // Line 2: lattice.
-  if (nlines < 3)
-    at(nlines - 1)
-        .fail(static_cast<int>(lines[nlines - 1].size()) + 1, "unexpected end of file, expected 'lattice W H L'");
-  {
-    const LineParser lp = at(1);
-    const auto t = state_tokens(lines[1], lp);
-    if (t[0].text != "lattice" || t.size() != 4) lp.fail(1, "expected 'lattice W H L', got " + shown(lines[1]));
-    g.size = lp.lattice(t[1], t[2], t[3], 1, true);
-  }
-
-  bool in_nodes = false;
-  std::optional<Point> previous;
-  for (int i = 2;; ++i) {
-    if (i == nlines - 1) {
-      // The text after the last newline: either the unterminated last line or
-      // nothing at all; in both cases the 'end' line was not seen.
-      if (lines[i].empty()) at(i).fail(1, "unexpected end of file, expected 'end <#C> <#N>'");
-      at(i).fail(static_cast<int>(lines[i].size()) + 1, "missing newline at end of line");
-    }
-    const LineParser lp = at(i);
-    const auto t = state_tokens(lines[i], lp);
-    const std::string_view kind = t[0].text;
-    if (kind == "end") {
-      if (t.size() != 3) lp.fail(1, "expected 'end <#C> <#N>', got " + shown(lines[i]));
-      const std::int64_t nc = lp.integer(t[1], true, "center count");
-      const std::int64_t nn = lp.integer(t[2], true, "node count");
-      if (nc != static_cast<std::int64_t>(g.C.size()))
-        lp.fail(t[1].column, "center count " + std::to_string(nc) + " does not match the " +
-                                 std::to_string(g.C.size()) + " C lines");
-      if (nn != static_cast<std::int64_t>(g.N.size()))
-        lp.fail(t[2].column,
-                "node count " + std::to_string(nn) + " does not match the " + std::to_string(g.N.size()) + " N lines");
-      if (i + 1 != nlines - 1) at(i + 1).fail(1, "text after the 'end' line");
-      if (!lines[i + 1].empty()) at(i + 1).fail(1, "text after the 'end' line");
-      return g;
-    }
-    if (kind != "C" && kind != "N") lp.fail(1, "expected a 'C', 'N' or 'end' line, got " + shown(t[0].text));
-    const bool center = kind == "C";
-    if (center && in_nodes) lp.fail(1, "C line after an N line (all C lines come first)");
-    if (!center && !in_nodes) {
-      in_nodes = true;
-      previous.reset();
-    }
-    // C x y level : ...   or   N x y : ...
-    const std::size_t colon = center ? 4 : 3;
-    if (t.size() <= colon || t[colon].text != ":")
-      lp.fail(t.size() > colon ? t[colon].column : static_cast<int>(lines[i].size()) + 1,
-              center ? "expected 'C x y level : neighbors'" : "expected 'N x y : neighbors'");
-    const Point v{lp.integer(t[1], true, "x coordinate"), lp.integer(t[2], true, "y coordinate")};
-    if (previous && !(*previous < v))
-      lp.fail(t[1].column, std::string(center ? "C" : "N") + " lines must be sorted by (x, y) without repeats; " +
-                               shown(v) + " follows " + shown(*previous));
-    previous = v;
-    if (!center && g.C.count(v))
-      lp.fail(t[1].column, "vertex " + shown(v) + " is listed both as a center and as a node");
-    if (center) {
-      const std::int64_t level = lp.integer(t[3], true, "level");
-      if (level < 0 || level > 61) lp.fail(t[3].column, "level " + std::to_string(level) + " is outside 0..61");
-      g.C.insert(v);
-      g.level[v] = static_cast<int>(level);
-    } else {
-      g.N.insert(v);
-    }
-    if ((t.size() - colon - 1) % 2 != 0) lp.fail(t.back().column, "neighbor list has an odd number of coordinates");
-    PointSet& nbrs = g.neighbors[v];
-    std::optional<Point> prev_nbr;
-    for (std::size_t k = colon + 1; k < t.size(); k += 2) {
-      const Point w{lp.integer(t[k], true, "x coordinate"), lp.integer(t[k + 1], true, "y coordinate")};
-      if (prev_nbr && !(*prev_nbr < w))
-        lp.fail(t[k].column,
-                "neighbors must be sorted by (x, y) without repeats; " + shown(w) + " follows " + shown(*prev_nbr));
-      prev_nbr = w;
-      nbrs.insert(w);
-    }
-    if (nbrs.empty()) g.neighbors.erase(v);
-  }
-}
+Graph parse_state(std::string_view text, std::string_view file) { return detail::parse_state_as<Graph>(text, file); }
 
 // ---- Traces -----------------------------------------------------------------
 
@@ -371,8 +114,58 @@ std::int64_t initial_vertex_count(const LatticeSize& size) {
   return (size.W + 1) * (size.H + 1) + size.W * size.H;
 }
 
-Trace parse_trace(std::string_view text, std::string_view file, const TraceLimits& limits) {
-  Trace trace;
+std::int64_t initial_vertex_count(const d3::LatticeSize3& size) {
+  if (size.W <= 0 || size.H <= 0 || size.D <= 0) return 0;
+  // (W+1)(H+1)(D+1) + WHD <= 9 WHD for W, H, D >= 1; saturate when 9 WHD could overflow.
+  const std::int64_t big = INT64_MAX / 9;
+  if (size.W > big / size.H || size.W * size.H > big / size.D) return INT64_MAX;
+  return (size.W + 1) * (size.H + 1) * (size.D + 1) + size.W * size.H * size.D;
+}
+
+namespace {
+
+// "5 x 3 cells" or "5 x 3 x 2 cubes", for messages.
+std::string extent_text(const LatticeSize& s) { return std::to_string(s.W) + " x " + std::to_string(s.H) + " cells"; }
+std::string extent_text(const d3::LatticeSize3& s) {
+  return std::to_string(s.W) + " x " + std::to_string(s.H) + " x " + std::to_string(s.D) + " cubes";
+}
+
+// The first command of a trace: where it is, and whether it is a `lattice`
+// line and with how many numbers. Four or more make the trace 3D; every other
+// text, malformed ones included, is read (and reported) as 2D.
+struct FirstCommand {
+  int line = 1, column = 1;
+  bool lattice = false;
+  std::size_t numbers = 0;
+  bool is_3d() const { return lattice && numbers >= 4; }
+};
+
+FirstCommand first_command(std::string_view text, std::string_view file) {
+  int line_no = 0;
+  for (std::size_t start = 0; start <= text.size();) {
+    ++line_no;
+    const std::size_t nl = text.find('\n', start);
+    const std::string_view line =
+        text.substr(start, nl == std::string_view::npos ? std::string_view::npos : nl - start);
+    try {
+      const auto t = trace_tokens(line, LineParser(file, line_no));
+      if (!t.empty()) return {line_no, t[0].column, t[0].text == "lattice", t.size() - 1};
+    } catch (const ParseError&) {
+      return {};  // the parser reports it
+    }
+    if (nl == std::string_view::npos) break;
+    start = nl + 1;
+  }
+  return {};
+}
+
+// The parser of spec/formats.md, "Trace", for T = Trace (2D) or Trace3 (3D).
+template <class T>
+T parse_trace_as(std::string_view text, std::string_view file, const TraceLimits& limits) {
+  constexpr bool k3 = std::is_same_v<T, Trace3>;
+  using Command = typename T::command_type;
+  const char* const lattice_usage = k3 ? "lattice W H D L" : "lattice W H L";
+  T trace;
   trace.file = std::string(file);
   bool have_lattice = false;
   trace.commands.reserve(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1);
@@ -382,7 +175,7 @@ Trace parse_trace(std::string_view text, std::string_view file, const TraceLimit
     const auto t = trace_tokens(line, lp);
     if (t.empty()) return;
     const std::string_view cmd = t[0].text;
-    auto arity = [&](std::size_t n, const char* usage) {
+    auto arity = [&](std::size_t n, const std::string& usage) {
       if (t.size() != n + 1)
         lp.fail(t.size() > n + 1 ? t[n + 1].column : static_cast<int>(line.size()) + 1,
                 std::string(t.size() > n + 1 ? "too many arguments" : "too few arguments") + "; usage: " + usage);
@@ -391,29 +184,43 @@ Trace parse_trace(std::string_view text, std::string_view file, const TraceLimit
       if (have_lattice)
         lp.fail(t[0].column,
                 "second 'lattice' command (the first is on line " + std::to_string(trace.lattice_line) + ")");
-      arity(3, "lattice W H L");
-      trace.size = lp.lattice(t[1], t[2], t[3], t[0].column, false);
+      if constexpr (k3) {
+        arity(4, "lattice W H D L (3D)");
+        trace.size = lp.lattice3(t[1], t[2], t[3], t[4], t[0].column, false);
+      } else {
+        arity(3, "lattice W H L (2D) or lattice W H D L (3D)");
+        trace.size = lp.lattice(t[1], t[2], t[3], t[0].column, false);
+      }
       if (const std::int64_t v = initial_vertex_count(trace.size); v > limits.max_vertices)
-        lp.fail(t[0].column, "lattice of " + std::to_string(trace.size.W) + " x " + std::to_string(trace.size.H) +
-                                 " cells exceeds the limit of " + std::to_string(limits.max_vertices) +
-                                 " vertices (it has " +
+        lp.fail(t[0].column, "lattice of " + extent_text(trace.size) + " exceeds the limit of " +
+                                 std::to_string(limits.max_vertices) + " vertices (it has " +
                                  (v == INT64_MAX ? std::string("more than 2^63") : std::to_string(v)) + ")");
       trace.lattice_line = line_no;
       have_lattice = true;
       return;
     }
-    TraceCommand c;
+    Command c;
     c.line = line_no;
     if (cmd == "refine" || cmd == "coarsen") {
-      c.kind = cmd == "refine" ? TraceCommand::Kind::Refine : TraceCommand::Kind::Coarsen;
-      arity(2, cmd == "refine" ? "refine X Y" : "coarsen X Y");
-      c.at = {lp.integer(t[1], false, "x coordinate"), lp.integer(t[2], false, "y coordinate")};
+      c.kind = cmd == "refine" ? CommandKind::Refine : CommandKind::Coarsen;
+      if (!have_lattice) lp.fail(t[0].column, "'" + std::string(cmd) + "' before the '" + lattice_usage + "' command");
+      const std::string usage = std::string(cmd) + (k3 ? " X Y Z" : " X Y");
+      if (t.size() == (k3 ? 3u : 4u))
+        lp.fail(t.size() == 3 ? static_cast<int>(line.size()) + 1 : t[3].column,
+                std::string(k3 ? "too few arguments: two" : "too many arguments: three") + " coordinates on a " +
+                    (k3 ? "3D" : "2D") + " lattice (line " + std::to_string(trace.lattice_line) + "); usage: " + usage);
+      arity(k3 ? 3 : 2, usage);
+      if constexpr (k3)
+        c.at = {lp.integer(t[1], false, "x coordinate"), lp.integer(t[2], false, "y coordinate"),
+                lp.integer(t[3], false, "z coordinate")};
+      else
+        c.at = {lp.integer(t[1], false, "x coordinate"), lp.integer(t[2], false, "y coordinate")};
     } else if (cmd == "check") {
       arity(0, "check");
     } else {
       lp.fail(t[0].column, "unknown command " + shown(cmd) + " (expected lattice, refine, coarsen or check)");
     }
-    if (!have_lattice) lp.fail(t[0].column, "'" + std::string(cmd) + "' before the 'lattice W H L' command");
+    if (!have_lattice) lp.fail(t[0].column, "'" + std::string(cmd) + "' before the '" + lattice_usage + "' command");
     trace.commands.push_back(c);
   };
   // Lines end at '\n'; the text after the last one is a line too (empty when
@@ -428,36 +235,74 @@ Trace parse_trace(std::string_view text, std::string_view file, const TraceLimit
   if (!have_lattice) {
     // Point at the last line of the file (not past a final newline).
     const int last = line_no - (line_no > 1 && text.back() == '\n' ? 1 : 0);
-    throw ParseError(std::string(file), std::max(last, 1), 1, "no 'lattice W H L' command (a trace starts with one)");
+    throw ParseError(std::string(file), std::max(last, 1), 1,
+                     std::string("no '") + lattice_usage + "' command (a trace starts with one)");
   }
   trace.commands.shrink_to_fit();
   return trace;
 }
 
-std::string format_trace(const Trace& trace) {
-  std::string out = "lattice " + std::to_string(trace.size.W) + " " + std::to_string(trace.size.H) + " " +
-                    std::to_string(trace.size.L) + "\n";
-  for (const TraceCommand& c : trace.commands) {
+}  // namespace
+
+Trace parse_trace(std::string_view text, std::string_view file, const TraceLimits& limits) {
+  if (const FirstCommand first = first_command(text, file); first.is_3d() && first.numbers == 4)
+    throw ParseError(std::string(file), first.line, first.column,
+                     "a 3D trace ('lattice W H D L'), where a 2D trace ('lattice W H L') is expected");
+  return parse_trace_as<Trace>(text, file, limits);
+}
+
+Trace3 parse_trace3(std::string_view text, std::string_view file, const TraceLimits& limits) {
+  if (const FirstCommand first = first_command(text, file); first.lattice && first.numbers == 3)
+    throw ParseError(std::string(file), first.line, first.column,
+                     "a 2D trace ('lattice W H L'), where a 3D trace ('lattice W H D L') is expected");
+  return parse_trace_as<Trace3>(text, file, limits);
+}
+
+AnyTrace parse_any_trace(std::string_view text, std::string_view file, const TraceLimits& limits) {
+  if (first_command(text, file).is_3d()) return parse_trace_as<Trace3>(text, file, limits);
+  return parse_trace_as<Trace>(text, file, limits);
+}
+
+namespace {
+
+void append_size(std::string& out, const LatticeSize& s) {
+  out += std::to_string(s.W) + " " + std::to_string(s.H) + " " + std::to_string(s.L);
+}
+void append_size(std::string& out, const d3::LatticeSize3& s) {
+  out += std::to_string(s.W) + " " + std::to_string(s.H) + " " + std::to_string(s.D) + " " + std::to_string(s.L);
+}
+
+char* write_point(char* buf, const Point& p) { return TextWriter::write_point(buf, p.x, p.y); }
+char* write_point(char* buf, const d3::Point3& p) { return TextWriter::write_point(buf, p.x, p.y, p.z); }
+
+template <class T>
+std::string format_trace_as(const T& trace) {
+  std::string out = "lattice ";
+  append_size(out, trace.size);
+  out += '\n';
+  for (const auto& c : trace.commands) {
     append_command_text(out, c);
     out += '\n';
   }
   return out;
 }
 
-void append_command_text(std::string& out, const TraceCommand& cmd) {
+template <class Command>
+void append_command_text_as(std::string& out, const Command& cmd) {
   std::string_view keyword = "check";
   switch (cmd.kind) {
-    case TraceCommand::Kind::Refine: keyword = "refine"; break;
-    case TraceCommand::Kind::Coarsen: keyword = "coarsen"; break;
-    case TraceCommand::Kind::Check: break;
+    case CommandKind::Refine: keyword = "refine"; break;
+    case CommandKind::Coarsen: keyword = "coarsen"; break;
+    case CommandKind::Check: break;
   }
   out += keyword;
-  if (cmd.kind == TraceCommand::Kind::Check) return;
-  char buf[TextWriter::kPointBytes];
-  out.append(buf, TextWriter::write_point(buf, cmd.at.x, cmd.at.y));
+  if (cmd.kind == CommandKind::Check) return;
+  char buf[TextWriter::kPoint3Bytes];
+  out.append(buf, write_point(buf, cmd.at));
 }
 
-void append_decision_line(std::string& out, const TraceCommand& cmd, std::string_view refusal_code) {
+template <class Command>
+void append_decision_line_as(std::string& out, const Command& cmd, std::string_view refusal_code) {
   append_command_text(out, cmd);
   if (refusal_code.empty()) {
     out += " ok";
@@ -467,13 +312,38 @@ void append_decision_line(std::string& out, const TraceCommand& cmd, std::string
   out += refusal_code;
 }
 
+}  // namespace
+
+std::string format_trace(const Trace& trace) { return format_trace_as(trace); }
+std::string format_trace(const Trace3& trace) { return format_trace_as(trace); }
+
+void append_command_text(std::string& out, const TraceCommand& cmd) { append_command_text_as(out, cmd); }
+void append_command_text(std::string& out, const TraceCommand3& cmd) { append_command_text_as(out, cmd); }
+
+void append_decision_line(std::string& out, const TraceCommand& cmd, std::string_view refusal_code) {
+  append_decision_line_as(out, cmd, refusal_code);
+}
+void append_decision_line(std::string& out, const TraceCommand3& cmd, std::string_view refusal_code) {
+  append_decision_line_as(out, cmd, refusal_code);
+}
+
 std::string command_text(const TraceCommand& cmd) {
+  std::string out;
+  append_command_text(out, cmd);
+  return out;
+}
+std::string command_text(const TraceCommand3& cmd) {
   std::string out;
   append_command_text(out, cmd);
   return out;
 }
 
 std::string decision_line(const TraceCommand& cmd, std::string_view refusal_code) {
+  std::string out;
+  append_decision_line(out, cmd, refusal_code);
+  return out;
+}
+std::string decision_line(const TraceCommand3& cmd, std::string_view refusal_code) {
   std::string out;
   append_decision_line(out, cmd, refusal_code);
   return out;

@@ -52,10 +52,13 @@ class TextWriter {
   void put_int(std::int64_t v) { commit(write_int(room(kIntBytes), v)); }
   /// " x y": a point as the formats write it after a keyword or a colon.
   void put_point(std::int64_t x, std::int64_t y) { commit(write_point(room(kPointBytes), x, y)); }
+  /// " x y z": a 3D point, likewise.
+  void put_point(std::int64_t x, std::int64_t y, std::int64_t z) { commit(write_point(room(kPoint3Bytes), x, y, z)); }
 
   /// The most bytes write_int and write_point write.
   static constexpr std::size_t kIntBytes = 20;
   static constexpr std::size_t kPointBytes = 2 + 2 * kIntBytes;
+  static constexpr std::size_t kPoint3Bytes = 3 + 3 * kIntBytes;
   /// The decimal text of v at p; returns its end. Numbers below 10^8 (all
   /// coordinates of a lattice below 10^8 units on a side) take the digit-pair
   /// path, the others std::to_chars.
@@ -83,6 +86,12 @@ class TextWriter {
     p = write_int(p, x);
     *p++ = ' ';
     return write_int(p, y);
+  }
+  /// " x y z" at p; returns its end.
+  static char* write_point(char* p, std::int64_t x, std::int64_t y, std::int64_t z) {
+    p = write_point(p, x, y);
+    *p++ = ' ';
+    return write_int(p, z);
   }
 
   /// The decimal text of a number formatted once, to be copied often:

@@ -21,6 +21,13 @@
 
 namespace bccmis {
 
+/// The trace and command types of lattice L's dimension (Trace and
+/// TraceCommand in 2D, Trace3 and TraceCommand3 in 3D).
+template <AdaptiveLattice L>
+using trace_t = BasicTrace<point_type_t<L>, typename L::size_type>;
+template <AdaptiveLattice L>
+using trace_command_t = BasicTraceCommand<point_type_t<L>>;
+
 /// What one trace command did to a lattice: nothing (check), or the result
 /// of refine or coarsen, with the sets it touched.
 template <AdaptiveLattice L>
@@ -45,7 +52,7 @@ struct StepResult {
 /// Runs one trace command on g: refine or coarsen at its position (a refusal
 /// changes nothing), or nothing for check.
 template <AdaptiveLattice L>
-StepResult<L> step(L& g, const TraceCommand& cmd) {
+StepResult<L> step(L& g, const trace_command_t<L>& cmd) {
   switch (cmd.kind) {
     case TraceCommand::Kind::Refine: return {refine(g, cmd.at)};
     case TraceCommand::Kind::Coarsen: return {coarsen(g, cmd.at)};
@@ -57,7 +64,7 @@ StepResult<L> step(L& g, const TraceCommand& cmd) {
 /// Appends the decision-log line of `cmd` and its result, with the newline
 /// (nothing for check).
 template <AdaptiveLattice L>
-void append_decision(std::string& log, const TraceCommand& cmd, const StepResult<L>& r) {
+void append_decision(std::string& log, const trace_command_t<L>& cmd, const StepResult<L>& r) {
   if (r.is_check()) return;
   append_decision_line(log, cmd, r.refusal());
   log += '\n';
@@ -66,9 +73,9 @@ void append_decision(std::string& log, const TraceCommand& cmd, const StepResult
 /// The most cells g can have while `trace` is replayed on it: its cells now
 /// and 3 more per refine command (saturated).
 template <AdaptiveLattice L>
-std::size_t max_cells(const L& g, const Trace& trace) {
+std::size_t max_cells(const L& g, const trace_t<L>& trace) {
   std::size_t refines = 0;
-  for (const TraceCommand& cmd : trace.commands) refines += cmd.kind == TraceCommand::Kind::Refine ? 1 : 0;
+  for (const auto& cmd : trace.commands) refines += cmd.kind == CommandKind::Refine ? 1 : 0;
   const std::size_t room = std::numeric_limits<std::size_t>::max() - cell_count(g);
   return cell_count(g) + (refines > room / 3 ? room : 3 * refines);
 }
@@ -89,16 +96,16 @@ struct NoObserver {
 /// argument, the StepResult (what the command touched). Returns the final
 /// lattice. An exception from `after` stops the replay.
 template <AdaptiveLattice L, class Observer = NoObserver>
-L replay(const Trace& trace, std::string& log, const Observer& after = {}) {
+L replay(const trace_t<L>& trace, std::string& log, const Observer& after = {}) {
   L g(trace.size);
   if constexpr (requires(std::size_t n) { reserve(g, n); }) reserve(g, max_cells(g, trace));
-  for (const TraceCommand& cmd : trace.commands) {
+  for (const trace_command_t<L>& cmd : trace.commands) {
     const StepResult<L> r = step(g, cmd);
     const std::size_t start = log.size();
     append_decision(log, cmd, r);
     const std::string_view decision =
         log.size() == start ? std::string_view{} : std::string_view(log).substr(start, log.size() - start - 1);
-    if constexpr (std::is_invocable_v<const Observer&, const TraceCommand&, const L&, std::string_view,
+    if constexpr (std::is_invocable_v<const Observer&, const trace_command_t<L>&, const L&, std::string_view,
                                       const StepResult<L>&>) {
       after(cmd, g, decision, r);
     } else {

@@ -3,61 +3,73 @@
 #include <string>
 
 #include "bccmis/d3/lattice.h"  // static_assert(AdaptiveLattice<Graph3>)
+#include "bccmis/detail/parse.h"
+#include "bccmis/format.h"
+#include "bccmis/text_writer.h"
 
 namespace bccmis::d3 {
 
-namespace {
-
-void append_point(std::string& out, const Point3& p) {
-  out += std::to_string(p.x);
-  out += ' ';
-  out += std::to_string(p.y);
-  out += ' ';
-  out += std::to_string(p.z);
-}
-
-// " : x1 y1 z1 x2 y2 z2 ...\n"; the set is sorted by (x, y, z) already.
-void append_neighbors(std::string& out, const PointSet3& vs) {
-  out += " :";
-  for (const Point3& v : vs) {
-    out += ' ';
-    append_point(out, v);
-  }
-  out += '\n';
-}
-
-}  // namespace
-
-std::string canonical_state(const Graph3& g) {
-  std::string out = "bccmis-state 1\nlattice ";
-  out += std::to_string(g.size.W);
-  out += ' ';
-  out += std::to_string(g.size.H);
-  out += ' ';
-  out += std::to_string(g.size.D);
-  out += ' ';
-  out += std::to_string(g.size.L);
-  out += '\n';
+void write_canonical_state(std::ostream& out, const Graph3& g) {
+  TextWriter w(out);
+  w.put("bccmis-state 1\nlattice ");
+  w.put_int(g.size.W);
+  w.put(' ');
+  w.put_int(g.size.H);
+  w.put(' ');
+  w.put_int(g.size.D);
+  w.put(' ');
+  w.put_int(g.size.L);
+  w.put('\n');
+  // " : x1 y1 z1 x2 y2 z2 ...\n"; the set is sorted by (x, y, z) already.
+  auto neighbors = [&](const Point3& v) {
+    w.put(" :");
+    for (const Point3& b : g.nbr(v)) w.put_point(b.x, b.y, b.z);
+    w.put('\n');
+  };
   for (const Point3& c : g.C) {
-    out += "C ";
-    append_point(out, c);
-    out += ' ';
-    out += std::to_string(g.level_of(c));
-    append_neighbors(out, g.nbr(c));
+    w.put('C');
+    w.put_point(c.x, c.y, c.z);
+    w.put(' ');
+    w.put_int(g.level_of(c));
+    neighbors(c);
   }
   for (const Point3& n : g.N) {
-    out += "N ";
-    append_point(out, n);
-    append_neighbors(out, g.nbr(n));
+    w.put('N');
+    w.put_point(n.x, n.y, n.z);
+    neighbors(n);
   }
-  out += "end ";
-  out += std::to_string(g.C.size());
-  out += ' ';
-  out += std::to_string(g.N.size());
-  out += '\n';
-  return out;
+  w.put("end ");
+  w.put_int(static_cast<std::int64_t>(g.C.size()));
+  w.put(' ');
+  w.put_int(static_cast<std::int64_t>(g.N.size()));
+  w.put('\n');
+  w.flush();
 }
 
-void write_canonical_state(std::ostream& out, const Graph3& g) { out << canonical_state(g); }
+std::string canonical_state(const Graph3& g) { return canonical_text(g); }
+
+Graph3 parse_state3(std::string_view text, std::string_view file) { return detail::parse_state_as<Graph3>(text, file); }
 
 }  // namespace bccmis::d3
+
+namespace bccmis {
+
+AnyState parse_any_state(std::string_view text, std::string_view file) {
+  // The dimension is the number of fields on line 2 (`lattice W H D L`: 5);
+  // anything else, malformed texts included, is read and reported as 2D.
+  const std::size_t first = text.find('\n');
+  if (first != std::string_view::npos) {
+    const std::string_view rest = text.substr(first + 1);
+    const std::string_view line = rest.substr(0, rest.find('\n'));
+    std::size_t fields = 0;
+    bool in_field = false;
+    for (const char ch : line) {
+      if (ch != ' ' && !in_field) ++fields;
+      in_field = ch != ' ';
+    }
+    if (line.starts_with("lattice ") && fields == 5) return d3::parse_state3(text, file);
+  }
+  return parse_state(text, file);
+}
+
+}  // namespace bccmis

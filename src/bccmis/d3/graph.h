@@ -9,51 +9,11 @@
 // (entries with kind = "position").
 #pragma once
 
-#include <compare>
-#include <cstdint>
 #include <map>
-#include <set>
-#include <string>
 
-#include "bccmis/graph.h"  // LatticeError, kMaxDomainSide
+#include "bccmis/d3/point.h"
 
 namespace bccmis::d3 {
-
-/// A lattice position in integer coordinates, ordered by (x, y, z).
-struct Point3 {
-  std::int64_t x = 0;
-  std::int64_t y = 0;
-  std::int64_t z = 0;
-  friend auto operator<=>(const Point3&, const Point3&) = default;
-  friend bool operator==(const Point3&, const Point3&) = default;
-};
-
-using PointSet3 = std::set<Point3>;
-
-/// "(x, y, z)": how messages name a position.
-std::string to_string(const Point3& p);
-
-/// The size of a 3D lattice: W x H x D level-0 cubes, at most L refinements
-/// deep. Level-0 cubes have side S = 2^(L+1); a level-l cube has side
-/// 2^(L+1-l), so every center, corner, edge midpoint and face center down to
-/// level L is an integer point.
-struct LatticeSize3 {
-  std::int64_t W = 1;
-  std::int64_t H = 1;
-  std::int64_t D = 1;
-  int L = 0;
-  friend bool operator==(const LatticeSize3&, const LatticeSize3&) = default;
-};
-
-/// Throws bccmis::LatticeError unless W, H, D >= 1, L >= 0 and the extents
-/// W*S, H*S, D*S are at most 2^62. The message names the offending value.
-void validate_lattice_size(const LatticeSize3& size);
-
-/// Side of a level-0 cube: S = 2^(L+1).
-std::int64_t level0_side(const LatticeSize3& size);
-
-/// Side of a level-`level` cube: 2^(L+1-level).
-std::int64_t cell_side(const LatticeSize3& size, int level);
 
 /// The graph of spec/lattice3d.md §1: N, C, N(·) and the level of every center.
 struct Graph3 {
