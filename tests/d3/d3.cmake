@@ -34,3 +34,10 @@ target_include_directories(d3_exception_safety_test PRIVATE ${PROJECT_SOURCE_DIR
 target_link_libraries(d3_exception_safety_test PRIVATE bccmis::d3 GTest::gtest_main bccmis::warnings)
 target_compile_definitions(d3_exception_safety_test PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
 gtest_discover_tests(d3_exception_safety_test DISCOVERY_MODE PRE_TEST PROPERTIES LABELS robustness)
+
+# The graded BCC tetrahedral mesh (spec/mesh3d.md): hand counts, shapes and
+# angles, the mesh facts in random states, and the writers read back.
+add_executable(d3_mesh_tests d3/mesh_test.cpp)
+target_link_libraries(d3_mesh_tests PRIVATE bccmis::d3 GTest::gtest_main bccmis::warnings)
+target_compile_definitions(d3_mesh_tests PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
+gtest_discover_tests(d3_mesh_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
