@@ -420,6 +420,19 @@ TEST(D3Mesh, RandomStates) {
   for (const auto& [c, n] : seen) EXPECT_GT(n, 100u) << static_cast<int>(c);
 }
 
+TEST(D3Mesh, AGraphWithoutTheSplitFaceCenterIsRefused) {
+  // spec/mesh3d.md M4: the apex of a split face must be a node of the leaf;
+  // without it the graph is no reachable state and the extraction throws.
+  Graph3 g(LatticeSize3{2, 1, 1, 2});
+  ASSERT_TRUE(refine(g, {4, 4, 4}).applied());
+  ASSERT_NO_THROW(tetrahedra(g));
+  Graph3 coarse_side = g, fine_side = g;
+  coarse_side.neighbors[{12, 4, 4}].erase({8, 4, 4});
+  fine_side.neighbors[{6, 2, 2}].erase({8, 4, 4});
+  EXPECT_THROW(tetrahedra(coarse_side), std::logic_error);
+  EXPECT_THROW(tetrahedra(fine_side), std::logic_error);
+}
+
 TEST(D3Mesh, ExactOrientationNear2To62) {
   // spec/mesh3d.md M3: differences of 2^62 need more than 128 bits.
   const std::int64_t big = std::int64_t{1} << 62;

@@ -39,8 +39,9 @@ T det3(const std::array<std::array<std::int64_t, 3>, 3>& m) {
          e(0, 2) * (e(1, 0) * e(2, 1) - e(1, 1) * e(2, 0));
 }
 
-// mpz_class has no constructor from int64_t on every platform; go through a string.
-mpz_class big(std::int64_t v) { return mpz_class(std::to_string(v)); }
+// mpz_class converts from long, which is 64 bits wide on the platforms bccmis builds on.
+static_assert(sizeof(long) == sizeof(std::int64_t));
+mpz_class big(std::int64_t v) { return mpz_class(static_cast<long>(v)); }
 
 template <>
 mpz_class det3<mpz_class>(const std::array<std::array<std::int64_t, 3>, 3>& m) {
