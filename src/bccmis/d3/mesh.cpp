@@ -1,0 +1,243 @@
+// bccmis::d3: extraction of the graded BCC tetrahedral mesh (spec/mesh3d.md)
+// and its three writers.
+#include "bccmis/d3/mesh.h"
+
+#include <gmpxx.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+
+#include "bccmis/d3/geometry.h"
+
+namespace bccmis::d3 {
+namespace {
+
+std::int64_t& coord(Point3& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
+std::int64_t coord(const Point3& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
+
+std::int64_t extent(const LatticeSize3& size, int axis) {
+  const std::int64_t n = axis == 0 ? size.W : axis == 1 ? size.H : size.D;
+  return n * level0_side(size);
+}
+
+bool fits_41_bits(std::int64_t v) { return v > -(std::int64_t{1} << 41) && v < (std::int64_t{1} << 41); }
+
+// The three difference vectors b - a, c - a, d - a (each component fits:
+// coordinates lie in [0, 2^62]).
+std::array<std::array<std::int64_t, 3>, 3> differences(const Point3& a, const Point3& b, const Point3& c,
+                                                       const Point3& d) {
+  return {{{b.x - a.x, b.y - a.y, b.z - a.z}, {c.x - a.x, c.y - a.y, c.z - a.z}, {d.x - a.x, d.y - a.y, d.z - a.z}}};
+}
+
+template <class T>
+T det3(const std::array<std::array<std::int64_t, 3>, 3>& m) {
+  auto e = [&](int i, int j) { return T(m[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)]); };
+  return e(0, 0) * (e(1, 1) * e(2, 2) - e(1, 2) * e(2, 1)) - e(0, 1) * (e(1, 0) * e(2, 2) - e(1, 2) * e(2, 0)) +
+         e(0, 2) * (e(1, 0) * e(2, 1) - e(1, 1) * e(2, 0));
+}
+
+// mpz_class converts from long, which is 64 bits wide on the platforms bccmis builds on.
+static_assert(sizeof(long) == sizeof(std::int64_t));
+mpz_class big(std::int64_t v) { return mpz_class(static_cast<long>(v)); }
+
+template <>
+mpz_class det3<mpz_class>(const std::array<std::array<std::int64_t, 3>, 3>& m) {
+  auto e = [&](int i, int j) { return big(m[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)]); };
+  mpz_class r = e(0, 0) * (e(1, 1) * e(2, 2) - e(1, 2) * e(2, 1));
+  r -= e(0, 1) * (e(1, 0) * e(2, 2) - e(1, 2) * e(2, 0));
+  r += e(0, 2) * (e(1, 0) * e(2, 1) - e(1, 1) * e(2, 0));
+  return r;
+}
+
+bool small(const std::array<std::array<std::int64_t, 3>, 3>& m) {
+  for (const auto& row : m)
+    for (const std::int64_t v : row)
+      if (!fits_41_bits(v)) return false;
+  return true;
+}
+
+// The corners of face (axis, side) of the cube centred at u with half side h,
+// in cyclic order around the face.
+std::array<Point3, 4> face_corners(const Point3& u, std::int64_t h, int axis, bool high) {
+  const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+  const std::int64_t da[4] = {-h, h, h, -h}, db[4] = {-h, -h, h, h};
+  std::array<Point3, 4> out{};
+  for (std::size_t i = 0; i < 4; ++i) {
+    Point3 p = u;
+    coord(p, axis) += high ? h : -h;
+    coord(p, a) += da[i];
+    coord(p, b) += db[i];
+    out[i] = p;
+  }
+  return out;
+}
+
+bool on_segment(const Point3& v, const Point3& a, const Point3& b) {
+  // Only called with a, b consecutive boundary nodes of one face and v a
+  // node of that face's plane: v is on ab iff it is one of its ends
+  // (spec/mesh3d.md M7: the apex of a fine side is a corner of the face).
+  return v == a || v == b;
+}
+
+}  // namespace
+
+int orientation(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+  const auto m = differences(a, b, c, d);
+  if (small(m)) {
+    const Int128 v = det3<Int128>(m);  // each product < 2^123, the sum < 2^126
+    return (v > 0) - (v < 0);
+  }
+  return sgn(det3<mpz_class>(m));
+}
+
+Int128 six_volume(const Tet& t) {
+  const auto m = differences(t[0], t[1], t[2], t[3]);
+  if (!small(m)) throw std::overflow_error("six_volume: coordinate differences of 2^41 or more");
+  return det3<Int128>(m);
+}
+
+// spec/mesh3d.md M1-M4
+std::vector<Tet> tetrahedra(const Graph3& g) {
+  std::vector<Tet> out;
+  for (const Point3& u : g.C) {
+    const int l = g.level_of(u);
+    const std::int64_t s = cell_side(g.size, l), h = s / 2;
+    const PointSet3& nu = g.nbr(u);
+    for (int axis = 0; axis < 3; ++axis)
+      for (const bool high : {false, true}) {
+        // spec/mesh3d.md M4: f is the center point of face F.
+        Point3 f = u;
+        coord(f, axis) += high ? h : -h;
+        Point3 apex;
+        bool emit = true;
+        if (coord(f, axis) == 0 || coord(f, axis) == extent(g.size, axis)) {
+          apex = f;  // M4.1, M8: a hull face
+        } else if (nu.count(f)) {
+          apex = f;  // M4.2, M6: a split face, coarse side
+        } else {
+          Point3 w = u;
+          coord(w, axis) += high ? s : -s;
+          if (g.C.count(w)) {
+            apex = w;      // M4.3, M5: an equal face
+            emit = u < w;  // M3: emitted once, from the smaller center
+          } else {
+            // M4.4, M7: a split face, fine side; m is the coarse face's center.
+            if (l == 0) throw std::logic_error("tetrahedra: no leaf across a face of level-0 cell " + to_string(u));
+            Point3 m = f;
+            for (int k = 0; k < 3; ++k)
+              if (k != axis) coord(m, k) = coord(u, k) / (2 * s) * (2 * s) + s;
+            if (!nu.count(m))
+              throw std::logic_error("tetrahedra: coarse face center " + to_string(m) + " is not a node of " +
+                                     to_string(u));
+            apex = m;
+          }
+        }
+        if (!emit) continue;
+        // The boundary nodes of F in cyclic order: corners and the edge
+        // midpoints that are nodes of N(u).
+        const std::array<Point3, 4> corners = face_corners(u, h, axis, high);
+        std::vector<Point3> ring;
+        for (std::size_t i = 0; i < 4; ++i) {
+          ring.push_back(corners[i]);
+          const Point3 e = midpoint(corners[i], corners[(i + 1) % 4]);
+          if (nu.count(e)) ring.push_back(e);
+        }
+        // spec/mesh3d.md M2: one tetrahedron per segment ab not through the apex.
+        for (std::size_t i = 0; i < ring.size(); ++i) {
+          Point3 a = ring[i], b = ring[(i + 1) % ring.size()];
+          if (on_segment(apex, a, b)) continue;
+          const int o = orientation(u, apex, a, b);
+          if (o == 0) throw std::logic_error("tetrahedra: degenerate tetrahedron at " + to_string(u));
+          if (o < 0) std::swap(a, b);  // M3
+          out.push_back({u, apex, a, b});
+        }
+      }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+TetMesh index_mesh(const Graph3& g, const std::vector<Tet>& tets) {
+  TetMesh mesh;
+  for (const Tet& t : tets) mesh.vertices.insert(mesh.vertices.end(), t.begin(), t.end());
+  std::sort(mesh.vertices.begin(), mesh.vertices.end());
+  mesh.vertices.erase(std::unique(mesh.vertices.begin(), mesh.vertices.end()), mesh.vertices.end());
+  mesh.kind.reserve(mesh.vertices.size());
+  for (const Point3& v : mesh.vertices)
+    mesh.kind.push_back(static_cast<std::uint8_t>(g.is_node(v)     ? VertexKind::node
+                                                  : g.is_center(v) ? VertexKind::center
+                                                                   : VertexKind::hull));
+  mesh.tets.reserve(tets.size());
+  for (const Tet& t : tets) {
+    std::array<std::uint32_t, 4> ids{};
+    for (std::size_t i = 0; i < 4; ++i)
+      ids[i] = static_cast<std::uint32_t>(std::lower_bound(mesh.vertices.begin(), mesh.vertices.end(), t[i]) -
+                                          mesh.vertices.begin());
+    mesh.tets.push_back(ids);
+  }
+  return mesh;
+}
+
+void write_vtu(std::ostream& out, const TetMesh& mesh) {
+  out << "<?xml version=\"1.0\"?>\n"
+      << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+      << "  <UnstructuredGrid>\n"
+      << "    <Piece NumberOfPoints=\"" << mesh.vertices.size() << "\" NumberOfCells=\"" << mesh.tets.size() << "\">\n"
+      << "      <PointData Scalars=\"kind\">\n"
+      << "        <DataArray type=\"UInt8\" Name=\"kind\" format=\"ascii\">\n";
+  for (const std::uint8_t k : mesh.kind) out << static_cast<int>(k) << '\n';
+  out << "        </DataArray>\n"
+      << "      </PointData>\n"
+      << "      <Points>\n"
+      << "        <DataArray type=\"Int64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  for (const Point3& p : mesh.vertices) out << p.x << ' ' << p.y << ' ' << p.z << '\n';
+  out << "        </DataArray>\n"
+      << "      </Points>\n"
+      << "      <Cells>\n"
+      << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  for (const auto& t : mesh.tets) out << t[0] << ' ' << t[1] << ' ' << t[2] << ' ' << t[3] << '\n';
+  out << "        </DataArray>\n"
+      << "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < mesh.tets.size(); ++i) out << 4 * (i + 1) << '\n';
+  out << "        </DataArray>\n"
+      << "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < mesh.tets.size(); ++i) out << "10\n";
+  out << "        </DataArray>\n"
+      << "      </Cells>\n"
+      << "    </Piece>\n"
+      << "  </UnstructuredGrid>\n"
+      << "</VTKFile>\n";
+}
+
+void write_msh(std::ostream& out, const TetMesh& mesh) {
+  const std::size_t n = mesh.vertices.size(), m = mesh.tets.size();
+  out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
+  // One entity block: the volume entity 1 holds every node.
+  out << "$Nodes\n1 " << n << ' ' << (n ? 1 : 0) << ' ' << n << '\n' << "3 1 0 " << n << '\n';
+  for (std::size_t i = 1; i <= n; ++i) out << i << '\n';
+  for (const Point3& p : mesh.vertices) out << p.x << ' ' << p.y << ' ' << p.z << '\n';
+  out << "$EndNodes\n";
+  out << "$Elements\n1 " << m << ' ' << (m ? 1 : 0) << ' ' << m << '\n' << "3 1 4 " << m << '\n';
+  for (std::size_t i = 0; i < m; ++i) {
+    const auto& t = mesh.tets[i];
+    out << i + 1 << ' ' << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << ' ' << t[3] + 1 << '\n';
+  }
+  out << "$EndElements\n";
+}
+
+void write_medit(std::ostream& out, const TetMesh& mesh) {
+  out << "MeshVersionFormatted 2\n\nDimension 3\n\nVertices\n" << mesh.vertices.size() << '\n';
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+    const Point3& p = mesh.vertices[i];
+    out << p.x << ' ' << p.y << ' ' << p.z << ' ' << static_cast<int>(mesh.kind[i]) << '\n';
+  }
+  out << "\nTetrahedra\n" << mesh.tets.size() << '\n';
+  for (const auto& t : mesh.tets) out << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << ' ' << t[3] + 1 << " 0\n";
+  out << "\nEnd\n";
+}
+
+}  // namespace bccmis::d3

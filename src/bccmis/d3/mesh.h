@@ -1,0 +1,64 @@
+// bccmis::d3: the graded BCC tetrahedral mesh of a 3D lattice
+// (spec/mesh3d.md) and its writers: VTK XML unstructured grid (.vtu), Gmsh
+// MSH 4.1 (.msh) and Medit (.mesh), all ASCII with integer coordinates.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <iosfwd>
+#include <vector>
+
+#include "bccmis/d3/graph.h"
+
+namespace bccmis::d3 {
+
+/// One tetrahedron by its 4 vertex positions, positively oriented:
+/// det[v1-v0, v2-v0, v3-v0] > 0.  v[0] is the leaf center u, v[1] the apex.
+using Tet = std::array<Point3, 4>;
+
+/// Every tetrahedron of the graded BCC mesh of g (spec/mesh3d.md), each once,
+/// positively oriented, sorted (std::sort on Tet). Hull vertices (centers of
+/// domain-boundary faces) appear as vertices that are in neither g.N nor g.C.
+/// Throws std::logic_error if g is not a reachable state (an apex the graph
+/// does not have, or a degenerate tetrahedron).
+std::vector<Tet> tetrahedra(const Graph3& g);
+
+/// A signed 128-bit integer (a GNU extension that g++ and clang++ provide).
+__extension__ typedef __int128 Int128;
+
+/// det[b - a, c - a, d - a] computed exactly: its sign (-1, 0 or 1), for
+/// coordinates up to 2^62 (spec/mesh3d.md M3).
+int orientation(const Point3& a, const Point3& b, const Point3& c, const Point3& d);
+
+/// det[t1 - t0, t2 - t0, t3 - t0] = 6 times the signed volume, exactly, when
+/// it fits in a signed 128-bit integer (every coordinate difference below 2^41);
+/// throws std::overflow_error otherwise.
+Int128 six_volume(const Tet& t);
+
+/// The kind of a mesh vertex (TetMesh::kind).
+enum class VertexKind : std::uint8_t { node = 0, center = 1, hull = 2 };
+
+/// An indexed mesh for writers: vertices sorted by position, tets as indices.
+struct TetMesh {
+  std::vector<Point3> vertices;
+  std::vector<std::array<std::uint32_t, 4>> tets;
+  std::vector<std::uint8_t> kind; /* per vertex: 0 node, 1 center, 2 hull */
+};
+
+/// The vertices of `tets` (sorted, each once, with their kind in g) and the
+/// tetrahedra as indices into them, in the order of `tets`.
+TetMesh index_mesh(const Graph3& g, const std::vector<Tet>& tets);
+
+/// VTK XML UnstructuredGrid, ASCII: Int64 points, VTK_TETRA (10) cells and
+/// the point data array "kind".
+void write_vtu(std::ostream& out, const TetMesh& mesh);
+
+/// Gmsh MSH 4.1 ASCII: one volume entity (tag 1) holding every node and
+/// every 4-node tetrahedron (element type 4); node and element tags from 1.
+void write_msh(std::ostream& out, const TetMesh& mesh);
+
+/// Medit .mesh (MeshVersionFormatted 2, Dimension 3): Vertices with the
+/// kind as reference, Tetrahedra (1-based) with reference 0, End.
+void write_medit(std::ostream& out, const TetMesh& mesh);
+
+}  // namespace bccmis::d3
