@@ -34,3 +34,10 @@ target_include_directories(d3_exception_safety_test PRIVATE ${PROJECT_SOURCE_DIR
 target_link_libraries(d3_exception_safety_test PRIVATE bccmis::d3 GTest::gtest_main bccmis::warnings)
 target_compile_definitions(d3_exception_safety_test PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
 gtest_discover_tests(d3_exception_safety_test DISCOVERY_MODE PRE_TEST PROPERTIES LABELS robustness)
+
+# The independent 3D checker (src/bccmis/invariants/d3/): every code planted,
+# random states valid, random mutations caught, the mesh layer on hand-built
+# tetrahedra.
+add_executable(d3_invariants_tests d3/invariants_test.cpp)
+target_link_libraries(d3_invariants_tests PRIVATE bccmis::invariants3 bccmis::d3 GTest::gtest_main bccmis::warnings)
+gtest_discover_tests(d3_invariants_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)

@@ -187,15 +187,18 @@ std::optional<Violation3> check_structural(const Graph3& g) {
     for (const Point3& n : g.N) {
       const NodeRoles& k = *r++;
       if (!k.judged || (k.edge == 0 && k.face == 0)) continue;
-      const std::string counts = "node " + pos(n) + " is a face center of " + std::to_string(k.face) +
-                                 " cells, an edge midpoint of " + std::to_string(k.edge) + " and a corner of " +
-                                 std::to_string(k.corner);
+      const Point3 holder = k.face > 0 ? k.face_holder : k.edge_holder;
+      const std::string counts = "node " + pos(n) + " (" +
+                                 role_name(k.face > 0 ? Role::FaceCenter : Role::EdgeMidpoint) + " of " + pos(holder) +
+                                 ") is a face center of " + std::to_string(k.face) + " cells, an edge midpoint of " +
+                                 std::to_string(k.edge) + " and a corner of " + std::to_string(k.corner);
       if (k.face > 0) {
         if (k.face != 1 || k.edge != 0 || k.corner != 4)
-          return violation(layer, "junction-degree", {k.face_holder, n},
-                           counts + "; the center of a face of " + pos(k.face_holder) +
-                               " is a corner of exactly the 4 finer cells beyond it and of nothing else (|N| = 5)",
-                           "§3 F2");
+          return violation(
+              layer, "junction-degree", {k.face_holder, n},
+              counts +
+                  "; a face center is a corner of exactly the 4 finer cells beyond it and of nothing else (|N| = 5)",
+              "§3 F2");
         continue;
       }
       const int q = box.interior_coordinates(n) == 3 ? 4 : 2;  // quadrants around the edge inside the box
