@@ -15,6 +15,7 @@
 #include "bccmis/d3/graph.h"
 #include "bccmis/d3/ops.h"
 #include "bccmis/invariants/d3/invariants3.h"
+#include "check3.h"
 
 namespace bccmis::d3 {
 namespace {
@@ -203,6 +204,118 @@ TEST(D3Invariants, RandomMutationsAreCaught) {
       }
     }
   EXPECT_GT(mutations, 100);
+}
+
+// The graph spec/lattice3d.md §1 derives from a leaf set, built by the test
+// model (tests/d3/leaf_model.h), whatever the balance of the leaves.
+Graph3 graph_of(const LatticeSize3& size, const model::Leaves& leaves) {
+  const model::GeometricGraph geo = model::geometric_graph(size, leaves);
+  Graph3 g;
+  g.size = size;
+  g.N = geo.N;
+  for (const auto& [c, l] : leaves) {
+    g.C.insert(c);
+    g.level[c] = l;
+  }
+  for (const auto& [v, nbrs] : geo.nbr) g.neighbors[v] = nbrs;
+  return g;
+}
+
+// A random octree leaf set: each cube below level L is refined with
+// probability `p`; balance is not enforced.
+model::Leaves random_leaves(const LatticeSize3& size, double p, std::mt19937_64& rng) {
+  model::Leaves leaves;
+  std::bernoulli_distribution split(p);
+  const auto grow = [&](const auto& self, const Point3& c, int l) -> void {
+    if (l == size.L || !split(rng)) {
+      leaves[c] = l;
+      return;
+    }
+    const std::int64_t q = model::side(size, l) / 4;
+    for (int i = 0; i < 8; ++i)
+      self(self, {c.x + ((i & 4) ? q : -q), c.y + ((i & 2) ? q : -q), c.z + ((i & 1) ? q : -q)}, l + 1);
+  };
+  const std::int64_t S = model::side(size, 0);
+  for (std::int64_t i = 0; i < size.W; ++i)
+    for (std::int64_t j = 0; j < size.H; ++j)
+      for (std::int64_t k = 0; k < size.D; ++k) grow(grow, {i * S + S / 2, j * S + S / 2, k * S + S / 2}, 0);
+  return leaves;
+}
+
+// The checker accepts the graph of a random leaf set exactly when the test
+// model finds it balanced (and the cardinality facts hold): an unbalanced
+// leaf set is always rejected, a balanced one always accepted.
+TEST(D3Invariants, AgreesWithTheModelOnRandomLeafSets) {
+  const LatticeSize3 sizes[] = {{2, 2, 1, 2}, {2, 1, 1, 3}, {1, 1, 1, 3}, {2, 2, 2, 2}};
+  constexpr std::uint64_t seed = 20090303;
+  std::mt19937_64 rng(seed);
+  int balanced = 0, unbalanced = 0;
+  for (int round = 0; round < 60; ++round)
+    for (const LatticeSize3& size : sizes) {
+      const model::Leaves leaves = random_leaves(size, 0.35, rng);
+      const Graph3 g = graph_of(size, leaves);
+      const std::string problem = test::state_problem(g);
+      const std::optional<Violation3> v = find_violation(g);
+      ASSERT_EQ(problem.empty(), !v.has_value())
+          << "seed " << seed << ", round " << round << ": model says \"" << problem << "\", checker says \""
+          << (v ? to_string(*v) : std::string("valid")) << "\"";
+      ++(problem.empty() ? balanced : unbalanced);
+    }
+  EXPECT_GT(balanced, 20);
+  EXPECT_GT(unbalanced, 20);
+}
+
+// Random mutations of random reachable states: the checker and the test
+// model agree on every one (and both reject it).
+TEST(D3Invariants, MutationsAgreeWithTheModel) {
+  constexpr std::uint64_t seed = 99;
+  std::mt19937_64 rng(seed);
+  int checked = 0;
+  for (const Case& k : kCases) {
+    Graph3 g(k.size);
+    std::string trace;
+    for (int step = 0; step < k.steps; ++step) {
+      random_step(g, rng, trace);
+      Graph3 m = g;
+      std::string what;
+      switch (std::uniform_int_distribution<int>(0, 3)(rng)) {
+        case 0: {  // one edge deleted from both sides
+          const Point3 c = pick(m.C, rng), n = pick(m.nbr(c), rng);
+          unlink(m, c, n);
+          what = "edge " + to_string(c) + " - " + to_string(n) + " deleted";
+          break;
+        }
+        case 1: {  // an edge to a node not on the cell's cube
+          const Point3 c = pick(m.C, rng), n = pick(m.N, rng);
+          if (m.nbr(c).count(n)) continue;
+          link(m, c, n);
+          what = "edge " + to_string(c) + " - " + to_string(n) + " added";
+          break;
+        }
+        case 2: {
+          const Point3 c = pick(m.C, rng);
+          remove_cell(m, c);
+          what = "cell " + to_string(c) + " removed";
+          break;
+        }
+        default: {
+          const Point3 n = pick(m.N, rng);
+          remove_node(m, n);
+          what = "node " + to_string(n) + " removed";
+          break;
+        }
+      }
+      const std::string problem = test::state_problem(m);
+      const std::optional<Violation3> v = find_violation(m);
+      ASSERT_EQ(problem.empty(), !v.has_value())
+          << "seed " << seed << " after:\n"
+          << trace << what << ": model says \"" << problem << "\", checker says \""
+          << (v ? to_string(*v) : std::string("valid")) << "\"";
+      EXPECT_TRUE(v.has_value()) << trace << what;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 150);
 }
 
 // ---------------------------------------------------------------- layer 1

@@ -11,6 +11,10 @@ namespace bccmis::d3 {
 std::string to_string(const Violation3& v) { return v.message + " [" + v.section + "]"; }
 
 std::optional<Violation3> check_layer(const Graph3& g, int layer) {
+  // Layers 2-4 compute 2^(L+1) and the extents: with a size layer 1 rejects
+  // they report that instead of computing with it.
+  if (layer >= 2 && layer <= 4)
+    if (auto v = inv3::check_lattice_size(g.size)) return v;
   switch (layer) {
     case 1: return inv3::check_combinatorial(g);
     case 2: return inv3::check_structural(g);
