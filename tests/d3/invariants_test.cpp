@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <filesystem>
+#include <fstream>
 #include <iterator>
 #include <optional>
 #include <random>
@@ -586,6 +588,32 @@ TEST(D3Layers, CheckLayerRejectsOtherNumbers) {
   EXPECT_THROW(check_layer(g, 0), std::invalid_argument);
   EXPECT_THROW(check_layer(g, 5), std::invalid_argument);
   EXPECT_EQ(find_violation(g, 0), std::nullopt);
+}
+
+TEST(D3Layers, LayersTwoToFourReportAnInvalidLatticeSize) {
+  Graph3 g({1, 1, 1, 1});
+  g.size.L = 70;
+  for (int layer = 1; layer <= 4; ++layer) expect_violation(check_layer(g, layer), "lattice-size", 1);
+}
+
+// The checker is independent of the operations: of src/bccmis/ it includes
+// only the data types (bccmis/d3/graph.h, which brings bccmis/graph.h) and
+// its own files.
+TEST(D3Layers, CheckerIncludesNothingOfTheOperations) {
+  const std::filesystem::path dir = std::filesystem::path(BCCMIS_SOURCE_DIR) / "src/bccmis/invariants/d3";
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    std::ifstream in(entry.path());
+    ASSERT_TRUE(in) << entry.path();
+    ++files;
+    for (std::string line; std::getline(in, line);) {
+      if (line.rfind("#include \"", 0) != 0) continue;
+      const std::string header = line.substr(10, line.find('"', 10) - 10);
+      EXPECT_TRUE(header == "bccmis/d3/graph.h" || header.rfind("bccmis/invariants/d3/", 0) == 0)
+          << entry.path().filename() << " includes " << header;
+    }
+  }
+  EXPECT_GE(files, 7);
 }
 
 // ---------------------------------------------------------------- layer 5: the mesh
