@@ -40,5 +40,6 @@ gtest_discover_tests(d3_exception_safety_test DISCOVERY_MODE PRE_TEST PROPERTIES
 # tetrahedra.
 add_executable(d3_invariants_tests d3/invariants_test.cpp)
 target_link_libraries(d3_invariants_tests PRIVATE bccmis::invariants3 bccmis::d3 GTest::gtest_main bccmis::warnings)
-target_compile_definitions(d3_invariants_tests PRIVATE BCCMIS_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+target_compile_definitions(d3_invariants_tests PRIVATE BCCMIS_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+  BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
 gtest_discover_tests(d3_invariants_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)

@@ -18,6 +18,7 @@
 #include "bccmis/d3/ops.h"
 #include "bccmis/invariants/d3/invariants3.h"
 #include "check3.h"
+#include "util3.h"  // PrintTo(Point3)
 
 namespace bccmis::d3 {
 namespace {
