@@ -54,3 +54,12 @@ endif()
 add_test(NAME d3.mesh_readers
          COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/d3/mesh_readers_test.py $<TARGET_FILE:d3_mesh_write>)
 set_tests_properties(d3.mesh_readers PROPERTIES LABELS unit)
+
+# The independent 3D checker (src/bccmis/invariants/d3/): every code planted,
+# random states valid, random mutations caught, the mesh layer on hand-built
+# tetrahedra.
+add_executable(d3_invariants_tests d3/invariants_test.cpp)
+target_link_libraries(d3_invariants_tests PRIVATE bccmis::invariants3 bccmis::d3 GTest::gtest_main bccmis::warnings)
+target_compile_definitions(d3_invariants_tests PRIVATE BCCMIS_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+  BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
+gtest_discover_tests(d3_invariants_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
