@@ -166,3 +166,41 @@ if(Python3_FOUND)
            COMMAND Python3::Interpreter ${_cli}/check_cli_spec.py $<TARGET_FILE:bccmis> ${PROJECT_SOURCE_DIR}/spec/cli.md --self-test)
   set_tests_properties(cli.spec cli.spec_self_test PROPERTIES LABELS "cli;spec")
 endif()
+
+# 3D (spec/formats.md, "3D extension"): the hand-derived examples of
+# spec/examples/d3 through replay with every state checked (layers 1-4 and
+# the mesh layer), the readers of either dimension, and the 3D counts.
+file(GLOB _traces3 ${_examples}/d3/*.trace)
+foreach(trace ${_traces3})
+  get_filename_component(stem ${trace} NAME_WE)
+  bccmis_cli_test(golden.d3.${stem} 0 ARGS replay --check=every --depth 5 --quiet ${trace}
+                  STDOUT_FILE ${_examples}/d3/${stem}.expected LABEL golden)
+endforeach()
+bccmis_cli_test(d3_replay_fast_refused 2 ARGS replay --impl fast ${_examples}/d3/root.trace
+                STDERR_REGEX "root.trace: --impl fast: the fast lattice is 2D; a 3D trace runs on the reference")
+bccmis_cli_test(d3_replay_summary 0 ARGS replay ${_examples}/d3/face.trace
+                STDERR_REGEX "2 refine and 1 coarsen commands \\(1 refused\\), 3 checks passed.*2 cells \\(level 0: 2\\), 12 nodes")
+bccmis_cli_test(d3_check_valid 0 ARGS check --depth 5 ${_examples}/d3/face_refined.state
+                STDOUT_REGEX "valid \\(depth 5\\): 9 cells \\(level 0: 1, level 1: 8\\), 31 nodes")
+bccmis_cli_test(d3_check_broken 1 ARGS check ${_cli}/broken3d.state
+                STDERR_REGEX "symmetry: center \\(12, 4, 4\\) lists node \\(8, 4, 4\\), which does not list it")
+bccmis_cli_test(d3_diff_different 1 ARGS diff ${_examples}/d3/face_refined.state ${_cli}/broken3d.state
+                STDOUT_REGEX "^neighbors of \\(8, 4, 4\\): only in A: \\(12, 4, 4\\); only in B: none\n$")
+bccmis_cli_test(d3_diff_equal 0 ARGS diff ${_examples}/d3/face_refined.state ${_examples}/d3/face_refined.state)
+bccmis_cli_test(d3_diff_dimensions 1 ARGS diff ${_examples}/initial_1_1_0.state ${_examples}/d3/face_refined.state
+                STDOUT_REGEX "^dimension: A is a 2D state, B is a 3D state\n$")
+bccmis_cli_test(d3_check_given_a_trace 2 ARGS check ${_examples}/d3/root.trace
+                STDERR_REGEX "root.trace:1:[0-9]+: .*; this is a trace, not a canonical state")
+# face_refined by hand (spec/lattice3d.md §7): 8 children and the coarse cube;
+# nodes: the 27 of [0,8]^3 plus the 4 far corners of the coarse cube = 31;
+# junctions: the shared face's center and its 4 midpoints; stored edges
+# 8*8 + 13 = 77; green edges: the 54 grid segments of [0,8]^3 plus the coarse
+# cube's 8 edges off the shared face = 62; tetrahedra: spec/mesh3d.md (168).
+bccmis_cli_test(d3_stats 0 ARGS stats ${_examples}/d3/face_refined.state
+                STDOUT_REGEX "^lattice 2 1 1 2\ncells 9\ncells_level_0 1\ncells_level_1 8\nnodes 31\njunctions 5\ngraph_edges 77\ngreen_edges 62\ntetrahedra 168\n")
+# root by hand: 8 cells at level 1, the 27 nodes of {0,2,4}^3, no junction,
+# 64 stored edges, 54 grid segments, 144 tetrahedra (spec/mesh3d.md).
+bccmis_cli_test(d3_stats_json 0 ARGS stats --from-trace --json ${_examples}/d3/root.trace
+                STDOUT_REGEX "^\\{\"dimension\": 3, \"lattice\": \\[1, 1, 1, 1\\], \"cells\": 8, \"cells_per_level\": \\{\"1\": 8\\}, \"nodes\": 27, \"junctions\": 0, \"graph_edges\": 64, \"green_edges\": 54, \"tetrahedra\": 144, ")
+bccmis_cli_test(d3_replay_json 0 ARGS replay --json ${_examples}/d3/root.trace
+                STDOUT_REGEX "\"decisions\": \\[\"refine 2 2 2 ok\", \"refine 1 1 1 refused max-level\"\\].*\"cells\": 8, \"nodes\": 27, \"state\": \"bccmis-state 1\\\\nlattice 1 1 1 1\\\\n")

@@ -1,9 +1,12 @@
-// bccmis check STATE: the checker on a canonical state; and the helpers every
+// bccmis check STATE: the checker on a canonical state of either dimension;
+// and the helpers every
 // subcommand that checks shares.
 #include <iostream>
 #include <map>
 
+#include "bccmis/d3/mesh.h"
 #include "bccmis/fast/lattice.h"
+#include "bccmis/invariants/d3/invariants3.h"
 #include "commands.h"
 #include "io.h"
 #if BCCMIS_HAVE_TRIANGULATION_CHECK
@@ -40,21 +43,54 @@ std::string summary(const std::map<int, std::size_t>& cells_per_level, std::size
   return std::to_string(cells) + " cells (" + levels + "), " + std::to_string(nodes) + " nodes";
 }
 
-std::string summary(const Graph& g) {
+std::optional<std::string> check_message(const Graph& g, int depth) {
+  if (auto v = check_graph(g, depth)) return to_string(*v);
+  return std::nullopt;
+}
+
+std::optional<std::string> check_message(const fast::Lattice& g, int depth) {
+  Graph copy;
+  return check_message(as_graph(g, copy), depth);
+}
+
+std::optional<std::string> check_message(const d3::Graph3& g, int depth) {
+  if (auto v = d3::find_violation(g, depth < 5 ? depth : 4)) return to_string(*v);
+  if (depth >= 5)
+    if (auto v = d3::check_mesh(g, d3::tetrahedra(g))) return to_string(*v);
+  return std::nullopt;
+}
+
+namespace {
+
+template <class G>
+std::string levels_summary(const G& g) {
   std::map<int, std::size_t> per_level;
   for (const auto& [c, l] : g.level) ++per_level[l];
   return summary(per_level, g.N.size());
 }
 
+}  // namespace
+
+std::string summary(const Graph& g) { return levels_summary(g); }
+std::string summary(const d3::Graph3& g) { return levels_summary(g); }
+std::string summary(const fast::Lattice& g) {
+  std::map<int, std::size_t> per_level;
+  g.for_each_cell([&](const Point&, int level) { ++per_level[level]; });
+  return summary(per_level, g.node_count());
+}
+
 int run(const CheckOptions& o) {
   const std::string name = display_name(o.state);
-  const Graph g = read_state(o.state);
-  if (auto v = check_graph(g, o.depth)) {
-    std::cerr << "bccmis check: " << name << ": " << to_string(*v) << "\n";
-    return kExitViolation;
-  }
-  if (!o.quiet) std::cout << name << ": valid (depth " << o.depth << "): " << summary(g) << "\n";
-  return kExitOk;
+  return std::visit(
+      [&](const auto& g) {
+        if (auto v = check_message(g, o.depth)) {
+          std::cerr << "bccmis check: " << name << ": " << *v << "\n";
+          return int{kExitViolation};
+        }
+        if (!o.quiet) std::cout << name << ": valid (depth " << o.depth << "): " << summary(g) << "\n";
+        return int{kExitOk};
+      },
+      read_any_state(o.state));
 }
 
 }  // namespace bccmis::cli

@@ -21,6 +21,9 @@
 namespace bccmis::fast {
 class Lattice;
 }
+namespace bccmis::d3 {
+struct Graph3;
+}
 
 namespace bccmis::cli {
 
@@ -41,9 +44,17 @@ const Graph& as_graph(const fast::Lattice& g, Graph& copy);
 int max_check_depth();
 /// The checker to `depth` (5 adds the CGAL triangulation layer).
 std::optional<Violation> check_graph(const Graph& g, int depth);
+/// The first violation the checker finds to `depth`, as one line, on a
+/// lattice of either dimension: 2D layers 1-4 and 5 (CGAL); 3D layers 1-4,
+/// and with depth 5 the tetrahedral mesh layer (spec/invariants.md, "3D").
+std::optional<std::string> check_message(const Graph& g, int depth);
+std::optional<std::string> check_message(const fast::Lattice& g, int depth);
+std::optional<std::string> check_message(const d3::Graph3& g, int depth);
 /// "9 cells (level 0: 1, level 1: 8), 17 nodes", from the cells per level.
 std::string summary(const std::map<int, std::size_t>& cells_per_level, std::size_t nodes);
 std::string summary(const Graph& g);
+std::string summary(const fast::Lattice& g);
+std::string summary(const d3::Graph3& g);
 
 // ---- The subcommands ------------------------------------------------------------------
 

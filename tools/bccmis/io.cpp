@@ -13,6 +13,7 @@
 #include <sstream>
 #include <system_error>
 
+#include "bccmis/d3/lattice.h"
 #include "bccmis/trace.h"
 
 namespace bccmis::cli {
@@ -50,11 +51,15 @@ std::string read_input(const std::string& path) {
   return std::move(ss).str();
 }
 
-Trace read_trace(const std::string& path, const TraceLimits& limits, std::string_view state_hint) {
+namespace {
+
+// Parses `path` with `parse`; a canonical state given instead gets a hint.
+template <class Parse>
+auto read_trace_with(const std::string& path, std::string_view state_hint, const Parse& parse) {
   const std::string name = display_name(path);
   const std::string text = read_input(path);
   try {
-    return parse_trace(text, name, limits);
+    return parse(text, name);
   } catch (const ParseError& e) {
     if (e.line == 1 && starts_with_state_header(text))
       throw with_hint(e, "this is a canonical state, not a trace: " + std::string(state_hint));
@@ -62,16 +67,18 @@ Trace read_trace(const std::string& path, const TraceLimits& limits, std::string
   }
 }
 
-Graph read_state(const std::string& path, std::string_view trace_hint) {
+// Parses `path` with `parse`; a trace given instead gets a hint.
+template <class Parse>
+auto read_state_with(const std::string& path, std::string_view trace_hint, const Parse& parse) {
   const std::string name = display_name(path);
   const std::string text = read_input(path);
   try {
-    return parse_state(text, name);
+    return parse(text, name);
   } catch (const ParseError& e) {
     if (e.line != 1 || starts_with_state_header(text)) throw;
     bool is_trace = false;
     try {
-      parse_trace(text, name);
+      parse_any_trace(text, name);
       is_trace = true;
     } catch (const ParseError&) {
     }
@@ -80,10 +87,46 @@ Graph read_state(const std::string& path, std::string_view trace_hint) {
   }
 }
 
+}  // namespace
+
+Trace read_trace(const std::string& path, const TraceLimits& limits, std::string_view state_hint) {
+  return read_trace_with(path, state_hint,
+                         [&](std::string_view text, std::string_view name) { return parse_trace(text, name, limits); });
+}
+
+AnyTrace read_any_trace(const std::string& path, const TraceLimits& limits, std::string_view state_hint) {
+  return read_trace_with(path, state_hint, [&](std::string_view text, std::string_view name) {
+    return parse_any_trace(text, name, limits);
+  });
+}
+
+Graph read_state(const std::string& path, std::string_view trace_hint) {
+  return read_state_with(path, trace_hint,
+                         [](std::string_view text, std::string_view name) { return parse_state(text, name); });
+}
+
+AnyState read_any_state(const std::string& path, std::string_view trace_hint) {
+  return read_state_with(path, trace_hint,
+                         [](std::string_view text, std::string_view name) { return parse_any_state(text, name); });
+}
+
 Graph read_state_or_trace(const std::string& path, bool from_trace) {
   if (!from_trace) return read_state(path, "give --from-trace to replay it first");
   std::string log;
   return replay<Graph>(read_trace(path, {}, "leave out --from-trace"), log);
+}
+
+AnyState read_any_state_or_trace(const std::string& path, bool from_trace) {
+  if (!from_trace) return read_any_state(path, "give --from-trace to replay it first");
+  std::string log;
+  return std::visit(
+      [&]<class T>(const T& trace) -> AnyState {
+        if constexpr (std::is_same_v<T, Trace3>)
+          return replay<d3::Graph3>(trace, log);
+        else
+          return replay<Graph>(trace, log);
+      },
+      read_any_trace(path, {}, "leave out --from-trace"));
 }
 
 // ---- OutputSet ----------------------------------------------------------------

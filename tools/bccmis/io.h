@@ -21,6 +21,7 @@
 #include <string_view>
 #include <vector>
 
+#include "bccmis/d3/format.h"
 #include "bccmis/format.h"
 #include "bccmis/graph.h"
 
@@ -56,13 +57,23 @@ std::string read_input(const std::string& path);
 Trace read_trace(const std::string& path, const TraceLimits& limits = {},
                  std::string_view state_hint = "check it with 'bccmis check'");
 
+/// The trace in `path`, of either dimension (read_trace's hints).
+AnyTrace read_any_trace(const std::string& path, const TraceLimits& limits = {},
+                        std::string_view state_hint = "check it with 'bccmis check'");
+
 /// The canonical state in `path`. A trace given instead gets a hint naming
 /// the command that takes it; `trace_hint` is that hint's tail.
 Graph read_state(const std::string& path,
                  std::string_view trace_hint = "replay it with 'bccmis replay TRACE --state FILE' first");
 
+/// The canonical state in `path`, of either dimension (read_state's hints).
+AnyState read_any_state(const std::string& path,
+                        std::string_view trace_hint = "replay it with 'bccmis replay TRACE --state FILE' first");
+
 /// A state from a canonical-state file, or from a trace (replayed) with `from_trace`.
 Graph read_state_or_trace(const std::string& path, bool from_trace);
+/// The same, of either dimension.
+AnyState read_any_state_or_trace(const std::string& path, bool from_trace);
 
 /// Writes the text of one output into the stream it is given.
 using Writer = std::function<void(std::ostream& out)>;

@@ -1,12 +1,14 @@
 // bccmis replay TRACE: replays a trace on the implementation of --impl, with
 // the checker when --check asks; prints (or writes) the decision log and the
-// canonical state. The fast implementation is converted to a Graph only for
-// the checker: with --check=none its log and state are written from the
+// canonical state. A 3D trace (`lattice W H D L`) runs on the 3D reference
+// with the 3D checker. The fast implementation is converted to a Graph only
+// for the checker: with --check=none its log and state are written from the
 // lattice itself.
 #include <iostream>
 #include <map>
 #include <string>
 
+#include "bccmis/d3/lattice.h"
 #include "bccmis/fast/lattice.h"
 #include "bccmis/trace.h"
 #include "commands.h"
@@ -15,14 +17,6 @@
 namespace bccmis::cli {
 
 namespace {
-
-/// "9 cells (level 0: 1, level 1: 8), 17 nodes" for either implementation.
-std::string lattice_summary(const Graph& g) { return summary(g); }
-std::string lattice_summary(const fast::Lattice& g) {
-  std::map<int, std::size_t> per_level;
-  g.for_each_cell([&](const Point&, int level) { ++per_level[level]; });
-  return summary(per_level, g.node_count());
-}
 
 // The decision log, one JSON string per line.
 std::string json_lines(const std::string& log) {
@@ -39,14 +33,13 @@ std::string json_lines(const std::string& log) {
 }
 
 template <class L>
-int replay_with(const ReplayOptions& o, const Trace& trace) {
+int replay_with(const ReplayOptions& o, const trace_t<L>& trace) {
   const std::string name = display_name(o.trace);
   std::string log;
   std::size_t refines = 0, coarsens = 0, refused = 0, checks = 0;
   std::optional<std::string> failure, limit_error;
   struct Stop {};  // a violation or the vertex limit stops the replay at its command
-  Graph scratch;
-  auto observe = [&](const TraceCommand& c, const L& now, std::string_view decision) {
+  auto observe = [&](const trace_command_t<L>& c, const L& now, std::string_view decision) {
     if (c.kind == TraceCommand::Kind::Refine) ++refines;
     if (c.kind == TraceCommand::Kind::Coarsen) ++coarsens;
     if (decision.find(" refused ") != std::string_view::npos) ++refused;
@@ -58,9 +51,8 @@ int replay_with(const ReplayOptions& o, const Trace& trace) {
     }
     if (c.kind == TraceCommand::Kind::Check || o.check == "every") {
       ++checks;
-      if (auto v = check_graph(as_graph(now, scratch), o.depth)) {
-        failure = name + ":" + std::to_string(c.line) + ": invariant violated after '" + command_text(c) +
-                  "': " + to_string(*v);
+      if (auto v = check_message(now, o.depth)) {
+        failure = name + ":" + std::to_string(c.line) + ": invariant violated after '" + command_text(c) + "': " + *v;
         throw Stop{};
       }
     }
@@ -79,8 +71,8 @@ int replay_with(const ReplayOptions& o, const Trace& trace) {
   const L& g = *result;
   if (o.check == "end") {
     ++checks;
-    if (auto v = check_graph(as_graph(g, scratch), o.depth)) {
-      std::cerr << "bccmis replay: " << name << ": invariant violated at the end: " << to_string(*v) << "\n";
+    if (auto v = check_message(g, o.depth)) {
+      std::cerr << "bccmis replay: " << name << ": invariant violated at the end: " << *v << "\n";
       return kExitViolation;
     }
   }
@@ -106,7 +98,7 @@ int replay_with(const ReplayOptions& o, const Trace& trace) {
   if (!o.quiet)
     std::cerr << "bccmis replay: " << name << ": " << refines << " refine and " << coarsens << " coarsen commands ("
               << refused << " refused), " << checks << " checks passed (depth " << o.depth
-              << "); final state: " << lattice_summary(g) << "\n";
+              << "); final state: " << summary(g) << "\n";
   return kExitOk;
 }
 
@@ -115,7 +107,14 @@ int replay_with(const ReplayOptions& o, const Trace& trace) {
 int run(const ReplayOptions& o) {
   TraceLimits limits;
   limits.max_vertices = o.max_vertices;
-  const Trace trace = read_trace(o.trace, limits);
+  const AnyTrace any = read_any_trace(o.trace, limits);
+  if (const auto* trace3 = std::get_if<Trace3>(&any)) {
+    if (o.impl != "reference")
+      throw InputError(display_name(o.trace) + ": --impl " + o.impl +
+                       ": the fast lattice is 2D; a 3D trace runs on the reference (--impl reference)");
+    return replay_with<d3::Graph3>(o, *trace3);
+  }
+  const Trace& trace = std::get<Trace>(any);
   return std::visit([&]<class L>(std::type_identity<L>) { return replay_with<L>(o, trace); }, implementation(o.impl));
 }
 

@@ -1,4 +1,5 @@
-// bccmis stats STATE: counts of a state (or of a trace's final state).
+// bccmis stats STATE: counts of a state (or of a trace's final state), either
+// dimension.
 #include <iostream>
 
 #include "bccmis/oracle/oracle.h"
@@ -8,7 +9,8 @@
 namespace bccmis::cli {
 
 int run(const StatsOptions& o) {
-  std::cout << format_stats(stats(read_state_or_trace(o.state, o.from_trace)), o.json);
+  std::cout << std::visit([&](const auto& g) { return format_stats(stats(g), o.json); },
+                          read_any_state_or_trace(o.state, o.from_trace));
   return kExitOk;
 }
 

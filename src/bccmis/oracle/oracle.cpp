@@ -1,21 +1,27 @@
 #include "bccmis/oracle/oracle.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <set>
 #include <utility>
 
+#include "bccmis/d3/mesh.h"
 #include "bccmis/geometry.h"
 
 namespace bccmis {
 
 namespace {
 
-std::string pos(const Point& p) { return to_string(p); }
+template <class P>
+std::string pos(const P& p) {
+  return to_string(p);
+}
 
-std::string list(const PointSet& s) {
+template <class Set>
+std::string list(const Set& s) {
   std::string r;
-  for (const Point& p : s) {
+  for (const auto& p : s) {
     if (!r.empty()) r += ' ';
     r += pos(p);
   }
@@ -25,9 +31,13 @@ std::string list(const PointSet& s) {
 std::string lattice_text(const LatticeSize& s) {
   return std::to_string(s.W) + " " + std::to_string(s.H) + " " + std::to_string(s.L);
 }
+std::string lattice_text(const d3::LatticeSize3& s) {
+  return std::to_string(s.W) + " " + std::to_string(s.H) + " " + std::to_string(s.D) + " " + std::to_string(s.L);
+}
 
 // Which kind a position has in g, for messages.
-std::string kind(const Graph& g, const Point& p) {
+template <class G>
+std::string kind(const G& g, const typename G::point_type& p) {
   if (g.is_center(p)) {
     auto it = g.level.find(p);
     return "center " + pos(p) + (it == g.level.end() ? "" : " level " + std::to_string(it->second));
@@ -51,15 +61,21 @@ std::string xml_escape(const std::string& s) {
 
 }  // namespace
 
-std::vector<std::string> diff_states(const Graph& a, const Graph& b) {
+namespace {
+
+// diff_states for either dimension.
+template <class G>
+std::vector<std::string> diff_states_as(const G& a, const G& b) {
+  using P = typename G::point_type;
+  using Set = std::set<P>;
   std::vector<std::string> out;
   if (!(a.size == b.size)) out.push_back("lattice: A is " + lattice_text(a.size) + ", B is " + lattice_text(b.size));
-  PointSet all;
-  for (const Graph* g : {&a, &b}) {
+  Set all;
+  for (const G* g : {&a, &b}) {
     all.insert(g->N.begin(), g->N.end());
     all.insert(g->C.begin(), g->C.end());
   }
-  for (const Point& p : all) {
+  for (const P& p : all) {
     const bool in_a = a.is_center(p) || a.is_node(p);
     const bool in_b = b.is_center(p) || b.is_node(p);
     if (!in_b) {
@@ -78,10 +94,10 @@ std::vector<std::string> diff_states(const Graph& a, const Graph& b) {
     if (a.is_center(p) && a.level.count(p) && b.level.count(p) && a.level.at(p) != b.level.at(p))
       out.push_back(pos(p) + ": level " + std::to_string(a.level.at(p)) + " in A, " + std::to_string(b.level.at(p)) +
                     " in B");
-    const PointSet& na = a.nbr(p);
-    const PointSet& nb = b.nbr(p);
+    const Set& na = a.nbr(p);
+    const Set& nb = b.nbr(p);
     if (na != nb) {
-      PointSet only_a, only_b;
+      Set only_a, only_b;
       std::set_difference(na.begin(), na.end(), nb.begin(), nb.end(), std::inserter(only_a, only_a.end()));
       std::set_difference(nb.begin(), nb.end(), na.begin(), na.end(), std::inserter(only_b, only_b.end()));
       out.push_back("neighbors of " + pos(p) + ": only in A: " + list(only_a) + "; only in B: " + list(only_b));
@@ -89,6 +105,11 @@ std::vector<std::string> diff_states(const Graph& a, const Graph& b) {
   }
   return out;
 }
+
+}  // namespace
+
+std::vector<std::string> diff_states(const Graph& a, const Graph& b) { return diff_states_as(a, b); }
+std::vector<std::string> diff_states(const d3::Graph3& a, const d3::Graph3& b) { return diff_states_as(a, b); }
 
 Stats stats(const Graph& g) {
   Stats s;
@@ -143,6 +164,82 @@ std::string format_stats(const Stats& s, bool json) {
   out += "hull_edges " + std::to_string(s.hull_edges) + "\n";
   out += "triangles " + std::to_string(s.triangles) + "\n";
   out += "reference_bytes_estimate " + std::to_string(s.reference_bytes) + "\n";
+  return out;
+}
+
+Stats3 stats(const d3::Graph3& g) {
+  using d3::Point3;
+  Stats3 s;
+  s.size = g.size;
+  s.cells = g.C.size();
+  s.nodes = g.N.size();
+  for (const auto& [c, l] : g.level) ++s.cells_per_level[l];
+  for (const Point3& n : g.N) {
+    const std::size_t k = g.nbr(n).size();
+    if ((k & (k - 1)) != 0) ++s.junctions;  // not a power of two: 3, 5, 6 or 7 (F1, F2)
+  }
+  std::set<std::pair<Point3, Point3>> green;
+  std::size_t entries = 0;
+  for (const auto& [v, nbrs] : g.neighbors) entries += nbrs.size();
+  for (const Point3& c : g.C) {
+    s.graph_edges += g.nbr(c).size();
+    const std::int64_t h = d3::cell_side(g.size, g.level_of(c)) / 2;
+    // The 12 cube edges: along axis a, the other two coordinates at c +- h.
+    for (int a = 0; a < 3; ++a)
+      for (const std::int64_t du : {-h, h})
+        for (const std::int64_t dv : {-h, h}) {
+          std::vector<Point3> on_edge;
+          for (const Point3& n : g.nbr(c)) {
+            const std::array<std::int64_t, 3> d{n.x - c.x, n.y - c.y, n.z - c.z};
+            if (d[(a + 1) % 3] == du && d[(a + 2) % 3] == dv) on_edge.push_back(n);
+          }
+          // Sorted by (x, y, z), so along the edge; consecutive nodes bound a segment.
+          for (std::size_t i = 1; i < on_edge.size(); ++i) green.insert({on_edge[i - 1], on_edge[i]});
+        }
+  }
+  s.green_edges = green.size();
+  const std::vector<d3::Tet> tets = d3::tetrahedra(g);
+  s.tetrahedra = tets.size();
+  std::set<Point3> hull;
+  for (const d3::Tet& t : tets)
+    for (const Point3& v : t)
+      if (!g.is_node(v) && !g.is_center(v)) hull.insert(v);
+  s.hull_vertices = hull.size();
+  // libstdc++ red-black tree nodes: 32 bytes of header plus the value, rounded
+  // to 8. Point3 = 24 bytes; a std::set header = 48 bytes.
+  const std::size_t set_node = 32 + 24, nbr_map_node = 32 + 24 + 48, level_node = 32 + 24 + 8;
+  s.reference_bytes = set_node * (g.N.size() + g.C.size()) + nbr_map_node * g.neighbors.size() + set_node * entries +
+                      level_node * g.level.size();
+  return s;
+}
+
+std::string format_stats(const Stats3& s, bool json) {
+  const std::pair<const char*, std::size_t> counts[] = {{"nodes", s.nodes},
+                                                        {"junctions", s.junctions},
+                                                        {"graph_edges", s.graph_edges},
+                                                        {"green_edges", s.green_edges},
+                                                        {"tetrahedra", s.tetrahedra},
+                                                        {"hull_vertices", s.hull_vertices},
+                                                        {"reference_bytes_estimate", s.reference_bytes}};
+  std::string out;
+  if (json) {
+    out = "{\"dimension\": 3, \"lattice\": [" + std::to_string(s.size.W) + ", " + std::to_string(s.size.H) + ", " +
+          std::to_string(s.size.D) + ", " + std::to_string(s.size.L) + "], \"cells\": " + std::to_string(s.cells) +
+          ", \"cells_per_level\": {";
+    bool first = true;
+    for (const auto& [l, n] : s.cells_per_level) {
+      out += (first ? "" : ", ") + std::string("\"") + std::to_string(l) + "\": " + std::to_string(n);
+      first = false;
+    }
+    out += "}";
+    for (const auto& [name, n] : counts) out += std::string(", \"") + name + "\": " + std::to_string(n);
+    return out + "}\n";
+  }
+  out += "lattice " + lattice_text(s.size) + "\n";
+  out += "cells " + std::to_string(s.cells) + "\n";
+  for (const auto& [l, n] : s.cells_per_level)
+    out += "cells_level_" + std::to_string(l) + " " + std::to_string(n) + "\n";
+  for (const auto& [name, n] : counts) out += std::string(name) + " " + std::to_string(n) + "\n";
   return out;
 }
 

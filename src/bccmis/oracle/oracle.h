@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "bccmis/d3/graph.h"
 #include "bccmis/graph.h"
 
 namespace bccmis {
@@ -15,6 +16,8 @@ namespace bccmis {
 /// difference (lattice size, vertex only in A or only in B, vertex of another
 /// kind, different level, different neighbor sets). Empty iff A == B.
 std::vector<std::string> diff_states(const Graph& a, const Graph& b);
+/// The same for two 3D states.
+std::vector<std::string> diff_states(const d3::Graph3& a, const d3::Graph3& b);
 
 /// Counts describing a state (the `bccmis stats` output).
 struct Stats {
@@ -29,6 +32,21 @@ Stats stats(const Graph& g);
 
 /// Stats as text, one `name value` line each (or JSON).
 std::string format_stats(const Stats& s, bool json);
+
+/// Counts describing a 3D state (`bccmis stats` on a 3D state or trace).
+struct Stats3 {
+  d3::LatticeSize3 size;
+  std::map<int, std::size_t> cells_per_level;
+  std::size_t cells = 0, nodes = 0;
+  std::size_t junctions = 0;        ///< nodes with |N(n)| in {3, 5, 6, 7} (spec/lattice3d.md §3, F2)
+  std::size_t graph_edges = 0;      ///< stored node-center edges (each counted once)
+  std::size_t green_edges = 0;      ///< cube-edge segments between consecutive nodes, over all leaves
+  std::size_t tetrahedra = 0;       ///< of the graded BCC mesh (spec/mesh3d.md)
+  std::size_t hull_vertices = 0;    ///< mesh vertices in neither N nor C (domain-boundary face centers)
+  std::size_t reference_bytes = 0;  ///< estimate of the reference std::set/std::map storage
+};
+Stats3 stats(const d3::Graph3& g);
+std::string format_stats(const Stats3& s, bool json);
 
 /// An SVG picture: cells shaded by level, graph edges (solid), hull edges of
 /// eq. (1) (dashed), nodes (dots) and junctions (rings).
