@@ -204,3 +204,25 @@ bccmis_cli_test(d3_stats_json 0 ARGS stats --from-trace --json ${_examples}/d3/r
                 STDOUT_REGEX "^\\{\"dimension\": 3, \"lattice\": \\[1, 1, 1, 1\\], \"cells\": 8, \"cells_per_level\": \\{\"1\": 8\\}, \"nodes\": 27, \"junctions\": 0, \"graph_edges\": 64, \"green_edges\": 54, \"tetrahedra\": 144, ")
 bccmis_cli_test(d3_replay_json 0 ARGS replay --json ${_examples}/d3/root.trace
                 STDOUT_REGEX "\"decisions\": \\[\"refine 2 2 2 ok\", \"refine 1 1 1 refused max-level\"\\].*\"cells\": 8, \"nodes\": 27, \"state\": \"bccmis-state 1\\\\nlattice 1 1 1 1\\\\n")
+# bccmis mesh (spec/mesh3d.md §6, hand counts): root refined: 59 vertices,
+# 144 tetrahedra, 96 boundary triangles, angles in [45, 90]; face_refined:
+# 65, 168, 104, [45, 120].
+bccmis_cli_test(d3_mesh_stats_root 0 ARGS mesh --stats ${_examples}/d3/root.trace
+                STDOUT_REGEX "^vertices 59\ntetrahedra 144\nboundary_triangles 96\nmin_dihedral 45.000000\nmax_dihedral 90.000000\n")
+bccmis_cli_test(d3_mesh_stats_json 0 ARGS mesh --stats --json --check ${_examples}/d3/face_refined.state
+                STDOUT_REGEX "^\\{\"vertices\": 65, \"tetrahedra\": 168, \"boundary_triangles\": 104, \"min_dihedral\": 45.000000, \"max_dihedral\": 120.000000, \"dihedral_histogram\": \\{")
+bccmis_cli_test(d3_mesh_files 0 ARGS mesh ${_examples}/d3/face_refined.state -o face.vtu -o face.msh -o face.mesh
+                STDERR_REGEX "65 vertices, 168 tetrahedra written to 3 files")
+bccmis_cli_test(d3_mesh_2d_refused 2 ARGS mesh -o fig2.vtu ${_examples}/fig2.trace
+                STDERR_REGEX "fig2.trace: a 2D lattice; bccmis mesh writes the tetrahedra of 3D lattices")
+bccmis_cli_test(d3_mesh_unknown_format 2 ARGS mesh ${_examples}/d3/root.trace -o root.obj
+                STDERR_REGEX "mesh output 'root.obj': unknown format; the extension names it")
+bccmis_cli_test(d3_mesh_nothing_to_do 2 ARGS mesh ${_examples}/d3/root.trace STDERR_REGEX "nothing to do")
+bccmis_cli_test(d3_mesh_invalid_state 1 ARGS mesh --stats ${_cli}/broken3d.state STDERR_REGEX "symmetry: center \\(12, 4, 4\\)")
+bccmis_cli_test(d3_replay_mesh_2d_refused 2 ARGS replay --mesh fig2.vtu ${_examples}/fig2.trace
+                STDERR_REGEX "--mesh writes the tetrahedra of 3D lattices; this trace is 2D")
+# The CLI's mesh files read by meshio and gmsh (counts, kinds, levels and the
+# exact volume 6 * W*H*D*S^3; spec/mesh3d.md M10, M20-M22).
+add_test(NAME cli.d3_mesh_readers
+         COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${_cli}/mesh_cli_readers.py $<TARGET_FILE:bccmis> ${_examples}/d3/face_refined.state)
+set_tests_properties(cli.d3_mesh_readers PROPERTIES LABELS cli)

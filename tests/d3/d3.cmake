@@ -47,10 +47,6 @@ gtest_discover_tests(d3_mesh_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS uni
 # missing meshio or gmsh fails the test (scripts/setup.sh installs both).
 add_executable(d3_mesh_write d3/mesh_write_files.cpp)
 target_link_libraries(d3_mesh_write PRIVATE bccmis::d3 bccmis::warnings)
-find_program(BCCMIS_SYSTEM_PYTHON3 python3 PATHS /usr/bin NO_DEFAULT_PATH)
-if(NOT BCCMIS_SYSTEM_PYTHON3)
-  find_program(BCCMIS_SYSTEM_PYTHON3 python3)
-endif()
 add_test(NAME d3.mesh_readers
          COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/d3/mesh_readers_test.py $<TARGET_FILE:d3_mesh_write>)
 set_tests_properties(d3.mesh_readers PROPERTIES LABELS unit)

@@ -50,7 +50,7 @@ std::int64_t total_det6(const Tets& tets) {
 std::int64_t box_det6(const LatticeSize3& size) { return 6 * extent(size, 0) * extent(size, 1) * extent(size, 2); }
 
 // The 6 dihedral angles of t in degrees, sorted, in long double.
-std::vector<long double> dihedral_angles(const Tet& t) {
+std::vector<long double> test_dihedral_angles(const Tet& t) {
   using V = std::array<long double, 3>;
   auto sub = [](const Point3& p, const Point3& q) {
     return V{static_cast<long double>(p.x - q.x), static_cast<long double>(p.y - q.y),
@@ -236,7 +236,7 @@ std::string mesh_problem(const Graph3& g, const Tets& tets) {
   std::set<std::vector<long long>> known;
   for (const Shape& s : shapes()) known.insert(s.angles);
   for (const Tet& t : tets) {
-    const std::vector<long double> angles = dihedral_angles(t);
+    const std::vector<long double> angles = test_dihedral_angles(t);
     if (angles.front() < 45.0L - 1e-9L || angles.back() > 120.0L + 1e-9L) return "angle out of range: " + name(t);
     if (!known.count(rounded(angles))) return "not one of the five shapes: " + name(t);
   }
@@ -253,7 +253,7 @@ TEST(D3Mesh, FiveShapesAndTheirAngles) {
   long double lo = 180, hi = 0;
   for (const Shape& s : shapes()) {
     EXPECT_EQ(std::abs(det6(s.tet)), s.six_volume) << s.name;  // the table lists the unsigned volume
-    const std::vector<long double> angles = dihedral_angles(s.tet);
+    const std::vector<long double> angles = test_dihedral_angles(s.tet);
     EXPECT_EQ(rounded(angles), s.angles) << s.name;
     lo = std::min(lo, angles.front());
     hi = std::max(hi, angles.back());
@@ -285,7 +285,7 @@ TEST(D3Mesh, TwoCubes) {
     if (case_of(g, t) == Case::equal) {
       EXPECT_EQ(t[0], (Point3{1, 1, 1}));
       EXPECT_EQ(t[1], (Point3{3, 1, 1}));
-      EXPECT_EQ(rounded(dihedral_angles(t)), degrees({60, 60, 60, 60, 90, 90}));
+      EXPECT_EQ(rounded(test_dihedral_angles(t)), degrees({60, 60, 60, 60, 90, 90}));
     }
 }
 
@@ -339,7 +339,7 @@ TEST(D3Mesh, SplitFace) {
   // M14: the split face attains both ends of the angle range.
   long double lo = 180, hi = 0;
   for (const Tet& t : tets) {
-    const std::vector<long double> a = dihedral_angles(t);
+    const std::vector<long double> a = test_dihedral_angles(t);
     lo = std::min(lo, a.front());
     hi = std::max(hi, a.back());
   }
@@ -356,7 +356,7 @@ TEST(D3Mesh, BisectedEqualFace) {
   std::size_t whole = 0, bisected = 0;
   for (const Tet& t : tets) {
     if (t[0] != Point3{6, 2, 2} || t[1] != Point3{6, 6, 2}) continue;
-    const auto angles = rounded(dihedral_angles(t));
+    const auto angles = rounded(test_dihedral_angles(t));
     whole += angles == degrees({60, 60, 60, 60, 90, 90});
     bisected += angles == degrees({45, 60, 60, 90, 90, 90});
   }
@@ -375,7 +375,7 @@ TEST(D3Mesh, UniformLatticesHaveOnly60And90AwayFromTheHull) {
     std::set<long long> inner, hull;
     for (const Tet& t : tets) {
       const bool at_hull = is_hull_vertex(g, t[1]);
-      for (const long long a : rounded(dihedral_angles(t))) (at_hull ? hull : inner).insert(a);
+      for (const long long a : rounded(test_dihedral_angles(t))) (at_hull ? hull : inner).insert(a);
     }
     EXPECT_EQ(inner, (std::set<long long>{60000000, 90000000}));
     EXPECT_EQ(hull, (std::set<long long>{45000000, 60000000, 90000000}));
@@ -506,9 +506,9 @@ TEST(D3MeshWriters, VtuReadsBack) {
   write_vtu(out, mesh);
   const std::string text = out.str();
   EXPECT_NE(text.find("<Piece NumberOfPoints=\"65\" NumberOfCells=\"168\">"), std::string::npos);
-  // The five DataArrays in order: kind, points, connectivity, offsets, types.
+  // The six DataArrays in order: kind, level, points, connectivity, offsets, types.
   std::vector<std::vector<std::int64_t>> arrays;
-  const std::size_t sizes[] = {65, 3 * 65, 4 * 168, 168, 168};
+  const std::size_t sizes[] = {65, 168, 3 * 65, 4 * 168, 168, 168};
   std::size_t pos = 0;
   for (const std::size_t n : sizes) {
     pos = text.find("<DataArray", pos);
@@ -523,11 +523,14 @@ TEST(D3MeshWriters, VtuReadsBack) {
     pos = end;
   }
   for (std::size_t i = 0; i < 168; ++i) {
-    EXPECT_EQ(arrays[3][i], static_cast<std::int64_t>(4 * (i + 1)));
-    EXPECT_EQ(arrays[4][i], 10);
+    // The cell data is the level of the leaf v0 (M20): the coarse cube
+    // (12, 4, 4) has level 0, the refined cube's children level 1.
+    EXPECT_EQ(arrays[1][i], (tets[i][0] == Point3{12, 4, 4}) ? 0 : 1);
+    EXPECT_EQ(arrays[4][i], static_cast<std::int64_t>(4 * (i + 1)));
+    EXPECT_EQ(arrays[5][i], 10);
     for (std::size_t j = 0; j < 4; ++j) {
-      const auto v = static_cast<std::size_t>(arrays[2][4 * i + j]);
-      EXPECT_EQ((Point3{arrays[1][3 * v], arrays[1][3 * v + 1], arrays[1][3 * v + 2]}), tets[i][j]);
+      const auto v = static_cast<std::size_t>(arrays[3][4 * i + j]);
+      EXPECT_EQ((Point3{arrays[2][3 * v], arrays[2][3 * v + 1], arrays[2][3 * v + 2]}), tets[i][j]);
     }
   }
   EXPECT_EQ(std::count(arrays[0].begin(), arrays[0].end(), 2), 25);
@@ -594,7 +597,10 @@ TEST(D3MeshWriters, MeditReadsBack) {
   EXPECT_EQ(numbers(in, 1).front(), 168);
   for (std::size_t i = 0; i < 168; ++i) {
     const std::vector<std::int64_t> e = numbers(in, 5);
-    EXPECT_EQ(e[4], 0);
+    // The reference is the level of the tetrahedron's leaf v0 (M22): in the
+    // split state the coarse cube (12, 4, 4) has level 0, its neighbour's
+    // children level 1.
+    EXPECT_EQ(e[4], (tets[i][0] == Point3{12, 4, 4}) ? 0 : 1);
     for (std::size_t j = 0; j < 4; ++j) {
       const auto k = static_cast<std::size_t>(e[j] - 1);
       EXPECT_EQ((Point3{v[4 * k], v[4 * k + 1], v[4 * k + 2]}), tets[i][j]);

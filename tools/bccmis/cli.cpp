@@ -25,7 +25,8 @@ CLI::App* add_replay(CLI::App& app, ReplayOptions& o) {
   cmd->add_option("--check", o.check, "When to run the invariant checker: every (after each command), end, none")
       ->check(CLI::IsMember({"every", "end", "none"}))
       ->capture_default_str();
-  cmd->add_option("--depth", o.depth, "Checker layers to run: 1-4, or 5 for the CGAL triangulation layer")
+  cmd->add_option("--depth", o.depth,
+                  "Checker layers to run: 1-4, or 5 for the CGAL triangulation layer (3D: the mesh layer)")
       ->check(CLI::Range(1, max_check_depth()))
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", o.quiet, "No summary on stderr");
@@ -37,16 +38,20 @@ CLI::App* add_replay(CLI::App& app, ReplayOptions& o) {
                   "Refuse a trace whose lattice grows beyond this many vertices (exit 2)")
       ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 40))
       ->capture_default_str();
+  cmd->add_option("--mesh", o.mesh_files,
+                  "3D: also write the final state's tetrahedral mesh to this file (.vtu, .msh or .mesh; repeatable)");
   cmd->footer(
+      "A trace whose lattice line has four numbers (lattice W H D L) is 3D.\n"
       "Example:\n  bccmis replay spec/examples/fig2.trace\n  bccmis replay run.trace --check=end --log run.log --state "
-      "run.state");
+      "run.state\n  bccmis replay spec/examples/d3/face.trace --depth 5 --mesh face.vtu");
   return cmd;
 }
 
 CLI::App* add_check(CLI::App& app, CheckOptions& o) {
   CLI::App* cmd = app.add_subcommand("check", "Check a canonical state against every invariant.");
   cmd->add_option("state", o.state, "State file ('-' for stdin)")->required();
-  cmd->add_option("--depth", o.depth, "Checker layers to run: 1-4, or 5 for the CGAL triangulation layer")
+  cmd->add_option("--depth", o.depth,
+                  "Checker layers to run: 1-4, or 5 for the CGAL triangulation layer (3D: the mesh layer)")
       ->check(CLI::Range(1, max_check_depth()))
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", o.quiet, "Print nothing when the state is valid");
@@ -73,6 +78,22 @@ CLI::App* add_stats(CLI::App& app, StatsOptions& o) {
   return cmd;
 }
 
+CLI::App* add_mesh(CLI::App& app, MeshOptions& o) {
+  CLI::App* cmd =
+      app.add_subcommand("mesh", "Write the graded BCC tetrahedral mesh of a 3D state or trace (spec/mesh3d.md).");
+  cmd->add_option("input", o.input, "3D canonical state or trace file ('-' for stdin)")->required();
+  cmd->add_option("-o,--output", o.outputs,
+                  "Mesh file to write (atomically); the extension names the format: .vtu (VTK, ParaView), .msh "
+                  "(Gmsh 4.1), .mesh (Medit); repeatable");
+  cmd->add_flag("--stats", o.stats,
+                "Print vertices, tetrahedra, boundary triangles, min/max dihedral angle and a histogram");
+  cmd->add_flag("--json", o.json, "Statistics as JSON");
+  cmd->add_flag("--check", o.check, "Also run the mesh layer of the checker on the tetrahedra (exit 1 on a violation)");
+  cmd->add_flag("-q,--quiet", o.quiet, "No summary on stderr");
+  cmd->footer("Example:\n  bccmis mesh spec/examples/d3/face_refined.state -o face.vtu -o face.msh --stats");
+  return cmd;
+}
+
 CLI::App* add_render(CLI::App& app, RenderOptions& o) {
   CLI::App* cmd =
       app.add_subcommand("render", "Draw a state as SVG: cells by level, stored and hull edges, junctions.");
@@ -96,7 +117,8 @@ CLI::App* add_view(CLI::App& app, ViewCommandOptions& o) {
          "When to run the invariant checker: every (each state; the page opens at the first violation), end, none")
       ->check(CLI::IsMember({"every", "end", "none"}))
       ->capture_default_str();
-  cmd->add_option("--depth", o.depth, "Checker layers to run: 1-4, or 5 for the CGAL triangulation layer")
+  cmd->add_option("--depth", o.depth,
+                  "Checker layers to run: 1-4, or 5 for the CGAL triangulation layer (3D: the mesh layer)")
       ->check(CLI::Range(1, max_check_depth()))
       ->capture_default_str();
   cmd->add_option("--step", o.step, "Open the page at this step (default: the first violation, else step 0)")
@@ -302,6 +324,7 @@ std::variant<int, Command> parse_command_line(int argc, char** argv) {
   CheckOptions check;
   DiffOptions diff;
   StatsOptions stats;
+  MeshOptions mesh;
   RenderOptions render;
   ViewCommandOptions view;
   ConformanceCommandOptions conformance;
@@ -314,6 +337,7 @@ std::variant<int, Command> parse_command_line(int argc, char** argv) {
       {add_check(app, check), [&] { return Command(check); }},
       {add_diff(app, diff), [&] { return Command(diff); }},
       {add_stats(app, stats), [&] { return Command(stats); }},
+      {add_mesh(app, mesh), [&] { return Command(mesh); }},
       {add_render(app, render), [&] { return Command(render); }},
       {add_view(app, view), [&] { return Command(view); }},
       {add_conformance(app, conformance), [&] { return Command(conformance); }},

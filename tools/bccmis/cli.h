@@ -10,7 +10,7 @@ namespace bccmis::cli {
 
 /// A subcommand with its options.
 using Command =
-    std::variant<ReplayOptions, CheckOptions, DiffOptions, StatsOptions, RenderOptions, ViewCommandOptions,
+    std::variant<ReplayOptions, CheckOptions, DiffOptions, StatsOptions, MeshOptions, RenderOptions, ViewCommandOptions,
                  ConformanceCommandOptions, ExploreCommandOptions, HeightfieldCommandOptions, AnimateCommandOptions>;
 
 /// The subcommand and its options; or the exit code when the command line

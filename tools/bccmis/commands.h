@@ -23,9 +23,12 @@ class Lattice;
 }
 namespace bccmis::d3 {
 struct Graph3;
-}
+struct TetMesh;
+}  // namespace bccmis::d3
 
 namespace bccmis::cli {
+
+class OutputSet;
 
 // ---- Shared by the subcommands (check.cpp) ----------------------------------------
 
@@ -56,6 +59,11 @@ std::string summary(const Graph& g);
 std::string summary(const fast::Lattice& g);
 std::string summary(const d3::Graph3& g);
 
+/// A mesh output path: '.vtu', '.msh' or '.mesh'; throws InputError otherwise.
+void check_mesh_path(const std::string& path);
+/// Stages `mesh` for `path` in the writer its extension names (mesh.cpp).
+void add_mesh_output(OutputSet& outputs, const std::string& path, const d3::TetMesh& mesh);
+
 // ---- The subcommands ------------------------------------------------------------------
 
 struct ReplayOptions {
@@ -68,6 +76,7 @@ struct ReplayOptions {
   std::int64_t max_vertices = TraceLimits{}.max_vertices;
   std::string impl = "reference";  ///< reference, fast
   bool json = false;
+  std::vector<std::string> mesh_files;  ///< 3D: the final state's tetrahedral mesh (mesh.cpp)
 };
 int run(const ReplayOptions& o);
 
@@ -90,6 +99,16 @@ struct StatsOptions {
   bool from_trace = false;
 };
 int run(const StatsOptions& o);
+
+struct MeshOptions {
+  std::string input;                 ///< a 3D canonical state or trace
+  std::vector<std::string> outputs;  ///< -o, repeatable; the extension names the format
+  bool stats = false;
+  bool json = false;
+  bool check = false;  ///< the mesh layer on the mesh before writing it
+  bool quiet = false;
+};
+int run(const MeshOptions& o);
 
 struct RenderOptions {
   std::string state;

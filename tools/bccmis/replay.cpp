@@ -9,6 +9,7 @@
 #include <string>
 
 #include "bccmis/d3/lattice.h"
+#include "bccmis/d3/mesh.h"
 #include "bccmis/fast/lattice.h"
 #include "bccmis/trace.h"
 #include "commands.h"
@@ -78,6 +79,12 @@ int replay_with(const ReplayOptions& o, const trace_t<L>& trace) {
   }
   const Writer state = [&](std::ostream& out) { write_canonical_state(out, g); };
   OutputSet outputs;
+  if constexpr (std::is_same_v<L, d3::Graph3>) {
+    if (!o.mesh_files.empty()) {
+      const d3::TetMesh mesh = d3::index_mesh(g, d3::tetrahedra(g));
+      for (const std::string& path : o.mesh_files) add_mesh_output(outputs, path, mesh);
+    }
+  }
   outputs.add(o.log_file, log);
   outputs.add(o.state_file, state);
   if (o.json) {
@@ -105,6 +112,7 @@ int replay_with(const ReplayOptions& o, const trace_t<L>& trace) {
 }  // namespace
 
 int run(const ReplayOptions& o) {
+  for (const std::string& path : o.mesh_files) check_mesh_path(path);
   TraceLimits limits;
   limits.max_vertices = o.max_vertices;
   const AnyTrace any = read_any_trace(o.trace, limits);
@@ -114,6 +122,8 @@ int run(const ReplayOptions& o) {
                        ": the fast lattice is 2D; a 3D trace runs on the reference (--impl reference)");
     return replay_with<d3::Graph3>(o, *trace3);
   }
+  if (!o.mesh_files.empty())
+    throw InputError(display_name(o.trace) + ": --mesh writes the tetrahedra of 3D lattices; this trace is 2D");
   const Trace& trace = std::get<Trace>(any);
   return std::visit([&]<class L>(std::type_identity<L>) { return replay_with<L>(o, trace); }, implementation(o.impl));
 }

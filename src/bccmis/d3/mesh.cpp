@@ -5,7 +5,9 @@
 #include <gmpxx.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
+#include <map>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -172,7 +174,9 @@ TetMesh index_mesh(const Graph3& g, const std::vector<Tet>& tets) {
                                                   : g.is_center(v) ? VertexKind::center
                                                                    : VertexKind::hull));
   mesh.tets.reserve(tets.size());
+  mesh.level.reserve(tets.size());
   for (const Tet& t : tets) {
+    mesh.level.push_back(g.is_center(t[0]) ? g.level_of(t[0]) : -1);
     std::array<std::uint32_t, 4> ids{};
     for (std::size_t i = 0; i < 4; ++i)
       ids[i] = static_cast<std::uint32_t>(std::lower_bound(mesh.vertices.begin(), mesh.vertices.end(), t[i]) -
@@ -192,6 +196,11 @@ void write_vtu(std::ostream& out, const TetMesh& mesh) {
   for (const std::uint8_t k : mesh.kind) out << static_cast<int>(k) << '\n';
   out << "        </DataArray>\n"
       << "      </PointData>\n"
+      << "      <CellData Scalars=\"level\">\n"
+      << "        <DataArray type=\"Int32\" Name=\"level\" format=\"ascii\">\n";
+  for (const int l : mesh.level) out << l << '\n';
+  out << "        </DataArray>\n"
+      << "      </CellData>\n"
       << "      <Points>\n"
       << "        <DataArray type=\"Int64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
   for (const Point3& p : mesh.vertices) out << p.x << ' ' << p.y << ' ' << p.z << '\n';
@@ -236,8 +245,65 @@ void write_medit(std::ostream& out, const TetMesh& mesh) {
     out << p.x << ' ' << p.y << ' ' << p.z << ' ' << static_cast<int>(mesh.kind[i]) << '\n';
   }
   out << "\nTetrahedra\n" << mesh.tets.size() << '\n';
-  for (const auto& t : mesh.tets) out << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << ' ' << t[3] + 1 << " 0\n";
+  for (std::size_t i = 0; i < mesh.tets.size(); ++i) {
+    const auto& t = mesh.tets[i];
+    out << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << ' ' << t[3] + 1 << ' '
+        << (i < mesh.level.size() ? mesh.level[i] : 0) << '\n';
+  }
   out << "\nEnd\n";
+}
+
+std::array<double, 6> dihedral_angles(const Tet& t) {
+  using V = std::array<long double, 3>;
+  auto sub = [](const Point3& a, const Point3& b) {
+    return V{static_cast<long double>(a.x) - static_cast<long double>(b.x),
+             static_cast<long double>(a.y) - static_cast<long double>(b.y),
+             static_cast<long double>(a.z) - static_cast<long double>(b.z)};
+  };
+  auto cross = [](const V& a, const V& b) {
+    return V{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  };
+  auto dot = [](const V& a, const V& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  // The dihedral angle at edge (i, j) is the angle between the faces (i, j, k)
+  // and (i, j, l): between the components of ik and il orthogonal to ij.
+  static constexpr int kEdges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
+                                       {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
+  std::array<double, 6> out{};
+  for (int e = 0; e < 6; ++e) {
+    const auto [i, j, k, l] = kEdges[e];
+    const V axis = sub(t[j], t[i]);
+    const V nk = cross(axis, sub(t[k], t[i])), nl = cross(axis, sub(t[l], t[i]));
+    const long double c = dot(nk, nl) / std::sqrt(dot(nk, nk) * dot(nl, nl));
+    out[e] = static_cast<double>(std::acos(std::clamp(c, -1.0L, 1.0L)) * 180.0L / std::acos(-1.0L));
+  }
+  return out;
+}
+
+MeshQuality mesh_quality(const std::vector<Tet>& tets) {
+  MeshQuality q;
+  q.tetrahedra = tets.size();
+  std::vector<Point3> vertices;
+  std::map<std::array<Point3, 3>, int> triangles;
+  q.min_dihedral = tets.empty() ? 0 : 180;
+  for (const Tet& t : tets) {
+    vertices.insert(vertices.end(), t.begin(), t.end());
+    for (int skip = 0; skip < 4; ++skip) {
+      std::array<Point3, 3> f{};
+      for (int i = 0, n = 0; i < 4; ++i)
+        if (i != skip) f[n++] = t[i];
+      std::sort(f.begin(), f.end());
+      ++triangles[f];
+    }
+    for (const double a : dihedral_angles(t)) {
+      q.min_dihedral = std::min(q.min_dihedral, a);
+      q.max_dihedral = std::max(q.max_dihedral, a);
+      ++q.histogram[static_cast<std::size_t>(std::lround(a / 15.0))];
+    }
+  }
+  std::sort(vertices.begin(), vertices.end());
+  q.vertices = static_cast<std::size_t>(std::unique(vertices.begin(), vertices.end()) - vertices.begin());
+  for (const auto& [f, n] : triangles) q.boundary_triangles += n == 1 ? 1 : 0;
+  return q;
 }
 
 }  // namespace bccmis::d3

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <iosfwd>
 #include <vector>
@@ -43,14 +44,15 @@ struct TetMesh {
   std::vector<Point3> vertices;
   std::vector<std::array<std::uint32_t, 4>> tets;
   std::vector<std::uint8_t> kind; /* per vertex: 0 node, 1 center, 2 hull */
+  std::vector<int> level;         /* per tetrahedron: the level of its leaf v[0] */
 };
 
 /// The vertices of `tets` (sorted, each once, with their kind in g) and the
 /// tetrahedra as indices into them, in the order of `tets`.
 TetMesh index_mesh(const Graph3& g, const std::vector<Tet>& tets);
 
-/// VTK XML UnstructuredGrid, ASCII: Int64 points, VTK_TETRA (10) cells and
-/// the point data array "kind".
+/// VTK XML UnstructuredGrid, ASCII: Int64 points, VTK_TETRA (10) cells, the
+/// point data array "kind" and the cell data array "level".
 void write_vtu(std::ostream& out, const TetMesh& mesh);
 
 /// Gmsh MSH 4.1 ASCII: one volume entity (tag 1) holding every node and
@@ -58,7 +60,24 @@ void write_vtu(std::ostream& out, const TetMesh& mesh);
 void write_msh(std::ostream& out, const TetMesh& mesh);
 
 /// Medit .mesh (MeshVersionFormatted 2, Dimension 3): Vertices with the
-/// kind as reference, Tetrahedra (1-based) with reference 0, End.
+/// kind as reference, Tetrahedra (1-based) with the level as reference, End.
 void write_medit(std::ostream& out, const TetMesh& mesh);
+
+/// The 6 dihedral angles of t in degrees (long double arithmetic, so within
+/// about 1e-12 degrees of the exact values), in the order of the edges
+/// v0v1, v0v2, v0v3, v1v2, v1v3, v2v3.
+std::array<double, 6> dihedral_angles(const Tet& t);
+
+/// What `bccmis mesh --stats` reports of a mesh (spec/mesh3d.md §6).
+struct MeshQuality {
+  std::size_t vertices = 0, tetrahedra = 0;
+  std::size_t boundary_triangles = 0;  ///< triangles of exactly one tetrahedron
+  double min_dihedral = 0, max_dihedral = 0;
+  /// Dihedral angles per 15-degree bin centered on 0, 15, ..., 180 degrees
+  /// (bin k holds [15k - 7.5, 15k + 7.5)), so the exact angles 45, 60, 90
+  /// and 120 of the lattice's shapes fall in the middle of their bins.
+  std::array<std::size_t, 13> histogram{};
+};
+MeshQuality mesh_quality(const std::vector<Tet>& tets);
 
 }  // namespace bccmis::d3
