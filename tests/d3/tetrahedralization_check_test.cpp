@@ -155,8 +155,8 @@ TEST(D3Layer6, DuplicatedTetIsCgalInvalid) {
 }
 
 // A removed tet without a hull vertex leaves a cavity inside the box; this one
-// touches the boundary, so the infinite cells closing the cavity share edges
-// with those closing the box and the loader refuses the soup.
+// has an edge on the domain boundary, so an infinite cell closing the cavity
+// shares a triangle with those closing the box and the loader refuses the soup.
 TEST(D3Layer6, RemovedInteriorTetIsCgalInvalid) {
   const Graph3 g = refined({1, 1, 1, 1}, {{2, 2, 2}});
   std::vector<Tet> tets = tetrahedra(g);
