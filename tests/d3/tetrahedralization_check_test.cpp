@@ -200,6 +200,26 @@ TEST(D3Layer6, RemovedDeepTetIsCgalInvalid) {
   EXPECT_NE(v->message.find("Triangulation_data_structure_3::is_valid fails"), std::string::npos) << v->message;
 }
 
+// A removed tet whose cavity touches the domain boundary at one vertex only
+// (Triangulation_data_structure_3::is_valid rejects it):
+// (1,1,1), (1,1,3) and the segment (2,0,2)-(2,2,2) of their equal face in
+// lattice 3 3 3 0.
+TEST(D3Layer6, RemovedTetTouchingTheBoundaryAtAVertex) {
+  const Graph3 g({3, 3, 3, 0});
+  std::vector<Tet> tets = tetrahedra(g);
+  const std::vector<Point3> want{{1, 1, 1}, {1, 1, 3}, {2, 0, 2}, {2, 2, 2}};
+  const auto it = std::find_if(tets.begin(), tets.end(), [&](const Tet& t) {
+    std::vector<Point3> sorted(t.begin(), t.end());
+    std::sort(sorted.begin(), sorted.end());
+    return sorted == want;
+  });
+  ASSERT_NE(it, tets.end());
+  tets.erase(it);
+  const std::optional<Violation3> v = layer6(g, tets);
+  expect_code(v, "cgal-invalid");
+  EXPECT_NE(v->message.find("Triangulation_data_structure_3::is_valid fails"), std::string::npos) << v->message;
+}
+
 TEST(D3Layer6, NoTetsIsCgalInvalid) { expect_code(layer6(Graph3({1, 1, 1, 0}), {}), "cgal-invalid"); }
 
 }  // namespace
