@@ -59,3 +59,14 @@ target_link_libraries(d3_invariants_tests PRIVATE bccmis::invariants3 bccmis::d3
 target_compile_definitions(d3_invariants_tests PRIVATE BCCMIS_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
   BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
 gtest_discover_tests(d3_invariants_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
+
+# Layer 6 of the 3D checker: CGAL as a second referee of the mesh
+# (src/bccmis/invariants/cgal/tetrahedralization_check3.cpp); built when CGAL
+# was found.
+if(TARGET bccmis::tetrahedralization_check)
+  add_executable(d3_cgal_tests d3/tetrahedralization_check_test.cpp)
+  target_link_libraries(d3_cgal_tests PRIVATE bccmis::tetrahedralization_check bccmis::d3 GTest::gtest_main
+    bccmis::warnings)
+  target_compile_definitions(d3_cgal_tests PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
+  gtest_discover_tests(d3_cgal_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
+endif()

@@ -12,6 +12,8 @@
 //   4. geometry:      levels, positions, the leaves tile the box, and every
 //                     N(n) is the set of leaves containing n (point location);
 //   5. mesh:          check_mesh, a list of tetrahedra against the graph.
+// Layer 6, CGAL as a second referee of a mesh, is the optional library
+// bccmis::tetrahedralization_check (../cgal/tetrahedralization_check3.h).
 // Layers 1-4 take O(size * log size * L) time.
 #pragma once
 
@@ -31,7 +33,7 @@ struct Violation3 {
   std::vector<Point3> where;  ///< the positions involved, in the order the message names them
   std::string message;        ///< one line naming the positions as (x, y, z), starting with the code
   std::string section;        ///< spec anchor, e.g. "spec/lattice3d.md §3 F2"
-  int layer = 0;              ///< 1..5
+  int layer = 0;              ///< 1..6 (6: the CGAL layer)
   friend bool operator==(const Violation3&, const Violation3&) = default;
 };
 
