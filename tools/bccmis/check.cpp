@@ -10,6 +10,7 @@
 #include "commands.h"
 #include "io.h"
 #if BCCMIS_HAVE_TRIANGULATION_CHECK
+#include "bccmis/invariants/cgal/tetrahedralization_check3.h"
 #include "bccmis/invariants/cgal/triangulation_check.h"
 #endif
 
@@ -55,8 +56,12 @@ std::optional<std::string> check_message(const fast::Lattice& g, int depth) {
 
 std::optional<std::string> check_message(const d3::Graph3& g, int depth) {
   if (auto v = d3::find_violation(g, depth < 5 ? depth : 4)) return to_string(*v);
-  if (depth >= 5)
-    if (auto v = d3::check_mesh(g, d3::tetrahedra(g))) return to_string(*v);
+  if (depth < 5) return std::nullopt;
+  const std::vector<d3::Tet> tets = d3::tetrahedra(g);
+  if (auto v = d3::check_mesh(g, tets)) return to_string(*v);
+#if BCCMIS_HAVE_TRIANGULATION_CHECK
+  if (auto v = d3::find_tetrahedralization_violation(g, tets)) return to_string(*v);
+#endif
   return std::nullopt;
 }
 

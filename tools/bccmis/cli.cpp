@@ -25,8 +25,9 @@ CLI::App* add_replay(CLI::App& app, ReplayOptions& o) {
   cmd->add_option("--check", o.check, "When to run the invariant checker: every (after each command), end, none")
       ->check(CLI::IsMember({"every", "end", "none"}))
       ->capture_default_str();
-  cmd->add_option("--depth", o.depth,
-                  "Checker layers to run: 1-4, or 5 for the CGAL triangulation layer (3D: the mesh layer)")
+  cmd->add_option(
+         "--depth", o.depth,
+         "Checker layers to run: 1-4, or 5 for the CGAL triangulation layer (3D: the mesh layer and its CGAL check)")
       ->check(CLI::Range(1, max_check_depth()))
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", o.quiet, "No summary on stderr");
@@ -50,8 +51,9 @@ CLI::App* add_replay(CLI::App& app, ReplayOptions& o) {
 CLI::App* add_check(CLI::App& app, CheckOptions& o) {
   CLI::App* cmd = app.add_subcommand("check", "Check a canonical state against every invariant.");
   cmd->add_option("state", o.state, "State file ('-' for stdin)")->required();
-  cmd->add_option("--depth", o.depth,
-                  "Checker layers to run: 1-4, or 5 for the CGAL triangulation layer (3D: the mesh layer)")
+  cmd->add_option(
+         "--depth", o.depth,
+         "Checker layers to run: 1-4, or 5 for the CGAL triangulation layer (3D: the mesh layer and its CGAL check)")
       ->check(CLI::Range(1, max_check_depth()))
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", o.quiet, "Print nothing when the state is valid");
@@ -117,8 +119,9 @@ CLI::App* add_view(CLI::App& app, ViewCommandOptions& o) {
          "When to run the invariant checker: every (each state; the page opens at the first violation), end, none")
       ->check(CLI::IsMember({"every", "end", "none"}))
       ->capture_default_str();
-  cmd->add_option("--depth", o.depth,
-                  "Checker layers to run: 1-4, or 5 for the CGAL triangulation layer (3D: the mesh layer)")
+  cmd->add_option(
+         "--depth", o.depth,
+         "Checker layers to run: 1-4, or 5 for the CGAL triangulation layer (3D: the mesh layer and its CGAL check)")
       ->check(CLI::Range(1, max_check_depth()))
       ->capture_default_str();
   cmd->add_option("--step", o.step, "Open the page at this step (default: the first violation, else step 0)")

@@ -49,7 +49,8 @@ int max_check_depth();
 std::optional<Violation> check_graph(const Graph& g, int depth);
 /// The first violation the checker finds to `depth`, as one line, on a
 /// lattice of either dimension: 2D layers 1-4 and 5 (CGAL); 3D layers 1-4,
-/// and with depth 5 the tetrahedral mesh layer (spec/invariants.md, "3D").
+/// and with depth 5 the tetrahedral mesh layer and its CGAL cross-check
+/// (layers 5 and 6 of spec/invariants.md, "3D").
 std::optional<std::string> check_message(const Graph& g, int depth);
 std::optional<std::string> check_message(const fast::Lattice& g, int depth);
 std::optional<std::string> check_message(const d3::Graph3& g, int depth);
