@@ -175,10 +175,10 @@ struct Coarsen : Cmd {
 RC_GTEST_PROP(D3ModelBased, GraphAgreesWithTheLeafModelOnEveryCommand, ()) {
   //= bccmis3d#claim-inverse type=test
   LatticeSize3 size;
-  size.W = *rc::gen::inRange<std::int64_t>(1, 3);
-  size.H = *rc::gen::inRange<std::int64_t>(1, 3);
-  size.D = *rc::gen::inRange<std::int64_t>(1, 3);
-  size.L = *rc::gen::inRange(1, 4);
+  size.W = *rc::gen::element<std::int64_t>(1, 2);
+  size.H = *rc::gen::element<std::int64_t>(1, 2);
+  size.D = *rc::gen::element<std::int64_t>(1, 2);
+  size.L = *rc::gen::element(1, 2, 3);
   RC_TAG("lattice " + lattice_text(size));
   Model initial{size, test::leaves_of(Graph3(size))};
   Sut sut(size);
@@ -276,10 +276,10 @@ RC_GTEST_PROP(D3Properties, RefusedCallsChangeNothing, ()) {
 
 RC_GTEST_PROP(D3Properties, CheckerAndMeshHoldAfterEveryStep, ()) {
   LatticeSize3 size;
-  size.W = *rc::gen::inRange<std::int64_t>(1, 4);
-  size.H = *rc::gen::inRange<std::int64_t>(1, 4);
-  size.D = *rc::gen::inRange<std::int64_t>(1, 4);
-  size.L = *rc::gen::inRange(0, 5);
+  size.W = *rc::gen::element<std::int64_t>(1, 2, 3);
+  size.H = *rc::gen::element<std::int64_t>(1, 2, 3);
+  size.D = *rc::gen::element<std::int64_t>(1, 2, 3);
+  size.L = *rc::gen::element(0, 1, 2, 3, 4);
   RC_TAG("lattice " + lattice_text(size));
   Graph3 g(size);
   std::string trace = "lattice " + lattice_text(size) + "\n";
@@ -306,10 +306,10 @@ RC_GTEST_PROP(D3Properties, CheckerAndMeshHoldAfterEveryStep, ()) {
 
 RC_GTEST_PROP(D3Properties, RefiningEverythingThenCoarseningEverythingGivesBackTheLattice, ()) {
   LatticeSize3 size;
-  size.W = *rc::gen::inRange<std::int64_t>(1, 3);
-  size.H = *rc::gen::inRange<std::int64_t>(1, 3);
-  size.D = *rc::gen::inRange<std::int64_t>(1, 3);
-  size.L = size.W * size.H * size.D == 1 ? *rc::gen::inRange(1, 4) : *rc::gen::inRange(1, 3);
+  size.W = *rc::gen::element<std::int64_t>(1, 2);
+  size.H = *rc::gen::element<std::int64_t>(1, 2);
+  size.D = *rc::gen::element<std::int64_t>(1, 2);
+  size.L = size.W * size.H * size.D == 1 ? *rc::gen::element(1, 2, 3) : *rc::gen::element(1, 2);
   RC_TAG("lattice " + lattice_text(size));
   const Graph3 initial(size);
   Graph3 g = initial;
