@@ -107,8 +107,9 @@ TEST_P(ExploreSmall3, EveryReachableStateIsValidAndCountsMatchTheEnumeration) {
   expect_counts(GetParam());
 }
 // 1 1 1 1: the root or its 8 children (1 edge). 1 1 1 2: the root, or the 8
-// children with any subset refined (1 + 8 * 2^7 edges out of the subsets, and
-// the root's). 2 2 1 1: each of 4 cubes refined or not (4 * 2^3).
+// children with any subset refined; 1 edge from the root, and 8 * 2^7 from
+// the subsets (each unrefined child of each). 2 2 1 1: each of 4 cubes refined
+// or not (4 * 2^3 edges).
 INSTANTIATE_TEST_SUITE_P(Lattices, ExploreSmall3,
                          testing::Values(Expected{{1, 1, 1, 1}, 2, 1}, Expected{{1, 1, 1, 2}, 257, 1025},
                                          Expected{{2, 2, 1, 1}, 16, 32}),
