@@ -205,6 +205,38 @@ TEST(D3LeafModel, DecidesFromTheLeaves) {
   EXPECT_EQ(model::refine_decision(size, leaves, {1, 1, 1}), "max-level");
 }
 
+TEST(D3LeafModel, RefusesACoarsenNextToALevelTwoFinerLeaf) {
+  // 1 1 1 3: the level-2 cube (6, 6, 6) at the middle is refined once its
+  // face-or-edge neighbours are at level 2; then coarsening (12, 4, 4) would
+  // put a level-1 cube against its level-3 leaves.
+  const LatticeSize3 size{1, 1, 1, 3};
+  model::Leaves leaves = test::leaves_of(Graph3(size));
+  Graph3 g(size);
+  auto refine_both = [&](const Point3& c) {
+    const std::string expected = model::refine_decision(size, leaves, c);
+    const RefineResult r = refine(g, c);
+    EXPECT_EQ(r.refused ? std::string(code(*r.refused)) : "ok", expected) << to_string(c);
+    if (expected == "ok") model::apply_refine(size, leaves, c);
+    return expected;
+  };
+  EXPECT_EQ(refine_both({8, 8, 8}), "ok");
+  EXPECT_EQ(refine_both({4, 4, 4}), "ok");
+  EXPECT_EQ(refine_both({6, 6, 6}), "coarser-neighbor");
+  for (const Point3 c :
+       {Point3{12, 4, 4}, Point3{4, 12, 4}, Point3{4, 4, 12}, Point3{12, 12, 4}, Point3{12, 4, 12}, Point3{4, 12, 12}})
+    EXPECT_EQ(refine_both(c), "ok");
+  EXPECT_EQ(refine_both({6, 6, 6}), "ok");
+  EXPECT_EQ(model::coarsen_decision(size, leaves, {12, 4, 4}), "finer-neighbor");
+  const CoarsenResult r = coarsen(g, {12, 4, 4});
+  ASSERT_TRUE(r.refused.has_value());
+  EXPECT_EQ(code(*r.refused), "finer-neighbor");
+  EXPECT_EQ(model::coarsen_decision(size, leaves, {6, 6, 6}), "ok");
+  EXPECT_EQ(model::coarsen_decision(size, leaves, {4, 12, 12}), "finer-neighbor");  // along an edge only
+  EXPECT_EQ(can_coarsen(g, {4, 12, 12}), CoarsenRefusal::FinerNeighbor);
+  EXPECT_EQ(can_coarsen(g, {6, 6, 6}), std::nullopt);
+  EXPECT_EQ(test::leaves_of(g), leaves);
+}
+
 // ---- Identities and refusals -----------------------------------------------------
 
 /// A random reachable state: n operations at random vertices.
