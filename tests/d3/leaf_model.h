@@ -11,9 +11,11 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -149,44 +151,133 @@ inline std::string balance_problem(const LatticeSize3& size, const Leaves& leave
   return {};
 }
 
-/// Every octree leaf set of the lattice (balanced or not), by recursion over
-/// the cubes: a cube is a leaf, or (below level L) the union of its 8
-/// children's leaf sets.
-inline std::vector<Leaves> all_leaf_sets(const LatticeSize3& size) {
-  std::function<std::vector<Leaves>(const Point3&, int)> options = [&](const Point3& c, int l) {
-    std::vector<Leaves> out{Leaves{{c, l}}};
-    if (l == size.L) return out;
-    const std::int64_t q = side(size, l) / 4;
-    std::vector<Leaves> refined{Leaves{}};
-    for (int i = 0; i < 8; ++i) {
-      const Point3 child{c.x + ((i & 4) ? q : -q), c.y + ((i & 2) ? q : -q), c.z + ((i & 1) ? q : -q)};
-      std::vector<Leaves> next;
-      for (const Leaves& partial : refined)
-        for (const Leaves& sub : options(child, l + 1)) {
-          Leaves u = partial;
-          u.insert(sub.begin(), sub.end());
-          next.push_back(std::move(u));
-        }
-      refined = std::move(next);
-    }
-    out.insert(out.end(), refined.begin(), refined.end());
-    return out;
-  };
+/// The 8 children (level l + 1) of the level-l cube centred at c.
+inline std::array<Point3, 8> children(const LatticeSize3& size, const Point3& c, int l) {
+  const std::int64_t q = side(size, l) / 4;
+  std::array<Point3, 8> out;
+  for (int i = 0; i < 8; ++i)
+    out[static_cast<std::size_t>(i)] = {c.x + ((i & 4) ? q : -q), c.y + ((i & 2) ? q : -q), c.z + ((i & 1) ? q : -q)};
+  return out;
+}
+
+/// Every leaf set of the level-l cube centred at c: the cube itself, or
+/// (below level L) the union of its 8 children's leaf sets.
+inline std::vector<Leaves> cube_leaf_sets(const LatticeSize3& size, const Point3& c, int l) {
+  std::vector<Leaves> out{Leaves{{c, l}}};
+  if (l == size.L) return out;
+  std::vector<Leaves> refined{Leaves{}};
+  for (const Point3& child : children(size, c, l)) {
+    std::vector<Leaves> next;
+    for (const Leaves& partial : refined)
+      for (const Leaves& sub : cube_leaf_sets(size, child, l + 1)) {
+        Leaves u = partial;
+        u.insert(sub.begin(), sub.end());
+        next.push_back(std::move(u));
+      }
+    refined = std::move(next);
+  }
+  out.insert(out.end(), refined.begin(), refined.end());
+  return out;
+}
+
+/// Calls fn on every octree leaf set of the lattice (balanced or not), one at
+/// a time: every combination of one leaf set per level-0 cube.
+inline void for_each_leaf_set(const LatticeSize3& size, const std::function<void(const Leaves&)>& fn) {
   const std::int64_t S = side(size, 0);
-  std::vector<Leaves> sets{Leaves{}};
+  std::vector<std::vector<Leaves>> roots;
   for (std::int64_t i = 0; i < size.W; ++i)
     for (std::int64_t j = 0; j < size.H; ++j)
-      for (std::int64_t k = 0; k < size.D; ++k) {
-        std::vector<Leaves> next;
-        for (const Leaves& partial : sets)
-          for (const Leaves& sub : options({i * S + S / 2, j * S + S / 2, k * S + S / 2}, 0)) {
-            Leaves u = partial;
-            u.insert(sub.begin(), sub.end());
-            next.push_back(std::move(u));
-          }
-        sets = std::move(next);
-      }
+      for (std::int64_t k = 0; k < size.D; ++k)
+        roots.push_back(cube_leaf_sets(size, {i * S + S / 2, j * S + S / 2, k * S + S / 2}, 0));
+  Leaves current;
+  std::function<void(std::size_t)> product = [&](std::size_t r) {
+    if (r == roots.size()) return fn(current);
+    for (const Leaves& sub : roots[r]) {
+      current.insert(sub.begin(), sub.end());
+      product(r + 1);
+      for (const auto& [c, l] : sub) current.erase(c);
+    }
+  };
+  product(0);
+}
+
+/// Every octree leaf set of the lattice (balanced or not).
+inline std::vector<Leaves> all_leaf_sets(const LatticeSize3& size) {
+  std::vector<Leaves> sets;
+  for_each_leaf_set(size, [&sets](const Leaves& leaves) { sets.push_back(leaves); });
   return sets;
+}
+
+/// Two leaves that break the 2:1 rule: levels two or more apart and in
+/// contact along an edge segment or a face patch.
+inline bool unbalanced_pair(const LatticeSize3& size, const Point3& a, int la, const Point3& b, int lb) {
+  return (la - lb > 1 || lb - la > 1) && contact_dimension(cube(size, a, la), cube(size, b, lb)) >= 1;
+}
+
+// ---- The operations, decided from the leaves alone ----------------------------
+//
+// refine(p) replaces the leaf p by its 8 children; coarsen(p) replaces the 8
+// children of the cube centred at p by that cube. Each is refused, with the
+// code of spec/formats.md, when its result would not be a balanced leaf set
+// of the lattice; the codes are told apart in the order of spec/lattice3d.md
+// §4 and §5.
+
+/// "ok" or the refusal code of refine(p).
+inline std::string refine_decision(const LatticeSize3& size, const Leaves& leaves, const Point3& p) {
+  const auto it = leaves.find(p);
+  if (it == leaves.end()) return "no-such-cell";
+  const int l = it->second;
+  if (l >= size.L) return "max-level";
+  for (const Point3& child : children(size, p, l))
+    for (const auto& [o, lo] : leaves)
+      if (o != p && unbalanced_pair(size, child, l + 1, o, lo)) return "coarser-neighbor";
+  return "ok";
+}
+
+/// The level l < L of the cube centred at p, if p is the center of one.
+inline std::optional<int> cube_level_at(const LatticeSize3& size, const Point3& p) {
+  for (int l = 0; l < size.L; ++l) {
+    const std::int64_t s = side(size, l);
+    bool center = true;
+    for (int k = 0; k < 3; ++k) {
+      const std::int64_t v = coord(p, k);
+      center = center && v >= s / 2 && v <= extent(size, k) - s / 2 && (v - s / 2) % s == 0;
+    }
+    if (center) return l;
+  }
+  return std::nullopt;
+}
+
+/// "ok" or the refusal code of coarsen(p).
+inline std::string coarsen_decision(const LatticeSize3& size, const Leaves& leaves, const Point3& p) {
+  bool corner = false;
+  for (const auto& [c, l] : leaves) corner = corner || is_corner(cube(size, c, l), p);
+  if (!corner) return "no-such-node";
+  const std::optional<int> l = cube_level_at(size, p);
+  if (!l) return "not-a-refined-center";
+  const std::array<Point3, 8> kids = children(size, p, *l);
+  for (const Point3& k : kids) {
+    const auto it = leaves.find(k);
+    if (it == leaves.end() || it->second != *l + 1) return "children-refined";
+  }
+  for (const auto& [o, lo] : leaves)
+    if (std::find(kids.begin(), kids.end(), o) == kids.end() && unbalanced_pair(size, p, *l, o, lo))
+      return "finer-neighbor";
+  return "ok";
+}
+
+/// Applies refine(p), which refine_decision accepts.
+inline void apply_refine(const LatticeSize3& size, Leaves& leaves, const Point3& p) {
+  const int l = leaves.at(p);
+  leaves.erase(p);
+  for (const Point3& child : children(size, p, l)) leaves[child] = l + 1;
+}
+
+/// Applies coarsen(p), which coarsen_decision accepts.
+inline void apply_coarsen(const LatticeSize3& size, Leaves& leaves, const Point3& p) {
+  const int l = *cube_level_at(size, p);
+  for (const Point3& child : children(size, p, l)) leaves.erase(child);
+  leaves[p] = l;
 }
 
 }  // namespace bccmis::d3::model

@@ -183,10 +183,11 @@ CLI::App* add_conformance(CLI::App& app, ConformanceCommandOptions& o) {
 CLI::App* add_explore(CLI::App& app, ExploreCommandOptions& o) {
   CLI::App* cmd = app.add_subcommand(
       "explore", "Breadth-first search over every state reachable from a lattice: check each, try every operation.");
-  cmd->add_option("W", o.W, "Level-0 cells across")->required();
-  cmd->add_option("H", o.H, "Level-0 cells up")->required();
-  cmd->add_option("L", o.L, "Maximum level")->required();
-  cmd->add_option("--depth", o.depth, "Checker layers on every state (0-4)")
+  cmd->add_option("lattice", o.lattice,
+                  "W H L (2D) or W H D L (3D): level-0 cells across, up (and deep), and the maximum level")
+      ->expected(3, 4)
+      ->required();
+  cmd->add_option("--depth", o.depth, "Checker layers on every state (0-4; in 3D, 4 adds the mesh layer)")
       ->check(CLI::Range(0, 4))
       ->capture_default_str();
   cmd->add_option("--max-states", o.max_states,
@@ -202,7 +203,8 @@ CLI::App* add_explore(CLI::App& app, ExploreCommandOptions& o) {
       "Exit codes: 0 every state processed is valid and every inverse exact (a run stopped by --max-states\n"
       "says 'incomplete'), 1 a failure (a reproducing trace is printed), 2 bad input (a lattice whose\n"
       "state space is beyond reach is refused with its estimate; give --max-states for a partial run).\n"
-      "Example:\n  bccmis explore 1 1 2        # 17 states\n  bccmis explore 2 2 1 --json  # 16 states");
+      "Example:\n  bccmis explore 1 1 2        # 17 states\n  bccmis explore 2 2 1 --json  # 16 states\n"
+      "  bccmis explore 1 1 1 2      # 257 states (3D)");
   return cmd;
 }
 

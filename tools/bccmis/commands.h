@@ -144,8 +144,8 @@ struct ConformanceCommandOptions {
 int run(const ConformanceCommandOptions& o);
 
 struct ExploreCommandOptions {
-  std::int64_t W = 0, H = 0;
-  int L = 0;
+  /// W H L (2D) or W H D L (3D).
+  std::vector<std::int64_t> lattice;
   int depth = 4;
   std::int64_t max_states = 0;  ///< 0: no limit
   int threads = 0;              ///< 0: one per core

@@ -17,6 +17,10 @@
 // operations under test must be safe to call concurrently on different graphs.
 // The operations under test are pluggable (ExploreOptions::refine/coarsen) so
 // that tests can run the explorer on planted-bug mutants.
+//
+// The explorer is written once over the lattice type (detail/explorer.h);
+// this header is its 2D instantiation on Graph, bccmis/explore/explore3.h the
+// 3D one on d3::Graph3.
 #pragma once
 
 #include <cstdint>
@@ -25,6 +29,7 @@
 #include <string>
 
 #include "bccmis/graph.h"
+#include "bccmis/lattice.h"
 #include "bccmis/ops.h"
 
 namespace bccmis {
@@ -39,7 +44,9 @@ struct ExploreProgress {
   double seconds = 0;              ///< wall time since the start
 };
 
-struct ExploreOptions {
+/// The options of a run on lattice type G (ExploreOptions in 2D).
+template <class G>
+struct BasicExploreOptions {
   /// Layers of the checker run on every state (1..4); 0 skips the checker.
   int check_depth = 4;
   /// Try refine and coarsen on every vertex of every state (the full check).
@@ -58,9 +65,11 @@ struct ExploreOptions {
   std::function<void(const ExploreProgress&)> progress;
   std::int64_t progress_every = 4096;
   /// The operations under test; empty means bccmis::refine / bccmis::coarsen.
-  std::function<RefineResult(Graph&, const Point&)> refine;
-  std::function<CoarsenResult(Graph&, const Point&)> coarsen;
+  std::function<refine_result_t<G>(G&, const point_type_t<G>&)> refine;
+  std::function<coarsen_result_t<G>(G&, const point_type_t<G>&)> coarsen;
 };
+
+using ExploreOptions = BasicExploreOptions<Graph>;
 
 /// The first thing that went wrong, with a reproducer.
 struct ExploreFailure {
@@ -68,8 +77,10 @@ struct ExploreFailure {
   std::string trace;    ///< a trace (spec/formats.md) from the initial lattice that reproduces it
 };
 
-struct ExploreResult {
-  LatticeSize size;
+/// The result of a run on a lattice whose size type is S (ExploreResult in 2D).
+template <class S>
+struct BasicExploreResult {
+  S size;
   std::int64_t states = 0;         ///< distinct reachable states processed
   std::int64_t refine_edges = 0;   ///< (state, cell) pairs where refine was accepted
   std::int64_t coarsen_edges = 0;  ///< (state, node) pairs where coarsen was accepted
@@ -85,6 +96,8 @@ struct ExploreResult {
   /// complete and no failure.
   bool ok() const { return complete && failures == 0; }
 };
+
+using ExploreResult = BasicExploreResult<LatticeSize>;
 
 /// Explores every state reachable from make_lattice(size). Throws LatticeError
 /// for an invalid size. Never throws for a failing operation or state: those
