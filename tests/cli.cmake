@@ -267,3 +267,9 @@ bccmis_cli_test(d3_render_slice_bad_axis 2 ARGS render ${_face3} --slice w=2 -o 
                 STDERR_REGEX "--slice 'w=2': expected AXIS=VALUE with AXIS x, y or z")
 bccmis_cli_test(d3_render_slice_2d 2 ARGS render --from-trace ${_examples}/fig2.trace --slice z=1 -o fig2.svg
                 STDERR_REGEX "fig2.trace: a 2D lattice; --slice applies to 3D states")
+# docs/d3-face-refined.svg is the README's command's output as drawn now.
+add_test(NAME cli.d3_render_docs_current
+         COMMAND sh -c "\"$1\" render spec/examples/d3/face_refined.state -o - | cmp - docs/d3-face-refined.svg" sh
+                 $<TARGET_FILE:bccmis>
+         WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.d3_render_docs_current PROPERTIES LABELS cli)
