@@ -70,3 +70,10 @@ if(TARGET bccmis::tetrahedralization_check)
   target_compile_definitions(d3_cgal_tests PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
   gtest_discover_tests(d3_cgal_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
 endif()
+
+# The 3D picture of bccmis render (src/bccmis/oracle render_svg3): the leaves
+# a slice cuts, by hand and as a tiling of every plane; hand counts.
+add_executable(d3_render_tests d3/render_test.cpp)
+target_link_libraries(d3_render_tests PRIVATE bccmis::oracle bccmis::d3 GTest::gtest_main bccmis::warnings)
+target_compile_definitions(d3_render_tests PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
+gtest_discover_tests(d3_render_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
