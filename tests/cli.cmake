@@ -226,3 +226,50 @@ bccmis_cli_test(d3_replay_mesh_2d_refused 2 ARGS replay --mesh fig2.vtu ${_examp
 add_test(NAME cli.d3_mesh_readers
          COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${_cli}/mesh_cli_readers.py $<TARGET_FILE:bccmis> ${_examples}/d3/face_refined.state)
 set_tests_properties(cli.d3_mesh_readers PROPERTIES LABELS cli)
+
+# bccmis render on 3D states (spec/cli.md, render): the SVG parsed as XML and
+# its elements counted by class (tests/cli/check_svg3.py). The box panel draws
+# the boundary triangles on the three visible faces y = 0, z = max, x = max.
+# face_refined by hand (S = 8, box 16 x 8 x 8; spec/mesh3d.md M18): on y = 0
+# and on z = 8 the 4 children's faces have 4 triangles each and the coarse
+# leaf's face 5 (its edge x = 8 has the midpoint node), 21 per face; x = 16
+# is the coarse leaf's face alone, 4: tri = 46 of the 104. Green edges on y = 0:
+# the lines z = 0 and z = 8 have 3 segments (0-4, 4-8, 8-16), z = 4 has 2, the
+# lines x = 0, 4, 8 have 2 each and x = 16 has 1: 15; z = 8 the same, 15; the
+# edge y = 0, z = 8 (3 segments) is on both; x = 16 adds its 2 edges y = 8 and
+# z = 0: 15 + 15 - 3 + 2 = 29. The slice z = 2 (a plane through the children's
+# centers) cuts the 4 children with center z = 2 and the coarse leaf: 5 leaf
+# rectangles, 4 centers on the plane, no node (the nodes have z in {0, 4, 8}).
+# The default slice z = 4 is the children's face plane: the half-open rule
+# takes the 4 children above it and the coarse leaf (5), whose center (12,4,4)
+# is on it; nodes on z = 4: the 9 of {0,4,8}^2; junctions among them:
+# (8,4,4) with |N| = 5, (8,0,4) and (8,8,4) with |N| = 3.
+set(_face3 ${_examples}/d3/face_refined.state)
+foreach(case
+    "face_z2|tri=46,green=29,slice-trace=2,leaf=5,center=4,node=0,junction=0,legend=2|${_face3};--slice;z=2"
+    "face_default|tri=46,green=29,slice-trace=2,leaf=5,center=1,node=9,junction=3|${_face3}"
+    # root refined (S = 4, box 4^3): each visible face has 4 quarter faces of
+    # 4 triangles (48 of 96) and a 2 x 2 grid of 12 green segments, 2 on each
+    # of the 3 edges shared by two visible faces: 36 - 6 = 30. The slice x = 1
+    # cuts the 4 children with center x = 1, all 4 centers on it, no node.
+    "root_x1|tri=48,green=30,slice-trace=2,leaf=4,center=4,node=0,junction=0,legend=1|--from-trace;${_examples}/d3/root.trace;--slice;x=1")
+  string(REPLACE "|" ";" parts "${case}")
+  list(GET parts 0 name)
+  list(GET parts 1 counts)
+  list(SUBLIST parts 2 -1 args)
+  add_test(NAME cli.d3_render_${name}
+           COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${_cli}/check_svg3.py $<TARGET_FILE:bccmis> ${counts} ${args})
+  set_tests_properties(cli.d3_render_${name} PROPERTIES LABELS cli)
+endforeach()
+bccmis_cli_test(d3_render_slice_outside 2 ARGS render ${_face3} --slice z=9 -o face.svg
+                STDERR_REGEX "--slice 'z=9': outside the box: z in \\[0, 8\\]")
+bccmis_cli_test(d3_render_slice_bad_axis 2 ARGS render ${_face3} --slice w=2 -o face.svg
+                STDERR_REGEX "--slice 'w=2': expected AXIS=VALUE with AXIS x, y or z")
+bccmis_cli_test(d3_render_slice_2d 2 ARGS render --from-trace ${_examples}/fig2.trace --slice z=1 -o fig2.svg
+                STDERR_REGEX "fig2.trace: a 2D lattice; --slice applies to 3D states")
+# docs/d3-face-refined.svg is the README's command's output as drawn now.
+add_test(NAME cli.d3_render_docs_current
+         COMMAND sh -c "\"$1\" render spec/examples/d3/face_refined.state -o - | cmp - docs/d3-face-refined.svg" sh
+                 $<TARGET_FILE:bccmis>
+         WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.d3_render_docs_current PROPERTIES LABELS cli)

@@ -98,3 +98,10 @@ bccmis_cli_test(explore3_partial 0 ARGS explore 1 1 1 3 --max-states 3 --no-prog
                 STDOUT_REGEX "^explore 1 1 1 3: 3 states, .* incomplete")
 bccmis_cli_test(explore3_bad_lattice 2 ARGS explore 1 0 1 1 STDERR_REGEX "explore: .*H")
 bccmis_cli_test(explore3_too_many_numbers 2 ARGS explore 1 1 1 1 1 STDERR_REGEX "lattice")
+
+# The 3D picture of bccmis render (src/bccmis/oracle render_svg3): the leaves
+# a slice cuts, by hand and as a tiling of every plane; hand counts.
+add_executable(d3_render_tests d3/render_test.cpp)
+target_link_libraries(d3_render_tests PRIVATE bccmis::oracle bccmis::d3 GTest::gtest_main bccmis::warnings)
+target_compile_definitions(d3_render_tests PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
+gtest_discover_tests(d3_render_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)

@@ -98,11 +98,16 @@ CLI::App* add_mesh(CLI::App& app, MeshOptions& o) {
 
 CLI::App* add_render(CLI::App& app, RenderOptions& o) {
   CLI::App* cmd =
-      app.add_subcommand("render", "Draw a state as SVG: cells by level, stored and hull edges, junctions.");
+      app.add_subcommand("render", "Draw a state as SVG (2D: cells, edges, junctions; 3D: the box and one slice).");
   cmd->add_option("state", o.state, "State file ('-' for stdin)")->required();
   cmd->add_option("-o,--output", o.output, "SVG file to write (atomically); '-' for stdout")->required();
   cmd->add_flag("--from-trace", o.from_trace, "The input is a trace: replay it first");
-  cmd->footer("Example:\n  bccmis render --from-trace spec/examples/fig2.trace -o fig2.svg");
+  cmd->add_option("--slice", o.slice,
+                  "3D only: the slice panel's plane, AXIS=VALUE with AXIS x, y or z (default: z at the middle of the "
+                  "box)");
+  cmd->footer(
+      "Examples:\n  bccmis render --from-trace spec/examples/fig2.trace -o fig2.svg\n"
+      "  bccmis render spec/examples/d3/face_refined.state --slice z=2 -o face.svg");
   return cmd;
 }
 

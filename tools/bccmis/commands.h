@@ -115,6 +115,7 @@ struct RenderOptions {
   std::string state;
   std::string output;
   bool from_trace = false;
+  std::string slice;  ///< 3D: "AXIS=VALUE", empty for z at the middle of the box
 };
 int run(const RenderOptions& o);
 

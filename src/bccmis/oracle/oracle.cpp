@@ -167,22 +167,10 @@ std::string format_stats(const Stats& s, bool json) {
   return out;
 }
 
-Stats3 stats(const d3::Graph3& g) {
+std::set<std::pair<d3::Point3, d3::Point3>> green_edges(const d3::Graph3& g) {
   using d3::Point3;
-  Stats3 s;
-  s.size = g.size;
-  s.cells = g.C.size();
-  s.nodes = g.N.size();
-  for (const auto& [c, l] : g.level) ++s.cells_per_level[l];
-  for (const Point3& n : g.N) {
-    const std::size_t k = g.nbr(n).size();
-    if ((k & (k - 1)) != 0) ++s.junctions;  // not a power of two: 3, 5, 6 or 7 (F1, F2)
-  }
   std::set<std::pair<Point3, Point3>> green;
-  std::size_t entries = 0;
-  for (const auto& [v, nbrs] : g.neighbors) entries += nbrs.size();
   for (const Point3& c : g.C) {
-    s.graph_edges += g.nbr(c).size();
     const std::int64_t h = d3::cell_side(g.size, g.level_of(c)) / 2;
     // The 12 cube edges: along axis a, the other two coordinates at c +- h.
     for (int a = 0; a < 3; ++a)
@@ -197,7 +185,24 @@ Stats3 stats(const d3::Graph3& g) {
           for (std::size_t i = 1; i < on_edge.size(); ++i) green.insert({on_edge[i - 1], on_edge[i]});
         }
   }
-  s.green_edges = green.size();
+  return green;
+}
+
+Stats3 stats(const d3::Graph3& g) {
+  using d3::Point3;
+  Stats3 s;
+  s.size = g.size;
+  s.cells = g.C.size();
+  s.nodes = g.N.size();
+  for (const auto& [c, l] : g.level) ++s.cells_per_level[l];
+  for (const Point3& n : g.N) {
+    const std::size_t k = g.nbr(n).size();
+    if ((k & (k - 1)) != 0) ++s.junctions;  // not a power of two: 3, 5, 6 or 7 (F1, F2)
+  }
+  std::size_t entries = 0;
+  for (const auto& [v, nbrs] : g.neighbors) entries += nbrs.size();
+  for (const Point3& c : g.C) s.graph_edges += g.nbr(c).size();
+  s.green_edges = green_edges(g).size();
   const std::vector<d3::Tet> tets = d3::tetrahedra(g);
   s.tetrahedra = tets.size();
   std::set<Point3> hull;

@@ -3,8 +3,11 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <map>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bccmis/d3/graph.h"
@@ -48,8 +51,43 @@ struct Stats3 {
 Stats3 stats(const d3::Graph3& g);
 std::string format_stats(const Stats3& s, bool json);
 
+/// The green edges of a 3D state (spec/mesh3d.md M12): over all leaves, the
+/// segments between consecutive nodes of N(c) along each of the 12 edges of
+/// c's cube, each once, as (smaller, larger) position pairs.
+std::set<std::pair<d3::Point3, d3::Point3>> green_edges(const d3::Graph3& g);
+
 /// An SVG picture: cells shaded by level, graph edges (solid), hull edges of
 /// eq. (1) (dashed), nodes (dots) and junctions (rings).
 std::string render_svg(const Graph& g, const std::string& title);
+
+/// An axis-aligned plane through a 3D lattice: coordinate `axis` (0 x, 1 y,
+/// 2 z) equal to `value`.
+struct SlicePlane {
+  int axis = 2;
+  std::int64_t value = 0;
+};
+
+/// The default slice of `bccmis render`: z at the middle of the box.
+SlicePlane middle_slice(const d3::LatticeSize3& size);
+
+/// The leaves a slice cuts: those whose cube spans `slice.value` along the
+/// axis, half-open [low, high), so that a plane through cube faces takes the
+/// leaves above it (at the box's far face, the leaves below it). Each leaf
+/// once, sorted.
+std::vector<d3::Point3> sliced_leaves(const d3::Graph3& g, const SlicePlane& slice);
+
+/// The 3D picture of `bccmis render` (spec/cli.md), one SVG of two panels.
+/// Left: the domain box in a cabinet projection (x right, z up, y receding
+/// up-right at half scale), showing its three visible faces y = 0, z = max
+/// and x = max: the boundary triangles of the tetrahedral mesh on them
+/// (triangles of exactly one tetrahedron, spec/mesh3d.md §6; polygons of
+/// class "tri") filled by the level of their leaf and shaded per face, and
+/// the green edges on them (class "green"); the slice plane's trace on those
+/// faces is dashed. Right: the slice, the leaves it cuts as rectangles filled
+/// by level (class "leaf"), their centers on the plane (class "center"), the
+/// nodes on the plane as dots (class "node") and the junctions among them
+/// (|N(n)| in {3, 5, 6, 7}) as rings (class "junction"). Throws
+/// std::invalid_argument when the slice is not within the box.
+std::string render_svg3(const d3::Graph3& g, const std::string& title, const SlicePlane& slice);
 
 }  // namespace bccmis
