@@ -112,12 +112,12 @@ bccmis_cli_test(conformance.d3_coarsen_keeps_face_center 1
 # --view on a 3D disagreement: the minimal trace and both states, as files
 # that the CLI reads back (the states differ by the kept face center).
 add_test(NAME cli.conformance.d3_view_files
-         COMMAND ${CMAKE_COMMAND} "-DCMD=$<TARGET_FILE:bccmis>|diff|../d3_coarsen_keeps_face_center/d3.reference.state|../d3_coarsen_keeps_face_center/d3.impl.state"
+         COMMAND ${CMAKE_COMMAND} "-DCMD=$<TARGET_FILE:bccmis>|diff|../conformance.d3_coarsen_keeps_face_center/d3.reference.state|../conformance.d3_coarsen_keeps_face_center/d3.impl.state"
                  -DEXPECT_EXIT=1 "-DEXPECT_STDOUT_REGEX=only in B: node ${_point3}"
                  -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/cli_work/d3_view_files -P ${_run})
 add_test(NAME cli.conformance.d3_view_trace
-         COMMAND ${CMAKE_COMMAND} "-DCMD=$<TARGET_FILE:bccmis>|replay|--quiet|--log|d3.log|../d3_coarsen_keeps_face_center/d3.trace"
-                 -DEXPECT_EXIT=0 -DEXPECT_STDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_work/d3_coarsen_keeps_face_center/d3.reference.state
+         COMMAND ${CMAKE_COMMAND} "-DCMD=$<TARGET_FILE:bccmis>|replay|--quiet|--log|d3.log|../conformance.d3_coarsen_keeps_face_center/d3.trace"
+                 -DEXPECT_EXIT=0 -DEXPECT_STDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_work/conformance.d3_coarsen_keeps_face_center/d3.reference.state
                  -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/cli_work/d3_view_trace -P ${_run})
 set_tests_properties(cli.conformance.d3_view_files cli.conformance.d3_view_trace PROPERTIES
                      DEPENDS cli.conformance.d3_coarsen_keeps_face_center LABELS cli)
