@@ -79,9 +79,10 @@ bccmis_cli_test(conformance.self 0
 set(_minimal "minimal trace \\(([1-5]) operations?\\)")
 bccmis_cli_test(conformance.wrong_refusal_code 1
   ARGS conformance --impl "sh ${_conf}/wrong_refusal_code.sh $<TARGET_FILE:bccmis>" --traces ${_examples} --random 50 --seed 1
+       --dim 2
   STDOUT_REGEX "${_minimal}.*refine [0-9]+ [0-9]+ refused max-level', implementation '[^']*refused coarser-neighbor")
 bccmis_cli_test(conformance.missing_boundary_junction 1
-  ARGS conformance --impl "sh ${_conf}/missing_boundary_junction.sh $<TARGET_FILE:bccmis>" --random 50 --seed 1
+  ARGS conformance --impl "sh ${_conf}/missing_boundary_junction.sh $<TARGET_FILE:bccmis>" --random 50 --seed 1 --dim 2
   STDOUT_REGEX "${_minimal}.*only in A: node \\([0-9]+, 0\\)")
 bccmis_cli_test(conformance.crash 1
   ARGS conformance --impl "sh ${_conf}/crash_on_coarsen.sh $<TARGET_FILE:bccmis>" --random 50 --seed 1
@@ -89,6 +90,40 @@ bccmis_cli_test(conformance.crash 1
 bccmis_cli_test(conformance.timeout 1
   ARGS conformance --impl "sh ${_conf}/hang_on_long_traces.sh $<TARGET_FILE:bccmis>" --random 20 --seed 1 --timeout 1.5
   STDOUT_REGEX "minimal trace \\(4 operations\\).*timed out")
+# 3D: the reference conforms on 3D traces alone and mixed with 2D ones; the
+# two wrong 3D implementations pass 2D traces through unchanged, so a mixed
+# run must reach its 3D traces to catch them.
+bccmis_cli_test(conformance.self_3d 0
+  ARGS conformance --impl "$<TARGET_FILE:bccmis> replay --quiet --check=none" --traces ${_examples}/d3 --random 100
+       --seed 1 --dim 3
+  STDOUT_REGEX "all 103 traces agree \\(3 bundled, 100 random: 0 2D and 100 3D, seed 1\\)")
+bccmis_cli_test(conformance.self_mixed 0
+  ARGS conformance --impl "$<TARGET_FILE:bccmis> replay --quiet --check=none" --traces ${_examples}/d3 --random 100
+       --seed 2 --dim mixed
+  STDOUT_REGEX "all 103 traces agree \\(3 bundled, 100 random: 50 2D and 50 3D, seed 2\\)")
+set(_point3 "\\([0-9]+, [0-9]+, [0-9]+\\)")
+bccmis_cli_test(conformance.d3_junction_missing_cell 1
+  ARGS conformance --impl "sh ${_conf}/junction3_missing_cell.sh $<TARGET_FILE:bccmis>" --random 50 --seed 1
+  STDOUT_REGEX "DISAGREE on random 3D trace.*${_minimal}:\nlattice [0-9]+ [0-9]+ [0-9]+ [0-9]+\n.*neighbors of ${_point3}: only in A: ${_point3}. only in B: none")
+bccmis_cli_test(conformance.d3_coarsen_keeps_face_center 1
+  ARGS conformance --impl "sh ${_conf}/coarsen3_keeps_face_center.sh $<TARGET_FILE:bccmis>" --random 50 --seed 1 --dim 3
+       --view d3
+  STDOUT_REGEX "${_minimal}:\nlattice [0-9]+ [0-9]+ [0-9]+ [0-9]+\n.*only in B: node ${_point3}.*files of the 3D disagreement: d3.trace")
+# --view on a 3D disagreement: the minimal trace and both states, as files
+# that the CLI reads back (the states differ by the kept face center).
+add_test(NAME cli.conformance.d3_view_files
+         COMMAND ${CMAKE_COMMAND} "-DCMD=$<TARGET_FILE:bccmis>|diff|../conformance.d3_coarsen_keeps_face_center/d3.reference.state|../conformance.d3_coarsen_keeps_face_center/d3.impl.state"
+                 -DEXPECT_EXIT=1 "-DEXPECT_STDOUT_REGEX=only in B: node ${_point3}"
+                 -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/cli_work/d3_view_files -P ${_run})
+add_test(NAME cli.conformance.d3_view_trace
+         COMMAND ${CMAKE_COMMAND} "-DCMD=$<TARGET_FILE:bccmis>|replay|--quiet|--log|d3.log|../conformance.d3_coarsen_keeps_face_center/d3.trace"
+                 -DEXPECT_EXIT=0 -DEXPECT_STDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_work/conformance.d3_coarsen_keeps_face_center/d3.reference.state
+                 -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/cli_work/d3_view_trace -P ${_run})
+set_tests_properties(cli.conformance.d3_view_files cli.conformance.d3_view_trace PROPERTIES
+                     DEPENDS cli.conformance.d3_coarsen_keeps_face_center LABELS cli)
+bccmis_cli_test(conformance.bad_dim 2 ARGS conformance --impl true --dim 4 STDERR_REGEX "--dim")
+bccmis_cli_test(view_3d_trace 2 ARGS view ${_examples}/d3/face.trace -o face.html
+                STDERR_REGEX "face.trace:7:1: a 3D trace \\('lattice W H D L'\\): the viewer draws 2D lattices only")
 bccmis_cli_test(conformance.no_impl 2 ARGS conformance STDERR_REGEX "impl")
 bccmis_cli_test(conformance.bad_trace_dir 2 ARGS conformance --impl true --traces ${_cli}/no-such-dir STDERR_REGEX "not a directory")
 
@@ -145,7 +180,7 @@ bccmis_cli_test(explore_help_example 0 ARGS explore --help STDOUT_REGEX "bccmis 
 # conformance: the default run checks random traces; an implementation that
 # cannot be run is a harness error.
 bccmis_cli_test(conformance.default_random 0 ARGS conformance --impl "$<TARGET_FILE:bccmis> replay --quiet --check=none"
-                STDOUT_REGEX "all 100 traces agree \\(0 bundled, 100 random, seed 1\\)")
+                STDOUT_REGEX "all 100 traces agree \\(0 bundled, 100 random: 50 2D and 50 3D, seed 1\\)")
 bccmis_cli_test(conformance.not_found 2 ARGS conformance --impl ./no-such-implementation --random 5
                 STDERR_REGEX "conformance: cannot run the implementation './no-such-implementation' \\(exit status 127, command not found\\)")
 bccmis_cli_test(conformance.not_executable 2 ARGS conformance --impl ${_cli}/fig2.log --random 5

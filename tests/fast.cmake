@@ -34,8 +34,9 @@ gtest_discover_tests(fast_differential_test DISCOVERY_MODE PRE_TEST
   PROPERTIES LABELS property ENVIRONMENT "RC_PARAMS=seed=${BCCMIS_FAST_RC_SEED} max_success=100")
 
 # The conformance harness (src/bccmis/oracle, `bccmis conformance`) against the fast
-# implementation: the bundled traces, then random traces with shrinking.
+# implementation: the bundled traces, then random traces with shrinking (2D:
+# the fast lattice is 2D).
 add_test(NAME fast.conformance
          COMMAND bccmis conformance --impl $<TARGET_FILE:bccmis_fast_replay>
-                 --traces ${PROJECT_SOURCE_DIR}/spec/examples --random 300 --seed 20090303 --max-ops 40)
+                 --traces ${PROJECT_SOURCE_DIR}/spec/examples --random 300 --seed 20090303 --max-ops 40 --dim 2)
 set_tests_properties(fast.conformance PROPERTIES LABELS conformance TIMEOUT 300)

@@ -71,7 +71,7 @@ bccmis_cli_test(view.unwritable 2 ARGS view ${PROJECT_SOURCE_DIR}/spec/examples/
                 STDERR_REGEX "no-such-dir/x.html: cannot create a temporary file" LABEL viewer)
 bccmis_cli_test(view.conformance 1
   ARGS conformance --impl "sh ${CMAKE_CURRENT_SOURCE_DIR}/conformance/missing_boundary_junction.sh $<TARGET_FILE:bccmis>"
-       --random 50 --seed 1 --view disagreement.html
+       --random 50 --seed 1 --dim 2 --view disagreement.html
   STDOUT_REGEX "viewer page of the disagreement: disagreement.html" LABEL viewer)
 # --from-log: another implementation's output on a trace.
 set(_fig2 ${PROJECT_SOURCE_DIR}/spec/examples/fig2.trace)

@@ -153,7 +153,8 @@ def main():
     print("4. conformance --view")
     cpage = os.path.join(a.workdir, "conformance.html")
     impl = "sh %s %s" % (os.path.join(a.source_dir, "tests", "conformance", "missing_boundary_junction.sh"), a.bccmis)
-    p = viewlib.run([a.bccmis, "conformance", "--impl", impl, "--random", "50", "--seed", "1", "--view", cpage])
+    p = viewlib.run([a.bccmis, "conformance", "--impl", impl, "--random", "50", "--seed", "1", "--dim", "2", "--view",
+                     cpage])
     expect("conformance exit code", p.returncode, 1)
     model = viewlib.extract_model(open(cpage, encoding="utf-8").read())
     dom = browser.dump(cpage)

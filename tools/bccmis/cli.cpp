@@ -173,15 +173,20 @@ CLI::App* add_conformance(CLI::App& app, ConformanceCommandOptions& o) {
   cmd->add_option("--timeout", o.timeout_seconds, "Seconds per run of the implementation")
       ->check(CLI::Range(0.01, 86400.0))
       ->capture_default_str();
+  cmd->add_option("--dim", o.dim, "Dimension of the random traces: 2, 3, or mixed (2D and 3D alternately)")
+      ->check(CLI::IsMember({"2", "3", "mixed"}))
+      ->capture_default_str();
   cmd->add_option("--view", o.view,
-                  "On a disagreement, write a viewer page (bccmis view) for the minimal trace: the reference "
-                  "and the implementation's state side by side at the first disagreement");
+                  "On a 2D disagreement, write a viewer page (bccmis view) for the minimal trace: the reference "
+                  "and the implementation's state side by side at the first disagreement; on a 3D one, write "
+                  "FILE.trace (the minimal trace), FILE.reference.state and FILE.impl.state");
   cmd->footer(
       "Exit codes: 0 all agree, 1 disagreement (the minimal trace is printed), 2 harness error (bad options,\n"
       "unreadable trace, an implementation that cannot be run: exit status 126 or 127).\n"
       "Example:\n  bccmis conformance --impl 'bccmis replay --quiet --check=none' --traces spec/examples --random 200 "
       "--seed 7\n"
-      "  bccmis conformance --impl './my-lattice replay' --random 200 --view disagreement.html");
+      "  bccmis conformance --impl './my-lattice replay' --random 200 --view disagreement.html\n"
+      "  bccmis conformance --impl './my-lattice replay' --traces spec/examples/d3 --random 200 --dim 3");
   return cmd;
 }
 

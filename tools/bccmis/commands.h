@@ -140,7 +140,8 @@ struct ConformanceCommandOptions {
   std::uint64_t seed = 1;
   int max_ops = 30;
   double timeout_seconds = 10;
-  std::string view;  ///< the viewer page of a disagreement
+  std::string dim = "mixed";  ///< of the random traces: 2, 3 or mixed
+  std::string view;           ///< the viewer page of a 2D disagreement; VIEW.* files of a 3D one
 };
 int run(const ConformanceCommandOptions& o);
 

@@ -1,5 +1,6 @@
 // bccmis conformance --impl COMMAND: another implementation against the
-// reference, on bundled and random traces, with shrinking (spec/conformance.md).
+// reference, on bundled and random traces of either dimension, with shrinking
+// (spec/conformance.md).
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
@@ -17,6 +18,7 @@ int run(const ConformanceCommandOptions& o) {
   co.seed = o.seed;
   co.max_ops = o.max_ops;
   co.timeout_seconds = o.timeout_seconds;
+  co.dimension = o.dim == "2" ? TraceDimension::Two : o.dim == "3" ? TraceDimension::Three : TraceDimension::Mixed;
   if (!o.traces.empty()) {
     std::error_code ec;
     if (!std::filesystem::is_directory(o.traces, ec)) throw InputError(o.traces + ": not a directory");
@@ -26,11 +28,22 @@ int run(const ConformanceCommandOptions& o) {
   }
   if (co.trace_files.empty() && co.random == 0)
     throw InputError("conformance: nothing to check: give --traces DIR or --random N with N > 0");
-  if (!o.view.empty())
+  if (!o.view.empty()) {
     co.write_view = [&](const std::string& html) {
       write_atomically(o.view, html);
       std::cout << "viewer page of the disagreement: " << o.view << "\n";
     };
+    // The viewer draws 2D lattices only: a 3D disagreement is written as files.
+    co.write_files = [&](const DisagreementFiles& files) {
+      OutputSet outputs;
+      outputs.add(o.view + ".trace", files.trace);
+      outputs.add(o.view + ".reference.state", files.reference_state);
+      outputs.add(o.view + ".impl.state", files.impl_state);
+      outputs.commit();
+      std::cout << "files of the 3D disagreement: " << o.view << ".trace (minimal trace), " << o.view
+                << ".reference.state, " << o.view << ".impl.state\n";
+    };
+  }
   try {
     return run_conformance(co, std::cout);
   } catch (const ImplementationNotRunnable& e) {

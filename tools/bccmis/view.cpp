@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <variant>
 
 #include "bccmis/oracle/conformance.h"
 #include "bccmis/oracle/view.h"
@@ -55,7 +56,12 @@ int run(const ViewCommandOptions& v) {
     TraceLimits limits;
     limits.max_vertices = v.max_vertices;
     o.max_vertices = v.max_vertices;
-    const Trace trace = read_trace(v.trace, limits, "give canonical states with --states");
+    const AnyTrace any = read_any_trace(v.trace, limits, "give canonical states with --states");
+    if (const auto* t3 = std::get_if<Trace3>(&any))
+      throw InputError(name + ":" + std::to_string(t3->lattice_line) +
+                       ":1: a 3D trace ('lattice W H D L'): the viewer draws 2D lattices only (replay it with "
+                       "'bccmis replay', mesh it with 'bccmis mesh')");
+    const Trace& trace = std::get<Trace>(any);
     if (!v.from_log.empty()) {
       // Another implementation's output on the trace (spec/conformance.md).
       ImplRun run;

@@ -6,12 +6,16 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <type_traits>
+#include <variant>
 
+#include "bccmis/d3/lattice.h"
 #include "bccmis/invariants/invariants.h"
 #include "bccmis/oracle/oracle.h"
 #include "bccmis/oracle/view.h"
@@ -67,10 +71,187 @@ class TempFile {
   std::string path_;
 };
 
-std::size_t operations(const Trace& t) {
+template <class T>
+std::size_t operations(const T& t) {
   std::size_t n = 0;
-  for (const TraceCommand& c : t.commands) n += c.kind != TraceCommand::Kind::Check;
+  for (const auto& c : t.commands) n += c.kind != CommandKind::Check;
   return n;
+}
+
+// The reference lattice that replays a trace of type T.
+template <class T>
+struct reference_lattice;
+template <>
+struct reference_lattice<Trace> {
+  using type = Graph;
+};
+template <>
+struct reference_lattice<Trace3> {
+  using type = d3::Graph3;
+};
+template <class T>
+using reference_lattice_t = typename reference_lattice<T>::type;
+
+template <class L>
+L parse_state_of(std::string_view text, std::string_view file) {
+  if constexpr (L::dimension == 3)
+    return d3::parse_state3(text, file);
+  else
+    return parse_state(text, file);
+}
+
+template <class T>
+std::string reference_output_of(const T& trace) {
+  std::string log;
+  const auto g = replay<reference_lattice_t<T>>(trace, log);
+  return log + canonical_text(g);
+}
+
+template <class T>
+std::string compare_run_of(const T& trace, const ImplRun& run) {
+  using L = reference_lattice_t<T>;
+  if (run.timed_out) return "the implementation timed out";
+  if (run.signal != 0) return "the implementation crashed (signal " + std::to_string(run.signal) + ")";
+  if (run.exit_code != 0) {
+    std::string first_err = run.err.substr(0, run.err.find('\n'));
+    // A shell reports a child killed by signal N as status 128 + N.
+    const std::string crash = run.exit_code > 128 && run.exit_code < 160
+                                  ? " (crashed: signal " + std::to_string(run.exit_code - 128) + ")"
+                                  : "";
+    return "the implementation exited with status " + std::to_string(run.exit_code) + crash +
+           (first_err.empty() ? "" : ": " + first_err);
+  }
+  std::string log;
+  const L expected = replay<L>(trace, log);
+  std::vector<std::string> want, got;
+  std::string want_state, got_state;
+  split_output(log, want, want_state);
+  split_output(run.out, got, got_state);
+  for (std::size_t i = 0; i < std::max(want.size(), got.size()); ++i) {
+    const std::string w = i < want.size() ? want[i] : "(nothing)";
+    const std::string g = i < got.size() ? got[i] : "(nothing)";
+    if (w != g) return "decision " + std::to_string(i + 1) + ": reference '" + w + "', implementation '" + g + "'";
+  }
+  const std::string expected_state = canonical_text(expected);
+  if (got_state == expected_state) return "";
+  if (got_state.empty()) return "the implementation printed no canonical state";
+  L actual;
+  try {
+    actual = parse_state_of<L>(got_state, "<implementation state>");
+  } catch (const ParseError& e) {
+    return std::string("the implementation's state does not parse: ") + e.what();
+  }
+  const std::vector<std::string> d = diff_states(expected, actual);
+  std::string text = "final states differ (A = reference, B = implementation):";
+  for (const std::string& line : d) text += "\n  " + line;
+  if (d.empty()) text += "\n  (same graph, different text: the state is not in canonical form)";
+  return text;
+}
+
+// A position anywhere in the domain or just outside it.
+Point random_position(const LatticeSize& size, const auto& uniform) {
+  const std::int64_t S = level0_side(size);
+  return {uniform(-1, size.W * S + 1), uniform(-1, size.H * S + 1)};
+}
+d3::Point3 random_position(const d3::LatticeSize3& size, const auto& uniform) {
+  const std::int64_t S = d3::level0_side(size);
+  return {uniform(-1, size.W * S + 1), uniform(-1, size.H * S + 1), uniform(-1, size.D * S + 1)};
+}
+
+// The random trace generator of both dimensions. In 3D, where the nodes far
+// outnumber the refined centers, coarsen picks a center refined earlier in
+// the trace and still a node about three times in four; in 2D it picks any node.
+template <class T>
+T random_trace_of(std::mt19937_64& rng, int max_ops) {
+  using L = reference_lattice_t<T>;
+  using P = point_type_t<L>;
+  auto uniform = [&](std::int64_t lo, std::int64_t hi) {
+    return std::uniform_int_distribution<std::int64_t>(lo, hi)(rng);
+  };
+  T t;
+  if constexpr (L::dimension == 3)
+    t.size = {uniform(1, 3), uniform(1, 3), uniform(1, 3), static_cast<int>(uniform(1, 3))};
+  else
+    t.size = {uniform(1, 3), uniform(1, 3), static_cast<int>(uniform(1, 3))};
+  L g(t.size);
+  std::vector<P> refined;  // refined centers, in order (some may be coarsened or gone since)
+  const int ops = static_cast<int>(uniform(1, std::max(1, max_ops)));
+  for (int i = 0; i < ops; ++i) {
+    typename T::command_type c;
+    c.line = i + 2;
+    const std::int64_t r = uniform(0, 99);
+    auto pick = [&](const auto& s) {
+      auto it = s.begin();
+      std::advance(it, uniform(0, static_cast<std::int64_t>(s.size()) - 1));
+      return *it;
+    };
+    if (r < 50) {
+      c.kind = CommandKind::Refine;
+      c.at = pick(cells(g));
+    } else if (r < 85) {
+      c.kind = CommandKind::Coarsen;
+      if constexpr (L::dimension == 3) {
+        std::erase_if(refined, [&](const P& p) { return !is_node(g, p); });
+        c.at = !refined.empty() && r < 77 ? pick(refined) : pick(nodes(g));
+      } else {
+        c.at = pick(nodes(g));
+      }
+    } else {
+      c.kind = r < 92 ? CommandKind::Refine : CommandKind::Coarsen;
+      c.at = random_position(t.size, uniform);
+    }
+    const StepResult<L> result = step(g, c);
+    if (c.kind == CommandKind::Refine && result.applied()) refined.push_back(c.at);
+    t.commands.push_back(c);
+  }
+  return t;
+}
+
+template <class T>
+T shrink_of(const T& trace, const std::function<bool(const T&)>& disagrees) {
+  T best = trace;
+  // Checks carry no decision; drop them first if the disagreement allows.
+  {
+    T t = best;
+    std::erase_if(t.commands, [](const auto& c) { return c.kind == CommandKind::Check; });
+    if (t.commands.size() != best.commands.size() && disagrees(t)) best = t;
+  }
+  // ddmin over the commands (complements of n chunks), then single removals
+  // until no single command can be dropped.
+  std::size_t n = 2;
+  while (best.commands.size() >= 2) {
+    const std::size_t len = best.commands.size();
+    const std::size_t chunk = (len + n - 1) / n;
+    bool reduced = false;
+    for (std::size_t start = 0; start < len; start += chunk) {
+      T t = best;
+      t.commands.erase(t.commands.begin() + static_cast<std::ptrdiff_t>(start),
+                       t.commands.begin() + static_cast<std::ptrdiff_t>(std::min(len, start + chunk)));
+      if (disagrees(t)) {
+        best = t;
+        n = std::max<std::size_t>(n - 1, 2);
+        reduced = true;
+        break;
+      }
+    }
+    if (!reduced) {
+      if (n >= len) break;
+      n = std::min(2 * n, len);
+    }
+  }
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (std::size_t i = 0; i < best.commands.size(); ++i) {
+      T t = best;
+      t.commands.erase(t.commands.begin() + static_cast<std::ptrdiff_t>(i));
+      if (disagrees(t)) {
+        best = t;
+        changed = true;
+        break;
+      }
+    }
+  }
+  return best;
 }
 
 }  // namespace
@@ -133,129 +314,20 @@ ImplRun run_implementation(const std::string& command, const std::string& trace_
   return run;
 }
 
-std::string reference_output(const Trace& trace) {
-  std::string log;
-  const Graph g = replay<Graph>(trace, log);
-  return log + canonical_state(g);
-}
+std::string reference_output(const Trace& trace) { return reference_output_of(trace); }
+std::string reference_output(const Trace3& trace) { return reference_output_of(trace); }
 
-std::string compare_run(const Trace& trace, const ImplRun& run) {
-  if (run.timed_out) return "the implementation timed out";
-  if (run.signal != 0) return "the implementation crashed (signal " + std::to_string(run.signal) + ")";
-  if (run.exit_code != 0) {
-    std::string first_err = run.err.substr(0, run.err.find('\n'));
-    // A shell reports a child killed by signal N as status 128 + N.
-    const std::string crash = run.exit_code > 128 && run.exit_code < 160
-                                  ? " (crashed: signal " + std::to_string(run.exit_code - 128) + ")"
-                                  : "";
-    return "the implementation exited with status " + std::to_string(run.exit_code) + crash +
-           (first_err.empty() ? "" : ": " + first_err);
-  }
-  std::string log;
-  const Graph expected = replay<Graph>(trace, log);
-  std::vector<std::string> want, got;
-  std::string want_state, got_state;
-  split_output(log, want, want_state);
-  split_output(run.out, got, got_state);
-  for (std::size_t i = 0; i < std::max(want.size(), got.size()); ++i) {
-    const std::string w = i < want.size() ? want[i] : "(nothing)";
-    const std::string g = i < got.size() ? got[i] : "(nothing)";
-    if (w != g) return "decision " + std::to_string(i + 1) + ": reference '" + w + "', implementation '" + g + "'";
-  }
-  const std::string expected_state = canonical_state(expected);
-  if (got_state == expected_state) return "";
-  if (got_state.empty()) return "the implementation printed no canonical state";
-  Graph actual;
-  try {
-    actual = parse_state(got_state, "<implementation state>");
-  } catch (const ParseError& e) {
-    return std::string("the implementation's state does not parse: ") + e.what();
-  }
-  const std::vector<std::string> d = diff_states(expected, actual);
-  std::string text = "final states differ (A = reference, B = implementation):";
-  for (const std::string& line : d) text += "\n  " + line;
-  if (d.empty()) text += "\n  (same graph, different text: the state is not in canonical form)";
-  return text;
-}
+std::string compare_run(const Trace& trace, const ImplRun& run) { return compare_run_of(trace, run); }
+std::string compare_run(const Trace3& trace, const ImplRun& run) { return compare_run_of(trace, run); }
 
-Trace random_trace(std::mt19937_64& rng, int max_ops) {
-  auto uniform = [&](std::int64_t lo, std::int64_t hi) {
-    return std::uniform_int_distribution<std::int64_t>(lo, hi)(rng);
-  };
-  Trace t;
-  t.size = {uniform(1, 3), uniform(1, 3), static_cast<int>(uniform(1, 3))};
-  Graph g = make_lattice(t.size);
-  const std::int64_t S = level0_side(t.size);
-  const int ops = static_cast<int>(uniform(1, std::max(1, max_ops)));
-  for (int i = 0; i < ops; ++i) {
-    TraceCommand c;
-    c.line = i + 2;
-    const std::int64_t r = uniform(0, 99);
-    auto pick = [&](const PointSet& s) {
-      auto it = s.begin();
-      std::advance(it, uniform(0, static_cast<std::int64_t>(s.size()) - 1));
-      return *it;
-    };
-    if (r < 50) {
-      c.kind = TraceCommand::Kind::Refine;
-      c.at = pick(g.C);
-    } else if (r < 85) {
-      c.kind = TraceCommand::Kind::Coarsen;
-      c.at = pick(g.N);
-    } else {
-      c.kind = r < 92 ? TraceCommand::Kind::Refine : TraceCommand::Kind::Coarsen;
-      c.at = {uniform(-1, t.size.W * S + 1), uniform(-1, t.size.H * S + 1)};
-    }
-    step(g, c);
-    t.commands.push_back(c);
-  }
-  return t;
-}
+Trace random_trace(std::mt19937_64& rng, int max_ops) { return random_trace_of<Trace>(rng, max_ops); }
+Trace3 random_trace3(std::mt19937_64& rng, int max_ops) { return random_trace_of<Trace3>(rng, max_ops); }
 
 Trace shrink(const Trace& trace, const std::function<bool(const Trace&)>& disagrees) {
-  Trace best = trace;
-  // Checks carry no decision; drop them first if the disagreement allows.
-  {
-    Trace t = best;
-    std::erase_if(t.commands, [](const TraceCommand& c) { return c.kind == TraceCommand::Kind::Check; });
-    if (t.commands.size() != best.commands.size() && disagrees(t)) best = t;
-  }
-  // ddmin over the commands (complements of n chunks), then single removals
-  // until no single command can be dropped.
-  std::size_t n = 2;
-  while (best.commands.size() >= 2) {
-    const std::size_t len = best.commands.size();
-    const std::size_t chunk = (len + n - 1) / n;
-    bool reduced = false;
-    for (std::size_t start = 0; start < len; start += chunk) {
-      Trace t = best;
-      t.commands.erase(t.commands.begin() + static_cast<std::ptrdiff_t>(start),
-                       t.commands.begin() + static_cast<std::ptrdiff_t>(std::min(len, start + chunk)));
-      if (disagrees(t)) {
-        best = t;
-        n = std::max<std::size_t>(n - 1, 2);
-        reduced = true;
-        break;
-      }
-    }
-    if (!reduced) {
-      if (n >= len) break;
-      n = std::min(2 * n, len);
-    }
-  }
-  for (bool changed = true; changed;) {
-    changed = false;
-    for (std::size_t i = 0; i < best.commands.size(); ++i) {
-      Trace t = best;
-      t.commands.erase(t.commands.begin() + static_cast<std::ptrdiff_t>(i));
-      if (disagrees(t)) {
-        best = t;
-        changed = true;
-        break;
-      }
-    }
-  }
-  return best;
+  return shrink_of(trace, disagrees);
+}
+Trace3 shrink(const Trace3& trace, const std::function<bool(const Trace3&)>& disagrees) {
+  return shrink_of(trace, disagrees);
 }
 
 std::optional<ViewSide> implementation_side(const Trace& trace, const ImplRun& full,
@@ -334,7 +406,7 @@ int run_conformance(const ConformanceOptions& o, std::ostream& out) {
     out << "conformance: no implementation command (--impl)\n";
     return 2;
   }
-  std::vector<std::pair<std::string, Trace>> work;
+  std::vector<std::pair<std::string, AnyTrace>> work;
   for (const std::string& f : o.trace_files) {
     std::ifstream in(f, std::ios::binary);
     if (!in) {
@@ -344,18 +416,27 @@ int run_conformance(const ConformanceOptions& o, std::ostream& out) {
     std::stringstream ss;
     ss << in.rdbuf();
     try {
-      work.emplace_back(f, parse_trace(ss.str(), f));
+      work.emplace_back(f, parse_any_trace(ss.str(), f));
     } catch (const ParseError& e) {
       out << "conformance: " << e.what() << "\n";
       return 2;
     }
   }
   std::mt19937_64 rng(o.seed);
-  for (int i = 0; i < o.random; ++i)
-    work.emplace_back("random trace " + std::to_string(i + 1) + " (seed " + std::to_string(o.seed) + ")",
-                      random_trace(rng, o.max_ops));
+  int random3 = 0;
+  for (int i = 0; i < o.random; ++i) {
+    const bool three = o.dimension == TraceDimension::Three || (o.dimension == TraceDimension::Mixed && i % 2 == 1);
+    const std::string name = "random " + std::string(three ? "3D" : "2D") + " trace " + std::to_string(i + 1) +
+                             " (seed " + std::to_string(o.seed) + ")";
+    if (three) {
+      work.emplace_back(name, random_trace3(rng, o.max_ops));
+      ++random3;
+    } else {
+      work.emplace_back(name, random_trace(rng, o.max_ops));
+    }
+  }
 
-  auto run_trace = [&](const Trace& t) {
+  auto run_on = [&](const auto& t) {
     TempFile file(format_trace(t));
     const ImplRun run = run_implementation(o.impl, file.path(), o.timeout_seconds);
     if (!run.timed_out && run.signal == 0 && (run.exit_code == 126 || run.exit_code == 127)) {
@@ -365,28 +446,44 @@ int run_conformance(const ConformanceOptions& o, std::ostream& out) {
                                       (run.exit_code == 127 ? "command not found" : "not executable") + ")" +
                                       (first_err.empty() ? "" : ": " + first_err));
     }
-    return compare_run(t, run);
+    return run;
   };
-  std::size_t agreed = 0;
-  for (const auto& [name, trace] : work) {
+  auto run_trace = [&](const auto& t) { return compare_run(t, run_on(t)); };
+  // Reports the disagreement on `trace`, if any, with its minimal trace.
+  auto disagrees = [&]<class T>(const std::string& name, const T& trace) {
     const std::string problem = run_trace(trace);
-    if (problem.empty()) {
-      ++agreed;
-      continue;
-    }
+    if (problem.empty()) return false;
     out << "DISAGREE on " << name << " (" << operations(trace) << " operations): " << problem << "\n";
     out << "shrinking...\n";
-    const Trace minimal = shrink(trace, [&](const Trace& t) { return !run_trace(t).empty(); });
+    const T minimal = shrink(trace, std::function<bool(const T&)>([&](const T& t) { return !run_trace(t).empty(); }));
     const std::size_t ops = operations(minimal);
     out << "minimal trace (" << ops << (ops == 1 ? " operation" : " operations") << "):\n"
         << format_trace(minimal) << "difference on the minimal trace: " << run_trace(minimal) << "\n";
-    out << "reference output for it:\n" << reference_output(minimal);
-    if (o.write_view) o.write_view(disagreement_page(minimal, o));
-    out << agreed << " of " << work.size() << " traces agreed before the first disagreement\n";
-    return 1;
+    const std::string reference = reference_output(minimal);
+    out << "reference output for it:\n" << reference;
+    if constexpr (std::is_same_v<T, Trace>) {
+      if (o.write_view) o.write_view(disagreement_page(minimal, o));
+    } else if (o.write_files) {
+      DisagreementFiles files;
+      files.trace = format_trace(minimal);
+      files.reference_state = reference.substr(reference.find("bccmis-state "));
+      const ImplRun run = run_on(minimal);
+      std::vector<std::string> ignored;
+      if (!run.timed_out && run.signal == 0 && run.exit_code == 0) split_output(run.out, ignored, files.impl_state);
+      o.write_files(files);
+    }
+    return true;
+  };
+  std::size_t agreed = 0;
+  for (const auto& item : work) {
+    if (std::visit([&](const auto& t) { return disagrees(item.first, t); }, item.second)) {
+      out << agreed << " of " << work.size() << " traces agreed before the first disagreement\n";
+      return 1;
+    }
+    ++agreed;
   }
   out << "conformance: all " << work.size() << " traces agree (" << o.trace_files.size() << " bundled, " << o.random
-      << " random, seed " << o.seed << ")\n";
+      << " random: " << o.random - random3 << " 2D and " << random3 << " 3D, seed " << o.seed << ")\n";
   return 0;
 }
 
