@@ -44,7 +44,9 @@ includes=(-I"$root/src" -I"$root/tests" -I"$here")
 objects=()
 for source in "$root"/src/bccmis/*.cpp "$root"/src/bccmis/invariants/*.cpp "$root"/src/bccmis/fast/*.cpp \
               "$root"/src/bccmis/d3/*.cpp "$root"/src/bccmis/invariants/d3/*.cpp "$root"/tests/testing/*.cpp; do
-  object="$work/$(basename "$(dirname "$(dirname "$source")")")_$(basename "$(dirname "$source")")_$(basename "$source" .cpp).o"
+  # <grandparent>_<parent>_<name>.o: d3/graph.cpp and graph.cpp must not collide.
+  dir=$(dirname "$source")
+  object="$work/$(basename "$(dirname "$dir")")_$(basename "$dir")_$(basename "$source" .cpp).o"
   # shellcheck disable=SC2086  # CXXFLAGS is a list of flags
   $CXX $CXXFLAGS -std=c++20 "${includes[@]}" -c "$source" -o "$object"
   objects+=("$object")
