@@ -117,7 +117,6 @@ class OpRun {
   }
 
   const L& graph() const { return g_; }
-  Checked& checked() { return checked_; }
 
   [[noreturn]] void fail(const std::string& what) const {
     fuzz::fail(target_, what + " (at the last command of the trace)", &trace_);
