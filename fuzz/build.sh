@@ -11,8 +11,10 @@
 #
 # For every target it writes $OUT/<target>, $OUT/<target>_seed_corpus.zip (from
 # fuzz/corpus/<target>/), and $OUT/<target>.dict / .options when they exist.
-# Only the core, the checker, the fast implementation and tests/testing are
-# compiled (no GTest, CLI11 or CGAL), so the build needs nothing but a C++20 compiler.
+# Only the core, the checker, the fast implementation, the 3D lattice and its
+# checker, and tests/testing are compiled (no GTest, CLI11 or CGAL), so the
+# build needs a C++20 compiler and GMP (libgmp-dev: the 3D mesh and its
+# checker compute exact orientations with it).
 #
 # Local libFuzzer build:
 #   CXX=clang++ CXXFLAGS="-fsanitize=address,undefined,fuzzer-no-link -fno-sanitize-recover=all -g -O1" \
@@ -34,14 +36,17 @@ trap 'rm -rf "$work"' EXIT
 
 includes=(-I"$root/src" -I"$root/tests" -I"$here")
 # The libraries the targets link: the reference core, the checker (layers
-# 1-4), the fast implementation and the shared test library (tests/testing:
+# 1-4), the fast implementation, the 3D lattice (src/bccmis/d3) and its
+# checker (src/bccmis/invariants/d3), and the shared test library (tests/testing:
 # the lock-step twin, the byte programs). Compiled once, with the service's flags.
 # (fuzz_conformance also needs the oracle library, whose page template CMake
 # generates: it is built by the CMake fuzz preset only.)
 objects=()
 for source in "$root"/src/bccmis/*.cpp "$root"/src/bccmis/invariants/*.cpp "$root"/src/bccmis/fast/*.cpp \
-              "$root"/tests/testing/*.cpp; do
-  object="$work/$(basename "$(dirname "$source")")_$(basename "$source" .cpp).o"
+              "$root"/src/bccmis/d3/*.cpp "$root"/src/bccmis/invariants/d3/*.cpp "$root"/tests/testing/*.cpp; do
+  # <grandparent>_<parent>_<name>.o: d3/graph.cpp and graph.cpp must not collide.
+  dir=$(dirname "$source")
+  object="$work/$(basename "$(dirname "$dir")")_$(basename "$dir")_$(basename "$source" .cpp).o"
   # shellcheck disable=SC2086  # CXXFLAGS is a list of flags
   $CXX $CXXFLAGS -std=c++20 "${includes[@]}" -c "$source" -o "$object"
   objects+=("$object")
@@ -50,6 +55,7 @@ ar rcs "$work/libbccmis_fuzz.a" "${objects[@]}"
 
 declare -A sources=(
   [fuzz_refine_coarsen]=refine_coarsen_fuzzer.cpp
+  [fuzz_refine_coarsen_3d]=refine_coarsen_3d_fuzzer.cpp
   [fuzz_trace]=trace_fuzzer.cpp
   [fuzz_state]=state_fuzzer.cpp
   [fuzz_differential]=fuzz_differential.cpp
@@ -57,7 +63,7 @@ declare -A sources=(
 for target in "${!sources[@]}"; do
   # shellcheck disable=SC2086
   $CXX $CXXFLAGS -std=c++20 "${includes[@]}" "$here/${sources[$target]}" \
-    "$work/libbccmis_fuzz.a" $LIB_FUZZING_ENGINE -o "$OUT/$target"
+    "$work/libbccmis_fuzz.a" -lgmpxx -lgmp $LIB_FUZZING_ENGINE -o "$OUT/$target"
   if [ -d "$here/corpus/$target" ]; then
     rm -f "$OUT/${target}_seed_corpus.zip"
     (cd "$here/corpus/$target" && zip -q -r "$OUT/${target}_seed_corpus.zip" .)

@@ -16,10 +16,11 @@
 namespace bccmis::fuzz {
 
 /// Prints `what` and, if given, the equivalent text trace (readable by
-/// `bccmis replay`) to stderr, then aborts so that the fuzzing engine records
-/// a crash. With BCCMIS_FUZZ_TRACE=path in the environment the trace is also
-/// written to that file.
-[[noreturn]] inline void fail(std::string_view target, const std::string& what, const Trace* trace = nullptr) {
+/// `bccmis replay`; a Trace or a Trace3) to stderr, then aborts so that the
+/// fuzzing engine records a crash. With BCCMIS_FUZZ_TRACE=path in the
+/// environment the trace is also written to that file.
+template <class T = Trace>
+[[noreturn]] void fail(std::string_view target, const std::string& what, const T* trace = nullptr) {
   std::string text = "# " + std::string(target) + ": " + what + "\n";
   if (trace) text += format_trace(*trace);
   std::fprintf(stderr, "\n==== %.*s failure: %s\n", static_cast<int>(target.size()), target.data(), what.c_str());

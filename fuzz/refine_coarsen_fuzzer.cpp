@@ -15,26 +15,18 @@
 //
 // Every decoded operation runs through checked_refine/checked_coarsen (the
 // checker before and after, the exact set changes, and a refused operation
-// must leave the graph unchanged). The immediate inverses and
-// the final teardown use the plain operations, because the byte comparison of
-// canonical states that follows them is stronger than the checker: an
-// inverse must restore the state before the operation, and coarsening every
-// refined cell, finest level first, must succeed each time and give the
-// initial lattice. Any failure aborts with the equivalent text trace on stderr, so
-// `bccmis replay` reproduces it.
+// must leave the graph unchanged); applied operations with bit 7 are inverted
+// at once and the canonical state must come back byte-identically; at the end
+// every refined cell is coarsened, finest level first. The harness is
+// fuzz/op_run.h (shared with fuzz_refine_coarsen_3d), the byte program
+// tests/testing/byte_program.h. Any failure aborts with the equivalent text
+// trace on stderr, so `bccmis replay` reproduces it.
 #include <cstddef>
 #include <cstdint>
-#include <exception>
-#include <optional>
-#include <string>
-#include <vector>
+#include <string_view>
 
-#include "bccmis/format.h"
-#include "bccmis/geometry.h"
-#include "bccmis/invariants/checked.h"
-#include "bccmis/invariants/invariants.h"
-#include "bccmis/ops.h"
-#include "fuzz_util.h"
+#include "bccmis/lattice.h"
+#include "op_run.h"
 #include "testing/byte_program.h"
 
 namespace {
@@ -45,104 +37,12 @@ using namespace bccmis;
 constexpr std::size_t kMaxOps = 96;
 constexpr std::string_view kTarget = "fuzz_refine_coarsen";
 
-class Run {
- public:
-  explicit Run(const LatticeSize& size) : g_(make_lattice(size)) { trace_.size = size; }
-
-  void refine_at(const Point& c, bool invert) {
-    // checked_* already rejects a refusal that changes the graph; the copy is
-    // only needed to compare after an inversion.
-    std::optional<Graph> before;
-    if (invert) before = g_;
-    record(TraceCommand::Kind::Refine, c);
-    const RefineResult r = guarded([&] { return checked_refine(g_, c); });
-    if (!r.applied() || !invert) return;
-    record(TraceCommand::Kind::Coarsen, c);
-    const CoarsenResult back = guarded([&] { return coarsen(g_, c); });
-    if (!back.applied())
-      fail("coarsen right after refine at the same position was refused (" + std::string(code(*back.refused)) + ")");
-    expect_state(*before, "coarsen(refine(g, c), c) != g (paper §3)");
-  }
-
-  void coarsen_at(const Point& n, bool invert) {
-    // checked_* already rejects a refusal that changes the graph; the copy is
-    // only needed to compare after an inversion.
-    std::optional<Graph> before;
-    if (invert) before = g_;
-    record(TraceCommand::Kind::Coarsen, n);
-    const CoarsenResult r = guarded([&] { return checked_coarsen(g_, n); });
-    if (!r.applied() || !invert) return;
-    record(TraceCommand::Kind::Refine, n);
-    const RefineResult back = guarded([&] { return refine(g_, n); });
-    if (!back.applied())
-      fail("refine right after coarsen at the same position was refused (" + std::string(code(*back.refused)) + ")");
-    expect_state(*before, "refine(coarsen(g, n), n) != g");
-  }
-
-  /// Coarsens every refined cell, finest first; each must be applied. Then the
-  /// graph must be the initial lattice.
-  void coarsen_everything() {
-    for (int l = g_.size.L - 1; l >= 0; --l) {
-      std::vector<Point> todo;
-      for (const Point& n : g_.N)
-        if (refined_center_level(g_.size, n) == l) todo.push_back(n);
-      for (const Point& n : todo) {
-        record(TraceCommand::Kind::Coarsen, n);
-        const CoarsenResult r = guarded([&] { return coarsen(g_, n); });
-        if (!r.applied())
-          fail("coarsening everything, finest level first: coarsen refused (" + std::string(code(*r.refused)) + ")");
-      }
-    }
-    expect_state(make_lattice(g_.size), "coarsening everything did not give the initial lattice");
-  }
-
-  const Graph& graph() const { return g_; }
-
- private:
-  void record(TraceCommand::Kind kind, const Point& at) {
-    TraceCommand c;
-    c.kind = kind;
-    c.at = at;
-    c.line = static_cast<int>(trace_.commands.size()) + 2;
-    trace_.commands.push_back(c);
-  }
-
-  [[noreturn]] void fail(const std::string& what) const {
-    fuzz::fail(kTarget, what + " (at the last command of the trace)", &trace_);
-  }
-
-  // Graph equality is equality of the canonical texts (format.h); the texts
-  // are only built for the message.
-  void expect_state(const Graph& expected, const std::string& what) const {
-    if (g_ == expected) return;
-    const std::string want = canonical_state(expected), got = canonical_state(g_);
-    std::size_t line = 1, i = 0;
-    for (; i < want.size() && i < got.size() && want[i] == got[i]; ++i) line += want[i] == '\n';
-    fail(what + "; the canonical states differ first on line " + std::to_string(line) +
-         (want == got ? " (but the graphs differ: a bug in canonical_state or operator==)" : ""));
-  }
-
-  template <class Op>
-  auto guarded(Op op) -> decltype(op()) {
-    try {
-      return op();
-    } catch (const ViolationError& e) {
-      fail(std::string("invariant violated: ") + e.what());
-    } catch (const std::exception& e) {
-      fail(std::string("exception: ") + e.what());
-    }
-  }
-
-  Graph g_;
-  Trace trace_;
-};
-
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 3) return 0;
   testing::Bytes in(data, size);
-  Run run(testing::decode_lattice(in, 3, 5));
+  fuzz::OpRun<Graph, fuzz::Checked2> run(kTarget, testing::decode_lattice(in, 3, 5));
   testing::run_program(
       in, kMaxOps, run.graph(), [&](const Point& c, std::uint8_t s) { run.refine_at(c, (s & 0x80) != 0); },
       [&](const Point& n, std::uint8_t s) { run.coarsen_at(n, (s & 0x80) != 0); }, [](std::uint8_t) {});

@@ -1,18 +1,21 @@
-// fuzz_state: bytes -> parse_state -> the checker (and, on valid states, the
-// operations).
+// fuzz_state: bytes -> parse_any_state -> the checker (and, on valid states,
+// the operations), in either dimension (four numbers on the `lattice` line
+// make a 3D state, spec/formats.md "3D extension").
 //
 // - A parse error must be a clean ParseError (one printable line
 //   `file:line:column: message` pointing into the text).
-// - parse_state is strict: whatever it accepts must print back (canonical_state)
-//   byte-identically, valid graph or not.
-// - find_violation must be total on any parsed graph, however broken (no
-//   exception, no crash, no sanitizer report); a violation is one line.
-//   check_layer on a graph a lower layer rejects may throw (its result is
-//   unspecified there) but must not crash.
-// - On a state the checker accepts, one refine and one coarsen chosen by the
-//   input run through the checked operations, each immediately inverted; the
-//   state must come back byte-identically. Failures abort with the state text
-//   on stderr (`bccmis check FILE` reads it).
+// - The parsers are strict: whatever they accept must print back
+//   (canonical_state) byte-identically, valid graph or not.
+// - find_violation of the parsed dimension must be total on any parsed graph,
+//   however broken (no exception, no crash, no sanitizer report); a violation
+//   is one line. check_layer on a graph a lower layer rejects may throw (its
+//   result is unspecified there) but must not crash.
+// - On a state the checker accepts (in 3D also the mesh layer,
+//   check_mesh(g, tetrahedra(g))), one refine and one coarsen chosen by the
+//   input run through the checked operations (Checked2, Checked3), each
+//   immediately inverted; the state must come back byte-identically.
+//   Failures abort with the state text on stderr (`bccmis check FILE` reads
+//   it).
 #include <cstddef>
 #include <cstdint>
 #include <exception>
@@ -22,12 +25,14 @@
 #include <string_view>
 #include <vector>
 
+#include "bccmis/d3/lattice.h"
 #include "bccmis/format.h"
 #include "bccmis/geometry.h"
-#include "bccmis/invariants/checked.h"
 #include "bccmis/invariants/invariants.h"
-#include "bccmis/ops.h"
+#include "bccmis/lattice.h"
+#include "checked3.h"
 #include "fuzz_util.h"
+#include "op_run.h"
 
 namespace {
 
@@ -40,7 +45,8 @@ constexpr std::string_view kFile = "fuzz.state";
   fuzz::fail(kTarget, what + "\n==== state:\n" + std::string(state) + "==== end of state");
 }
 
-void check_violation_text(const Violation& v, std::string_view state) {
+template <class V>
+void check_violation_text(const V& v, std::string_view state) {
   const std::string s = to_string(v);
   for (char ch : s) {
     const auto u = static_cast<unsigned char>(ch);
@@ -50,50 +56,50 @@ void check_violation_text(const Violation& v, std::string_view state) {
   if (v.code.empty() || s.empty()) fail_with_state("violation without code or text", state);
 }
 
-std::string position(const Point& v) { return std::to_string(v.x) + " " + std::to_string(v.y); }
+// The mesh layer on a 3D state layers 1-4 accept; nothing more in 2D.
+std::optional<std::string> mesh_problem(const Graph&) { return std::nullopt; }
+std::optional<std::string> mesh_problem(const d3::Graph3& g) { return fuzz::problem3(g, true); }
 
-// Applies op (refine or coarsen at v) and, if applied, its inverse; the state
-// must come back.
-template <class Op, class Inverse>
-void round_trip(Graph g, const Point& v, std::string_view state, const char* name, Op op, Inverse inverse) {
+// The checked operations of each dimension.
+fuzz::Checked2 checked_ops(const Graph&) { return {}; }
+fuzz::Checked3 checked_ops(const d3::Graph3&) { return {}; }
+
+// Applies `op` (refine or coarsen at v, through the checked operations) and,
+// if applied, `inverse`; the state must come back byte-identically.
+template <AdaptiveLattice L, class Op, class Inverse>
+void round_trip(L g, const point_type_t<L>& v, std::string_view state, const char* name, Op op, Inverse inverse) {
   try {
     if (!op(g, v).applied()) {
-      if (canonical_state(g) != state) fail_with_state(std::string("refused ") + name + " changed the state", state);
+      if (canonical_text(g) != state) fail_with_state(std::string("refused ") + name + " changed the state", state);
       return;
     }
     if (!inverse(g, v).applied())
-      fail_with_state(std::string("the inverse of ") + name + " " + position(v) + " was refused", state);
+      fail_with_state(std::string("the inverse of ") + name + " " + to_string(v) + " was refused", state);
   } catch (const std::exception& e) {
-    fail_with_state(std::string(name) + " " + position(v) + " threw: " + e.what(), state);
+    fail_with_state(std::string(name) + " " + to_string(v) + " threw: " + e.what(), state);
   }
-  if (canonical_state(g) != state)
-    fail_with_state(std::string(name) + " " + position(v) + " followed by its inverse changed the state", state);
+  if (canonical_text(g) != state)
+    fail_with_state(std::string(name) + " " + to_string(v) + " followed by its inverse changed the state", state);
 }
 
-}  // namespace
-
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const std::string_view text(reinterpret_cast<const char*>(data), size);
-  Graph g;
-  try {
-    g = parse_state(text, kFile);
-  } catch (const ParseError& e) {
-    fuzz::check_parse_error(kTarget, e, kFile, text);
-    return 0;
-  }
-  if (canonical_state(g) != text)
-    fail_with_state("parse_state accepted a text that does not print back byte-identically", text);
+template <AdaptiveLattice L>
+void run(const L& g, std::string_view text) {
+  if (canonical_text(g) != text)
+    fail_with_state("the parser accepted a text that does not print back byte-identically", text);
 
   // find_violation must be total: no exception, whatever the graph.
-  std::optional<Violation> violation;
+  std::optional<std::string> violation;
   try {
-    violation = find_violation(g);
+    if (auto v = find_violation(g)) {
+      check_violation_text(*v, text);
+      violation = to_string(*v);
+    }
   } catch (const std::exception& e) {
     fail_with_state(std::string("find_violation threw: ") + e.what(), text);
   }
   // A single layer on a graph a lower layer rejects has an unspecified result
-  // (invariants.h): an exception is allowed, a crash or undefined behaviour
-  // (which the sanitizers report) is not.
+  // (invariants.h, invariants3.h): an exception is allowed, a crash or
+  // undefined behaviour (which the sanitizers report) is not.
   for (int layer = 1; layer <= 4; ++layer) {
     try {
       if (auto v = check_layer(g, layer)) check_violation_text(*v, text);
@@ -101,20 +107,35 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       if (!violation) fail_with_state("check_layer threw on a valid graph", text);
     }
   }
-  if (violation) {
-    check_violation_text(*violation, text);
-    return 0;
-  }
+  if (violation) return;
+  if (auto p = mesh_problem(g)) fail_with_state("the mesh of a state layers 1-4 accept: " + *p, text);
 
   // A valid state: one refine and one coarsen, each inverted at once.
-  const std::size_t pick = size * 2654435761u;
-  if (!g.C.empty()) {
-    const Point c = *std::next(g.C.begin(), static_cast<std::ptrdiff_t>(pick % g.C.size()));
-    round_trip(g, c, text, "refine", checked_refine, checked_coarsen);
+  const std::size_t pick = text.size() * 2654435761u;
+  auto ops = checked_ops(g);
+  auto refine_op = [&](L& h, const point_type_t<L>& p) { return ops.refine(h, p); };
+  auto coarsen_op = [&](L& h, const point_type_t<L>& p) { return ops.coarsen(h, p); };
+  if (cell_count(g) != 0) {
+    const auto c = *std::next(std::ranges::begin(cells(g)), static_cast<std::ptrdiff_t>(pick % cell_count(g)));
+    round_trip(g, c, text, "refine", refine_op, coarsen_op);
   }
-  std::vector<Point> refined;
-  for (const Point& n : g.N)
-    if (refined_center_level(g.size, n)) refined.push_back(n);
-  if (!refined.empty()) round_trip(g, refined[pick % refined.size()], text, "coarsen", checked_coarsen, checked_refine);
+  std::vector<point_type_t<L>> refined;
+  for (const auto& n : nodes(g))
+    if (refined_center_level(size_of(g), n)) refined.push_back(n);
+  if (!refined.empty()) round_trip(g, refined[pick % refined.size()], text, "coarsen", coarsen_op, refine_op);
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  AnyState g;
+  try {
+    g = parse_any_state(text, kFile);
+  } catch (const ParseError& e) {
+    fuzz::check_parse_error(kTarget, e, kFile, text);
+    return 0;
+  }
+  std::visit([&](const auto& state) { run(state, text); }, g);
   return 0;
 }

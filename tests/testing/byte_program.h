@@ -1,8 +1,11 @@
 // The byte programs of the operation-sequence fuzz targets (fuzz_refine_coarsen,
-// fuzz_differential): every byte string is a valid program, GEOS/fmt style.
-// Three bytes give the lattice; then each operation is a selector byte and
-// its operands, decoded against the current reference state, so that most
-// operations name live vertices and deep states are reached fast.
+// fuzz_refine_coarsen_3d, fuzz_differential): every byte string is a valid
+// program, GEOS/fmt style. Three bytes (four in 3D) give the lattice; then
+// each operation is a selector byte and its operands, decoded against the
+// current reference state, so that most operations name live vertices and
+// deep states are reached fast. Written once for every lattice
+// (bccmis/lattice.h): the 2D Graph and the 3D d3::Graph3 decode alike, a raw
+// position reading one byte per coordinate.
 #pragma once
 
 #include <cstddef>
@@ -12,6 +15,7 @@
 
 #include "bccmis/geometry.h"
 #include "bccmis/graph.h"
+#include "bccmis/lattice.h"
 
 namespace bccmis::testing {
 
@@ -35,11 +39,14 @@ class Bytes {
 };
 
 /// A lattice from three bytes: W = 1 + b0 % max_side, H = 1 + b1 % max_side,
-/// L = b2 % levels.
-inline LatticeSize decode_lattice(Bytes& in, int max_side, int levels) {
-  LatticeSize size;
+/// L = b2 % levels; a size with a depth (d3::LatticeSize3) reads four:
+/// W, H, D = 1 + b2 % max_side, then L = b3 % levels.
+template <class Size = LatticeSize>
+Size decode_lattice(Bytes& in, int max_side, int levels) {
+  Size size;
   size.W = 1 + in.next() % max_side;
   size.H = 1 + in.next() % max_side;
+  if constexpr (requires { size.D; }) size.D = 1 + in.next() % max_side;
   size.L = in.next() % levels;
   return size;
 }
@@ -57,41 +64,44 @@ typename Set::value_type nth(const Set& s, std::size_t k) {
 ///   3, 4     coarsen the k-th node at a refined cell's center (mostly legal;
 ///            nothing when there is none)
 ///   5        coarsen the k-th node of N (mostly refused)
-///   6        refine at a raw position (x, y)          (2 bytes; mostly refused)
-///   7        coarsen at a raw position (x, y)         (2 bytes; mostly refused)
+///   6        refine at a raw position (x, y[, z])    (one byte per coordinate; mostly refused)
+///   7        coarsen at a raw position (x, y[, z])   (one byte per coordinate; mostly refused)
 /// A raw coordinate byte b is b % (extent + 3) - 1 (a little beyond the domain
 /// on every side), except 0xff = INT64_MAX and 0xfe = INT64_MIN.
-template <class Refine, class Coarsen>
-void decode_operation(Bytes& in, std::uint8_t s, const Graph& g, const Refine& refine, const Coarsen& coarsen) {
+template <AdaptiveLattice L, class Refine, class Coarsen>
+void decode_operation(Bytes& in, std::uint8_t s, const L& g, const Refine& refine, const Coarsen& coarsen) {
+  const auto& size = size_of(g);
   switch (s & 7) {
     case 0:
     case 1:
-    case 2: refine(nth(g.C, in.index(g.C.size()))); break;
+    case 2: refine(nth(cells(g), in.index(cell_count(g)))); break;
     case 3:
     case 4: {
-      std::vector<Point> refined;
-      for (const Point& n : g.N)
-        if (refined_center_level(g.size, n)) refined.push_back(n);
+      std::vector<point_type_t<L>> refined;
+      for (const auto& n : nodes(g))
+        if (refined_center_level(size, n)) refined.push_back(n);
       if (refined.empty()) break;
       coarsen(refined[in.index(refined.size())]);
       break;
     }
-    case 5: coarsen(nth(g.N, in.index(g.N.size()))); break;
+    case 5: coarsen(nth(nodes(g), in.index(node_count(g)))); break;
     default: {
-      const std::int64_t S = level0_side(g.size);
+      const std::int64_t S = level0_side(size);
       auto coordinate = [&](std::int64_t extent) -> std::int64_t {
         const std::uint8_t b = in.next();
         if (b == 0xff) return INT64_MAX;
         if (b == 0xfe) return INT64_MIN;
         return static_cast<std::int64_t>(b) % (extent + 3) - 1;
       };
-      // Sequenced: x is read before y.
-      const std::int64_t x = coordinate(g.size.W * S);
-      const std::int64_t y = coordinate(g.size.H * S);
+      // Sequenced: x is read before y, y before z.
+      point_type_t<L> p;
+      p.x = coordinate(size.W * S);
+      p.y = coordinate(size.H * S);
+      if constexpr (L::dimension == 3) p.z = coordinate(size.D * S);
       if ((s & 7) == 6)
-        refine(Point{x, y});
+        refine(p);
       else
-        coarsen(Point{x, y});
+        coarsen(p);
       break;
     }
   }
@@ -101,13 +111,14 @@ void decode_operation(Bytes& in, std::uint8_t s, const Graph& g, const Refine& r
 /// reads a selector byte s, decodes its operands against g (which the
 /// callbacks keep current) and calls refine(p, s) or coarsen(p, s), then
 /// after(s); the high bits of s are the target's own flags.
-template <class Refine, class Coarsen, class After>
-void run_program(Bytes& in, std::size_t max_ops, const Graph& g, const Refine& refine, const Coarsen& coarsen,
+template <AdaptiveLattice L, class Refine, class Coarsen, class After>
+void run_program(Bytes& in, std::size_t max_ops, const L& g, const Refine& refine, const Coarsen& coarsen,
                  const After& after) {
+  using P = point_type_t<L>;
   for (std::size_t op = 0; op < max_ops && !in.empty(); ++op) {
     const std::uint8_t s = in.next();
     decode_operation(
-        in, s, g, [&](const Point& p) { refine(p, s); }, [&](const Point& p) { coarsen(p, s); });
+        in, s, g, [&](const P& p) { refine(p, s); }, [&](const P& p) { coarsen(p, s); });
     after(s);
   }
 }

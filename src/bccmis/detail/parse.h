@@ -141,8 +141,9 @@ class LineParser {
 
 // Trace tokens: separated by spaces or tabs; '#' starts a comment; a trailing
 // '\r' (CRLF files) is ignored. Other control bytes are errors.
-// A command has at most five tokens (`lattice W H D L`): the first six are kept (an arity error
-// names the column of the first extra one), the rest only counted.
+// A command has at most five tokens (`lattice W H D L`): the first six are
+// kept (an arity error names the column of the first extra one), the rest
+// only counted.
 struct TraceTokens {
   static constexpr std::size_t kKept = 6;
   std::array<Token, kKept> kept{};
