@@ -13,7 +13,8 @@
 //   mesh-extra-edge    every tet edge {c, n}, c in C, n in N, is a graph edge
 //   mesh-missing-edge  every graph edge is a tet edge
 // Coordinates up to 2^63 in magnitude make the orientation determinant up to
-// about 2^195, so it is computed with mpz_class.
+// about 2^195, so it is computed with mpz_class; below 2^40 (every box of
+// extent below 2^40) in 128-bit integers, exactly, without GMP.
 #include <gmpxx.h>
 
 #include <algorithm>
@@ -39,14 +40,55 @@ const std::string kMeshSection = "spec/invariants.md, 3D layer 5";
 
 mpz_class big(std::int64_t v) { return mpz_class(static_cast<long>(v)); }
 
+__extension__ typedef __int128 Int128;
+__extension__ typedef unsigned __int128 UInt128;
+
+/// det[b - a, c - a, d - a] in 128-bit integers when every coordinate is
+/// below 2^40 in magnitude (differences below 2^41, each product of three
+/// below 2^123, the sum of six below 2^126): exact, and without GMP's
+/// allocations, for every box with extents below 2^40. Empty otherwise.
+std::optional<Int128> orient_small(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+  constexpr std::int64_t kLimit = std::int64_t{1} << 40;
+  std::array<std::array<Int128, 3>, 3> m{};
+  const std::array<const Point3*, 3> rows{&b, &c, &d};
+  for (std::size_t i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) {
+      const std::int64_t p = coord(*rows[i], k), q = coord(a, k);
+      if (p >= kLimit || p <= -kLimit || q >= kLimit || q <= -kLimit) return std::nullopt;  // p - q below 2^41
+      m[i][static_cast<std::size_t>(k)] = Int128{p} - Int128{q};
+    }
+  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
 /// det[b - a, c - a, d - a], exactly: six times the signed volume.
-mpz_class orient(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+mpz_class orient_big(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
   std::array<std::array<mpz_class, 3>, 3> m;
   const std::array<const Point3*, 3> rows{&b, &c, &d};
   for (std::size_t i = 0; i < 3; ++i)
     for (int k = 0; k < 3; ++k) m[i][static_cast<std::size_t>(k)] = big(coord(*rows[i], k)) - big(coord(a, k));
   return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
          m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+/// The sign of det[b - a, c - a, d - a], exactly.
+int orient_sign(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+  if (const std::optional<Int128> v = orient_small(a, b, c, d)) return (*v > 0) - (*v < 0);
+  return sgn(orient_big(a, b, c, d));
+}
+
+/// det[b - a, c - a, d - a] as an mpz_class, by the fast path when it applies.
+mpz_class orient(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+  if (const std::optional<Int128> v = orient_small(a, b, c, d)) {
+    // |v| < 2^126: two 64-bit halves.
+    const bool negative = *v < 0;
+    const auto u = static_cast<UInt128>(negative ? -*v : *v);
+    mpz_class r = static_cast<unsigned long>(static_cast<std::uint64_t>(u >> 64));
+    r <<= 64;
+    r += static_cast<unsigned long>(static_cast<std::uint64_t>(u));
+    return negative ? mpz_class(-r) : r;
+  }
+  return orient_big(a, b, c, d);
 }
 
 std::string tet_text(std::size_t i, const Tet3& t) {
@@ -109,16 +151,25 @@ std::optional<Violation3> check_mesh(const Graph3& g, std::span<const Tet3> tets
                         ", which is neither a node, a center nor the center of a leaf's face in the domain boundary",
                     "§1");
 
-  // tet-orientation
-  std::vector<mpz_class> volume6(tets.size());
+  // tet-orientation; the six-fold volumes are summed as they come, in
+  // 128 bits while every one is small (a sum of positive values below 2^126
+  // each stays exact as long as it fits; it moves to GMP before it could not).
+  mpz_class sum = 0;
+  Int128 small_sum = 0;
   for (std::size_t i = 0; i < tets.size(); ++i) {
     const Tet3& t = tets[i];
-    volume6[i] = orient(t[0], t[1], t[2], t[3]);
-    if (sgn(volume6[i]) <= 0)
+    const std::optional<Int128> small = orient_small(t[0], t[1], t[2], t[3]);
+    if (small && *small > 0 && small_sum < (Int128{1} << 126)) {
+      small_sum += *small;
+      continue;
+    }
+    const mpz_class v = orient(t[0], t[1], t[2], t[3]);
+    if (sgn(v) <= 0)
       return fail("tet-orientation", {t[0], t[1], t[2], t[3]},
-                  tet_text(i, t) + " has six-fold signed volume " + volume6[i].get_str() +
+                  tet_text(i, t) + " has six-fold signed volume " + v.get_str() +
                       "; every tetrahedron must be positively oriented",
                   kMeshSection);
+    sum += v;
   }
 
   // dihedral-angle
@@ -142,8 +193,12 @@ std::optional<Violation3> check_mesh(const Graph3& g, std::span<const Tet3> tets
 
   // mesh-volume
   {
-    mpz_class sum = 0;
-    for (const mpz_class& v : volume6) sum += v;
+    if (small_sum != 0) {
+      const auto u = static_cast<UInt128>(small_sum);
+      mpz_class high = static_cast<unsigned long>(static_cast<std::uint64_t>(u >> 64));
+      high <<= 64;
+      sum += high + static_cast<unsigned long>(static_cast<std::uint64_t>(u));
+    }
     mpz_class want = 6;
     for (const std::int64_t e : box.extent) want *= big(e);
     if (sum != want)
@@ -163,7 +218,7 @@ std::optional<Violation3> check_mesh(const Graph3& g, std::span<const Tet3> tets
       for (std::size_t j = 0; j < 4; ++j)
         if (j != skip) tri[k++] = tets[i][j];
       std::sort(tri.begin(), tri.end());
-      faces[tri].push_back({i, sgn(orient(tri[0], tri[1], tri[2], tets[i][skip]))});
+      faces[tri].push_back({i, orient_sign(tri[0], tri[1], tri[2], tets[i][skip])});
     }
   auto tri_text = [](const Triangle& t) { return "the triangle " + pos(t[0]) + ", " + pos(t[1]) + ", " + pos(t[2]); };
 
