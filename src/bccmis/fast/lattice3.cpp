@@ -27,13 +27,18 @@ using d3::Point3;
 using Index = Lattice3::Index;
 constexpr Index kNone = Lattice3::kNone;
 
+// The position's hash: the three coordinates combined, then the splitmix64
+// finalizer, so that the low bits (the home slot) depend on every bit of
+// every coordinate (lattice coordinates are multiples of powers of two).
 std::uint64_t mix(const Point3& p) {
   std::uint64_t h = static_cast<std::uint64_t>(p.x) * 0x9E3779B97F4A7C15ull;
-  h ^= static_cast<std::uint64_t>(p.y) * 0xC2B2AE3D27D4EB4Full;
-  h ^= static_cast<std::uint64_t>(p.z) * 0x165667B19E3779F9ull;
-  h ^= h >> 29;
+  h += std::rotl(static_cast<std::uint64_t>(p.y) * 0xC2B2AE3D27D4EB4Full, 21);
+  h += std::rotl(static_cast<std::uint64_t>(p.z) * 0x165667B19E3779F9ull, 42);
+  h ^= h >> 30;
   h *= 0xBF58476D1CE4E5B9ull;
-  h ^= h >> 32;
+  h ^= h >> 27;
+  h *= 0x94D049BB133111EBull;
+  h ^= h >> 31;
   return h;
 }
 
@@ -421,20 +426,18 @@ std::optional<RefineRefusal> Lattice3::refine_refusal(const Point3& c, Index& ci
   if (rc.level >= size_.L) return RefineRefusal::MaxLevel;
   // R1d: X = (union over b_i != b_j in B of N(b_i) ∩ N(b_j)) \ {c}, that is
   // the cells other than c that have at least two of c's nodes. Every x in X
-  // must be at least as fine as c.
-  std::array<Index, 26 * 8> seen{};
+  // must be at least as fine as c, so only the coarser cells around c are
+  // counted: c is refused when one of them has two of c's nodes.
+  std::array<Index, 26 * 8> coarser{};
   std::size_t n = 0;
   for (std::uint32_t i = 0; i < rc.count; ++i) {
     const Node& b = nodes_[rc.nbr[i]];
     for (std::uint32_t k = 0; k < b.count; ++k) {
       const Index x = b.nbr[k];
-      if (x == ci) continue;
-      if (std::find(seen.begin(), seen.begin() + static_cast<std::ptrdiff_t>(n), x) !=
-          seen.begin() + static_cast<std::ptrdiff_t>(n)) {
-        if (centers_[x].level < rc.level) return RefineRefusal::CoarserNeighbor;  // x in X
-      } else {
-        seen[n++] = x;
-      }
+      if (x == ci || centers_[x].level >= rc.level) continue;
+      const auto end = coarser.begin() + static_cast<std::ptrdiff_t>(n);
+      if (std::find(coarser.begin(), end, x) != end) return RefineRefusal::CoarserNeighbor;  // x in X
+      coarser[n++] = x;
     }
   }
   return std::nullopt;
