@@ -25,7 +25,6 @@ namespace {
 
 using d3::Point3;
 using Index = Lattice3::Index;
-constexpr Index kNone = Lattice3::kNone;
 
 // The position's hash: the three coordinates combined, then the splitmix64
 // finalizer, so that the low bits (the home slot) depend on every bit of
