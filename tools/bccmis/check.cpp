@@ -6,6 +6,7 @@
 
 #include "bccmis/d3/mesh.h"
 #include "bccmis/fast/lattice.h"
+#include "bccmis/fast/lattice3.h"
 #include "bccmis/invariants/d3/invariants3.h"
 #include "commands.h"
 #include "io.h"
@@ -65,6 +66,10 @@ std::optional<std::string> check_message(const d3::Graph3& g, int depth) {
   return std::nullopt;
 }
 
+std::optional<std::string> check_message(const fast::Lattice3& g, int depth) {
+  return check_message(g.to_graph(), depth);
+}
+
 namespace {
 
 template <class G>
@@ -78,6 +83,11 @@ std::string levels_summary(const G& g) {
 
 std::string summary(const Graph& g) { return levels_summary(g); }
 std::string summary(const d3::Graph3& g) { return levels_summary(g); }
+std::string summary(const fast::Lattice3& g) {
+  std::map<int, std::size_t> per_level;
+  for (const d3::Point3& c : g.cells()) ++per_level[g.level_of(c)];
+  return summary(per_level, g.node_count());
+}
 std::string summary(const fast::Lattice& g) {
   std::map<int, std::size_t> per_level;
   g.for_each_cell([&](const Point&, int level) { ++per_level[level]; });

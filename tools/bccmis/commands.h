@@ -20,7 +20,8 @@
 
 namespace bccmis::fast {
 class Lattice;
-}
+class Lattice3;
+}  // namespace bccmis::fast
 namespace bccmis::d3 {
 struct Graph3;
 struct TetMesh;
@@ -54,11 +55,14 @@ std::optional<Violation> check_graph(const Graph& g, int depth);
 std::optional<std::string> check_message(const Graph& g, int depth);
 std::optional<std::string> check_message(const fast::Lattice& g, int depth);
 std::optional<std::string> check_message(const d3::Graph3& g, int depth);
+/// The 3D checker on the fast 3D lattice, converted to a Graph3.
+std::optional<std::string> check_message(const fast::Lattice3& g, int depth);
 /// "9 cells (level 0: 1, level 1: 8), 17 nodes", from the cells per level.
 std::string summary(const std::map<int, std::size_t>& cells_per_level, std::size_t nodes);
 std::string summary(const Graph& g);
 std::string summary(const fast::Lattice& g);
 std::string summary(const d3::Graph3& g);
+std::string summary(const fast::Lattice3& g);
 
 /// A mesh output path: '.vtu', '.msh' or '.mesh'; throws InputError otherwise.
 void check_mesh_path(const std::string& path);

@@ -1,9 +1,10 @@
 // bccmis replay TRACE: replays a trace on the implementation of --impl, with
 // the checker when --check asks; prints (or writes) the decision log and the
 // canonical state. A 3D trace (`lattice W H D L`) runs on the 3D reference
-// with the 3D checker. The fast implementation is converted to a Graph only
-// for the checker: with --check=none its log and state are written from the
-// lattice itself.
+// (d3::Graph3) or the fast 3D lattice (fast::Lattice3), with the 3D checker.
+// The fast implementations are converted to a Graph (Graph3) only for the
+// checker and the mesh: with --check=none their log and state are written
+// from the lattice itself.
 #include <iostream>
 #include <map>
 #include <string>
@@ -11,6 +12,7 @@
 #include "bccmis/d3/lattice.h"
 #include "bccmis/d3/mesh.h"
 #include "bccmis/fast/lattice.h"
+#include "bccmis/fast/lattice3.h"
 #include "bccmis/trace.h"
 #include "commands.h"
 #include "io.h"
@@ -84,6 +86,12 @@ int replay_with(const ReplayOptions& o, const trace_t<L>& trace) {
       const d3::TetMesh mesh = d3::index_mesh(g, d3::tetrahedra(g));
       for (const std::string& path : o.mesh_files) add_mesh_output(outputs, path, mesh);
     }
+  } else if constexpr (std::is_same_v<L, fast::Lattice3>) {
+    if (!o.mesh_files.empty()) {
+      const d3::Graph3 graph = g.to_graph();
+      const d3::TetMesh mesh = d3::index_mesh(graph, d3::tetrahedra(graph));
+      for (const std::string& path : o.mesh_files) add_mesh_output(outputs, path, mesh);
+    }
   }
   outputs.add(o.log_file, log);
   outputs.add(o.state_file, state);
@@ -117,10 +125,15 @@ int run(const ReplayOptions& o) {
   limits.max_vertices = o.max_vertices;
   const AnyTrace any = read_any_trace(o.trace, limits);
   if (const auto* trace3 = std::get_if<Trace3>(&any)) {
-    if (o.impl != "reference")
-      throw InputError(display_name(o.trace) + ": --impl " + o.impl +
-                       ": the fast lattice is 2D; a 3D trace runs on the reference (--impl reference)");
-    return replay_with<d3::Graph3>(o, *trace3);
+    // implementation() names the 2D lattice of --impl; the 3D one is its counterpart.
+    return std::visit(
+        [&]<class L>(std::type_identity<L>) {
+          if constexpr (std::is_same_v<L, Graph>)
+            return replay_with<d3::Graph3>(o, *trace3);
+          else
+            return replay_with<fast::Lattice3>(o, *trace3);
+        },
+        implementation(o.impl));
   }
   if (!o.mesh_files.empty())
     throw InputError(display_name(o.trace) + ": --mesh writes the tetrahedra of 3D lattices; this trace is 2D");

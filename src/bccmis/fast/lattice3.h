@@ -1,0 +1,253 @@
+// bccmis::fast: the 3D lattice of spec/lattice3d.md on flat records.
+//
+// The reference (src/bccmis/d3) writes refine and coarsen as the set
+// equations of spec/equations3d.toml on std::set and is the oracle. This is
+// the same graph, the same operations and the same decisions, stored for
+// speed:
+//
+//   - a center is one record: its position, its level and up to 26 node ids
+//     (8 corners, 12 edge midpoints, 6 face centers); a node is one record:
+//     its position and up to 8 center ids (spec/lattice3d.md §3, F2: at most
+//     8 cells meet at a node). Neighbor ids are kept unsorted; they are
+//     sorted by position only where a sorted set is asked for (nbr(), the
+//     canonical state).
+//   - centers and nodes live in two flat pools with free lists; a vertex that
+//     changes kind (c in refine, n in coarsen) moves to the other pool. Its
+//     old neighbors never refer to it afterwards (R2c-R2e, K2a-K2c), so no
+//     id has to be rewritten.
+//   - a position -> record table (open addressing, linear probing, deletion
+//     by backward shift) over every vertex serves the trace interface.
+//   - refine and coarsen first make room (pools and table) for every vertex
+//     they can create and compute every set they need; then they only write.
+//     In steady state (free slots for the vertices an operation creates) they
+//     allocate nothing, and a throwing allocation leaves the lattice as it was.
+//
+// The preconditions and refusal codes are those of the reference (bccmis/ops.h),
+// Y and J+ / J- are returned sorted by position, and the canonical state is
+// byte-identical to d3::canonical_state: tests/fast3_differential_test.cpp and
+// fuzz/fuzz_differential_3d.cpp run both on the same operations.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bccmis/d3/graph.h"
+#include "bccmis/d3/ops.h"  // d3::RefineResult, d3::CoarsenResult (to_sets)
+#include "bccmis/d3/point.h"
+#include "bccmis/fast/lattice.h"  // kMaxReserveHint
+#include "bccmis/lattice.h"
+#include "bccmis/ops.h"
+
+namespace bccmis::fast {
+
+/// Up to N 3D points, sorted by (x, y, z) like the reference's std::set; no heap.
+template <std::size_t N>
+class SmallPoints3 {
+ public:
+  const d3::Point3* begin() const { return items_.data(); }
+  const d3::Point3* end() const { return items_.data() + size_; }
+  std::size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  const d3::Point3& operator[](std::size_t i) const { return items_[i]; }
+  bool contains(const d3::Point3& p) const {
+    for (std::size_t i = 0; i < size_; ++i)
+      if (items_[i] == p) return true;
+    return false;
+  }
+  /// Appends p; the caller keeps the order (or calls sort()).
+  void push_back(const d3::Point3& p) { items_[size_++] = p; }
+  /// Sorts by (x, y, z) (insertion sort: at most N elements).
+  void sort() {
+    for (std::size_t i = 1; i < size_; ++i)
+      for (std::size_t j = i; j > 0 && items_[j] < items_[j - 1]; --j) std::swap(items_[j], items_[j - 1]);
+  }
+  /// The same points as a std::set (allocates; for comparisons and adapters).
+  d3::PointSet3 to_set() const { return d3::PointSet3(begin(), end()); }
+
+ private:
+  std::array<d3::Point3, N> items_{};
+  std::size_t size_ = 0;
+};
+
+/// What Lattice3::refine and Lattice3::coarsen did: the reference's result
+/// types on fixed-size sets (Y: 8 points, J+ / J-: at most 18), sorted.
+using RefineResult3 = BasicRefineResult<SmallPoints3<18>>;
+using CoarsenResult3 = BasicCoarsenResult<SmallPoints3<18>>;
+
+/// The same results with std::set members (allocates; for comparisons).
+inline d3::RefineResult to_sets(const RefineResult3& r) { return {r.refused, r.Y.to_set(), r.J_plus.to_set()}; }
+inline d3::CoarsenResult to_sets(const CoarsenResult3& r) { return {r.refused, r.Y.to_set(), r.J_minus.to_set()}; }
+
+/// The adaptive 3D lattice on flat records. Copyable and movable.
+class Lattice3 {
+ public:
+  using point_type = d3::Point3;
+  using size_type = d3::LatticeSize3;
+  static constexpr int dimension = 3;
+
+  /// The initial lattice of d3::make_lattice(size): W x H x D level-0 cubes.
+  /// Throws LatticeError on an invalid size, std::length_error when the
+  /// lattice would need 2^31 or more vertices of one kind.
+  explicit Lattice3(const d3::LatticeSize3& size);
+
+  const d3::LatticeSize3& size() const { return size_; }
+
+  // ---- The operations (same preconditions and codes as d3::refine/coarsen)
+
+  std::optional<RefineRefusal> can_refine(const d3::Point3& c) const;
+  std::optional<CoarsenRefusal> can_coarsen(const d3::Point3& n) const;
+  /// spec/lattice3d.md §4: split cell c into its 8 children. A refused call
+  /// changes nothing.
+  RefineResult3 refine(const d3::Point3& c);
+  /// spec/lattice3d.md §5: merge the 8 cells around node n. A refused call
+  /// changes nothing.
+  CoarsenResult3 coarsen(const d3::Point3& n);
+
+  // ---- Queries (the reference's Graph3 accessors, by position) -------------
+
+  std::size_t cell_count() const { return cell_count_; }  ///< |C|
+  std::size_t node_count() const { return node_count_; }  ///< |N|
+  bool is_center(const d3::Point3& v) const;
+  bool is_node(const d3::Point3& v) const;
+  /// Level of center c; throws std::out_of_range if c is not a center.
+  int level_of(const d3::Point3& c) const;
+  /// N(v), sorted; empty for a position that is not a vertex.
+  SmallPoints3<26> nbr(const d3::Point3& v) const;
+  /// C and N, sorted by (x, y, z) (allocates).
+  std::vector<d3::Point3> cells() const;
+  std::vector<d3::Point3> nodes() const;
+
+  /// The same state as a reference Graph3 (allocates; O(size log size)).
+  d3::Graph3 to_graph() const;
+
+  // ---- Memory -----------------------------------------------------------------
+
+  /// Room for `cells` cells and about as many nodes without reallocating.
+  void reserve(std::size_t cells);
+  /// Bytes held by the pools and the position table (capacity, not size).
+  std::size_t memory_bytes() const;
+
+  /// Internal consistency: every link is mirrored, every live record is in
+  /// the position table under its position, the counts add up. Empty when
+  /// consistent, otherwise the first problem. For tests; O(size).
+  std::optional<std::string> audit() const;
+
+  /// The canonical text of spec/formats.md ("3D extension"), written from
+  /// the pools.
+  void write_canonical_state(std::ostream& out) const;
+
+  using Index = std::uint32_t;
+  static constexpr Index kNone = 0xFFFFFFFFu;
+
+ private:
+  static constexpr Index kNodeBit = 0x80000000u;  ///< a table entry naming a node
+  static constexpr std::uint32_t kFree = 0xFFFFFFFFu;
+
+  /// A cell center: position, level and its node ids. A free record has
+  /// level -1 and nbr[0] linking the free list.
+  struct Center {
+    d3::Point3 p;
+    std::int32_t level = -1;
+    std::uint32_t count = 0;
+    Index nbr[26];
+    bool live() const { return level >= 0; }
+  };
+  /// A node: position and its center ids. A free record has count == kFree
+  /// and nbr[0] linking the free list.
+  struct Node {
+    d3::Point3 p;
+    std::uint32_t count = 0;
+    Index nbr[8];
+    bool live() const { return count != kFree; }
+  };
+
+  // Position table: a slot holds kNone or a reference (a center index, or
+  // kNodeBit | a node index); the key is read from the record.
+  const d3::Point3& key_of(Index ref) const { return (ref & kNodeBit) ? nodes_[ref & ~kNodeBit].p : centers_[ref].p; }
+  std::size_t home(const d3::Point3& p) const;
+  /// The slot holding p, or the empty slot where p would go.
+  std::size_t slot_of(const d3::Point3& p) const;
+  /// The reference at p, or kNone.
+  Index find(const d3::Point3& p) const { return table_[slot_of(p)]; }
+  Index find_center(const d3::Point3& p) const {
+    const Index r = find(p);
+    return r != kNone && !(r & kNodeBit) ? r : kNone;
+  }
+  Index find_node(const d3::Point3& p) const {
+    const Index r = find(p);
+    return r != kNone && (r & kNodeBit) ? r & ~kNodeBit : kNone;
+  }
+  void table_insert(Index ref);  ///< its key must be absent, with room
+  void table_erase(const d3::Point3& p);
+  void table_replace(const d3::Point3& p, Index ref);
+  void rehash(std::size_t slots);
+
+  /// Makes room for the vertices an operation may create, so that the update
+  /// that follows cannot allocate. Table load factor at most 0.7.
+  void ensure_room(std::size_t new_centers, std::size_t new_nodes);
+  Index alloc_center(const d3::Point3& p, int level);
+  Index alloc_node(const d3::Point3& p);
+  void free_center(Index c);
+  void free_node(Index n);
+
+  // Neighbor-list edits (unsorted lists; a removal moves the last id in).
+  static void add_id(Index* ids, std::uint32_t& count, std::uint32_t capacity, Index id);
+  static void remove_id(Index* ids, std::uint32_t& count, Index id);
+  void link(Index center, Index node);  ///< N(center) ∪= {node}, N(node) ∪= {center}
+
+  /// The level of the refined cell centered at p, from its position alone
+  /// (choice Q4 of spec/choices3d.toml), as d3::refined_center_level.
+  std::optional<int> refined_center_level(const d3::Point3& p) const;
+  std::optional<RefineRefusal> refine_refusal(const d3::Point3& c, Index& ci) const;
+  std::optional<CoarsenRefusal> coarsen_refusal(const d3::Point3& n, Index& ni, int& l) const;
+
+  std::vector<Index> sorted_centers() const;
+  std::vector<Index> sorted_nodes() const;
+
+  d3::LatticeSize3 size_;
+  std::vector<Center> centers_;
+  std::vector<Node> nodes_;
+  Index free_centers_ = kNone;
+  Index free_nodes_ = kNone;
+  std::size_t free_center_count_ = 0;
+  std::size_t free_node_count_ = 0;
+  std::size_t cell_count_ = 0;
+  std::size_t node_count_ = 0;
+  std::vector<Index> table_;  ///< size a power of two
+  std::size_t table_used_ = 0;
+};
+
+// ---- The lattice vocabulary (bccmis/lattice.h): Lattice3 models AdaptiveLattice
+
+inline const d3::LatticeSize3& size_of(const Lattice3& g) { return g.size(); }
+inline std::optional<RefineRefusal> can_refine(const Lattice3& g, const d3::Point3& c) { return g.can_refine(c); }
+inline std::optional<CoarsenRefusal> can_coarsen(const Lattice3& g, const d3::Point3& n) { return g.can_coarsen(n); }
+inline RefineResult3 refine(Lattice3& g, const d3::Point3& c) { return g.refine(c); }
+inline CoarsenResult3 coarsen(Lattice3& g, const d3::Point3& n) { return g.coarsen(n); }
+inline bool is_center(const Lattice3& g, const d3::Point3& v) { return g.is_center(v); }
+inline bool is_node(const Lattice3& g, const d3::Point3& v) { return g.is_node(v); }
+inline int level_of(const Lattice3& g, const d3::Point3& c) { return g.level_of(c); }
+inline SmallPoints3<26> neighbors(const Lattice3& g, const d3::Point3& v) { return g.nbr(v); }
+inline std::vector<d3::Point3> cells(const Lattice3& g) { return g.cells(); }
+inline std::vector<d3::Point3> nodes(const Lattice3& g) { return g.nodes(); }
+inline std::size_t cell_count(const Lattice3& g) { return g.cell_count(); }
+inline std::size_t node_count(const Lattice3& g) { return g.node_count(); }
+/// Optional in the vocabulary (replay calls it): room for `cells` cells, a
+/// hint, capped at kMaxReserveHint. A reservation the allocator refuses is
+/// dropped; beyond the hint the lattice grows as it goes.
+void reserve(Lattice3& g, std::size_t cells);
+/// The canonical text of spec/formats.md, byte-identical to
+/// d3::canonical_state(g.to_graph()), printed from the pools directly.
+inline void write_canonical_state(std::ostream& out, const Lattice3& g) { g.write_canonical_state(out); }
+std::string canonical_state(const Lattice3& g);
+
+}  // namespace bccmis::fast
+
+static_assert(bccmis::AdaptiveLattice<bccmis::fast::Lattice3>);
+static_assert(bccmis::fast::Lattice3::dimension == 3);
