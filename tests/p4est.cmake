@@ -21,13 +21,16 @@ endforeach()
 # singleton, no mpirun) otherwise, which still gathers, imports and checks.
 find_program(BCCMIS_MPIRUN NAMES mpirun mpiexec HINTS ${MPIEXEC_EXECUTABLE})
 if(BCCMIS_MPIRUN)
-  set(_bccmis_p4est_dist p4est.distributed_2_ranks)
-  add_test(NAME ${_bccmis_p4est_dist}
+  set(_bccmis_p4est_dist p4est.distributed_2_ranks p4est.distributed3_2_ranks)
+  add_test(NAME p4est.distributed_2_ranks
            COMMAND ${BCCMIS_MPIRUN} -np 2 --allow-run-as-root --oversubscribe $<TARGET_FILE:bccmis_p4est_distributed> --expect-ranks 2)
+  add_test(NAME p4est.distributed3_2_ranks
+           COMMAND ${BCCMIS_MPIRUN} -np 2 --allow-run-as-root --oversubscribe $<TARGET_FILE:bccmis_p8est_distributed> --expect-ranks 2)
 else()
-  message(STATUS "bccmis: mpirun not found, the p4est distributed run uses one rank")
-  set(_bccmis_p4est_dist p4est.distributed_1_rank)
-  add_test(NAME ${_bccmis_p4est_dist} COMMAND bccmis_p4est_distributed)
+  message(STATUS "bccmis: mpirun not found, the p4est distributed runs use one rank")
+  set(_bccmis_p4est_dist p4est.distributed_1_rank p4est.distributed3_1_rank)
+  add_test(NAME p4est.distributed_1_rank COMMAND bccmis_p4est_distributed)
+  add_test(NAME p4est.distributed3_1_rank COMMAND bccmis_p8est_distributed)
 endif()
 set_tests_properties(${_bccmis_p4est_dist} PROPERTIES LABELS p4est TIMEOUT 120
                      ENVIRONMENT "${_bccmis_p4est_env}" FAIL_REGULAR_EXPRESSION "FAIL")
