@@ -99,18 +99,40 @@ std::string corner_problem(const Graph3& g) {
   return {};
 }
 
+// A finest-level target in one of the 8 cubes around a random interior node
+// of the level-(L-2) grid: the level-(L-1) cube holding it has that node as
+// a corner of its parent, so the level-(L-1) cube diagonally
+// across meets the target's cube at a corner point only. Any finest-level
+// target when the lattice has no such node.
+Target corner_target(const LatticeSize3& size, std::mt19937_64& rng) {
+  const std::int64_t grid = cell_side(size, std::max(size.L - 2, 0));
+  auto axis = [&](std::int64_t n) {
+    const std::int64_t cells = n * level0_side(size) / grid;
+    if (cells < 2) return 2 * std::uniform_int_distribution<std::int64_t>(0, n * level0_side(size) / 2 - 1)(rng) + 1;
+    const std::int64_t node = grid * std::uniform_int_distribution<std::int64_t>(1, cells - 1)(rng);
+    return node + (std::uniform_int_distribution<int>(0, 1)(rng) ? 1 : -1);
+  };
+  return {{axis(size.W), axis(size.H), axis(size.D)}, size.L};
+}
+
 void random_orders(Balance mode, int trials) {
   std::mt19937_64 rng(kSeed + (mode == Balance::Edge ? 0 : 1));
   std::size_t extra = 0;
+  int modes_differ = 0;
   for (int trial = 0; trial < trials; ++trial) {
     const int L = std::uniform_int_distribution<int>(1, 3)(rng);
     auto side = [&] { return std::uniform_int_distribution<std::int64_t>(1, L == 3 ? 1 : 2)(rng); };
     const LatticeSize3 size{side(), side(), side(), L};
     std::vector<Target> targets =
-        cascade_model::random_targets(size, rng, std::uniform_int_distribution<int>(1, 4)(rng));
+        cascade_model::random_targets(size, rng, std::uniform_int_distribution<int>(1, 5)(rng));
+    // Half the targets are finest-level cubes at a corner of a level-1 cube,
+    // where cells two levels apart meet at a corner point only.
+    for (std::size_t k = 0; k < targets.size(); k += 2) targets[k] = corner_target(size, rng);
     SCOPED_TRACE("seed " + std::to_string(kSeed) + " trial " + std::to_string(trial) + ", balance " +
                  std::string(name(mode)) + ": " + cascade_model::describe(size, targets));
     const std::map<Point3, int> expected = cascade_model::closure_leaves(size, targets, mode);
+    modes_differ += cascade_model::closure_leaves(size, targets, Balance::Edge) !=
+                    cascade_model::closure_leaves(size, targets, Balance::Corner);
     std::string first;
     for (int order = 0; order < 4; ++order) {
       SCOPED_TRACE("order " + std::to_string(order) + ": " + cascade_model::describe(size, targets));
@@ -130,6 +152,9 @@ void random_orders(Balance mode, int trials) {
     }
   }
   EXPECT_GT(extra, static_cast<std::size_t>(trials)) << "the cascades refined too little to test much";
+  // In 3D a corner-only contact two levels apart needs an interior node in
+  // all three axes; about one target set in ten gets one.
+  EXPECT_GE(modes_differ, 3) << "seed " << kSeed << ": too few target sets where the modes differ";
 }
 
 TEST(Cascade3, EdgeModeReachesTheEdgeClosureInEveryOrder) { random_orders(Balance::Edge, 40); }
