@@ -8,11 +8,11 @@ endif()
 
 # One variable only: gtest_discover_tests flattens list-valued properties.
 set(_bccmis_p4est_env "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1")
-foreach(name bridge_test differential_test)
+foreach(name bridge_test differential_test bridge3_test differential3_test)
   add_executable(p4est_${name} ${CMAKE_CURRENT_LIST_DIR}/p4est/${name}.cpp)
   target_include_directories(p4est_${name} PRIVATE ${CMAKE_CURRENT_LIST_DIR})
-  target_link_libraries(p4est_${name} PRIVATE bccmis::p4est bccmis::apps bccmis::invariants bccmis::core
-                        GTest::gtest bccmis::warnings)
+  target_link_libraries(p4est_${name} PRIVATE bccmis::p4est bccmis::apps bccmis::invariants bccmis::invariants3
+                        bccmis::core GTest::gtest bccmis::warnings)
   gtest_discover_tests(p4est_${name} DISCOVERY_MODE PRE_TEST TEST_PREFIX p4est.
     PROPERTIES LABELS p4est ENVIRONMENT "${_bccmis_p4est_env}")
 endforeach()
@@ -21,13 +21,16 @@ endforeach()
 # singleton, no mpirun) otherwise, which still gathers, imports and checks.
 find_program(BCCMIS_MPIRUN NAMES mpirun mpiexec HINTS ${MPIEXEC_EXECUTABLE})
 if(BCCMIS_MPIRUN)
-  set(_bccmis_p4est_dist p4est.distributed_2_ranks)
-  add_test(NAME ${_bccmis_p4est_dist}
+  set(_bccmis_p4est_dist p4est.distributed_2_ranks p4est.distributed3_2_ranks)
+  add_test(NAME p4est.distributed_2_ranks
            COMMAND ${BCCMIS_MPIRUN} -np 2 --allow-run-as-root --oversubscribe $<TARGET_FILE:bccmis_p4est_distributed> --expect-ranks 2)
+  add_test(NAME p4est.distributed3_2_ranks
+           COMMAND ${BCCMIS_MPIRUN} -np 2 --allow-run-as-root --oversubscribe $<TARGET_FILE:bccmis_p8est_distributed> --expect-ranks 2)
 else()
-  message(STATUS "bccmis: mpirun not found, the p4est distributed run uses one rank")
-  set(_bccmis_p4est_dist p4est.distributed_1_rank)
-  add_test(NAME ${_bccmis_p4est_dist} COMMAND bccmis_p4est_distributed)
+  message(STATUS "bccmis: mpirun not found, the p4est distributed runs use one rank")
+  set(_bccmis_p4est_dist p4est.distributed_1_rank p4est.distributed3_1_rank)
+  add_test(NAME p4est.distributed_1_rank COMMAND bccmis_p4est_distributed)
+  add_test(NAME p4est.distributed3_1_rank COMMAND bccmis_p8est_distributed)
 endif()
 set_tests_properties(${_bccmis_p4est_dist} PROPERTIES LABELS p4est TIMEOUT 120
                      ENVIRONMENT "${_bccmis_p4est_env}" FAIL_REGULAR_EXPRESSION "FAIL")

@@ -105,3 +105,13 @@ add_executable(d3_render_tests d3/render_test.cpp)
 target_link_libraries(d3_render_tests PRIVATE bccmis::oracle bccmis::d3 GTest::gtest_main bccmis::warnings)
 target_compile_definitions(d3_render_tests PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
 gtest_discover_tests(d3_render_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
+
+# The 3D cascade (spec/lattice3d.md §8, apps/balance3.h): hand cases, and
+# random target sets in random orders against the geometric closure of
+# tests/d3/cascade_model.h, in edge and corner mode, every state checked.
+add_executable(d3_balance_tests d3/balance_test.cpp)
+target_include_directories(d3_balance_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests)
+target_link_libraries(d3_balance_tests PRIVATE bccmis::apps bccmis::invariants3 bccmis::d3 GTest::gtest_main
+  bccmis::warnings)
+target_compile_definitions(d3_balance_tests PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
+gtest_discover_tests(d3_balance_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS property)

@@ -51,12 +51,7 @@ std::size_t coarsen_where(Graph& g, const CoarsenPredicate& allow, Balance b) {
 PointSet boundary_after_coarsen(const Graph& g, const Point& n) { return detail::boundary_after_coarsen(g, n); }
 
 std::optional<std::pair<Point, Point>> find_corner_imbalance(const Graph& g) {
-  for (const Point& c : g.C) {
-    const int l = g.level_of(c);
-    for (const Point& x : touching_neighbors(g, c))
-      if (g.level_of(x) > l + 1) return std::make_pair(c, x);
-  }
-  return std::nullopt;
+  return detail::find_corner_imbalance(g);
 }
 
 }  // namespace bccmis

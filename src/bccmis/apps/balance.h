@@ -56,16 +56,19 @@ std::optional<RefineRefusal> can_refine_under(const Graph& g, const Point& c, Ba
 /// touching the merged cell at a corner point is finer than n's children.
 std::optional<CoarsenRefusal> can_coarsen_under(const Graph& g, const Point& n, Balance b);
 
-/// What refine_balanced(g, c) did.
-struct BalancedRefineResult {
+/// What refine_balanced(g, c) did, on a lattice with point type P.
+template <class P>
+struct BasicBalancedRefineResult {
   /// Empty when c was refined. Only `NoSuchCell` or `MaxLevel`: a coarser
   /// neighbor never stops the cascade.
   std::optional<RefineRefusal> refused;
   /// The centers refined, in order: the cascade first (coarsest first along
   /// each chain), c last. Empty when refused.
-  std::vector<Point> refined;
+  std::vector<P> refined;
   bool applied() const { return !refused; }
 };
+/// What refine_balanced(g, c) did on a 2D lattice.
+using BalancedRefineResult = BasicBalancedRefineResult<Point>;
 
 /// Refines cell c even when a neighbor (an edge-neighbor; in corner mode
 /// any touching cell) is coarser, by first refining that neighbor

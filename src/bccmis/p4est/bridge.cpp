@@ -9,6 +9,7 @@
 
 #include "bccmis/invariants/invariants.h"
 #include "bccmis/ops.h"
+#include "bccmis/p4est/detail/gather.h"
 
 namespace bccmis::p4est_bridge {
 
@@ -215,26 +216,8 @@ std::vector<Quadrant> local_quadrants(const p4est_t* forest) {
 }
 
 std::vector<Quadrant> gather_quadrants(const p4est_t* forest, int root) {
-  const std::vector<Quadrant> mine = local_quadrants(forest);
-  MPI_Comm comm = forest->mpicomm;
-  int rank = 0, ranks = 1;
-  MPI_Comm_rank(comm, &rank);
-  MPI_Comm_size(comm, &ranks);
-  const int ints = static_cast<int>(mine.size() * 4);
-  std::vector<int> counts(static_cast<std::size_t>(ranks)), offsets(static_cast<std::size_t>(ranks));
-  MPI_Gather(&ints, 1, MPI_INT, counts.data(), 1, MPI_INT, root, comm);
-  std::vector<Quadrant> all;
-  if (rank == root) {
-    int total = 0;
-    for (int r = 0; r < ranks; ++r) {
-      offsets[static_cast<std::size_t>(r)] = total;
-      total += counts[static_cast<std::size_t>(r)];
-    }
-    all.resize(static_cast<std::size_t>(total / 4));
-  }
   static_assert(sizeof(Quadrant) == 4 * sizeof(std::int32_t));
-  MPI_Gatherv(mine.data(), ints, MPI_INT32_T, all.data(), counts.data(), offsets.data(), MPI_INT32_T, root, comm);
-  return all;
+  return detail::gather(local_quadrants(forest), forest->mpicomm, root);
 }
 
 // ---- Import ----------------------------------------------------------------------------------

@@ -1,7 +1,8 @@
-// bccmis apps, internal: the balance cascade, the coarsening sweep, the
+// bccmis apps, internal: the balance modes, the coarsening sweep, the
 // moving-feature adaptation and the height-field tessellation written once
 // over the lattice type, so that the reference Graph and bccmis::fast::Lattice
-// run the same application code.
+// run the same application code; the balance cascade itself, written over
+// every dimension, is apps/detail/cascade.h.
 //
 // balance.cpp, animate.cpp and heightfield.cpp instantiate the templates for
 // Graph and for fast::Lattice (the overloads in balance.h, animate.h and
@@ -25,6 +26,7 @@
 
 #include "bccmis/apps/animate.h"
 #include "bccmis/apps/balance.h"
+#include "bccmis/apps/detail/cascade.h"
 #include "bccmis/apps/heightfield.h"
 #include "bccmis/fast/lattice.h"
 #include "bccmis/geometry.h"
@@ -35,37 +37,6 @@
 namespace bccmis::detail {
 
 // ---- balance (balance.h) ------------------------------------------------------------
-
-/// Calls f(x) for every neighbor x of center c under mode b (x may repeat):
-/// edge, the cells across a side piece of c (eq. 3's X); corner, every cell
-/// touching c (bccmis/geometry.h).
-template <AdaptiveLattice Lat, class F>
-void for_each_neighbor(const Lat& g, const Point& c, Balance b, const F& f) {
-  if (b == Balance::Corner)
-    for_each_touching_neighbor(g, c, f);
-  else
-    for_each_edge_neighbor(g, c, f);
-}
-
-/// The smallest (by (x, y)) neighbor of c under mode b that is coarser than
-/// c, i.e. the first coarser element of edge_neighbors / touching_neighbors.
-template <AdaptiveLattice Lat>
-std::optional<Point> coarser_neighbor(const Lat& g, const Point& c, Balance b) {
-  const int l = level_of(g, c);
-  std::optional<Point> best;
-  for_each_neighbor(g, c, b, [&](const Point& x) {
-    if (level_of(g, x) < l && (!best || x < *best)) best = x;
-  });
-  return best;
-}
-
-template <AdaptiveLattice Lat>
-std::optional<RefineRefusal> can_refine_under(const Lat& g, const Point& c, Balance b) {
-  const std::optional<RefineRefusal> why = can_refine(g, c);
-  if (why || b == Balance::Edge) return why;
-  if (coarser_neighbor(g, c, Balance::Corner)) return RefineRefusal::CoarserNeighbor;
-  return std::nullopt;
-}
 
 template <AdaptiveLattice Lat>
 std::optional<CoarsenRefusal> can_coarsen_under(const Lat& g, const Point& n, Balance b) {
@@ -83,33 +54,6 @@ std::optional<CoarsenRefusal> can_coarsen_under(const Lat& g, const Point& n, Ba
     }
   }
   return std::nullopt;
-}
-
-// Precondition: c is a center below the maximum level. Every coarser
-// neighbor x has level(x) < level(c), so the recursion depth is at most L.
-template <AdaptiveLattice Lat>
-void cascade(Lat& g, const Point& c, Balance b, std::vector<Point>& refined) {
-  while (can_refine_under(g, c, b) == RefineRefusal::CoarserNeighbor) {
-    const std::optional<Point> x = coarser_neighbor(g, c, b);
-    if (!x) break;  // the refine below reports the inconsistency
-    cascade(g, *x, b, refined);
-  }
-  if (!refine(g, c).applied())
-    throw std::logic_error("refine_balanced: refine(" + std::to_string(c.x) + ", " + std::to_string(c.y) +
-                           ") refused with " + std::string(code(*can_refine(g, c))) + " after its cascade");
-  refined.push_back(c);
-}
-
-template <AdaptiveLattice Lat>
-BalancedRefineResult refine_balanced(Lat& g, const Point& c, Balance b) {
-  BalancedRefineResult result;
-  if (const std::optional<RefineRefusal> why = can_refine(g, c);
-      why == RefineRefusal::NoSuchCell || why == RefineRefusal::MaxLevel) {
-    result.refused = why;
-    return result;
-  }
-  cascade(g, c, b, result.refined);
-  return result;
 }
 
 /// coarsen_sweep of balance.h; `allow(g, n)` decides each candidate.
