@@ -20,3 +20,11 @@ gcovr -r . build/coverage --filter 'src/bccmis/' --filter 'invariants/' \
   --html-details build/coverage/coverage.html -o /dev/null
 gcovr -r . build/coverage --filter 'src/bccmis/' --filter 'invariants/' \
   --exclude-throw-branches --exclude-unreachable-branches --txt
+# The 3D lattice and its checker on their own (issue: 3D assurance asks for
+# at least 95 % of their branches): the summary, then every line with a
+# missed branch.
+echo "== 3D core and checker (src/bccmis/d3, src/bccmis/invariants/d3)"
+gcovr -r . build/coverage --filter 'src/bccmis/d3/' --filter 'src/bccmis/invariants/d3/' \
+  --exclude-throw-branches --exclude-unreachable-branches --print-summary -o /dev/null
+gcovr -r . build/coverage --filter 'src/bccmis/d3/' --filter 'src/bccmis/invariants/d3/' \
+  --exclude-throw-branches --exclude-unreachable-branches --branches
