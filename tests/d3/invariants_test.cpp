@@ -333,6 +333,12 @@ TEST(D3Layer1, LatticeSize) {
   expect_violation(find_violation(g), "lattice-size", 1);
   g.size = {3, 1, 1, 61};  // 3 * 2^62 > 2^62
   expect_violation(find_violation(g), "lattice-size", 1);
+  // Each extent and each lower bound on its own.
+  const LatticeSize3 bad[] = {{0, 1, 1, 1}, {1, 0, 1, 1}, {1, 1, 1, -1}, {1, 3, 1, 61}, {1, 1, 3, 61}};
+  for (const LatticeSize3& size : bad) {
+    g.size = size;
+    expect_violation(find_violation(g), "lattice-size", 1);
+  }
 }
 
 TEST(D3Layer1, Partition) {
@@ -584,6 +590,85 @@ TEST(D3Layer4, NodeCells) {
   const std::optional<Violation3> w = check_layer(h, 4);
   expect_violation(w, "node-cells", 4);
   EXPECT_EQ(w->where, std::vector<Point3>({{8, 0, 0}, {2, 2, 2}}));
+}
+
+// The geometry layer's position tests, axis by axis: a vertex outside the box
+// on each axis (a node, and a center), and centers whose coordinates fail the
+// odd-multiple rule on x, on y or on z, on the box's boundary, or at a
+// position no level of the lattice can have (spec/lattice3d.md §1).
+TEST(D3Layer4, OutsideDomainOnEveryAxis) {
+  const Point3 outside[] = {{-4, 0, 0}, {0, 8, 0}, {0, 0, 8}};
+  for (const Point3& p : outside) {
+    Graph3 g({1, 1, 1, 1});  // the box [0, 4]^3
+    g.N.insert(p);
+    g.neighbors[p].insert({2, 2, 2});
+    const std::optional<Violation3> v = check_layer(g, 4);
+    expect_violation(v, "outside-domain", 4);
+    EXPECT_EQ(v->where, std::vector<Point3>({p}));
+    EXPECT_NE(v->message.find("node " + to_string(p)), std::string::npos) << v->message;
+  }
+  Graph3 g({1, 1, 1, 1});
+  const Point3 c{2, 2, 6};
+  g.C.insert(c);
+  g.level[c] = 0;
+  g.neighbors[c].insert({0, 0, 4});
+  const std::optional<Violation3> v = check_layer(g, 4);
+  expect_violation(v, "outside-domain", 4);
+  EXPECT_NE(v->message.find("center (2, 2, 6)"), std::string::npos) << v->message;
+}
+
+TEST(D3Layer4, CenterPositionOnEveryAxis) {
+  // lattice 1 1 1 1 (S = 4): a level-0 center has coordinates that are odd
+  // multiples of 2, i.e. (2, 2, 2). Each of these fails on one axis; none is
+  // the center of any cube (mixed trailing zeros, or on the boundary).
+  const Point3 wrong[] = {{1, 2, 2}, {2, 1, 2}, {2, 2, 1}, {0, 2, 2}, {2, 0, 2}, {2, 2, 4}};
+  for (const Point3& c : wrong) {
+    Graph3 g({1, 1, 1, 1});
+    g.C.insert(c);
+    g.level[c] = 0;
+    g.neighbors[c].insert({0, 0, 0});
+    const std::optional<Violation3> v = check_layer(g, 4);
+    expect_violation(v, "center-position", 4);
+    EXPECT_EQ(v->where, std::vector<Point3>({c}));
+    EXPECT_NE(v->message.find("is not the center of any cube"), std::string::npos) << v->message;
+  }
+  // lattice 2 2 2 1 (S = 4, box [0, 8]^3): (4, 4, 4) has three coordinates
+  // with two trailing zero bits, a level -1 center: no level of this lattice.
+  Graph3 g({2, 2, 2, 1});
+  g.C.insert({4, 4, 4});
+  g.level[{4, 4, 4}] = 1;
+  g.neighbors[{4, 4, 4}].insert({0, 0, 0});
+  const std::optional<Violation3> v = check_layer(g, 4);
+  expect_violation(v, "center-position", 4);
+  EXPECT_NE(v->message.find("is not the center of any cube"), std::string::npos) << v->message;
+  // (1, 1, 1) stored with level 0 is where a level-1 center is.
+  Graph3 h = refined({1, 1, 1, 1}, {{2, 2, 2}});
+  h.level[{1, 1, 1}] = 0;
+  const std::optional<Violation3> w = check_layer(h, 4);
+  expect_violation(w, "center-position", 4);
+  EXPECT_NE(w->message.find("the center of a level-1 cube"), std::string::npos) << w->message;
+}
+
+TEST(D3Layer4, CoverageBelowARefinedChildAndOnAHugeLattice) {
+  // lattice 1 1 1 2 (S = 8): the root and its child (2, 2, 2) refined, one
+  // grandchild removed: the walk passes the refined child and finds the gap.
+  Graph3 g = refined({1, 1, 1, 2}, {{4, 4, 4}, {2, 2, 2}});
+  g.C.erase({3, 3, 3});
+  g.level.erase({3, 3, 3});
+  const std::optional<Violation3> v = check_layer(g, 4);
+  expect_violation(v, "coverage", 4);
+  EXPECT_EQ(v->where, std::vector<Point3>({{3, 3, 3}}));
+  // W*H*D overflows int64 (2^60 x 2^60 x 1 cubes, L = 0): the count cannot
+  // match, and the walk over level-0 cubes stops at the first gap, (1, 1, 3)
+  // beside the one leaf (1, 1, 1).
+  Graph3 h;
+  h.size = {std::int64_t{1} << 60, std::int64_t{1} << 60, 2, 0};
+  h.C.insert({1, 1, 1});
+  h.level[{1, 1, 1}] = 0;
+  h.neighbors[{1, 1, 1}].insert({0, 0, 0});
+  const std::optional<Violation3> w = check_layer(h, 4);
+  expect_violation(w, "coverage", 4);
+  EXPECT_EQ(w->where, std::vector<Point3>({{1, 1, 3}}));
 }
 
 TEST(D3Layers, CheckLayerRejectsOtherNumbers) {

@@ -21,6 +21,34 @@ TEST(D3Lattice, InitialLattice) {
   EXPECT_EQ(test::state_problem(g), "");
 }
 
+// Graph3 and LatticeSize3 compare every member (the tests compare whole
+// states with ==, so a member left out would hide a difference).
+TEST(D3Lattice, EqualityComparesEveryMember) {
+  const Graph3 a = test::build("lattice 1 1 1 1\nrefine 2 2 2\n");
+  Graph3 b = a;
+  EXPECT_EQ(a, b);
+  b.size.L = 2;
+  EXPECT_NE(a, b);
+  b = a;
+  b.N.insert({9, 9, 9});
+  EXPECT_NE(a, b);
+  b = a;
+  b.C.insert({9, 9, 9});
+  EXPECT_NE(a, b);
+  b = a;
+  b.neighbors[{1, 1, 1}].erase({0, 0, 0});
+  EXPECT_NE(a, b);
+  b = a;
+  b.level[{1, 1, 1}] = 0;
+  EXPECT_NE(a, b);
+  const LatticeSize3 s{2, 3, 4, 5};
+  EXPECT_EQ(s, (LatticeSize3{2, 3, 4, 5}));
+  EXPECT_NE(s, (LatticeSize3{9, 3, 4, 5}));
+  EXPECT_NE(s, (LatticeSize3{2, 9, 4, 5}));
+  EXPECT_NE(s, (LatticeSize3{2, 3, 9, 5}));
+  EXPECT_NE(s, (LatticeSize3{2, 3, 4, 9}));
+}
+
 TEST(D3Lattice, SizeValidation) {
   EXPECT_THROW(Graph3(LatticeSize3{0, 1, 1, 0}), LatticeError);
   EXPECT_THROW(Graph3(LatticeSize3{1, 0, 1, 0}), LatticeError);

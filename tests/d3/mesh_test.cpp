@@ -577,6 +577,37 @@ TEST(D3MeshWriters, MshReadsBack) {
   EXPECT_FALSE(in >> word) << "text after $EndElements";
 }
 
+// Meshes the tests build by hand: an empty one (the writers' counts and
+// entity blocks of zero, mesh_quality of nothing), a TetMesh without levels
+// (Medit writes reference 0), and a tetrahedron whose v0 is not a center
+// (index_mesh gives it level -1). spec/mesh3d.md M20-M22, §6.
+TEST(D3MeshWriters, EmptyAndHandBuiltMeshes) {
+  const MeshQuality q = mesh_quality({});
+  EXPECT_EQ(q.tetrahedra, 0u);
+  EXPECT_EQ(q.vertices, 0u);
+  EXPECT_EQ(q.boundary_triangles, 0u);
+  EXPECT_EQ(q.min_dihedral, 0.0);
+  EXPECT_EQ(q.max_dihedral, 0.0);
+  const TetMesh empty;
+  std::ostringstream msh;
+  write_msh(msh, empty);
+  EXPECT_EQ(msh.str(),
+            "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 0 0 0\n3 1 0 0\n$EndNodes\n"
+            "$Elements\n1 0 0 0\n3 1 4 0\n$EndElements\n");
+  // One cube (lattice 1 1 1 0): a tetrahedron listed from a corner first.
+  const Graph3 g(LatticeSize3{1, 1, 1, 0});
+  const Tet t{Point3{0, 0, 0}, Point3{2, 0, 0}, Point3{0, 2, 0}, Point3{0, 0, 2}};
+  const TetMesh m = index_mesh(g, {t});
+  ASSERT_EQ(m.level.size(), 1u);
+  EXPECT_EQ(m.level[0], -1);
+  TetMesh no_levels = m;
+  no_levels.level.clear();
+  std::ostringstream medit;
+  write_medit(medit, no_levels);
+  // Vertices sorted by position: (0,0,0) 1, (0,0,2) 2, (0,2,0) 3, (2,0,0) 4.
+  EXPECT_NE(medit.str().find("Tetrahedra\n1\n1 4 3 2 0\n"), std::string::npos) << medit.str();
+}
+
 TEST(D3MeshWriters, MeditReadsBack) {
   Tets tets;
   const TetMesh mesh = split_face_mesh(&tets);
