@@ -1,8 +1,12 @@
 # Runs one CLI invocation and checks its exit code and output.
 #   cmake -DCMD="prog;arg;..." -DEXPECT_EXIT=N [-DEXPECT_STDOUT_FILE=f]
 #         [-DEXPECT_STDOUT_REGEX=r] [-DEXPECT_STDERR_REGEX=r] [-DSTDIN_FILE=f]
-#         [-DWORKDIR=d] -P run_cli.cmake   (CMD: arguments separated by "|")
+#         [-DWORKDIR=d] [-DRUN_TIMEOUT=seconds, default 60] -P run_cli.cmake
+#         (CMD: arguments separated by "|")
 string(REPLACE "|" ";" CMD "${CMD}")
+if(NOT RUN_TIMEOUT)
+  set(RUN_TIMEOUT 60)
+endif()
 if(WORKDIR)
   file(REMOVE_RECURSE "${WORKDIR}")
   file(MAKE_DIRECTORY "${WORKDIR}")
@@ -11,10 +15,10 @@ else()
 endif()
 if(STDIN_FILE)
   execute_process(COMMAND ${CMD} WORKING_DIRECTORY "${WORKDIR}" INPUT_FILE "${STDIN_FILE}"
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 60)
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT ${RUN_TIMEOUT})
 else()
   execute_process(COMMAND ${CMD} WORKING_DIRECTORY "${WORKDIR}"
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 60)
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT ${RUN_TIMEOUT})
 endif()
 set(fail "")
 if(NOT "${rc}" STREQUAL "${EXPECT_EXIT}")
