@@ -5,7 +5,7 @@ set(_cli ${CMAKE_CURRENT_SOURCE_DIR}/cli)
 set(_examples ${PROJECT_SOURCE_DIR}/spec/examples)
 
 function(bccmis_cli_test name exit)
-  cmake_parse_arguments(T "" "STDOUT_FILE;STDOUT_REGEX;STDERR_REGEX;STDIN_FILE;LABEL" "ARGS" ${ARGN})
+  cmake_parse_arguments(T "" "STDOUT_FILE;STDOUT_REGEX;STDERR_REGEX;STDIN_FILE;LABEL;RUN_TIMEOUT" "ARGS" ${ARGN})
   set(defs -DEXPECT_EXIT=${exit} -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/cli_work/${name})
   if(T_STDOUT_FILE)
     list(APPEND defs -DEXPECT_STDOUT_FILE=${T_STDOUT_FILE})
@@ -18,6 +18,9 @@ function(bccmis_cli_test name exit)
   endif()
   if(T_STDIN_FILE)
     list(APPEND defs -DSTDIN_FILE=${T_STDIN_FILE})
+  endif()
+  if(T_RUN_TIMEOUT)
+    list(APPEND defs -DRUN_TIMEOUT=${T_RUN_TIMEOUT})
   endif()
   string(REPLACE ";" "|" cmd "$<TARGET_FILE:bccmis>;${T_ARGS}")
   if(NOT T_LABEL)
@@ -95,11 +98,11 @@ bccmis_cli_test(conformance.timeout 1
 # run must reach its 3D traces to catch them.
 bccmis_cli_test(conformance.self_3d 0
   ARGS conformance --impl "$<TARGET_FILE:bccmis> replay --quiet --check=none" --traces ${_examples}/d3 --random 100
-       --seed 1 --dim 3
+       --seed 1 --dim 3 RUN_TIMEOUT 240
   STDOUT_REGEX "all 103 traces agree \\(3 bundled, 100 random: 0 2D and 100 3D, seed 1\\)")
 bccmis_cli_test(conformance.self_mixed 0
   ARGS conformance --impl "$<TARGET_FILE:bccmis> replay --quiet --check=none" --traces ${_examples}/d3 --random 100
-       --seed 2 --dim mixed
+       --seed 2 --dim mixed RUN_TIMEOUT 240
   STDOUT_REGEX "all 103 traces agree \\(3 bundled, 100 random: 50 2D and 50 3D, seed 2\\)")
 set(_point3 "\\([0-9]+, [0-9]+, [0-9]+\\)")
 bccmis_cli_test(conformance.d3_junction_missing_cell 1
