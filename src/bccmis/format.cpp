@@ -3,6 +3,7 @@
 #include <ostream>
 
 #include "bccmis/detail/parse.h"
+#include "bccmis/detail/state_writer.h"
 #include "bccmis/text_writer.h"
 #include "bccmis/trace.h"
 
@@ -59,47 +60,7 @@ std::string json_string(std::string_view text, bool html_safe) {
 
 // ---- Canonical state ---------------------------------------------------------
 
-void write_canonical_state(std::ostream& out, const Graph& g) {
-  TextWriter w(out);
-  w.put("bccmis-state 1\nlattice ");
-  w.put_int(g.size.W);
-  w.put(' ');
-  w.put_int(g.size.H);
-  w.put(' ');
-  w.put_int(g.size.L);
-  w.put('\n');
-  auto neighbors = [&](const Point& v) {
-    w.put(" :");
-    for (const Point& b : g.nbr(v)) w.put_point(b.x, b.y);
-    w.put('\n');
-  };
-  // g.level holds the levels of the centers (and, in a graph built by hand,
-  // maybe of other points): walked beside g.C, both sorted.
-  auto level = g.level.begin();
-  for (const Point& c : g.C) {
-    w.put('C');
-    w.put_point(c.x, c.y);
-    w.put(' ');
-    while (level != g.level.end() && level->first < c) ++level;
-    if (level != g.level.end() && level->first == c) {
-      w.put_int(level->second);
-    } else {
-      w.put('?');
-    }
-    neighbors(c);
-  }
-  for (const Point& n : g.N) {
-    w.put('N');
-    w.put_point(n.x, n.y);
-    neighbors(n);
-  }
-  w.put("end ");
-  w.put_int(static_cast<std::int64_t>(g.C.size()));
-  w.put(' ');
-  w.put_int(static_cast<std::int64_t>(g.N.size()));
-  w.put('\n');
-  w.flush();
-}
+void write_canonical_state(std::ostream& out, const Graph& g) { detail::write_state_as(out, g); }
 
 std::string canonical_state(const Graph& g) { return canonical_text(g); }
 

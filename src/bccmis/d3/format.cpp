@@ -4,47 +4,13 @@
 
 #include "bccmis/d3/lattice.h"  // static_assert(AdaptiveLattice<Graph3>)
 #include "bccmis/detail/parse.h"
+#include "bccmis/detail/state_writer.h"
 #include "bccmis/format.h"
 #include "bccmis/text_writer.h"
 
 namespace bccmis::d3 {
 
-void write_canonical_state(std::ostream& out, const Graph3& g) {
-  TextWriter w(out);
-  w.put("bccmis-state 1\nlattice ");
-  w.put_int(g.size.W);
-  w.put(' ');
-  w.put_int(g.size.H);
-  w.put(' ');
-  w.put_int(g.size.D);
-  w.put(' ');
-  w.put_int(g.size.L);
-  w.put('\n');
-  // " : x1 y1 z1 x2 y2 z2 ...\n"; the set is sorted by (x, y, z) already.
-  auto neighbors = [&](const Point3& v) {
-    w.put(" :");
-    for (const Point3& b : g.nbr(v)) w.put_point(b.x, b.y, b.z);
-    w.put('\n');
-  };
-  for (const Point3& c : g.C) {
-    w.put('C');
-    w.put_point(c.x, c.y, c.z);
-    w.put(' ');
-    w.put_int(g.level_of(c));
-    neighbors(c);
-  }
-  for (const Point3& n : g.N) {
-    w.put('N');
-    w.put_point(n.x, n.y, n.z);
-    neighbors(n);
-  }
-  w.put("end ");
-  w.put_int(static_cast<std::int64_t>(g.C.size()));
-  w.put(' ');
-  w.put_int(static_cast<std::int64_t>(g.N.size()));
-  w.put('\n');
-  w.flush();
-}
+void write_canonical_state(std::ostream& out, const Graph3& g) { detail::write_state_as(out, g); }
 
 std::string canonical_state(const Graph3& g) { return canonical_text(g); }
 
