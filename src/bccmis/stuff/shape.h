@@ -1,0 +1,67 @@
+// bccmis::stuff: the shapes that isosurface stuffing meshes (spec/stuffing.md §1).
+//
+// A shape is a closed region given by a signed distance: negative inside,
+// positive outside, zero on its surface. Stuffing reads it only through this
+// interface: the sign at lattice vertices, the crossing point on a lattice
+// edge whose ends have opposite signs, the bounding box that the background
+// lattice is fitted to, and (for the statistics) its volume and samples of
+// its surface.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace bccmis::stuff {
+
+using Vec3 = std::array<double, 3>;
+
+/// An axis-aligned box, lo <= hi componentwise.
+struct Bounds {
+  Vec3 lo{}, hi{};
+};
+
+class Shape {
+ public:
+  virtual ~Shape() = default;
+  /// Distance to the surface, negative inside. For a triangle mesh the sign
+  /// comes from exact predicates; the magnitude is a double.
+  virtual double signed_distance(const Vec3& p) const = 0;
+  /// For a segment [a, b] whose ends lie on opposite sides (or one on the
+  /// surface): a parameter t in [0, 1] with a + t (b - a) on the surface.
+  virtual double crossing(const Vec3& a, const Vec3& b) const = 0;
+  /// A box holding the whole shape.
+  virtual Bounds bounds() const = 0;
+  /// The enclosed volume.
+  virtual double volume() const = 0;
+  /// n points on the surface, spread evenly by area, the same for the same seed.
+  virtual std::vector<Vec3> sample_surface(std::size_t n, std::uint64_t seed) const = 0;
+  /// One line naming the shape for messages and --stats ("sphere r=1", "mesh elephant.off: 2775 triangles").
+  virtual std::string describe() const = 0;
+};
+
+/// A sphere of radius r (r > 0) around c.
+std::unique_ptr<Shape> make_sphere(const Vec3& c, double r);
+
+/// A torus around the z axis through c: tube radius r around a circle of
+/// radius R (0 < r < R).
+std::unique_ptr<Shape> make_torus(const Vec3& c, double R, double r);
+
+/// Two spheres of radius r around a and b, united (a shape with a neck when
+/// they overlap, two components when they do not).
+std::unique_ptr<Shape> make_spheres(const Vec3& a, const Vec3& b, double r);
+
+/// The same shape translated by d (its samples, bounds and distances moved).
+std::unique_ptr<Shape> translated(std::shared_ptr<const Shape> s, const Vec3& d);
+
+/// A refused shape or input file: what is wrong, and where (file:line:col when a file).
+class ShapeError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace bccmis::stuff

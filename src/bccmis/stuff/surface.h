@@ -1,0 +1,34 @@
+// bccmis::stuff: closed triangle meshes as shapes (spec/stuffing.md §1),
+// through CGAL (AABB tree for distances and crossings, Side_of_triangle_mesh
+// with exact predicates for the sign). Only built with CGAL (BCCMIS_WITH_CGAL).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bccmis/stuff/shape.h"
+
+namespace bccmis::stuff {
+
+/// Reads an OFF, OBJ or STL (ASCII or binary) file, chosen by its extension
+/// (case-insensitive). Refuses with ShapeError, naming the file and the
+/// problem with its place: a syntax error (file:line:col), an index out of
+/// range, a degenerate face, an open mesh (a border edge, by its two vertex
+/// indices), a non-manifold edge or vertex, a self-intersection (two faces by
+/// index), an empty mesh. A closed mesh oriented inwards is reversed.
+std::unique_ptr<Shape> load_surface(const std::string& path);
+
+/// The same from vertices and triangles in memory (`name` for messages).
+std::unique_ptr<Shape> make_mesh_shape(const std::vector<Vec3>& vertices,
+                                       const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                                       const std::string& name);
+
+/// The largest distance from `points` to the triangle soup (vertices,
+/// triangles): one side of a sampled Hausdorff distance.
+double max_distance_to_triangles(const std::vector<Vec3>& points, const std::vector<Vec3>& vertices,
+                                 const std::vector<std::array<std::uint32_t, 3>>& triangles);
+
+}  // namespace bccmis::stuff
