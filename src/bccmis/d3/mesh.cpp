@@ -5,6 +5,8 @@
 #include <gmpxx.h>
 
 #include <algorithm>
+#include <charconv>
+#include <type_traits>
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -186,7 +188,35 @@ TetMesh index_mesh(const Graph3& g, const std::vector<Tet>& tets) {
   return mesh;
 }
 
-void write_vtu(std::ostream& out, const TetMesh& mesh) {
+namespace {
+
+// The writers and the angles, once for lattice points and once for points in
+// space: a point's coordinates, their VTK type and their text.
+long double coordinate(const Point3& p, int i) { return static_cast<long double>(i == 0 ? p.x : i == 1 ? p.y : p.z); }
+long double coordinate(const Vec3& p, int i) { return p[static_cast<std::size_t>(i)]; }
+
+template <class P>
+const char* coordinate_type() {
+  return std::is_same_v<P, Point3> ? "Int64" : "Float64";
+}
+
+void write_point(std::ostream& out, const Point3& p, char end = '\n') {
+  out << p.x << ' ' << p.y << ' ' << p.z << end;
+}
+
+/// The shortest decimal that reads back to the same double.
+void write_point(std::ostream& out, const Vec3& p, char end = '\n') {
+  char buf[3 * 32];
+  char* it = buf;
+  for (std::size_t i = 0; i < 3; ++i) {
+    it = std::to_chars(it, buf + sizeof buf, p[i]).ptr;
+    *it++ = i < 2 ? ' ' : end;
+  }
+  out.write(buf, it - buf);
+}
+
+template <class P>
+void write_vtu_impl(std::ostream& out, const BasicTetMesh<P>& mesh) {
   out << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
       << "  <UnstructuredGrid>\n"
@@ -202,8 +232,8 @@ void write_vtu(std::ostream& out, const TetMesh& mesh) {
   out << "        </DataArray>\n"
       << "      </CellData>\n"
       << "      <Points>\n"
-      << "        <DataArray type=\"Int64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  for (const Point3& p : mesh.vertices) out << p.x << ' ' << p.y << ' ' << p.z << '\n';
+      << "        <DataArray type=\"" << coordinate_type<P>() << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  for (const P& p : mesh.vertices) write_point(out, p);
   out << "        </DataArray>\n"
       << "      </Points>\n"
       << "      <Cells>\n"
@@ -222,13 +252,14 @@ void write_vtu(std::ostream& out, const TetMesh& mesh) {
       << "</VTKFile>\n";
 }
 
-void write_msh(std::ostream& out, const TetMesh& mesh) {
+template <class P>
+void write_msh_impl(std::ostream& out, const BasicTetMesh<P>& mesh) {
   const std::size_t n = mesh.vertices.size(), m = mesh.tets.size();
   out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
   // One entity block: the volume entity 1 holds every node.
   out << "$Nodes\n1 " << n << ' ' << (n ? 1 : 0) << ' ' << n << '\n' << "3 1 0 " << n << '\n';
   for (std::size_t i = 1; i <= n; ++i) out << i << '\n';
-  for (const Point3& p : mesh.vertices) out << p.x << ' ' << p.y << ' ' << p.z << '\n';
+  for (const P& p : mesh.vertices) write_point(out, p);
   out << "$EndNodes\n";
   out << "$Elements\n1 " << m << ' ' << (m ? 1 : 0) << ' ' << m << '\n' << "3 1 4 " << m << '\n';
   for (std::size_t i = 0; i < m; ++i) {
@@ -238,11 +269,12 @@ void write_msh(std::ostream& out, const TetMesh& mesh) {
   out << "$EndElements\n";
 }
 
-void write_medit(std::ostream& out, const TetMesh& mesh) {
+template <class P>
+void write_medit_impl(std::ostream& out, const BasicTetMesh<P>& mesh) {
   out << "MeshVersionFormatted 2\n\nDimension 3\n\nVertices\n" << mesh.vertices.size() << '\n';
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-    const Point3& p = mesh.vertices[i];
-    out << p.x << ' ' << p.y << ' ' << p.z << ' ' << static_cast<int>(mesh.kind[i]) << '\n';
+    write_point(out, mesh.vertices[i], ' ');
+    out << static_cast<int>(mesh.kind[i]) << '\n';
   }
   out << "\nTetrahedra\n" << mesh.tets.size() << '\n';
   for (std::size_t i = 0; i < mesh.tets.size(); ++i) {
@@ -253,12 +285,12 @@ void write_medit(std::ostream& out, const TetMesh& mesh) {
   out << "\nEnd\n";
 }
 
-std::array<double, 6> dihedral_angles(const Tet& t) {
+template <class P>
+std::array<double, 6> dihedral_angles_impl(const std::array<P, 4>& t) {
   using V = std::array<long double, 3>;
-  auto sub = [](const Point3& a, const Point3& b) {
-    return V{static_cast<long double>(a.x) - static_cast<long double>(b.x),
-             static_cast<long double>(a.y) - static_cast<long double>(b.y),
-             static_cast<long double>(a.z) - static_cast<long double>(b.z)};
+  auto sub = [](const P& a, const P& b) {
+    return V{coordinate(a, 0) - coordinate(b, 0), coordinate(a, 1) - coordinate(b, 1),
+             coordinate(a, 2) - coordinate(b, 2)};
   };
   auto cross = [](const V& a, const V& b) {
     return V{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
@@ -278,6 +310,17 @@ std::array<double, 6> dihedral_angles(const Tet& t) {
   }
   return out;
 }
+
+}  // namespace
+
+void write_vtu(std::ostream& out, const TetMesh& mesh) { write_vtu_impl(out, mesh); }
+void write_vtu(std::ostream& out, const TetMeshF& mesh) { write_vtu_impl(out, mesh); }
+void write_msh(std::ostream& out, const TetMesh& mesh) { write_msh_impl(out, mesh); }
+void write_msh(std::ostream& out, const TetMeshF& mesh) { write_msh_impl(out, mesh); }
+void write_medit(std::ostream& out, const TetMesh& mesh) { write_medit_impl(out, mesh); }
+void write_medit(std::ostream& out, const TetMeshF& mesh) { write_medit_impl(out, mesh); }
+std::array<double, 6> dihedral_angles(const Tet& t) { return dihedral_angles_impl(t); }
+std::array<double, 6> dihedral_angles(const std::array<Vec3, 4>& t) { return dihedral_angles_impl(t); }
 
 MeshQuality mesh_quality(const std::vector<Tet>& tets) {
   MeshQuality q;

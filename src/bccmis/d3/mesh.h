@@ -39,13 +39,28 @@ Int128 six_volume(const Tet& t);
 /// The kind of a mesh vertex (TetMesh::kind).
 enum class VertexKind : std::uint8_t { node = 0, center = 1, hull = 2 };
 
-/// An indexed mesh for writers: vertices sorted by position, tets as indices.
-struct TetMesh {
-  std::vector<Point3> vertices;
+/// A point in space (double coordinates): the vertices of meshes whose
+/// vertices are not lattice points (isosurface stuffing, spec/stuffing.md).
+using Vec3 = std::array<double, 3>;
+
+/// An indexed mesh for writers: vertices, tets as indices into them, a small
+/// integer per vertex (written as the point data "kind") and one per
+/// tetrahedron (the cell data "level"). P is Point3 (lattice coordinates,
+/// written as integers) or Vec3 (written as the shortest decimal that reads
+/// back to the same double).
+template <class P>
+struct BasicTetMesh {
+  std::vector<P> vertices;
   std::vector<std::array<std::uint32_t, 4>> tets;
-  std::vector<std::uint8_t> kind; /* per vertex: 0 node, 1 center, 2 hull */
-  std::vector<int> level;         /* per tetrahedron: the level of its leaf v[0] */
+  std::vector<std::uint8_t> kind; /* per vertex */
+  std::vector<int> level;         /* per tetrahedron */
 };
+
+/// The lattice's mesh: vertices sorted by position, kind 0 node, 1 center,
+/// 2 hull, level the level of the tetrahedron's leaf v[0].
+using TetMesh = BasicTetMesh<Point3>;
+/// A mesh in space (spec/stuffing.md S11).
+using TetMeshF = BasicTetMesh<Vec3>;
 
 /// The vertices of `tets` (sorted, each once, with their kind in g) and the
 /// tetrahedra as indices into them, in the order of `tets`.
@@ -54,19 +69,25 @@ TetMesh index_mesh(const Graph3& g, const std::vector<Tet>& tets);
 /// VTK XML UnstructuredGrid, ASCII: Int64 points, VTK_TETRA (10) cells, the
 /// point data array "kind" and the cell data array "level".
 void write_vtu(std::ostream& out, const TetMesh& mesh);
+/// The same with Float64 points.
+void write_vtu(std::ostream& out, const TetMeshF& mesh);
 
 /// Gmsh MSH 4.1 ASCII: one volume entity (tag 1) holding every node and
 /// every 4-node tetrahedron (element type 4); node and element tags from 1.
 void write_msh(std::ostream& out, const TetMesh& mesh);
+void write_msh(std::ostream& out, const TetMeshF& mesh);
 
 /// Medit .mesh (MeshVersionFormatted 2, Dimension 3): Vertices with the
 /// kind as reference, Tetrahedra (1-based) with the level as reference, End.
 void write_medit(std::ostream& out, const TetMesh& mesh);
+void write_medit(std::ostream& out, const TetMeshF& mesh);
 
 /// The 6 dihedral angles of t in degrees (long double arithmetic, so within
 /// about 1e-12 degrees of the exact values), in the order of the edges
 /// v0v1, v0v2, v0v3, v1v2, v1v3, v2v3.
 std::array<double, 6> dihedral_angles(const Tet& t);
+/// The same for a tetrahedron in space.
+std::array<double, 6> dihedral_angles(const std::array<Vec3, 4>& t);
 
 /// What `bccmis mesh --stats` reports of a mesh (spec/mesh3d.md §6).
 struct MeshQuality {

@@ -1,0 +1,209 @@
+// Isosurface stuffing (spec/stuffing.md) on the built-in shapes. Every
+// expectation is checked by something other than the stuffing code: the fit
+// by hand from S2; orientation against the integer predicate; the mesh by
+// its own geometry (a closed boundary whose vertices lie on the surface, the
+// enclosed volume by the divergence theorem equal to the sum of the
+// tetrahedra, every triangle in at most two tetrahedra), and the volume
+// against the shape's closed form.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <random>
+
+#include "bccmis/d3/mesh.h"
+#include "bccmis/stuff/stuff.h"
+
+namespace bccmis::stuff {
+namespace {
+
+// spec/stuffing.md S10: the bounds every test mesh must meet.
+constexpr double kMinDihedral = 10.0;
+constexpr double kMaxDihedral = 165.0;
+
+TEST(StuffFit, HandExample) {
+  // S2: box [0,1]^3, N = 4, L = 2: S = 1 / (4 - 10/4) = 2/3, h = 1/6,
+  // N S = 8/3 = 1 + 10/6; 4 cubes on each side, origin -5/6.
+  StuffOptions o;
+  o.max_level = 2;
+  const Fit fit = fit_lattice({{0, 0, 0}, {1, 1, 1}}, o);
+  EXPECT_EQ(fit.size.W, 4);
+  EXPECT_EQ(fit.size.H, 4);
+  EXPECT_EQ(fit.size.D, 4);
+  EXPECT_EQ(fit.size.L, 2);
+  EXPECT_NEAR(fit.h, 1.0 / 6, 1e-15);
+  EXPECT_NEAR(fit.origin[0], -5.0 / 6, 1e-15);
+  EXPECT_NEAR(fit.scale, (2.0 / 3) / 8, 1e-15);  // S / 2^(L+1)
+  // A flat box: the short sides get the smallest count with count S >= extent + 10h.
+  const Fit flat = fit_lattice({{0, 0, 0}, {1, 0.1, 0}}, o);
+  EXPECT_EQ(flat.size.W, 4);
+  EXPECT_EQ(flat.size.H, 3);  // (0.1 + 10/6) / (2/3) = 2.65
+  EXPECT_EQ(flat.size.D, 3);  // (10/6) / (2/3) = 2.5
+}
+
+TEST(StuffFit, Refusals) {
+  StuffOptions o;
+  o.max_level = 1;
+  o.cells = 5;  // 5 x 2 = 10, not above 10
+  EXPECT_THROW(fit_lattice({{0, 0, 0}, {1, 1, 1}}, o), ShapeError);
+  o.cells = 6;
+  EXPECT_NO_THROW(fit_lattice({{0, 0, 0}, {1, 1, 1}}, o));
+  o.min_level = 2;
+  EXPECT_THROW(fit_lattice({{0, 0, 0}, {1, 1, 1}}, o), ShapeError);
+  StuffOptions bad;
+  bad.size = -1;
+  EXPECT_THROW(fit_lattice({{0, 0, 0}, {1, 1, 1}}, bad), ShapeError);
+  EXPECT_THROW(fit_lattice({{0, 0, 0}, {0, 0, 0}}, StuffOptions{}), ShapeError);
+}
+
+TEST(StuffFit, SizeChoosesTheLevel) {
+  // S2: the smallest L with N 2^L h >= E + 10h; E = 2, N = 4, h = 0.1: 4 2^L 0.1 >= 3 gives L = 3.
+  StuffOptions o;
+  o.size = 0.1;
+  const Fit fit = fit_lattice({{-1, -1, -1}, {1, 1, 1}}, o);
+  EXPECT_EQ(fit.size.L, 3);
+  EXPECT_LE(fit.h, 0.1);
+}
+
+TEST(StuffOrientation, AgreesWithTheIntegerPredicate) {
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<int> u(-4, 4);
+  for (int i = 0; i < 20000; ++i) {
+    d3::Point3 p[4];
+    Vec3 q[4];
+    for (int k = 0; k < 4; ++k) {
+      p[k] = {u(rng), u(rng), u(rng)};
+      q[k] = {static_cast<double>(p[k].x), static_cast<double>(p[k].y), static_cast<double>(p[k].z)};
+    }
+    ASSERT_EQ(orientation(q[0], q[1], q[2], q[3]), d3::orientation(p[0], p[1], p[2], p[3])) << "case " << i;
+  }
+}
+
+TEST(StuffOrientation, DecidesNearlyFlatCasesExactly) {
+  // d one unit in the last place above or below the plane z = 0.3 of a, b, c
+  // (counter-clockwise seen from above): the sign of the offset, where the
+  // floating-point determinant (about 6e-17) is below its error bound.
+  const Vec3 a{0.1, 0.1, 0.3}, b{1.1, 0.1, 0.3}, c{0.1, 1.1, 0.3};
+  const double up = std::nextafter(0.3, 1.0), down = std::nextafter(0.3, 0.0);
+  EXPECT_EQ(orientation(a, b, c, Vec3{0.3, 0.3, up}), 1);
+  EXPECT_EQ(orientation(a, b, c, Vec3{0.3, 0.3, down}), -1);
+  EXPECT_EQ(orientation(a, b, c, Vec3{0.7, 0.2, 0.3}), 0);
+}
+
+/// The mesh's own checks (see the file comment); returns the quality.
+StuffQuality check_mesh(const Shape& shape, const Fit& fit, const Stuffed& s) {
+  const d3::TetMeshF& m = s.mesh;
+  EXPECT_GT(m.tets.size(), 0U);
+  // Positive exact orientation.
+  for (std::size_t i = 0; i < m.tets.size(); ++i) {
+    const auto& t = m.tets[i];
+    EXPECT_EQ(orientation(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]], m.vertices[t[3]]), 1) << "tet " << i;
+  }
+  // Every triangle in one or two tetrahedra, the boundary ones once.
+  std::map<std::array<std::uint32_t, 3>, int> faces;
+  for (const auto& t : m.tets)
+    for (int skip = 0; skip < 4; ++skip) {
+      std::array<std::uint32_t, 3> f{};
+      for (int i = 0, n = 0; i < 4; ++i)
+        if (i != skip) f[static_cast<std::size_t>(n++)] = t[static_cast<std::size_t>(i)];
+      std::sort(f.begin(), f.end());
+      ++faces[f];
+    }
+  std::size_t once = 0;
+  for (const auto& [f, n] : faces) {
+    EXPECT_LE(n, 2);
+    once += n == 1 ? 1 : 0;
+  }
+  const auto boundary = boundary_triangles(m);
+  EXPECT_EQ(boundary.size(), once);
+  // The boundary is closed (each directed edge once, its reverse once) and on the surface.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;
+  long double enclosed = 0;
+  for (const auto& t : boundary) {
+    for (std::size_t i = 0; i < 3; ++i) {
+      ++edges[{t[i], t[(i + 1) % 3]}];
+      EXPECT_LE(std::abs(shape.signed_distance(m.vertices[t[i]])), 1e-9 * fit.h) << "boundary vertex " << t[i];
+    }
+    const Vec3 &a = m.vertices[t[0]], &b = m.vertices[t[1]], &c = m.vertices[t[2]];
+    enclosed += (static_cast<long double>(a[0]) * (b[1] * c[2] - b[2] * c[1]) -
+                 static_cast<long double>(a[1]) * (b[0] * c[2] - b[2] * c[0]) +
+                 static_cast<long double>(a[2]) * (b[0] * c[1] - b[1] * c[0])) /
+                6;
+  }
+  for (const auto& [e, n] : edges) {
+    EXPECT_EQ(n, 1);
+    EXPECT_EQ(edges.count({e.second, e.first}), 1U) << "open boundary edge " << e.first << "-" << e.second;
+  }
+  const StuffQuality q = quality(m);
+  EXPECT_NEAR(q.volume, static_cast<double>(enclosed), 1e-9 * std::abs(q.volume));
+  EXPECT_GE(q.min_dihedral, kMinDihedral);
+  EXPECT_LE(q.max_dihedral, kMaxDihedral);
+  return q;
+}
+
+struct Case {
+  const char* name;
+  std::shared_ptr<const Shape> shape;
+  int level;
+  double volume_tolerance;
+};
+
+std::vector<Case> cases() {
+  return {
+      {"sphere L2", make_sphere({0, 0, 0}, 1), 2, 0.08},
+      {"sphere L3 off-center", make_sphere({0.123, -0.071, 0.0317}, 1), 3, 0.03},
+      {"torus L3", make_torus({0, 0, 0}, 1, 0.4), 3, 0.08},
+      {"two spheres L3", make_spheres({-0.5, 0, 0}, {0.5, 0.1, 0}, 0.7), 3, 0.05},
+  };
+}
+
+TEST(StuffShapes, MeshesAreConformingOnTheSurfaceAndWithinTheBounds) {
+  for (const Case& c : cases()) {
+    SCOPED_TRACE(c.name);
+    StuffOptions o;
+    o.max_level = c.level;
+    const Fit fit = fit_lattice(c.shape->bounds(), o);
+    const d3::Graph3 g = background(*c.shape, fit, o);
+    const Stuffed s = stuff(*c.shape, fit, g, o);
+    const StuffQuality q = check_mesh(*c.shape, fit, s);
+    const double exact = c.shape->volume();
+    EXPECT_LT(std::abs(q.volume - exact) / exact, c.volume_tolerance) << q.volume << " vs " << exact;
+    EXPECT_GT(s.cut_points, 0U);
+    std::printf("%s: %zu tets, %zu cut points, %zu warped, dihedral [%.4f, %.4f], volume error %.5f\n", c.name,
+                s.mesh.tets.size(), s.cut_points, s.warped, q.min_dihedral, q.max_dihedral,
+                (q.volume - exact) / exact);
+  }
+}
+
+TEST(StuffShapes, BackgroundIsFinestWithinTheBand) {
+  // S3: every leaf whose cube comes within 4h of the surface is level L,
+  // checked here with the sphere's exact box distance.
+  const auto sphere = make_sphere({0, 0, 0}, 1);
+  StuffOptions o;
+  o.max_level = 3;
+  const Fit fit = fit_lattice(sphere->bounds(), o);
+  const d3::Graph3 g = background(*sphere, fit, o);
+  std::size_t coarse = 0;
+  for (const d3::Point3& c : g.C) {
+    const int l = g.level_of(c);
+    const double r = 0.5 * static_cast<double>(d3::cell_side(fit.size, l)) * fit.scale;
+    const Vec3 p = fit.to_space(c);
+    // The nearest and farthest distances from the origin over the cube.
+    double near2 = 0, far2 = 0;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const double lo = p[k] - r, hi = p[k] + r;
+      const double n = lo > 0 ? lo : hi < 0 ? -hi : 0, f = std::max(std::abs(lo), std::abs(hi));
+      near2 += n * n, far2 += f * f;
+    }
+    const double box_distance = std::max({std::sqrt(near2) - 1, 1 - std::sqrt(far2), 0.0});
+    if (box_distance <= 4 * fit.h) {
+      EXPECT_EQ(l, 3) << d3::to_string(c);
+    }
+    coarse += l < 3 ? 1 : 0;
+  }
+  EXPECT_GT(coarse, 0U);  // graded: not everything is refined
+}
+
+}  // namespace
+}  // namespace bccmis::stuff
