@@ -2,7 +2,7 @@
 // hand (distances, crossings, volume, bounds, samples), the readers on small
 // files (OBJ quads with every index form, an inward ASCII STL, a binary STL),
 // every refusal with its exact message (tests/stuff/bad/), and CGAL's sample
-// meshes elephant.off, cow.off and icosahedron.off.
+// meshes elephant.off, double-torus-example.off and icosahedron.off.
 #include "bccmis/stuff/surface.h"
 
 #include <gtest/gtest.h>
@@ -186,6 +186,15 @@ TEST(SurfaceFiles, AsciiStlInwardIsReversed) {
   EXPECT_EQ(b.hi, (Vec3{2, 2, 2}));
 }
 
+TEST(SurfaceFiles, OffWithColours) {
+  // The tetrahedron (0, 0, 0), 3 e_x, 3 e_y, 3 e_z: volume 27 / 6.
+  const auto s = load_surface(kDir + "/good/tet_colors.off");
+  EXPECT_EQ(s->describe(), "mesh tet_colors.off: 4 triangles");
+  EXPECT_EQ(s->volume(), 4.5);
+  EXPECT_DOUBLE_EQ(s->signed_distance({0.5, 0.5, 0.5}), -0.5);
+  EXPECT_DOUBLE_EQ(s->signed_distance({2, 2, 2}), 3 / std::sqrt(3.0));  // (6 - 3) / sqrt 3 from x + y + z = 3
+}
+
 /// The cube as a binary STL (80-byte header, count, 50 bytes a triangle).
 std::string binary_cube(std::size_t drop_bytes, const char* header) {
   std::string out(80, ' ');
@@ -283,9 +292,9 @@ TEST(SurfaceCgalMeshes, Elephant) {
   check_closed(*s);
 }
 
-TEST(SurfaceCgalMeshes, Cow) {
-  const auto s = load_surface(kCgal + "/cow.off");
-  EXPECT_EQ(s->describe(), "mesh cow.off: 5804 triangles");
+TEST(SurfaceCgalMeshes, DoubleTorus) {
+  const auto s = load_surface(kCgal + "/double-torus-example.off");
+  EXPECT_EQ(s->describe(), "mesh double-torus-example.off: 466 triangles");
   check_closed(*s);
 }
 

@@ -153,7 +153,11 @@ Soup read_off(const std::string& file, const std::string& data) {
   };
   next("the OFF header");
   const std::string_view head = t.token();
-  if (head != "OFF") t.fail("expected the OFF header 'OFF', found '" + std::string(head) + "'");
+  // OFF, or a variant with texture coordinates, colours or normals per vertex
+  // (STOFF, COFF, NOFF, CNOFF, ...), which follow the coordinates and are ignored.
+  const bool off = head.size() >= 3 && head.substr(head.size() - 3) == "OFF" &&
+                   head.substr(0, head.size() - 3).find_first_not_of("STCN") == std::string_view::npos;
+  if (!off) t.fail("expected the OFF header 'OFF' (or STOFF, COFF, NOFF, CNOFF), found '" + std::string(head) + "'");
   if (t.line_blank()) next("the vertex, face and edge counts");
   const long long nv = t.integer("the vertex count");
   const long long nf = t.integer("the face count");
@@ -511,6 +515,10 @@ class MeshShape final : public Shape {
         if (a > b) std::swap(a, b);
         best = std::min(best, std::pair{a, b});
       }
+      if (best.first == best.second)
+        throw ShapeError(name + ": self-intersecting: the triangles of face " + std::to_string(best.first) +
+                         ", a polygon fanned from its first corner, intersect (face " + std::to_string(best.first) +
+                         " is not convex or not flat)");
       throw ShapeError(name + ": self-intersecting (face " + std::to_string(best.first) + " and face " +
                        std::to_string(best.second) + ")");
     }
