@@ -311,5 +311,18 @@ TEST(SurfaceCgalMeshes, IcosahedronConvex) {
   EXPECT_NEAR(s->volume(), 5.0 / 12 * (3 + std::sqrt(5.0)) * edge * edge * edge, 1e-5);
 }
 
+// Two of CGAL's meshes refused. corner_poly.off: face 1 is the L-shaped
+// hexagon 8 6 10 2 1 0 at z = 1 ((0,1) (1,1) (1,0) (2,0) (2,2) (0,2)); its fan
+// from (0,1) has the triangle (0,1) (1,1) (1,0) in the notch, overlapping the
+// next one (0,1) (1,0) (2,0). prim.off declares 7 faces and has an eighth on
+// line 24.
+TEST(SurfaceCgalMeshes, Refused) {
+  EXPECT_EQ(load_message(kCgal + "/corner_poly.off"),
+            kCgal +
+                "/corner_poly.off: self-intersecting: the triangles of face 1, a polygon fanned from its first "
+                "corner, intersect (face 1 is not convex or not flat)");
+  EXPECT_EQ(load_message(kCgal + "/prim.off"), kCgal + "/prim.off:24:3: unexpected text after the last face");
+}
+
 }  // namespace
 }  // namespace bccmis::stuff
