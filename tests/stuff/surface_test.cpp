@@ -121,6 +121,13 @@ TEST(SurfaceCube, SamplesLieOnTheSurfaceSpreadByArea) {
     EXPECT_GT(n, 850);
     EXPECT_LT(n, 1150);
   }
+  // Uniform on each triangle: by symmetry the mean is the centre (1, 1, 1);
+  // its standard deviation per coordinate is about 0.6 / sqrt(6000) < 0.01.
+  for (int a = 0; a < 3; ++a) {
+    double mean = 0;
+    for (const auto& p : pts) mean += p[static_cast<std::size_t>(a)] / static_cast<double>(pts.size());
+    EXPECT_NEAR(mean, 1, 0.04) << "axis " << a;
+  }
   EXPECT_EQ(s->sample_surface(100, 7), s->sample_surface(100, 7));
   EXPECT_NE(s->sample_surface(100, 7), s->sample_surface(100, 8));
   // The same seed gives the start of the same sequence.
@@ -193,6 +200,17 @@ TEST(SurfaceFiles, OffWithColours) {
   EXPECT_EQ(s->volume(), 4.5);
   EXPECT_DOUBLE_EQ(s->signed_distance({0.5, 0.5, 0.5}), -0.5);
   EXPECT_DOUBLE_EQ(s->signed_distance({2, 2, 2}), 3 / std::sqrt(3.0));  // (6 - 3) / sqrt 3 from x + y + z = 3
+}
+
+TEST(SurfaceFiles, SamplesWeightedByArea) {
+  // Three right triangles of area 4.5 and the slanted face x + y + z = 3 of
+  // area (sqrt 3 / 4) 18 = 7.794: a fraction 7.794 / 21.294 = 0.366 of the
+  // samples on it (standard deviation 0.008 for 4000).
+  const auto s = load_surface(kDir + "/good/tet_colors.off");
+  const auto pts = s->sample_surface(4000, 3);
+  std::size_t slanted = 0;
+  for (const auto& p : pts) slanted += std::abs(p[0] + p[1] + p[2] - 3) < 1e-12;
+  EXPECT_NEAR(static_cast<double>(slanted) / 4000, 7.794228634059948 / (13.5 + 7.794228634059948), 0.03);
 }
 
 /// The cube as a binary STL (80-byte header, count, 50 bytes a triangle).
