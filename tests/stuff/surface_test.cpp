@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -233,7 +234,10 @@ std::string binary_cube(std::size_t drop_bytes, const char* header) {
 }
 
 std::string write_temp(const std::string& name, const std::string& data) {
-  const auto path = std::filesystem::temp_directory_path() / name;
+  // One directory per process: builds running their tests at once do not meet.
+  const auto dir = std::filesystem::temp_directory_path() / ("bccmis_surface_test_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto path = dir / name;
   std::ofstream(path, std::ios::binary) << data;
   return path.string();
 }
@@ -247,8 +251,7 @@ TEST(SurfaceFiles, BinaryStl) {
   const auto cut = write_temp("bccmis_surface_test_cut.stl", binary_cube(1, "cube"));
   EXPECT_EQ(load_message(cut),
             cut + ": byte 634: binary STL truncated in triangle 11 of 12 (684 bytes expected, 683 present)");
-  std::filesystem::remove(path);
-  std::filesystem::remove(cut);
+  std::filesystem::remove_all(std::filesystem::path(path).parent_path());
 }
 
 // One file per refusal (tests/stuff/bad/): the exact message.
