@@ -16,6 +16,8 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -26,6 +28,7 @@
 #include <optional>
 #include <random>
 #include <sstream>
+#include <string_view>
 #include <utility>
 
 namespace bccmis::stuff {
