@@ -1,0 +1,40 @@
+# Closed triangle meshes as shapes (spec/stuffing.md §1,
+# src/bccmis/stuff/surface.cpp): a cube by hand, the readers on small files,
+# one file per refusal with its exact message, and two of CGAL's sample
+# meshes. Built when CGAL was found.
+if(TARGET bccmis::stuff_surface)
+  # CGAL's sample meshes come in libcgal-demo's data.tar.gz (scripts/setup.sh);
+  # the few the tests read are extracted into the build tree.
+  set(BCCMIS_CGAL_DATA_TAR /usr/share/doc/libcgal-dev/data.tar.gz CACHE FILEPATH
+      "data.tar.gz of libcgal-demo, CGAL's sample meshes")
+  set(bccmis_cgal_meshes elephant.off double-torus-example.off icosahedron.off corner_poly.off prim.off)
+  set(bccmis_cgal_data ${CMAKE_CURRENT_BINARY_DIR}/cgal_data)
+  set(bccmis_cgal_missing "")
+  foreach(m ${bccmis_cgal_meshes})
+    if(NOT EXISTS ${bccmis_cgal_data}/data/meshes/${m})
+      set(bccmis_cgal_missing ${m})
+    endif()
+  endforeach()
+  if(bccmis_cgal_missing)
+    if(NOT EXISTS ${BCCMIS_CGAL_DATA_TAR})
+      message(FATAL_ERROR "${BCCMIS_CGAL_DATA_TAR} not found: the surface tests (tests/stuff) read CGAL's sample "
+                          "meshes from it. Install the Debian package libcgal-demo (scripts/setup.sh does), or set "
+                          "BCCMIS_CGAL_DATA_TAR.")
+    endif()
+    list(TRANSFORM bccmis_cgal_meshes PREPEND data/meshes/ OUTPUT_VARIABLE bccmis_cgal_members)
+    file(MAKE_DIRECTORY ${bccmis_cgal_data})
+    execute_process(COMMAND ${CMAKE_COMMAND} -E tar xzf ${BCCMIS_CGAL_DATA_TAR} ${bccmis_cgal_members}
+                    WORKING_DIRECTORY ${bccmis_cgal_data} RESULT_VARIABLE bccmis_tar_rc)
+    foreach(m ${bccmis_cgal_meshes})
+      if(NOT bccmis_tar_rc EQUAL 0 OR NOT EXISTS ${bccmis_cgal_data}/data/meshes/${m})
+        message(FATAL_ERROR "could not extract data/meshes/${m} from ${BCCMIS_CGAL_DATA_TAR} (tests/stuff)")
+      endif()
+    endforeach()
+  endif()
+
+  add_executable(stuff_surface_tests stuff/surface_test.cpp)
+  target_link_libraries(stuff_surface_tests PRIVATE bccmis::stuff_surface GTest::gtest_main bccmis::warnings)
+  target_compile_definitions(stuff_surface_tests PRIVATE BCCMIS_STUFF_TEST_DIR="${CMAKE_CURRENT_SOURCE_DIR}/stuff"
+    BCCMIS_CGAL_MESHES_DIR="${bccmis_cgal_data}/data/meshes")
+  gtest_discover_tests(stuff_surface_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
+endif()
