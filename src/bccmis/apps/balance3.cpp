@@ -27,6 +27,10 @@ BalancedRefineResult3 refine_balanced(Graph3& g, const Point3& c, Balance b) {
   return bccmis::detail::refine_balanced(g, c, b);
 }
 
+BalancedRefineResult3 refine_balanced(fast::Lattice3& g, const Point3& c, Balance b) {
+  return bccmis::detail::refine_balanced(g, c, b);
+}
+
 std::optional<std::pair<Point3, Point3>> find_corner_imbalance(const Graph3& g) {
   return bccmis::detail::find_corner_imbalance(g);
 }

@@ -1,8 +1,9 @@
 // bccmis apps: the balance cascade on the 3D lattice (spec/lattice3d.md §8).
 //
 // The same cascade as the 2D refine_balanced (balance.h), instantiated for
-// d3::Graph3 from the one template (apps/detail/cascade.h), on the public 3D
-// operations (d3/ops.h) and the neighbour queries of the graph alone:
+// d3::Graph3 and fast::Lattice3 from the one template (apps/detail/cascade.h),
+// on the public 3D operations (d3/ops.h) and the neighbour queries of the
+// graph alone:
 //
 //   edge   (the core's rule, p8est's P8EST_CONNECT_EDGE): the face-or-edge
 //          neighbours of c, the cells sharing two or more nodes with c
@@ -16,6 +17,7 @@
 
 #include "bccmis/apps/balance.h"
 #include "bccmis/d3/graph.h"
+#include "bccmis/fast/lattice3.h"
 
 namespace bccmis::d3 {
 
@@ -41,6 +43,10 @@ std::optional<RefineRefusal> can_refine_under(const Graph3& g, const Point3& c, 
 /// them, whatever their order. Refused (changing nothing) only with
 /// `NoSuchCell` or `MaxLevel`. In corner mode g must be corner-balanced.
 BalancedRefineResult3 refine_balanced(Graph3& g, const Point3& c, Balance b = Balance::Edge);
+
+/// The same cascade on the fast 3D lattice: the same refines in the same
+/// order, so the same leaf set and canonical state as on Graph3.
+BalancedRefineResult3 refine_balanced(fast::Lattice3& g, const Point3& c, Balance b = Balance::Edge);
 
 /// The first pair of touching cells (in sorted order of the first; the
 /// second the smallest such) whose levels differ by more than one; empty for

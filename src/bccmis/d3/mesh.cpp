@@ -6,26 +6,20 @@
 
 #include <algorithm>
 #include <charconv>
-#include <type_traits>
 #include <cmath>
 #include <cstdlib>
 #include <map>
 #include <ostream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
+#include "bccmis/d3/detail/tetrahedra.h"
 #include "bccmis/d3/geometry.h"
+#include "bccmis/d3/lattice.h"
 
 namespace bccmis::d3 {
 namespace {
-
-std::int64_t& coord(Point3& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
-std::int64_t coord(const Point3& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
-
-std::int64_t extent(const LatticeSize3& size, int axis) {
-  const std::int64_t n = axis == 0 ? size.W : axis == 1 ? size.H : size.D;
-  return n * level0_side(size);
-}
 
 bool fits_41_bits(std::int64_t v) { return v > -(std::int64_t{1} << 41) && v < (std::int64_t{1} << 41); }
 
@@ -63,29 +57,6 @@ bool small(const std::array<std::array<std::int64_t, 3>, 3>& m) {
   return true;
 }
 
-// The corners of face (axis, side) of the cube centred at u with half side h,
-// in cyclic order around the face.
-std::array<Point3, 4> face_corners(const Point3& u, std::int64_t h, int axis, bool high) {
-  const int a = (axis + 1) % 3, b = (axis + 2) % 3;
-  const std::int64_t da[4] = {-h, h, h, -h}, db[4] = {-h, -h, h, h};
-  std::array<Point3, 4> out{};
-  for (std::size_t i = 0; i < 4; ++i) {
-    Point3 p = u;
-    coord(p, axis) += high ? h : -h;
-    coord(p, a) += da[i];
-    coord(p, b) += db[i];
-    out[i] = p;
-  }
-  return out;
-}
-
-bool on_segment(const Point3& v, const Point3& a, const Point3& b) {
-  // Only called with a, b consecutive boundary nodes of one face and v a
-  // node of that face's plane: v is on ab iff it is one of its ends
-  // (spec/mesh3d.md M7: the apex of a fine side is a corner of the face).
-  return v == a || v == b;
-}
-
 }  // namespace
 
 int orientation(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
@@ -103,67 +74,8 @@ Int128 six_volume(const Tet& t) {
   return det3<Int128>(m);
 }
 
-// spec/mesh3d.md M1-M4
-std::vector<Tet> tetrahedra(const Graph3& g) {
-  std::vector<Tet> out;
-  for (const Point3& u : g.C) {
-    const int l = g.level_of(u);
-    const std::int64_t s = cell_side(g.size, l), h = s / 2;
-    const PointSet3& nu = g.nbr(u);
-    for (int axis = 0; axis < 3; ++axis)
-      for (const bool high : {false, true}) {
-        // spec/mesh3d.md M4: f is the center point of face F.
-        Point3 f = u;
-        coord(f, axis) += high ? h : -h;
-        Point3 apex;
-        bool emit = true;
-        if (coord(f, axis) == 0 || coord(f, axis) == extent(g.size, axis)) {
-          apex = f;  // M4.1, M8: a hull face
-        } else if (nu.count(f)) {
-          apex = f;  // M4.2, M6: a split face, coarse side
-        } else {
-          Point3 w = u;
-          coord(w, axis) += high ? s : -s;
-          if (g.C.count(w)) {
-            apex = w;      // M4.3, M5: an equal face
-            emit = u < w;  // M3: emitted once, from the smaller center
-          } else {
-            // M4.4, M7: a split face, fine side; m is the coarse face's center.
-            if (l == 0) throw std::logic_error("tetrahedra: no leaf across a face of level-0 cell " + to_string(u));
-            Point3 m = f;
-            for (int k = 0; k < 3; ++k)
-              if (k != axis) coord(m, k) = coord(u, k) / (2 * s) * (2 * s) + s;
-            if (!nu.count(m))
-              throw std::logic_error("tetrahedra: coarse face center " + to_string(m) + " is not a node of " +
-                                     to_string(u));
-            apex = m;
-          }
-        }
-        if (!emit) continue;
-        // The boundary nodes of F in cyclic order: corners and the edge
-        // midpoints that are nodes of N(u).
-        const std::array<Point3, 4> corners = face_corners(u, h, axis, high);
-        std::vector<Point3> ring;
-        for (std::size_t i = 0; i < 4; ++i) {
-          ring.push_back(corners[i]);
-          const Point3 e = midpoint(corners[i], corners[(i + 1) % 4]);
-          if (nu.count(e)) ring.push_back(e);
-        }
-        // spec/mesh3d.md M2: one tetrahedron per segment ab not through the apex.
-        for (std::size_t i = 0; i < ring.size(); ++i) {
-          Point3 a = ring[i], b = ring[(i + 1) % ring.size()];
-          if (on_segment(apex, a, b)) continue;
-          const int o = orientation(u, apex, a, b);
-          if (o == 0) throw std::logic_error("tetrahedra: degenerate tetrahedron at " + to_string(u));
-          if (o < 0) std::swap(a, b);  // M3
-          out.push_back({u, apex, a, b});
-        }
-      }
-  }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
-}
+// spec/mesh3d.md M1-M4 (the rule in d3/detail/tetrahedra.h)
+std::vector<Tet> tetrahedra(const Graph3& g) { return detail::tetrahedra_of(g); }
 
 TetMesh index_mesh(const Graph3& g, const std::vector<Tet>& tets) {
   TetMesh mesh;
@@ -200,9 +112,7 @@ const char* coordinate_type() {
   return std::is_same_v<P, Point3> ? "Int64" : "Float64";
 }
 
-void write_point(std::ostream& out, const Point3& p, char end = '\n') {
-  out << p.x << ' ' << p.y << ' ' << p.z << end;
-}
+void write_point(std::ostream& out, const Point3& p, char end = '\n') { out << p.x << ' ' << p.y << ' ' << p.z << end; }
 
 /// The shortest decimal that reads back to the same double.
 void write_point(std::ostream& out, const Vec3& p, char end = '\n') {

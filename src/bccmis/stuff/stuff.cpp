@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -15,7 +16,9 @@
 #include <utility>
 
 #include "bccmis/apps/balance3.h"
+#include "bccmis/d3/lattice.h"
 #include "bccmis/d3/point.h"
+#include "bccmis/fast/mesh3.h"
 
 namespace bccmis::stuff {
 
@@ -65,16 +68,24 @@ Fit fit_lattice(const Bounds& box, const StuffOptions& options) {
   return fit;
 }
 
-d3::Graph3 background(const Shape& shape, const Fit& fit, const StuffOptions& options) {
-  d3::Graph3 g = d3::make_lattice(fit.size);
+namespace {
+
+/// S3 on either lattice: the same passes, the same refines in the same order
+/// (every pass visits the leaves of its start in sorted order), so the same
+/// leaf set on Graph3 and fast::Lattice3.
+template <class G>
+void refine_near(const Shape& shape, const Fit& fit, const StuffOptions& options, G& g) {
   const int L = fit.size.L;
-  // S3: refine while some leaf passes the test; each pass over a snapshot of C.
+  std::vector<Point3> snapshot;
   for (bool changed = true; changed;) {
     changed = false;
-    const std::vector<Point3> cells(g.C.begin(), g.C.end());
-    for (const Point3& c : cells) {
-      if (!g.is_center(c)) continue;  // refined by the cascade earlier in this pass
-      const int l = g.level_of(c);
+    {
+      const auto& cs = cells(g);  // sorted on both lattices
+      snapshot.assign(cs.begin(), cs.end());
+    }
+    for (const Point3& c : snapshot) {
+      if (!is_center(g, c)) continue;  // refined by the cascade earlier in this pass
+      const int l = level_of(g, c);
       if (l >= L) continue;
       const double r = 0.5 * static_cast<double>(d3::cell_side(fit.size, l)) * fit.scale;
       const bool near = std::abs(shape.signed_distance(fit.to_space(c))) <= std::sqrt(3.0) * r + 4 * fit.h;
@@ -84,6 +95,19 @@ d3::Graph3 background(const Shape& shape, const Fit& fit, const StuffOptions& op
       }
     }
   }
+}
+
+}  // namespace
+
+d3::Graph3 background(const Shape& shape, const Fit& fit, const StuffOptions& options) {
+  d3::Graph3 g = d3::make_lattice(fit.size);
+  refine_near(shape, fit, options, g);
+  return g;
+}
+
+fast::Lattice3 background_fast(const Shape& shape, const Fit& fit, const StuffOptions& options) {
+  fast::Lattice3 g(fit.size);
+  refine_near(shape, fit, options, g);
   return g;
 }
 
@@ -120,16 +144,6 @@ int orientation(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
 
 namespace {
 
-/// A vertex of the output (S8's key): a lattice vertex p is (p, p), the cut
-/// point on lattice edge xy is (min(x, y), max(x, y)).
-struct VKey {
-  Point3 a, b;
-  bool is_cut() const { return !(a == b); }
-  friend auto operator<=>(const VKey&, const VKey&) = default;
-};
-VKey lattice_key(const Point3& p) { return {p, p}; }
-VKey cut_key(const Point3& x, const Point3& y) { return x < y ? VKey{x, y} : VKey{y, x}; }
-
 std::int64_t length2(const Point3& p, const Point3& q) {
   const std::int64_t dx = p.x - q.x, dy = p.y - q.y, dz = p.z - q.z;
   return dx * dx + dy * dy + dz * dz;
@@ -152,25 +166,50 @@ void check_regular(const d3::Tet& t, int L) {
   if (longs != 2) throw std::logic_error("stuff: a tetrahedron at " + d3::to_string(t[0]) + " is not regular (S4)");
 }
 
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// The reference path: the stuffing of spec/stuffing.md written on ordered
+// maps keyed by lattice points, the oracle of the flat path below
+// (tests/stuff/stuffing_fast_test.cpp).
+namespace reference_path {
+
+/// A vertex of the output (S8's key): a lattice vertex p is (p, p), the cut
+/// point on lattice edge xy is (min(x, y), max(x, y)).
+struct VKey {
+  Point3 a, b;
+  bool is_cut() const { return !(a == b); }
+  friend auto operator<=>(const VKey&, const VKey&) = default;
+};
+VKey lattice_key(const Point3& p) { return {p, p}; }
+VKey cut_key(const Point3& x, const Point3& y) { return x < y ? VKey{x, y} : VKey{y, x}; }
+
 struct Cut {
   double t = 0;  ///< from the edge's smaller end
   Vec3 pos{};
   bool removed = false;
 };
 
-class Stuffer {
+class ReferenceStuffer {
  public:
-  Stuffer(const Shape& shape, const Fit& fit, const d3::Graph3& g, const StuffOptions& options)
+  ReferenceStuffer(const Shape& shape, const Fit& fit, const d3::Graph3& g, const StuffOptions& options)
       : shape_(shape), fit_(fit), g_(g), options_(options) {}
 
-  Stuffed run() {
-    tets_ = d3::tetrahedra(g_);
+  Stuffed run(std::vector<d3::Tet> tets, PhaseTimes* times) {
+    auto t0 = Clock::now();
+    tets_ = std::move(tets);
     out_.lattice_tetrahedra = tets_.size();
     evaluate();
     cut();
+    if (times) times->cut = seconds_since(t0);
+    t0 = Clock::now();
     warp();
+    if (times) times->warp = seconds_since(t0);
+    t0 = Clock::now();
     for (const d3::Tet& t : tets_) fill(t);
-    return finish();
+    Stuffed s = finish();
+    if (times) times->stencils = seconds_since(t0);
+    return s;
   }
 
  private:
@@ -395,7 +434,7 @@ class Stuffer {
     for (auto& [k, i] : index) {
       i = next++;
       m.vertices.push_back(pos(k));
-      m.kind.push_back(static_cast<std::uint8_t>(k.is_cut()          ? StuffVertex::cut
+      m.kind.push_back(static_cast<std::uint8_t>(k.is_cut()           ? StuffVertex::cut
                                                  : warped_.count(k.a) ? StuffVertex::warped
                                                                       : StuffVertex::lattice));
     }
@@ -419,10 +458,454 @@ class Stuffer {
   Stuffed out_;
 };
 
+}  // namespace reference_path
+
+// The flat path: the same decisions in the same order on arrays indexed by
+// the lattice vertices numbered in position order.
+namespace flat_path {
+
+/// A vertex of the output (S8's key) on the lattice vertices numbered in
+/// position order: lattice vertex i is (i, i), the cut point on lattice edge
+/// ij is (min(i, j), max(i, j)), packed as high << 32 | low. The numbering
+/// keeps the order of positions, so the packed keys sort as S8's pairs of
+/// points.
+using VKey = std::uint64_t;
+VKey lattice_key(std::uint32_t i) { return (VKey{i} << 32) | i; }
+VKey cut_key(std::uint32_t i, std::uint32_t j) { return i < j ? (VKey{i} << 32) | j : (VKey{j} << 32) | i; }
+std::uint32_t first(VKey k) { return static_cast<std::uint32_t>(k >> 32); }
+std::uint32_t second(VKey k) { return static_cast<std::uint32_t>(k); }
+bool is_cut(VKey k) { return first(k) != second(k); }
+
+/// Cut edge -> cut index: open addressing on the packed edge key (linear
+/// probing, no deletion).
+class EdgeTable {
+ public:
+  void reserve(std::size_t n) {
+    std::size_t slots = 16;
+    while (slots < 2 * n) slots *= 2;
+    keys_.assign(slots, kEmpty);
+    values_.assign(slots, 0);
+    used_ = 0;
+  }
+  /// The value at k, or kNone.
+  std::uint32_t find(VKey k) const {
+    for (std::size_t i = hash(k);; i = (i + 1) & (keys_.size() - 1)) {
+      if (keys_[i] == k) return values_[i];
+      if (keys_[i] == kEmpty) return kNone;
+    }
+  }
+  /// Inserts k -> v; k must be absent.
+  void insert(VKey k, std::uint32_t v) {
+    if (2 * (used_ + 1) > keys_.size()) grow();
+    std::size_t i = hash(k);
+    while (keys_[i] != kEmpty) i = (i + 1) & (keys_.size() - 1);
+    keys_[i] = k;
+    values_[i] = v;
+    ++used_;
+  }
+  static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+
+ private:
+  static constexpr VKey kEmpty = ~VKey{0};  // never an edge: its ends differ
+  std::size_t hash(VKey k) const {
+    return static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> 17) & (keys_.size() - 1);
+  }
+  void grow() {
+    std::vector<VKey> keys = std::move(keys_);
+    std::vector<std::uint32_t> values = std::move(values_);
+    reserve(keys.size());
+    for (std::size_t i = 0; i < keys.size(); ++i)
+      if (keys[i] != kEmpty) insert(keys[i], values[i]);
+  }
+  std::vector<VKey> keys_;
+  std::vector<std::uint32_t> values_;
+  std::size_t used_ = 0;
+};
+
+struct Cut {
+  double t = 0;  ///< from the edge's smaller end
+  Vec3 pos{};
+  bool removed = false;
+};
+
+/// S5-S9 on the graded mesh of a lattice G (d3::Graph3 or fast::Lattice3,
+/// through the vocabulary: is_center, level_of). The lattice's vertices are
+/// numbered in position order and every per-vertex datum is an array.
+template <class G>
+class Stuffer {
+ public:
+  Stuffer(const Shape& shape, const Fit& fit, const G& g, const StuffOptions& options)
+      : shape_(shape), fit_(fit), g_(g), options_(options) {}
+
+  Stuffed run(std::vector<d3::Tet> tets, PhaseTimes* times) {
+    auto t0 = Clock::now();
+    tets_ = std::move(tets);
+    out_.lattice_tetrahedra = tets_.size();
+    number();
+    evaluate();
+    cut();
+    if (times) times->cut = seconds_since(t0);
+    t0 = Clock::now();
+    warp();
+    if (times) times->warp = seconds_since(t0);
+    t0 = Clock::now();
+    for (std::size_t i = 0; i < tets_.size(); ++i) fill(i);
+    Stuffed s = finish();
+    if (times) times->stencils = seconds_since(t0);
+    return s;
+  }
+
+ private:
+  using Ids = std::array<std::uint32_t, 4>;
+
+  Vec3 pos(VKey k) const { return is_cut(k) ? cuts_[cut_index_.find(k)].pos : pos_[first(k)]; }
+
+  // The lattice vertices of the mesh in position order, the tetrahedra on
+  // them: ids in order of first use through a hash table, then renumbered by
+  // rank of position.
+  void number() {
+    std::size_t slots = 16;
+    while (slots < 2 * tets_.size()) slots *= 2;  // about T / 5 vertices: load below 0.1
+    std::vector<std::uint32_t> table(slots, EdgeTable::kNone);
+    const auto hash = [&](const Point3& p) {
+      const std::uint64_t h = static_cast<std::uint64_t>(p.x) * 0x9E3779B97F4A7C15ull ^
+                              static_cast<std::uint64_t>(p.y) * 0xC2B2AE3D27D4EB4Full ^
+                              static_cast<std::uint64_t>(p.z) * 0x165667B19E3779F9ull;
+      return static_cast<std::size_t>(h ^ (h >> 29)) & (slots - 1);
+    };
+    ids_.reserve(tets_.size());
+    for (const d3::Tet& t : tets_) {
+      Ids ids{};
+      for (std::size_t i = 0; i < 4; ++i) {
+        std::size_t k = hash(t[i]);
+        while (table[k] != EdgeTable::kNone && !(points_[table[k]] == t[i])) k = (k + 1) & (slots - 1);
+        if (table[k] == EdgeTable::kNone) {
+          table[k] = static_cast<std::uint32_t>(points_.size());
+          points_.push_back(t[i]);
+        }
+        ids[i] = table[k];
+      }
+      ids_.push_back(ids);
+    }
+    std::vector<std::uint32_t> order(points_.size());
+    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return points_[a] < points_[b]; });
+    std::vector<std::uint32_t> rank(points_.size());
+    std::vector<Point3> sorted(points_.size());
+    for (std::uint32_t r = 0; r < order.size(); ++r) rank[order[r]] = r, sorted[r] = points_[order[r]];
+    points_ = std::move(sorted);
+    for (Ids& ids : ids_)
+      for (std::uint32_t& i : ids) i = rank[i];
+    level_.assign(points_.size(), -1);
+  }
+
+  void evaluate() {
+    value_.resize(points_.size());
+    pos_.resize(points_.size());
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+      pos_[i] = fit_.to_space(points_[i]);
+      value_[i] = shape_.signed_distance(pos_[i]);
+    }
+  }
+
+  // S5
+  void cut() {
+    cut_index_.reserve(points_.size() / 4);
+    for (std::size_t ti = 0; ti < tets_.size(); ++ti) {
+      const Ids& t = ids_[ti];
+      bool has_cut = false;
+      for (std::size_t i = 0; i < 4; ++i)
+        for (std::size_t j = i + 1; j < 4; ++j) {
+          const std::uint32_t x = std::min(t[i], t[j]), y = std::max(t[i], t[j]);
+          const double fx = value_[x], fy = value_[y];
+          if (!((fx < 0 && fy > 0) || (fx > 0 && fy < 0))) continue;
+          has_cut = true;
+          const VKey k = cut_key(x, y);
+          if (cut_index_.find(k) != EdgeTable::kNone) continue;
+          const Vec3 &px = pos_[x], &py = pos_[y];
+          const double s = std::clamp(shape_.crossing(px, py), 0.0, 1.0);
+          Cut c;
+          c.t = s;
+          for (std::size_t d = 0; d < 3; ++d) c.pos[d] = px[d] + s * (py[d] - px[d]);
+          cut_index_.insert(k, static_cast<std::uint32_t>(cuts_.size()));
+          cuts_.push_back(c);
+          ends_.push_back({x, y});
+          ends_.push_back({y, x});
+        }
+      if (has_cut) check_regular(tets_[ti], fit_.size.L);
+    }
+  }
+
+  // S6, in increasing position order of v, the other ends w in increasing
+  // position order.
+  void warp() {
+    std::sort(ends_.begin(), ends_.end());
+    warped_.assign(points_.size(), 0);
+    for (std::size_t b = 0, e = 0; b < ends_.size(); b = e) {
+      const std::uint32_t v = ends_[b].first;
+      for (e = b; e < ends_.size() && ends_[e].first == v; ++e) {
+      }
+      const bool v_center = is_center(g_, points_[v]);
+      std::uint32_t best = EdgeTable::kNone;
+      double best_distance = 0;
+      for (std::size_t i = b; i < e; ++i) {
+        const std::uint32_t w = ends_[i].second;
+        const Cut& c = cuts_[cut_index_.find(cut_key(v, w))];
+        if (c.removed) continue;
+        const double from_v = v < w ? c.t : 1 - c.t;
+        const bool same_kind = v_center == is_center(g_, points_[w]);
+        const double alpha = same_kind ? options_.alpha_long : options_.alpha_short;
+        if (!(from_v < alpha)) continue;
+        const double distance = from_v * std::sqrt(static_cast<double>(length2(points_[v], points_[w])));
+        if (best == EdgeTable::kNone || distance < best_distance) best = w, best_distance = distance;
+      }
+      if (best == EdgeTable::kNone) continue;
+      pos_[v] = cuts_[cut_index_.find(cut_key(v, best))].pos;
+      warped_[v] = 1;
+      value_[v] = 0;
+      ++out_.warped;
+      for (std::size_t i = b; i < e; ++i) cuts_[cut_index_.find(cut_key(v, ends_[i].second))].removed = true;
+    }
+    for (const Cut& c : cuts_) out_.cut_points += c.removed ? 0 : 1;
+  }
+
+  // S8: the diagonal of the face quadrilateral (a, b, c_bt, c_at) as a pair of keys.
+  std::pair<VKey, VKey> face_diagonal(std::uint32_t a, std::uint32_t b, std::uint32_t t) const {
+    const VKey ka = lattice_key(a), kb = lattice_key(b), cat = cut_key(a, t), cbt = cut_key(b, t);
+    const std::int64_t la = length2(points_[a], points_[t]), lb = length2(points_[b], points_[t]);
+    if (la > lb) return {cat, kb};
+    if (lb > la) return {cbt, ka};
+    const VKey m = std::min({ka, kb, cat, cbt});
+    if (m == ka || m == cbt) return {ka, cbt};
+    return {kb, cat};
+  }
+
+  void emit(const std::array<VKey, 4>& t, int level) {
+    std::array<VKey, 4> v = t;
+    const int o = orientation(pos(v[0]), pos(v[1]), pos(v[2]), pos(v[3]));
+    if (o == 0) throw std::logic_error("stuff: a flat output tetrahedron near " + d3::to_string(points_[first(v[0])]));
+    if (o < 0) std::swap(v[2], v[3]);
+    tets_out_.push_back(v);
+    levels_out_.push_back(level);
+  }
+
+  /// The pyramid with apex x over the quadrilateral q (cyclic), split by the
+  /// diagonal d (two opposite corners of q).
+  void pyramid(VKey x, const std::array<VKey, 4>& q, const std::pair<VKey, VKey>& d, int level) {
+    const bool d02 = (d.first == q[0] && d.second == q[2]) || (d.first == q[2] && d.second == q[0]);
+    if (d02) {
+      emit({x, q[0], q[1], q[2]}, level);
+      emit({x, q[0], q[2], q[3]}, level);
+    } else {
+      emit({x, q[1], q[2], q[3]}, level);
+      emit({x, q[1], q[3], q[0]}, level);
+    }
+  }
+
+  /// S9: the prism A0 A1 A2 - B0 B1 B2 with the diagonals d[i] of
+  /// Qi = (Ai, Ai+1, Bi+1, Bi): true for Ai Bi+1, false for Ai+1 Bi.
+  void prism(const std::array<VKey, 3>& A, const std::array<VKey, 3>& B, const std::array<bool, 3>& d, int level) {
+    if (d[0] == d[1] && d[1] == d[2]) throw std::logic_error("stuff: cyclic prism diagonals (S9)");
+    for (std::size_t i = 0; i < 3; ++i) {
+      const std::size_t n = (i + 1) % 3, p = (i + 2) % 3;  // i+1, i-1
+      const bool two_at_A = d[i] && !d[p], two_at_B = !d[i] && d[p];
+      if (!two_at_A && !two_at_B) continue;
+      // Q(i+1) = (A n, A p, B p, B n), its diagonal A n B p (d[n]) or A p B n.
+      const std::array<VKey, 4> q{A[n], A[p], B[p], B[n]};
+      const std::pair<VKey, VKey> diag = d[n] ? std::make_pair(A[n], B[p]) : std::make_pair(A[p], B[n]);
+      if (two_at_A) {
+        emit({A[i], B[0], B[1], B[2]}, level);
+        pyramid(A[i], q, diag, level);
+      } else {
+        emit({B[i], A[0], A[1], A[2]}, level);
+        pyramid(B[i], q, diag, level);
+      }
+      return;
+    }
+  }
+
+  /// d for quadrilateral (X0, X1, Y1, Y0): true when `diag` joins X0 and Y1.
+  static bool diag_bit(const std::pair<VKey, VKey>& diag, VKey x0, VKey y1) {
+    return (diag.first == x0 && diag.second == y1) || (diag.first == y1 && diag.second == x0);
+  }
+
+  /// The smallest dihedral angle of the tetrahedra emitted from `from` on.
+  double min_angle(std::size_t from) const {
+    double m = 180;
+    for (std::size_t i = from; i < tets_out_.size(); ++i) {
+      const auto& t = tets_out_[i];
+      for (const double a : d3::dihedral_angles(std::array<Vec3, 4>{pos(t[0]), pos(t[1]), pos(t[2]), pos(t[3])}))
+        m = std::min(m, a);
+    }
+    return m;
+  }
+
+  // S7
+  void fill(std::size_t ti) {
+    const Ids& t = ids_[ti];
+    std::array<std::uint32_t, 4> neg{}, zero{}, plus{};
+    std::size_t n = 0, z = 0, np = 0;
+    bool warped = false;
+    for (const std::uint32_t p : t) {
+      const double v = value_[p];
+      if (v < 0)
+        neg[n++] = p;
+      else if (v > 0)
+        plus[np++] = p;
+      else
+        zero[z++] = p;
+      warped = warped || warped_[p];
+    }
+    if (warped) check_regular(tets_[ti], fit_.size.L);
+    const auto L = [](std::uint32_t p) { return lattice_key(p); };
+    const auto C = [](std::uint32_t x, std::uint32_t y) { return cut_key(x, y); };
+    if (np == 0) {
+      bool keep = n != 0;
+      if (!keep) {  // all four zero: the centroid of the unwarped vertices decides
+        Vec3 c{};
+        for (const Point3& p : tets_[ti]) {
+          const Vec3 s = fit_.to_space(p);
+          for (std::size_t k = 0; k < 3; ++k) c[k] += 0.25 * s[k];
+        }
+        keep = shape_.signed_distance(c) < 0;
+      }
+      if (keep) emit({L(t[0]), L(t[1]), L(t[2]), L(t[3])}, level(ti));
+      return;
+    }
+    if (n == 0) return;
+    const int level = this->level(ti);
+    if (n == 1 && z == 0) {
+      const std::uint32_t a = neg[0];
+      emit({L(a), C(a, plus[0]), C(a, plus[1]), C(a, plus[2])}, level);
+    } else if (n == 1 && z == 1) {
+      const std::uint32_t a = neg[0];
+      emit({L(a), L(zero[0]), C(a, plus[0]), C(a, plus[1])}, level);
+    } else if (n == 1 && z == 2) {
+      const std::uint32_t a = neg[0];
+      emit({L(a), L(zero[0]), L(zero[1]), C(a, plus[0])}, level);
+    } else if (n == 2 && z == 1) {
+      const std::uint32_t a = neg[0], b = neg[1], p = plus[0];
+      pyramid(L(zero[0]), {L(a), L(b), C(b, p), C(a, p)}, face_diagonal(a, b, p), level);
+    } else if (n == 3) {
+      // A = (a, b, c), B = (c_ap, c_bp, c_cp); Qi lies in the face (Ai, Ai+1, p).
+      const std::uint32_t p = plus[0];
+      std::array<VKey, 3> A{}, B{};
+      std::array<bool, 3> d{};
+      for (std::size_t i = 0; i < 3; ++i) A[i] = L(neg[i]), B[i] = C(neg[i], p);
+      for (std::size_t i = 0; i < 3; ++i)
+        d[i] = diag_bit(face_diagonal(neg[i], neg[(i + 1) % 3], p), A[i], B[(i + 1) % 3]);
+      prism(A, B, d, level);
+    } else {
+      // 2 0 2: A = (a, c_ap, c_aq), B = (b, c_bp, c_bq); Q0 in face (a, b, p),
+      // Q2 in face (a, b, q), Q1 = (c_ap, c_aq, c_bq, c_bp) inside, free.
+      const std::uint32_t a = neg[0], b = neg[1], p = plus[0], q = plus[1];
+      const std::array<VKey, 3> A{L(a), C(a, p), C(a, q)}, B{L(b), C(b, p), C(b, q)};
+      std::array<bool, 3> d{};
+      d[0] = diag_bit(face_diagonal(a, b, p), A[0], B[1]);
+      d[2] = diag_bit(face_diagonal(a, b, q), A[2], B[0]);
+      if (d[0] != d[2]) {
+        // Both choices are acyclic: the one with the larger smallest angle.
+        const std::size_t before = tets_out_.size();
+        double best = -1;
+        bool best_d1 = false;
+        for (const bool d1 : {false, true}) {
+          d[1] = d1;
+          prism(A, B, d, level);
+          const double m = min_angle(before);
+          tets_out_.resize(before);
+          levels_out_.resize(before);
+          if (m > best) best = m, best_d1 = d1;
+        }
+        d[1] = best_d1;
+      } else {
+        d[1] = !d[0];
+      }
+      prism(A, B, d, level);
+    }
+  }
+
+  /// The level of the leaf of tetrahedron ti (its vertex 0, spec/mesh3d.md),
+  /// asked of the lattice once per leaf.
+  int level(std::size_t ti) {
+    int& l = level_[ids_[ti][0]];
+    if (l < 0) l = level_of(g_, tets_[ti][0]);
+    return l;
+  }
+
+  Stuffed finish() {
+    // S8: the output vertices in key order.
+    std::vector<VKey> keys;
+    keys.reserve(4 * tets_out_.size());
+    for (const auto& t : tets_out_) keys.insert(keys.end(), t.begin(), t.end());
+    std::sort(keys.begin(), keys.end());
+    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    d3::TetMeshF& m = out_.mesh;
+    m.vertices.reserve(keys.size());
+    m.kind.reserve(keys.size());
+    for (const VKey k : keys) {
+      m.vertices.push_back(pos(k));
+      m.kind.push_back(static_cast<std::uint8_t>(is_cut(k)                ? StuffVertex::cut
+                                                 : warped_[first(k)] != 0 ? StuffVertex::warped
+                                                                          : StuffVertex::lattice));
+    }
+    const auto index = [&](VKey k) {
+      return static_cast<std::uint32_t>(std::lower_bound(keys.begin(), keys.end(), k) - keys.begin());
+    };
+    m.tets.reserve(tets_out_.size());
+    for (const auto& t : tets_out_) m.tets.push_back({index(t[0]), index(t[1]), index(t[2]), index(t[3])});
+    m.level = std::move(levels_out_);
+    return std::move(out_);
+  }
+
+  const Shape& shape_;
+  const Fit& fit_;
+  const G& g_;
+  const StuffOptions& options_;
+  std::vector<d3::Tet> tets_;
+  std::vector<Point3> points_;  ///< the lattice vertices of the mesh, sorted
+  std::vector<Ids> ids_;        ///< tets_ on points_
+  std::vector<double> value_;   ///< f, 0 once warped
+  std::vector<Vec3> pos_;       ///< in space, warped or not
+  std::vector<std::uint8_t> warped_;
+  std::vector<int> level_;  ///< of the leaves, -1 until asked
+  std::vector<Cut> cuts_;
+  EdgeTable cut_index_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> ends_;  ///< (v, w) for each cut edge vw, both ways
+  std::vector<std::array<VKey, 4>> tets_out_;
+  std::vector<int> levels_out_;
+  Stuffed out_;
+};
+
+}  // namespace flat_path
+
 }  // namespace
 
-Stuffed stuff(const Shape& shape, const Fit& fit, const d3::Graph3& g, const StuffOptions& options) {
-  return Stuffer(shape, fit, g, options).run();
+Stuffed stuff(const Shape& shape, const Fit& fit, const d3::Graph3& g, const StuffOptions& options, PhaseTimes* times) {
+  const auto t0 = Clock::now();
+  std::vector<d3::Tet> tets = d3::tetrahedra(g);
+  if (times) times->mesh = seconds_since(t0);
+  return reference_path::ReferenceStuffer(shape, fit, g, options).run(std::move(tets), times);
+}
+
+Stuffed stuff(const Shape& shape, const Fit& fit, const fast::Lattice3& g, const StuffOptions& options,
+              PhaseTimes* times) {
+  const auto t0 = Clock::now();
+  std::vector<d3::Tet> tets = fast::tetrahedra(g);
+  if (times) times->mesh = seconds_since(t0);
+  return flat_path::Stuffer<fast::Lattice3>(shape, fit, g, options).run(std::move(tets), times);
+}
+
+Stuffed stuff_shape(const Shape& shape, const StuffOptions& options, Impl impl, PhaseTimes* times) {
+  const Fit fit = fit_lattice(shape.bounds(), options);
+  const auto t0 = Clock::now();
+  if (impl == Impl::reference) {
+    const d3::Graph3 g = background(shape, fit, options);
+    if (times) times->lattice = seconds_since(t0);
+    return stuff(shape, fit, g, options, times);
+  }
+  const fast::Lattice3 g = background_fast(shape, fit, options);
+  if (times) times->lattice = seconds_since(t0);
+  return stuff(shape, fit, g, options, times);
 }
 
 // ---------------------------------------------------------------------------

@@ -12,6 +12,7 @@
 
 #include "bccmis/d3/graph.h"
 #include "bccmis/d3/mesh.h"
+#include "bccmis/fast/lattice3.h"
 #include "bccmis/stuff/shape.h"
 
 namespace bccmis::stuff {
@@ -46,6 +47,10 @@ Fit fit_lattice(const Bounds& box, const StuffOptions& options);
 /// until no leaf passes the test.
 d3::Graph3 background(const Shape& shape, const Fit& fit, const StuffOptions& options);
 
+/// S3 on the fast lattice: the same refines in the same order, so the same
+/// state as background() (d3::canonical_state of its to_graph()).
+fast::Lattice3 background_fast(const Shape& shape, const Fit& fit, const StuffOptions& options);
+
 /// The kind of an output vertex (S11's point data).
 enum class StuffVertex : std::uint8_t { lattice = 0, warped = 1, cut = 2 };
 
@@ -55,10 +60,35 @@ struct Stuffed {
   std::size_t lattice_tetrahedra = 0, cut_points = 0, warped = 0;
 };
 
+/// Seconds spent in each phase of a run: S3 (lattice), the graded mesh
+/// (spec/mesh3d.md), S5 with the vertex values (cut), S6 (warp), S7-S9 with
+/// the numbering of S8 (stencils).
+struct PhaseTimes {
+  double lattice = 0, mesh = 0, cut = 0, warp = 0, stencils = 0;
+  double total() const { return lattice + mesh + cut + warp + stencils; }
+};
+
 /// S5-S9 on the graded mesh of g (a lattice made by background() for the same
 /// shape and fit). Throws std::logic_error if a tetrahedron with a cut edge or
 /// a warped vertex is not regular (S4) or an output tetrahedron is flat.
-Stuffed stuff(const Shape& shape, const Fit& fit, const d3::Graph3& g, const StuffOptions& options);
+/// `times`, when given, receives the mesh, cut, warp and stencils phases.
+Stuffed stuff(const Shape& shape, const Fit& fit, const d3::Graph3& g, const StuffOptions& options,
+              PhaseTimes* times = nullptr);
+
+/// The same on the fast lattice (made by background_fast()): the same mesh
+/// as stuff() on the equal Graph3, vertex for vertex and tetrahedron for
+/// tetrahedron.
+Stuffed stuff(const Shape& shape, const Fit& fit, const fast::Lattice3& g, const StuffOptions& options,
+              PhaseTimes* times = nullptr);
+
+/// Which lattice a run uses: fast::Lattice3 (the default) or the reference
+/// d3::Graph3 (--impl reference).
+enum class Impl { fast, reference };
+
+/// S2-S9 in one call: fit_lattice, background (or background_fast) and
+/// stuff. `times`, when given, receives every phase.
+Stuffed stuff_shape(const Shape& shape, const StuffOptions& options, Impl impl = Impl::fast,
+                    PhaseTimes* times = nullptr);
 
 /// S12: the sign (-1, 0, 1) of det[b - a, c - a, d - a], exactly.
 int orientation(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
@@ -71,7 +101,7 @@ std::vector<std::array<std::uint32_t, 3>> boundary_triangles(const d3::TetMeshF&
 struct StuffQuality {
   double volume = 0;
   double min_dihedral = 0, max_dihedral = 0;
-  std::size_t below10 = 0;               ///< tetrahedra with an angle below 10 degrees
+  std::size_t below10 = 0;                  ///< tetrahedra with an angle below 10 degrees
   std::array<std::size_t, 13> histogram{};  ///< as d3::MeshQuality::histogram
   std::size_t boundary_triangles = 0;
 };

@@ -1,14 +1,14 @@
 // bccmis apps, internal: the balance cascade (spec/apps.md "Balanced
 // refinement", spec/lattice3d.md §8) written once over every lattice of every
 // dimension: the reference Graph and bccmis::fast::Lattice in 2D, d3::Graph3
-// in 3D. A lattice is reached only through the vocabulary of bccmis/lattice.h
+// and bccmis::fast::Lattice3 in 3D. A lattice is reached only through the vocabulary of bccmis/lattice.h
 // and the neighbour queries of bccmis/geometry.h, which read the graph alone
 // (no positions): the edge-neighbours of c are the cells sharing two or more
 // nodes with c (eq. 3's X; in 3D the face-or-edge neighbours), the touching
 // neighbours the cells sharing at least one.
 //
 // balance.cpp instantiates these templates for Graph and fast::Lattice,
-// balance3.cpp for d3::Graph3.
+// balance3.cpp for d3::Graph3 and fast::Lattice3.
 #pragma once
 
 #include <optional>

@@ -1,0 +1,121 @@
+// The fast stuffing path against the reference (spec/stuffing.md S3-S9):
+// background_fast and background reach the same lattice state, fast::
+// tetrahedra and d3::tetrahedra the same graded mesh, and stuff() on either
+// lattice the same Stuffed mesh, compared exactly: the same vertices (bit for
+// bit) in the same order (S8's key order), the same kinds, the same
+// tetrahedra with the same vertex order and levels, the same counts.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include "bccmis/d3/format.h"
+#include "bccmis/d3/mesh.h"
+#include "bccmis/fast/mesh3.h"
+#include "bccmis/stuff/stuff.h"
+
+namespace bccmis::stuff {
+namespace {
+
+/// The first difference between a and b, empty when they are identical.
+std::string first_difference(const Stuffed& a, const Stuffed& b) {
+  std::ostringstream why;
+  if (a.lattice_tetrahedra != b.lattice_tetrahedra) return "lattice_tetrahedra";
+  if (a.cut_points != b.cut_points) return "cut_points";
+  if (a.warped != b.warped) return "warped";
+  const d3::TetMeshF &m = a.mesh, &n = b.mesh;
+  if (m.vertices.size() != n.vertices.size()) return "vertex count";
+  if (m.kind != n.kind) return "vertex kinds";
+  for (std::size_t i = 0; i < m.vertices.size(); ++i)
+    for (std::size_t k = 0; k < 3; ++k)
+      if (std::memcmp(&m.vertices[i][k], &n.vertices[i][k], sizeof(double)) != 0) {
+        why << "vertex " << i << " coordinate " << k << ": " << m.vertices[i][k] << " != " << n.vertices[i][k];
+        return why.str();
+      }
+  if (m.tets.size() != n.tets.size()) return "tetrahedron count";
+  for (std::size_t i = 0; i < m.tets.size(); ++i)
+    if (m.tets[i] != n.tets[i]) {
+      why << "tetrahedron " << i;
+      return why.str();
+    }
+  if (m.level != n.level) return "levels";
+  return {};
+}
+
+struct Case {
+  const char* name;
+  std::shared_ptr<const Shape> shape;
+  int level;
+  int cells;  ///< N: 2 at level 3 keeps the reference's Debug run short
+};
+
+void expect_same(const Case& c) {
+  SCOPED_TRACE(c.name);
+  StuffOptions o;
+  o.max_level = c.level;
+  o.cells = c.cells;
+  const Fit fit = fit_lattice(c.shape->bounds(), o);
+  const d3::Graph3 g = background(*c.shape, fit, o);
+  const fast::Lattice3 f = background_fast(*c.shape, fit, o);
+  ASSERT_EQ(fast::canonical_state(f), d3::canonical_state(g));  // S3
+  ASSERT_EQ(fast::tetrahedra(f), d3::tetrahedra(g));            // spec/mesh3d.md M1-M3
+  const Stuffed reference = stuff(*c.shape, fit, g, o);
+  const Stuffed flat = stuff(*c.shape, fit, f, o);
+  EXPECT_GT(reference.mesh.tets.size(), 0U);
+  EXPECT_GT(reference.cut_points + reference.warped, 0U);  // the surface crosses the lattice
+  EXPECT_EQ(first_difference(flat, reference), "");
+}
+
+// Larger runs (levels 2-4 of the sphere and the torus): bench_stuff --verify.
+TEST(StuffFast, SameMeshAsTheReference) {
+  const Case cases[] = {
+      {"sphere L2", make_sphere({0, 0, 0}, 1), 2, 3},
+      {"sphere L2 off-center", make_sphere({0.123, -0.071, 0.0317}, 1), 2, 3},
+      {"torus L2 off-center", make_torus({0.05, -0.021, 0.013}, 1, 0.4), 2, 4},
+      {"two spheres L2", make_spheres({-0.5, 0.03, 0}, {0.5, 0.1, -0.02}, 0.7), 2, 3},
+      {"sphere L3 off-center", make_sphere({-0.31, 0.057, 0.2}, 1), 3, 2},
+  };
+  for (const Case& c : cases) expect_same(c);
+}
+
+TEST(StuffFast, StuffShapeRunsEitherLattice) {
+  StuffOptions o;
+  o.max_level = 2;
+  o.cells = 3;
+  const auto torus = make_torus({0, 0, 0}, 1, 0.4);
+  PhaseTimes tf, tr;
+  const Stuffed flat = stuff_shape(*torus, o, Impl::fast, &tf);
+  const Stuffed reference = stuff_shape(*torus, o, Impl::reference, &tr);
+  EXPECT_EQ(first_difference(flat, reference), "");
+  EXPECT_GT(tf.total(), 0);
+  EXPECT_GT(tr.lattice, 0);
+}
+
+TEST(StuffFast, TheComparisonSeesOneChange) {
+  // The comparison can fail: one coordinate one ulp off, one kind, one
+  // tetrahedron's vertex order, one level.
+  StuffOptions o;
+  o.max_level = 2;
+  o.cells = 3;
+  const auto sphere = make_sphere({0, 0, 0}, 1);
+  const Stuffed s = stuff_shape(*sphere, o, Impl::fast, nullptr);
+  ASSERT_EQ(first_difference(s, s), "");
+  Stuffed t = s;
+  t.mesh.vertices[7][1] = std::nextafter(t.mesh.vertices[7][1], 2.0);
+  EXPECT_EQ(first_difference(t, s).substr(0, 8), "vertex 7");
+  t = s;
+  t.mesh.kind.back() ^= 1;
+  EXPECT_EQ(first_difference(t, s), "vertex kinds");
+  t = s;
+  std::swap(t.mesh.tets[3][2], t.mesh.tets[3][3]);
+  EXPECT_EQ(first_difference(t, s), "tetrahedron 3");
+  t = s;
+  t.mesh.level[0] += 1;
+  EXPECT_EQ(first_difference(t, s), "levels");
+}
+
+}  // namespace
+}  // namespace bccmis::stuff
