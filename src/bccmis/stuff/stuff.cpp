@@ -629,6 +629,7 @@ class Stuffer {
           for (std::size_t d = 0; d < 3; ++d) c.pos[d] = px[d] + s * (py[d] - px[d]);
           cut_index_.insert(k, static_cast<std::uint32_t>(cuts_.size()));
           cuts_.push_back(c);
+          edges_.push_back({x, y});
           ends_.push_back({x, y});
           ends_.push_back({y, x});
         }
@@ -833,24 +834,43 @@ class Stuffer {
   }
 
   Stuffed finish() {
-    // S8: the output vertices in key order.
-    std::vector<VKey> keys;
-    keys.reserve(4 * tets_out_.size());
-    for (const auto& t : tets_out_) keys.insert(keys.end(), t.begin(), t.end());
-    std::sort(keys.begin(), keys.end());
-    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    // S8: the output vertices in key order: the lattice vertices used (keys
+    // (i, i), in order of i) merged with the cut points used (in key order).
+    std::vector<std::uint8_t> used_vertex(points_.size(), 0), used_cut(cuts_.size(), 0);
+    for (const auto& t : tets_out_)
+      for (const VKey k : t) {
+        if (is_cut(k))
+          used_cut[cut_index_.find(k)] = 1;
+        else
+          used_vertex[first(k)] = 1;
+      }
+    std::vector<VKey> cut_keys;
+    for (std::size_t c = 0; c < cuts_.size(); ++c)
+      if (used_cut[c]) cut_keys.push_back(cut_key(edges_[c].first, edges_[c].second));
+    std::sort(cut_keys.begin(), cut_keys.end());
+    std::vector<std::uint32_t> vertex_index(points_.size(), EdgeTable::kNone),
+        cut_index(cuts_.size(), EdgeTable::kNone);
     d3::TetMeshF& m = out_.mesh;
-    m.vertices.reserve(keys.size());
-    m.kind.reserve(keys.size());
-    for (const VKey k : keys) {
+    const auto add = [&](VKey k) {
+      const std::uint32_t index = static_cast<std::uint32_t>(m.vertices.size());
+      if (is_cut(k))
+        cut_index[cut_index_.find(k)] = index;
+      else
+        vertex_index[first(k)] = index;
       m.vertices.push_back(pos(k));
       m.kind.push_back(static_cast<std::uint8_t>(is_cut(k)                ? StuffVertex::cut
                                                  : warped_[first(k)] != 0 ? StuffVertex::warped
                                                                           : StuffVertex::lattice));
-    }
-    const auto index = [&](VKey k) {
-      return static_cast<std::uint32_t>(std::lower_bound(keys.begin(), keys.end(), k) - keys.begin());
     };
+    std::size_t next_cut = 0;
+    for (std::uint32_t i = 0; i < points_.size(); ++i) {
+      if (!used_vertex[i]) continue;
+      const VKey k = lattice_key(i);
+      for (; next_cut < cut_keys.size() && cut_keys[next_cut] < k; ++next_cut) add(cut_keys[next_cut]);
+      add(k);
+    }
+    for (; next_cut < cut_keys.size(); ++next_cut) add(cut_keys[next_cut]);
+    const auto index = [&](VKey k) { return is_cut(k) ? cut_index[cut_index_.find(k)] : vertex_index[first(k)]; };
     m.tets.reserve(tets_out_.size());
     for (const auto& t : tets_out_) m.tets.push_back({index(t[0]), index(t[1]), index(t[2]), index(t[3])});
     m.level = std::move(levels_out_);
@@ -869,6 +889,7 @@ class Stuffer {
   std::vector<std::uint8_t> warped_;
   std::vector<int> level_;  ///< of the leaves, -1 until asked
   std::vector<Cut> cuts_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges_;  ///< of cuts_, smaller end first
   EdgeTable cut_index_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> ends_;  ///< (v, w) for each cut edge vw, both ways
   std::vector<std::array<VKey, 4>> tets_out_;

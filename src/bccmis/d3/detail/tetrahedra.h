@@ -43,7 +43,9 @@ inline std::array<Point3, 4> face_corners(const Point3& u, std::int64_t h, int a
 }
 
 /// spec/mesh3d.md M1-M4: every tetrahedron of the graded mesh of g, each
-/// once, positively oriented, sorted.
+/// once, positively oriented, sorted. Vertex 0 of a tetrahedron is the leaf
+/// that made it and the leaves come in sorted order (cells(g) is sorted on
+/// every lattice), so sorting each leaf's tetrahedra sorts them all.
 template <class G>
 std::vector<Tet> tetrahedra_of(const G& g) {
   const LatticeSize3& size = size_of(g);
@@ -51,6 +53,7 @@ std::vector<Tet> tetrahedra_of(const G& g) {
   std::vector<Point3> ring;
   ring.reserve(8);
   for (const Point3& u : cells(g)) {
+    const std::size_t first = out.size();
     const int l = level_of(g, u);
     const std::int64_t s = cell_side(size, l), h = s / 2;
     const auto& nu = neighbors(g, u);
@@ -105,9 +108,10 @@ std::vector<Tet> tetrahedra_of(const G& g) {
           out.push_back({u, apex, a, b});
         }
       }
+    const auto from = out.begin() + static_cast<std::ptrdiff_t>(first);
+    std::sort(from, out.end());
+    out.erase(std::unique(from, out.end()), out.end());
   }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
 
