@@ -23,6 +23,7 @@ namespace {
 /// The first difference between a and b, empty when they are identical.
 std::string first_difference(const Stuffed& a, const Stuffed& b) {
   std::ostringstream why;
+  why.precision(17);
   if (a.lattice_tetrahedra != b.lattice_tetrahedra) return "lattice_tetrahedra";
   if (a.cut_points != b.cut_points) return "cut_points";
   if (a.warped != b.warped) return "warped";

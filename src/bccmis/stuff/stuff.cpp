@@ -564,8 +564,11 @@ class Stuffer {
   // them: ids in order of first use through a hash table, then renumbered by
   // rank of position.
   void number() {
+    // The vertices are centers, nodes and hull points (centers of the
+    // domain's faces, at most one per leaf): load at most 1/2.
+    const std::size_t most = 2 * cell_count(g_) + node_count(g_);
     std::size_t slots = 16;
-    while (slots < 2 * tets_.size()) slots *= 2;  // about T / 5 vertices: load below 0.1
+    while (slots < 2 * most) slots *= 2;
     std::vector<std::uint32_t> table(slots, EdgeTable::kNone);
     const auto hash = [&](const Point3& p) {
       const std::uint64_t h = static_cast<std::uint64_t>(p.x) * 0x9E3779B97F4A7C15ull ^
