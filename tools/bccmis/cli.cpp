@@ -98,16 +98,21 @@ CLI::App* add_mesh(CLI::App& app, MeshOptions& o) {
 
 CLI::App* add_render(CLI::App& app, RenderOptions& o) {
   CLI::App* cmd =
-      app.add_subcommand("render", "Draw a state as SVG (2D: cells, edges, junctions; 3D: the box and one slice).");
-  cmd->add_option("state", o.state, "State file ('-' for stdin)")->required();
+      app.add_subcommand("render",
+                         "Draw a state as SVG (2D: cells, edges, junctions; 3D: the box and one slice), or a "
+                         "tetrahedral mesh (.mesh: its boundary, a cut-away, its dihedral angles).");
+  cmd->add_option("state", o.state, "State file ('-' for stdin), or a Medit .mesh file of tetrahedra")->required();
   cmd->add_option("-o,--output", o.output, "SVG file to write (atomically); '-' for stdout")->required();
   cmd->add_flag("--from-trace", o.from_trace, "The input is a trace: replay it first");
   cmd->add_option("--slice", o.slice,
                   "3D only: the slice panel's plane, AXIS=VALUE with AXIS x, y or z (default: z at the middle of the "
-                  "box)");
+                  "box); for a .mesh, a cut-away beside the boundary at a real VALUE");
+  cmd->add_flag("--histogram", o.histogram, "A .mesh only: draw its dihedral-angle histogram instead");
   cmd->footer(
       "Examples:\n  bccmis render --from-trace spec/examples/fig2.trace -o fig2.svg\n"
-      "  bccmis render spec/examples/d3/face_refined.state --slice z=2 -o face.svg");
+      "  bccmis render spec/examples/d3/face_refined.state --slice z=2 -o face.svg\n"
+      "  bccmis render sphere.mesh --slice z=0 -o sphere.svg\n"
+      "  bccmis render sphere.mesh --histogram -o angles.svg");
   return cmd;
 }
 

@@ -119,7 +119,8 @@ struct RenderOptions {
   std::string state;
   std::string output;
   bool from_trace = false;
-  std::string slice;  ///< 3D: "AXIS=VALUE", empty for z at the middle of the box
+  std::string slice;       ///< 3D: "AXIS=VALUE", empty for z at the middle of the box; a .mesh: the cut-away
+  bool histogram = false;  ///< a .mesh: the dihedral-angle histogram instead of the picture
 };
 int run(const RenderOptions& o);
 
