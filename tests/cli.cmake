@@ -348,10 +348,10 @@ bccmis_cli_test(mesh_render_histogram_of_a_state 2 ARGS render ${_face3} --histo
 bccmis_cli_test(mesh_render_from_trace 2 ARGS render --from-trace ${_two_tets} -o out.svg
                 STDERR_REGEX "two_tets.mesh: a .mesh file; --from-trace applies to traces")
 # docs/stuff-torus.svg and docs/stuff-torus-angles.svg are the pictures of a
-# torus stuffed at level 2 on 4 cells (tests/stuff/stuffed_example.cpp) as
+# torus stuffed at level 2 on 6 cells (tests/stuff/stuffed_example.cpp) as
 # drawn now.
 add_test(NAME cli.mesh_render_docs_current
-         COMMAND sh -c "mkdir -p \"$3\" && cd \"$3\" && \"$1\" torus 2 4 > torus.mesh &&
+         COMMAND sh -c "mkdir -p \"$3\" && cd \"$3\" && \"$1\" torus 2 6 > torus.mesh &&
                         \"$2\" render torus.mesh --slice z=0 -o - | cmp - \"$4/docs/stuff-torus.svg\" &&
                         \"$2\" render torus.mesh --histogram -o - | cmp - \"$4/docs/stuff-torus-angles.svg\""
                  sh $<TARGET_FILE:stuffed_example> $<TARGET_FILE:bccmis> ${CMAKE_CURRENT_BINARY_DIR}/cli_work/mesh_render_docs

@@ -24,7 +24,10 @@ class Lattice3;
 }  // namespace bccmis::fast
 namespace bccmis::d3 {
 struct Graph3;
-struct TetMesh;
+struct Point3;
+template <class P>
+struct BasicTetMesh;
+using TetMesh = BasicTetMesh<Point3>;
 }  // namespace bccmis::d3
 
 namespace bccmis::cli {

@@ -193,9 +193,9 @@ std::string render_mesh_svg(const d3::TetMeshF& mesh, const std::string& title, 
     panel(rest, left, "cut-tri");
     std::snprintf(buf, sizeof buf, "<text x=\"%.0f\" y=\"%.0f\" %s>", left, margin + 14, font.c_str());
     out += std::string(buf) + "cut at " + axis_name(cut->axis) + " = " + fmt(cut->value) + ": " +
-           std::to_string(removed) + " tetrahedra with centroid " + axis_name(cut->axis) + (above ? " > " : " < ") +
-           fmt(cut->value) + " removed, " + std::to_string(rest.size()) + " of " + std::to_string(cut_boundary) +
-           " triangles face the viewer</text>\n";
+           std::to_string(removed) + " tetrahedra with centroid " + axis_name(cut->axis) +
+           (above ? " &gt; " : " &lt; ") + fmt(cut->value) + " removed, " + std::to_string(rest.size()) + " of " +
+           std::to_string(cut_boundary) + " triangles face the viewer</text>\n";
   }
 
   // Legend and summary.
