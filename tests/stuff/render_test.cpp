@@ -128,8 +128,15 @@ TEST(MeshPicture, CutAway) {
   EXPECT_NE(svg.find("1 tetrahedra with centroid z &gt; 0.25 removed, 2 of 4 triangles"), std::string::npos);
   const std::string none = render_mesh_svg(two_tets(), "two", CutPlane{2, 0.5});
   EXPECT_EQ(count(none, "<polygon class=\"cut-tri\""), 4u);
-  // x > 1.5 and y < -0.5 remove nothing either: every centroid has x = 1 and y <= 0.
+  // Both centroids have x = 1: the cut x = 0.5 removes both.
   EXPECT_EQ(count(render_mesh_svg(two_tets(), "two", CutPlane{0, 0.5}), "<polygon class=\"cut-tri\""), 0u);
+  // The viewer is at negative y: the cut y = -0.1 removes the second
+  // tetrahedron (centroid y -0.5) and leaves the first (centroid y 0) with
+  // bcd, acd and abd facing the viewer (abd outward (0,-1,-1), dot 0.5).
+  const std::string y = render_mesh_svg(two_tets(), "two", CutPlane{1, -0.1});
+  EXPECT_EQ(count(y, "<polygon class=\"cut-tri\" data-level=\"1\""), 3u);
+  EXPECT_EQ(count(y, "<polygon class=\"cut-tri\""), 3u);
+  EXPECT_NE(y.find("1 tetrahedra with centroid y &lt; -0.1 removed, 3 of 4 triangles"), std::string::npos);
   EXPECT_THROW(render_mesh_svg(two_tets(), "two", CutPlane{3, 0}), std::invalid_argument);
 }
 
