@@ -3,7 +3,9 @@
 # pick"; bench/RESULTS.md, section 10): on each input, `bccmis stuff` at one
 # lattice level, then TetGen and CGAL Mesh_3 (bench/stuff_peers) at about the
 # same number of tetrahedra, and one markdown table per input: mesher | time |
-# tets | min dihedral | max dihedral | % below 10 deg | volume error.
+# tets | min dihedral | max dihedral | % below 10 deg | volume error. Time:
+# wall seconds of the meshing (bccmis: seconds.total), with the CPU seconds
+# in parentheses where the mesher reports them (stuff_peers does).
 #
 #   bench/stuff_compare.sh BCCMIS STUFF_PEERS [--max-level L] [--target-tets N] [INPUT.off ...]
 #
@@ -20,10 +22,11 @@
 # Matching the size: the mean tetrahedron volume v = input volume / target.
 # TetGen starts at -a 2v (its tetrahedra are mostly well below the bound) and
 # CGAL at cell_size = the edge of a regular tetrahedron of volume v; when the
-# first run's count is off by more than 10%, up to three more runs with the
-# bound moved along a log-log secant (first step: TetGen count ~ 1/a, CGAL
-# count ~ 1/size^3), and the run closest to the target is reported (TetGen's
-# count has a floor set by the input surface, which -q refines). A failing mesher gives a row saying
+# first run's count is off by more than 10%, more runs (TetGen up to 7 in all,
+# CGAL up to 4): the bound moved along a log-log secant (first step: TetGen
+# count ~ 1/a, CGAL count ~ 1/size^3) until the target is bracketed, then
+# bisected; the run closest to the target is reported (TetGen's count has a
+# floor set by the input surface, which -q refines, and jumps with -a). A failing mesher gives a row saying
 # so; the others still run.
 set -uo pipefail
 bccmis=${1:?usage: bench/stuff_compare.sh BCCMIS STUFF_PEERS [--max-level L] [--target-tets N] [INPUT.off ...]}
@@ -109,15 +112,17 @@ def input_volume(path):
     return vol / 6
 
 
-def matched(make_cmd, first, target, exponent):
-    """Runs at `first`, then up to three more times while the count is off by
-    more than 10%: the next parameter from a log-log secant through the last
-    two runs (the first step uses `exponent`, d log parameter / d log count);
-    stops when the count no longer moves (a floor set by the surface). Returns
-    the run nearest the target and all runs."""
+def matched(make_cmd, first, target, exponent, tries):
+    """Runs at `first`, then while the count is off by more than 10% (at most
+    `tries` runs): until the target is bracketed, a step along a log-log
+    secant through the last two runs (the first step uses `exponent`,
+    d log parameter / d log count), then bisection of the bracket in log
+    space (TetGen's count is not monotone in -a at every step); stops when two
+    runs give the same count (a floor set by the surface). Returns the run
+    nearest the target and all runs."""
     runs = []
     param = first
-    for _ in range(4):
+    for _ in range(tries):
         r = run_json(make_cmd(param))
         if r is None or r["tetrahedra"] <= 0:
             break
@@ -125,13 +130,22 @@ def matched(make_cmd, first, target, exponent):
         n = r["tetrahedra"]
         if abs(n / target - 1) <= 0.10:
             break
+        # exponent < 0: a larger parameter gives fewer tetrahedra.
+        many = [p for p, q in runs if q["tetrahedra"] > target]
+        few = [p for p, q in runs if q["tetrahedra"] < target]
+        if many and few:
+            lo, hi = max(many), min(few)
+            if lo < hi:
+                param = math.sqrt(lo * hi)
+                continue
         k = exponent
         if len(runs) >= 2:
             (p0, r0), (p1, r1) = runs[-2], runs[-1]
             n0, n1 = r0["tetrahedra"], r1["tetrahedra"]
             if abs(math.log(n1 / n0)) < 0.02:
                 break
-            k = math.log(p1 / p0) / math.log(n1 / n0)
+            if p1 != p0:
+                k = math.log(p1 / p0) / math.log(n1 / n0)
             k = -min(max(-k, abs(exponent) / 4), abs(exponent) * 4)
         param = param * (target / n) ** k
     if not runs:
@@ -144,7 +158,8 @@ def row(name, r):
     if r is None:
         return f"| {name} | failed | | | | | |"
     below = r.get("below10")
-    return (f"| {name} | {seconds_of(r):.3f} s | {r['tetrahedra']:,} | {r['min_dihedral']:.2f} | "
+    cpu = f" (cpu {r['cpu_seconds']:.3f})" if "cpu_seconds" in r else ""
+    return (f"| {name} | {seconds_of(r):.3f} s{cpu} | {r['tetrahedra']:,} | {r['min_dihedral']:.2f} | "
             f"{r['max_dihedral']:.2f} | {100 * below:.3f} | {100 * r['volume_rel_error']:+.3g}% |")
 
 
@@ -154,9 +169,9 @@ for path in inputs:
     b = run_json(cmd)
     target = b["tetrahedra"] if b and b.get("tetrahedra") else target_default
     v = vol / target
-    tet_best, tet_runs = matched(lambda a: [peers, "tetgen", path, "--max-volume", f"{a:.6g}"], 2 * v, target, -1.0)
+    tet_best, tet_runs = matched(lambda a: [peers, "tetgen", path, "--max-volume", f"{a:.6g}"], 2 * v, target, -1.0, 7)
     edge = (6 * math.sqrt(2) * v) ** (1 / 3)
-    cgal_best, cgal_runs = matched(lambda s: [peers, "cgal", path, "--cell-size", f"{s:.6g}"], edge, target, -1 / 3)
+    cgal_best, cgal_runs = matched(lambda s: [peers, "cgal", path, "--cell-size", f"{s:.6g}"], edge, target, -1 / 3, 4)
     print(f"\n### {path} (enclosed volume {vol:.6g}; target {target:,} tetrahedra"
           f"{'' if b else ', bccmis stuff failed'})\n")
     print("| mesher | time | tets | min dihedral | max dihedral | % below 10 deg | volume error |")

@@ -11,12 +11,13 @@
 //       CGAL Mesh_3 on a Polyhedral_mesh_domain_3: make_mesh_3 with
 //       facet_angle 25, facet_size S, facet_distance D (default S / 20),
 //       cell_radius_edge_ratio 3, cell_size S, then perturb() and exude();
-//       the finite cells in the complex. seconds: domain construction and
-//       make_mesh_3 (AABB tree, refinement, perturbation, exudation).
+//       the finite cells in the complex. seconds (wall) and cpu_seconds:
+//       domain construction and make_mesh_3 (AABB tree, refinement,
+//       perturbation, exudation).
 //   stuff_peers tetgen INPUT.off --max-volume V [--verify [--tolerance T]]
 //       Debian's `tetgen` binary, `-pq1.414 -a<V> -Q` on a copy of INPUT in a
 //       temporary directory; reads the .node/.ele it writes. seconds: the
-//       tetgen process's wall time.
+//       tetgen process's wall time, cpu_seconds its user + system time.
 //   stuff_peers sphere-off R N OUT.off
 //       A closed, outward-oriented sphere: an icosahedron subdivided N times,
 //       its vertices on the sphere of radius R.
@@ -26,7 +27,9 @@
 // --verify: exit 1 unless the mesh has tetrahedra, every tetrahedron is
 // positively oriented (tet_quality.h, orient6 > 0) and |volume_rel_error|
 // is at most T (default 0.05). Numbers: bench/RESULTS.md, section 10.
+#include <sys/resource.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -195,7 +198,15 @@ using Tr = CGAL::Mesh_triangulation_3<MeshDomain, CGAL::Default, CGAL::Sequentia
 using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr>;
 using MeshCriteria = CGAL::Mesh_criteria_3<Tr>;
 
-TetMesh run_cgal(const Surface& s, double cell_size, double facet_distance, unsigned seed, double& seconds) {
+// CPU time of this process (user + system), seconds.
+double process_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec) * 1e-9;
+}
+
+TetMesh run_cgal(const Surface& s, double cell_size, double facet_distance, unsigned seed, double& seconds,
+                 double& cpu_seconds) {
   std::vector<K::Point_3> points;
   points.reserve(s.points.size());
   for (const Vec3L& p : s.points)
@@ -209,6 +220,7 @@ TetMesh run_cgal(const Surface& s, double cell_size, double facet_distance, unsi
 
   namespace params = CGAL::parameters;
   const auto start = Clock::now();
+  const double cpu_start = process_cpu_seconds();
   MeshDomain domain(polyhedron);
   MeshCriteria criteria(params::facet_angle = 25, params::facet_size = cell_size,
                         params::facet_distance = facet_distance, params::cell_radius_edge_ratio = 3,
@@ -216,6 +228,7 @@ TetMesh run_cgal(const Surface& s, double cell_size, double facet_distance, unsi
   C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_lloyd(), params::no_odt(), params::perturb(),
                                       params::exude());
   seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  cpu_seconds = process_cpu_seconds() - cpu_start;
 
   TetMesh m;
   std::unordered_map<Tr::Vertex_handle, std::size_t> index;
@@ -239,8 +252,9 @@ TetMesh run_cgal(const Surface& s, double cell_size, double facet_distance, unsi
 // ---- TetGen -----------------------------------------------------------------
 
 // Runs argv (no shell) and waits; its stdout goes to /dev/null. Returns the
-// exit status, -1 if it could not be started.
-int run_process(const std::vector<std::string>& args) {
+// exit status, -1 if it could not be started; cpu_seconds: the child's user +
+// system time.
+int run_process(const std::vector<std::string>& args, double& cpu_seconds) {
   std::vector<char*> argv;
   for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
@@ -252,7 +266,10 @@ int run_process(const std::vector<std::string>& args) {
     _exit(127);
   }
   int status = 0;
-  if (waitpid(pid, &status, 0) != pid) return -1;
+  rusage usage{};
+  if (wait4(pid, &status, 0, &usage) != pid) return -1;
+  cpu_seconds = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) * 1e-6;
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
@@ -304,7 +321,7 @@ std::vector<Tet> read_ele(const std::string& path, std::size_t base, std::size_t
   return tets;
 }
 
-TetMesh run_tetgen(const std::string& input, double max_volume, double& seconds) {
+TetMesh run_tetgen(const std::string& input, double max_volume, double& seconds, double& cpu_seconds) {
   char dir_template[] = "/tmp/stuff_peers.XXXXXX";
   if (!mkdtemp(dir_template)) throw std::runtime_error("mkdtemp failed");
   const std::filesystem::path dir(dir_template);
@@ -313,7 +330,7 @@ TetMesh run_tetgen(const std::string& input, double max_volume, double& seconds)
   char volume[64];
   std::snprintf(volume, sizeof volume, "-a%.17g", max_volume);
   const auto start = Clock::now();
-  const int status = run_process({"tetgen", "-pq1.414", volume, "-Q", copy.string()});
+  const int status = run_process({"tetgen", "-pq1.414", volume, "-Q", copy.string()}, cpu_seconds);
   seconds = std::chrono::duration<double>(Clock::now() - start).count();
   if (status != 0) {
     std::filesystem::remove_all(dir);
@@ -340,7 +357,7 @@ std::string json_string(const std::string& s) {
 
 // Prints the JSON object; returns false when --verify fails.
 bool report(const std::string& mesher, const std::string& input, const Surface& s, const TetMesh& m, double seconds,
-            bool verify, double tolerance) {
+            double cpu_seconds, bool verify, double tolerance) {
   const auto q = bccmis::bench::measure(m.points, m.tets);
   std::vector<char> used(m.points.size(), 0);
   for (const Tet& t : m.tets)
@@ -351,11 +368,12 @@ bool report(const std::string& mesher, const std::string& input, const Surface& 
   const long double rel = (q.volume - input_volume) / input_volume;
   const long double below10 = q.tetrahedra ? static_cast<long double>(q.below10) / q.tetrahedra : 0;
   std::printf(
-      "{\"mesher\": %s, \"input\": %s, \"seconds\": %.6f, \"vertices\": %zu, \"tetrahedra\": %zu, "
+      "{\"mesher\": %s, \"input\": %s, \"seconds\": %.6f, \"cpu_seconds\": %.6f, \"vertices\": %zu, \"tetrahedra\": "
+      "%zu, "
       "\"min_dihedral\": %.6Lf, \"max_dihedral\": %.6Lf, \"below10\": %.8Lf, \"volume\": %.12Lg, "
       "\"input_volume\": %.12Lg, \"volume_rel_error\": %.8Le, \"inverted\": %zu}\n",
-      json_string(mesher).c_str(), json_string(input).c_str(), seconds, vertices, q.tetrahedra, q.min_dihedral,
-      q.max_dihedral, below10, q.volume, input_volume, rel, q.inverted);
+      json_string(mesher).c_str(), json_string(input).c_str(), seconds, cpu_seconds, vertices, q.tetrahedra,
+      q.min_dihedral, q.max_dihedral, below10, q.volume, input_volume, rel, q.inverted);
   std::fflush(stdout);
   if (!verify) return true;
   bool ok = true;
@@ -491,17 +509,17 @@ int main(int argc, char** argv) {
     const Surface s = read_off(input);
     if (!closed_and_oriented(s))
       std::fprintf(stderr, "stuff_peers: warning: %s is not a closed, consistently oriented surface\n", input.c_str());
-    double seconds = 0;
+    double seconds = 0, cpu_seconds = 0;
     TetMesh m;
     if (command == "cgal") {
       if (!(cell_size > 0)) return usage();
       if (!(facet_distance > 0)) facet_distance = cell_size / 20;
-      m = run_cgal(s, cell_size, facet_distance, seed, seconds);
+      m = run_cgal(s, cell_size, facet_distance, seed, seconds, cpu_seconds);
     } else {
       if (!(max_volume > 0)) return usage();
-      m = run_tetgen(input, max_volume, seconds);
+      m = run_tetgen(input, max_volume, seconds, cpu_seconds);
     }
-    return report(command, input, s, m, seconds, verify, tolerance) ? 0 : 1;
+    return report(command, input, s, m, seconds, cpu_seconds, verify, tolerance) ? 0 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "stuff_peers: %s\n", e.what());
     return 1;
