@@ -74,19 +74,21 @@ def run_json(cmd):
         print(f"stuff_compare: {' '.join(cmd)}: exit status {p.returncode}\n{p.stderr.strip()[-2000:]}",
               file=sys.stderr)
         return None
-    for line in reversed(p.stdout.strip().splitlines()):
+    # The last JSON object on stdout (one line or pretty-printed; other
+    # output around it is skipped).
+    decoder, found, text = json.JSONDecoder(), None, p.stdout
+    i = text.find("{")
+    while i >= 0:
         try:
-            obj = json.loads(line)
+            obj, end = decoder.raw_decode(text, i)
             if isinstance(obj, dict):
-                return obj
+                found = obj
+            i = text.find("{", end)
         except json.JSONDecodeError:
-            pass
-    try:
-        obj = json.loads(p.stdout)
-        return obj if isinstance(obj, dict) else None
-    except json.JSONDecodeError:
+            i = text.find("{", i + 1)
+    if found is None:
         print(f"stuff_compare: {' '.join(cmd)}: no JSON object on stdout", file=sys.stderr)
-        return None
+    return found
 
 
 def seconds_of(r):
@@ -155,19 +157,25 @@ def matched(make_cmd, first, target, exponent, tries):
 
 
 def row(name, r):
+    """One table row; a field the mesher did not report shows as '?'."""
     if r is None:
         return f"| {name} | failed | | | | | |"
-    below = r.get("below10")
-    cpu = f" (cpu {r['cpu_seconds']:.3f})" if "cpu_seconds" in r else ""
-    return (f"| {name} | {seconds_of(r):.3f} s{cpu} | {r['tetrahedra']:,} | {r['min_dihedral']:.2f} | "
-            f"{r['max_dihedral']:.2f} | {100 * below:.3f} | {100 * r['volume_rel_error']:+.3g}% |")
+
+    def fmt(key, f, scale=1.0):
+        x = seconds_of(r) if key == "seconds" else r.get(key)
+        return f.format(scale * x) if isinstance(x, (int, float)) else "?"
+
+    cpu = f" (cpu {r['cpu_seconds']:.3f})" if isinstance(r.get("cpu_seconds"), (int, float)) else ""
+    return (f"| {name} | {fmt('seconds', '{:.3f} s')}{cpu} | {fmt('tetrahedra', '{:,.0f}')} | "
+            f"{fmt('min_dihedral', '{:.2f}')} | {fmt('max_dihedral', '{:.2f}')} | "
+            f"{fmt('below10', '{:.3f}', 100)} | {fmt('volume_rel_error', '{:+.3g}%', 100)} |")
 
 
 for path in inputs:
     vol = input_volume(path)
     cmd = [bccmis, "stuff", path, "--max-level", str(max_level), "--stats", "--json", "-o", f"{work}/stuff.vtu"]
     b = run_json(cmd)
-    target = b["tetrahedra"] if b and b.get("tetrahedra") else target_default
+    target = b["tetrahedra"] if b and isinstance(b.get("tetrahedra"), int) and b["tetrahedra"] > 0 else target_default
     v = vol / target
     tet_best, tet_runs = matched(lambda a: [peers, "tetgen", path, "--max-volume", f"{a:.6g}"], 2 * v, target, -1.0, 7)
     edge = (6 * math.sqrt(2) * v) ** (1 / 3)
