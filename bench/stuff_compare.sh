@@ -119,7 +119,7 @@ def matched(make_cmd, first, target, exponent, tries):
     `tries` runs): until the target is bracketed, a step along a log-log
     secant through the last two runs (the first step uses `exponent`,
     d log parameter / d log count), then bisection of the bracket in log
-    space (TetGen's count is not monotone in -a at every step); stops when two
+    space (TetGen's count jumps with -a); stops when two
     runs give the same count (a floor set by the surface). Returns the run
     nearest the target and all runs."""
     runs = []
