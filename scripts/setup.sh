@@ -7,10 +7,10 @@ packages=(
   cmake ninja-build g++ clang-14 clang-format-14 libclang-rt-14-dev llvm-14 pkg-config python3 git
   libgtest-dev libgmock-dev googletest librapidcheck-dev libbenchmark-dev
   libcgal-dev libgmp-dev libmpfr-dev libcli11-dev libstb-dev
-  # the peers of `bccmis stuff` in bench/stuff_peers.cpp
-  tetgen
   # outside readers of the 3D mesh writers (tests/d3/mesh_readers_test.py)
   python3-meshio gmsh
+  # the peers of `bccmis stuff` in the comparison benchmark (bench/stuff_peers.cpp)
+  tetgen
   # optional components: the p4est bridge (p4est is built with OpenMPI, whose
   # headers libp4est-dev does not pull in) and the browser test of the viewer
   libp4est-dev libopenmpi-dev openmpi-bin chromium
