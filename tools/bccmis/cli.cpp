@@ -96,6 +96,37 @@ CLI::App* add_mesh(CLI::App& app, MeshOptions& o) {
   return cmd;
 }
 
+CLI::App* add_stuff(CLI::App& app, StuffOptions& o) {
+  CLI::App* cmd = app.add_subcommand(
+      "stuff", "Mesh a closed shape with tetrahedra by isosurface stuffing on the graded BCC mesh (spec/stuffing.md).");
+  cmd->add_option("input", o.input, "Closed triangle mesh: .off, .obj or .stl (ASCII or binary)");
+  cmd->add_option("--shape", o.shape,
+                  "A built-in shape instead: sphere[:r=R], torus[:R=A,r=B], spheres[:r=R,d=D] (defaults r=1; R=1, "
+                  "r=0.4; r=0.7, d=1)");
+  cmd->add_option("-o,--output", o.outputs,
+                  "File to write (atomically, all or none); the extension names it: .vtu, .msh (Gmsh 4.1), .mesh "
+                  "(Medit) for the tetrahedra, .off, .obj for the boundary surface; repeatable");
+  cmd->add_option("-L,--max-level", o.max_level, "Finest lattice level, used where the surface is (default 4)")
+      ->check(CLI::Range(0, 20));
+  cmd->add_option("--min-level", o.min_level, "Every lattice leaf at least this level (default 0)")
+      ->check(CLI::Range(0, 20));
+  cmd->add_option("--cells", o.cells, "Level-0 cubes along the shape's longest side (default 4)")
+      ->check(CLI::Range(1, 1 << 20));
+  cmd->add_option("--size", o.size, "Finest edge length at most this (chooses --max-level)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--stats", o.stats,
+                "Print counts, volume and its error, Hausdorff distance, dihedral angles and seconds per phase");
+  cmd->add_flag("--json", o.json, "Statistics as JSON");
+  cmd->add_flag("--check", o.check,
+                "Check the mesh before writing: exact positive orientation, conformity, a closed boundary on the "
+                "surface (exit 1 on a violation)");
+  cmd->add_flag("-q,--quiet", o.quiet, "No progress or summary on stderr");
+  cmd->footer(
+      "Examples:\n  bccmis stuff --shape torus -L 4 -o torus.vtu --stats\n"
+      "  bccmis stuff elephant.off -L 5 -o elephant.msh -o elephant.off --stats --json");
+  return cmd;
+}
+
 CLI::App* add_render(CLI::App& app, RenderOptions& o) {
   CLI::App* cmd =
       app.add_subcommand("render", "Draw a state as SVG (2D: cells, edges, junctions; 3D: the box and one slice).");
@@ -340,6 +371,7 @@ std::variant<int, Command> parse_command_line(int argc, char** argv) {
   DiffOptions diff;
   StatsOptions stats;
   MeshOptions mesh;
+  StuffOptions stuff;
   RenderOptions render;
   ViewCommandOptions view;
   ConformanceCommandOptions conformance;
@@ -353,6 +385,7 @@ std::variant<int, Command> parse_command_line(int argc, char** argv) {
       {add_diff(app, diff), [&] { return Command(diff); }},
       {add_stats(app, stats), [&] { return Command(stats); }},
       {add_mesh(app, mesh), [&] { return Command(mesh); }},
+      {add_stuff(app, stuff), [&] { return Command(stuff); }},
       {add_render(app, render), [&] { return Command(render); }},
       {add_view(app, view), [&] { return Command(view); }},
       {add_conformance(app, conformance), [&] { return Command(conformance); }},

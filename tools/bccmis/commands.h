@@ -24,7 +24,10 @@ class Lattice3;
 }  // namespace bccmis::fast
 namespace bccmis::d3 {
 struct Graph3;
-struct TetMesh;
+struct Point3;
+template <class P>
+struct BasicTetMesh;
+using TetMesh = BasicTetMesh<Point3>;
 }  // namespace bccmis::d3
 
 namespace bccmis::cli {
@@ -114,6 +117,21 @@ struct MeshOptions {
   bool quiet = false;
 };
 int run(const MeshOptions& o);
+
+struct StuffOptions {
+  std::string input;                 ///< a closed triangle mesh (.off, .obj, .stl)
+  std::string shape;                 ///< or a built-in shape, NAME[:KEY=VALUE,...]
+  std::vector<std::string> outputs;  ///< -o, repeatable; the extension names the format
+  int max_level = 4;
+  int min_level = 0;
+  int cells = 4;
+  double size = 0;  ///< > 0: the finest edge length asked for (chooses the max level)
+  bool stats = false;
+  bool json = false;
+  bool check = false;
+  bool quiet = false;
+};
+int run(const StuffOptions& o);
 
 struct RenderOptions {
   std::string state;

@@ -4,10 +4,10 @@
 #include "bccmis/stuff/shape.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <numbers>
 #include <random>
-#include <sstream>
 
 namespace bccmis::stuff {
 namespace {
@@ -33,11 +33,15 @@ double bisect(const Shape& s, const Vec3& a, const Vec3& b) {
   return 0.5 * (lo + hi);
 }
 
-std::string fmt(const char* what, std::initializer_list<double> xs) {
-  std::ostringstream o;
-  o << what;
-  for (double x : xs) o << ' ' << x;
-  return o.str();
+/// "name k1=v1 k2=v2" with the shortest round-trip text of each value.
+std::string fmt(const char* name, std::initializer_list<std::pair<const char*, double>> params) {
+  std::string out = name;
+  for (const auto& [key, value] : params) {
+    char buf[32];
+    const auto end = std::to_chars(buf, buf + sizeof buf, value).ptr;
+    out += std::string(" ") + key + "=" + std::string(buf, end);
+  }
+  return out;
 }
 
 class Sphere final : public Shape {
@@ -77,7 +81,7 @@ class Sphere final : public Shape {
     }
     return out;
   }
-  std::string describe() const override { return fmt("sphere r=", {r_}); }
+  std::string describe() const override { return fmt("sphere", {{"r", r_}}); }
 
  private:
   Vec3 c_;
@@ -114,7 +118,7 @@ class Torus final : public Shape {
     }
     return out;
   }
-  std::string describe() const override { return fmt("torus R= r=", {R_, r_}); }
+  std::string describe() const override { return fmt("torus", {{"R", R_}, {"r", r_}}); }
 
  private:
   Vec3 c_;
@@ -157,7 +161,7 @@ class Spheres final : public Shape {
     }
     return out;
   }
-  std::string describe() const override { return fmt("spheres r=", {r_}); }
+  std::string describe() const override { return fmt("spheres", {{"r", r_}, {"d", norm(sub(ca_, cb_))}}); }
 
  private:
   Sphere a_, b_;
@@ -195,6 +199,59 @@ std::unique_ptr<Shape> make_torus(const Vec3& c, double R, double r) { return st
 std::unique_ptr<Shape> make_spheres(const Vec3& a, const Vec3& b, double r) {
   return std::make_unique<Spheres>(a, b, r);
 }
+std::unique_ptr<Shape> make_builtin(const std::string& spec) {
+  const std::size_t colon = spec.find(':');
+  const std::string name = spec.substr(0, colon);
+  struct Param {
+    const char* key;
+    double value;
+    bool seen = false;
+  };
+  std::vector<Param> params;
+  if (name == "sphere")
+    params = {{"r", 1}};
+  else if (name == "torus")
+    params = {{"R", 1}, {"r", 0.4}};
+  else if (name == "spheres")
+    params = {{"r", 0.7}, {"d", 1}};
+  else
+    throw ShapeError("--shape '" + spec + "': unknown shape '" + name + "' (sphere, torus, spheres)");
+  const auto bad = [&](const std::string& why) { return ShapeError("--shape '" + spec + "': " + why); };
+  if (colon != std::string::npos) {
+    std::size_t at = colon + 1;
+    while (true) {
+      const std::size_t comma = std::min(spec.find(',', at), spec.size());
+      const std::string item = spec.substr(at, comma - at);
+      const std::size_t eq = item.find('=');
+      if (eq == std::string::npos) throw bad("expected KEY=VALUE, got '" + item + "'");
+      const std::string key = item.substr(0, eq), text = item.substr(eq + 1);
+      auto it = std::find_if(params.begin(), params.end(), [&](const Param& p) { return key == p.key; });
+      if (it == params.end()) {
+        std::string keys;
+        for (const Param& p : params) keys += (keys.empty() ? "" : ", ") + std::string(p.key);
+        throw bad("unknown parameter '" + key + "' of " + name + " (" + keys + ")");
+      }
+      if (it->seen) throw bad("parameter '" + key + "' given twice");
+      double v = 0;
+      const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+      if (ec != std::errc() || end != text.data() + text.size() || text.empty() || !std::isfinite(v))
+        throw bad("'" + text + "' is not a number");
+      it->value = v, it->seen = true;
+      if (comma == spec.size()) break;
+      at = comma + 1;
+    }
+  }
+  try {
+    if (name == "sphere") return make_sphere({0, 0, 0}, params[0].value);
+    if (name == "torus") return make_torus({0, 0, 0}, params[0].value, params[1].value);
+    const double r = params[0].value, d = params[1].value;
+    if (!(r > 0) || !(d >= 0)) throw ShapeError("spheres: r must be positive and d not negative");
+    return make_spheres({-d / 2, 0, 0}, {d / 2, 0, 0}, r);
+  } catch (const ShapeError& e) {
+    throw bad(e.what());
+  }
+}
+
 std::unique_ptr<Shape> translated(std::shared_ptr<const Shape> s, const Vec3& d) {
   return std::make_unique<Translated>(std::move(s), d);
 }

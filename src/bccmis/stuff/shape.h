@@ -58,6 +58,15 @@ std::unique_ptr<Shape> make_spheres(const Vec3& a, const Vec3& b, double r);
 /// The same shape translated by d (its samples, bounds and distances moved).
 std::unique_ptr<Shape> translated(std::shared_ptr<const Shape> s, const Vec3& d);
 
+/// A built-in shape by name and parameters (spec/stuffing.md S1):
+///   sphere[:r=R]                 radius R (1), centered at the origin
+///   torus[:R=A,r=B]              ring radius A (1), tube radius B (0.4), axis z
+///   spheres[:r=R,d=D]            two spheres of radius R (0.7) at x = -D/2 and
+///                                x = D/2 (D = 1), united
+/// Throws ShapeError naming an unknown shape, an unknown or repeated
+/// parameter, a value that is not a number, or one out of range.
+std::unique_ptr<Shape> make_builtin(const std::string& spec);
+
 /// A refused shape or input file: what is wrong, and where (file:line:col when a file).
 class ShapeError : public std::runtime_error {
  public:
