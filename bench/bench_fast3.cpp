@@ -5,8 +5,10 @@
 // sweep, for the reference (d3::Graph3) and the fast lattice
 // (fast::Lattice3). Within a level the operations run in position order
 // (sweep) or, with --random, in a shuffled order (fixed seed): on a uniform
-// level every order is allowed. A plain program (one run, wall-clock time),
-// not a Google Benchmark: the sweep is one long workload. With --verify the
+// level every order is allowed. A plain program (one run; the CPU time of
+// the thread, CLOCK_THREAD_CPUTIME_ID, so that other processes' time slices
+// on a shared machine are not counted), not a Google Benchmark: the sweep is
+// one long workload. With --verify the
 // two lattices' canonical states must be equal after the refines and after
 // the coarsens, and the coarsens must end at the initial lattice (exit 1
 // otherwise).
@@ -15,8 +17,9 @@
 //
 // Numbers and the commands that produced them: bench/RESULTS.md, "3D refine"
 // and "3D coarsen".
+#include <time.h>
+
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -32,6 +35,13 @@ namespace {
 
 using namespace bccmis;
 
+// The calling thread's CPU time in ns.
+double thread_ns() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) * 1e9 + static_cast<double>(t.tv_nsec);
+}
+
 struct Totals {
   double refine_ns = 0;
   double coarsen_ns = 0;
@@ -43,7 +53,6 @@ struct Totals {
 // level and phase and the totals.
 template <class L, class State>
 Totals sweep(const char* name, L& g, bool random, bool verify, const State& state) {
-  using Clock = std::chrono::steady_clock;
   std::mt19937_64 rng(19);
   std::vector<std::vector<d3::Point3>> refined(static_cast<std::size_t>(size_of(g).L));
   std::size_t refines = 0, coarsens = 0;
@@ -52,13 +61,13 @@ Totals sweep(const char* name, L& g, bool random, bool verify, const State& stat
     std::vector<d3::Point3>& todo = refined[static_cast<std::size_t>(level)];
     for (const d3::Point3& c : cells(g)) todo.push_back(c);
     if (random) std::shuffle(todo.begin(), todo.end(), rng);
-    const auto start = Clock::now();
+    const double start = thread_ns();
     for (const d3::Point3& c : todo)
       if (!refine(g, c).applied()) {
         std::fprintf(stderr, "bench_fast3: %s refused refine %s\n", name, d3::to_string(c).c_str());
         std::exit(1);
       }
-    const double ns = std::chrono::duration<double, std::nano>(Clock::now() - start).count();
+    const double ns = thread_ns() - start;
     t.refine_ns += ns;
     refines += todo.size();
     std::printf("%-9s refine  level %d -> %d: %9zu ops, %9zu cells, %8.1f ns/op\n", name, level, level + 1, todo.size(),
@@ -69,13 +78,13 @@ Totals sweep(const char* name, L& g, bool random, bool verify, const State& stat
     std::vector<d3::Point3>& todo = refined[static_cast<std::size_t>(level)];
     if (random) std::shuffle(todo.begin(), todo.end(), rng);
     const std::size_t before = cell_count(g);
-    const auto start = Clock::now();
+    const double start = thread_ns();
     for (const d3::Point3& n : todo)
       if (!coarsen(g, n).applied()) {
         std::fprintf(stderr, "bench_fast3: %s refused coarsen %s\n", name, d3::to_string(n).c_str());
         std::exit(1);
       }
-    const double ns = std::chrono::duration<double, std::nano>(Clock::now() - start).count();
+    const double ns = thread_ns() - start;
     t.coarsen_ns += ns;
     coarsens += todo.size();
     std::printf("%-9s coarsen level %d -> %d: %9zu ops, %9zu cells, %8.1f ns/op\n", name, level + 1, level, todo.size(),

@@ -30,7 +30,8 @@
 //                     of frames, comparing the leaf sets after each, and import
 //                     p8est's forest through the bridge (checker included);
 //                     exit 1 on a difference
-//   --bccmis_verify_large  also verify the 10^6-leaf workload (slow)
+//   --bccmis_verify_large  also verify the 10^6-leaf workload (leaf sets
+//                     every frame; the import only up to 10^5 leaves)
 #include <benchmark/benchmark.h>
 #include <p8est_bits.h>
 #include <p8est_extended.h>
@@ -216,6 +217,15 @@ int verify_one(const Workload& w, int speed, int frames) {
                   static_cast<long long>(theirs.forest()->global_num_quadrants));
       return 1;
     }
+  }
+  // The import builds the reference graph (std::set, about 2 ms a refine):
+  // up to 10^5 leaves.
+  if (w.leaves > 100'000) {
+    std::printf(
+        "verify leaves:%lld, speed %d: %zu leaves, %d frames, %zu bccmis operations: same leaf sets (no import)\n",
+        static_cast<long long>(w.leaves), speed, ours.state().cell_count(), frames, ops);
+    std::fflush(stdout);
+    return 0;
   }
   try {
     if (!(p4est_bridge::import_forest(brick, theirs.forest()) == ours.state().to_graph())) {
