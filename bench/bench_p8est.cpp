@@ -32,6 +32,10 @@
 //                     exit 1 on a difference
 //   --bccmis_verify_large  also verify the 10^6-leaf workload (leaf sets
 //                     every frame; the import only up to 10^5 leaves)
+//   --bccmis_verify_steps  after each Step benchmark's timed loop (untimed),
+//                     replay the frames it timed on a bccmis and a p8est
+//                     feature, comparing leaf sets after every frame and the
+//                     last with the measured one; exit 1 on a difference
 #include <benchmark/benchmark.h>
 #include <p8est_bits.h>
 #include <p8est_extended.h>
@@ -54,6 +58,9 @@ using p4est_bridge::Leaf3;
 
 bool g_smoke = false;
 bool g_verify_large = false;
+bool g_verify_steps = false;
+bool g_failures = false;
+std::size_t g_verified_frames = 0;
 
 struct Workload {
   std::int64_t leaves;  // the target (nominal) leaf count: the label
@@ -163,6 +170,35 @@ void batch_p8est(benchmark::State& state, Workload w) {
   state.counters["bytes_per_leaf"] = static_cast<double>(bytes) / static_cast<double>(leaves);
 }
 
+// --bccmis_verify_steps, after a Step benchmark's timed loop: a bccmis and
+// a p8est feature replay the `frames` frames it timed, their leaf sets
+// compared after each; the last must be the measured feature's leaf set.
+void check_frames(benchmark::State& state, const Workload& w, int frames, const std::vector<Leaf3>& measured) {
+  if (!g_verify_steps) return;
+  const p4est_bridge::Brick3 brick(w.size);
+  LocalFeature3<fast::Lattice3> ours(w.size, w.radius, 1);
+  P8estFeature theirs(brick, w.radius, 1);
+  for (int f = 1; f <= frames; ++f) {
+    ours.frame();
+    theirs.frame();
+    if (leaves_of(ours.state()) != leaves_of(brick, theirs.forest())) {
+      std::printf("verify FAILED: leaves:%lld, frame %d of %d timed: the leaf sets differ\n",
+                  static_cast<long long>(w.leaves), f, frames);
+      g_failures = true;
+      state.SkipWithError("leaf sets differ");
+      return;
+    }
+  }
+  if (leaves_of(ours.state()) != measured) {
+    std::printf("verify FAILED: leaves:%lld: the measured feature's last frame differs\n",
+                static_cast<long long>(w.leaves));
+    g_failures = true;
+    state.SkipWithError("leaf sets differ");
+    return;
+  }
+  g_verified_frames += static_cast<std::size_t>(frames);
+}
+
 void step_bccmis(benchmark::State& state, Workload w) {
   LocalFeature3<fast::Lattice3> feature(w.size, w.radius, 1);
   std::size_t ops = 0, frames = 0;
@@ -170,6 +206,7 @@ void step_bccmis(benchmark::State& state, Workload w) {
     ops += feature.frame();
     ++frames;
   }
+  check_frames(state, w, static_cast<int>(frames), leaves_of(feature.state()));
   const auto& g = feature.state();
   state.counters["leaves"] = static_cast<double>(g.cell_count());
   state.counters["bytes_per_leaf"] = static_cast<double>(g.memory_bytes()) / static_cast<double>(g.cell_count());
@@ -179,7 +216,12 @@ void step_bccmis(benchmark::State& state, Workload w) {
 void step_p8est(benchmark::State& state, Workload w) {
   const p4est_bridge::Brick3 brick(w.size);
   P8estFeature feature(brick, w.radius, 1);
-  for (auto _ : state) feature.frame();
+  int frames = 0;
+  for (auto _ : state) {
+    feature.frame();
+    ++frames;
+  }
+  check_frames(state, w, frames, leaves_of(brick, feature.forest()));
   const auto leaves = static_cast<double>(feature.forest()->global_num_quadrants);
   state.counters["leaves"] = leaves;
   state.counters["bytes_per_leaf"] = static_cast<double>(feature.memory_bytes()) / leaves;
@@ -266,10 +308,15 @@ int main(int argc, char** argv) {
     if (a == "--bccmis_smoke") return g_smoke = true;
     if (a == "--bccmis_verify") return do_verify = true;
     if (a == "--bccmis_verify_large") return do_verify = g_verify_large = true;
+    if (a == "--bccmis_verify_steps") return g_verify_steps = true;
     return false;
   });
   bccmis::p4est_bridge::Session session(&argc, &argv);
   if (do_verify && verify() != 0) return 1;
   register_all();
-  return run_benchmarks(argc, argv);
+  const int status = run_benchmarks(argc, argv);
+  if (g_verify_steps)
+    std::printf("verify steps: %s, %zu timed frames replayed by both\n",
+                g_failures ? "FAILED" : "same leaf sets after every frame", g_verified_frames);
+  return g_failures ? 1 : status;
 }
