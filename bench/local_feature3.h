@@ -1,7 +1,7 @@
 // A moving sphere on a 3D lattice (bench_p8est): every leaf meeting the ball
 // has level L, the rest is the coarsest edge-balanced mesh around it. The
-// ball crosses the box along x and back (a triangle wave), one level-L cell
-// side a frame at the given speed 1.
+// ball crosses the box along x and back (a triangle wave), `speed` level-L
+// cube sides a frame.
 //
 //   - batch build, level by level: refine the level-l cells meeting the ball
 //     (with the balance cascade where a coarser face- or edge-neighbor is in
