@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -79,7 +81,8 @@ TEST(Fast3Bulk, RefineEachAndCoarsenEachAreOneCallPerPosition) {
     std::vector<Point3> cells(g.C.begin(), g.C.end());
     refined.push_back(cells);
     // Repeats (refused: no longer a cell) and a position that is no vertex.
-    cells.insert(cells.end(), cells.begin(), cells.begin() + 3);
+    const std::vector<Point3> again(cells.begin(), cells.begin() + std::min<std::ptrdiff_t>(3, std::ssize(cells)));
+    cells.insert(cells.end(), again.begin(), again.end());
     cells.push_back({1, 1, 1});
     std::shuffle(cells.begin(), cells.end(), rng);
     std::size_t expected = 0;
@@ -91,7 +94,8 @@ TEST(Fast3Bulk, RefineEachAndCoarsenEachAreOneCallPerPosition) {
     std::vector<Point3> nodes = refined[static_cast<std::size_t>(level)];
     // A coarser center first (refused: its children are refined), repeats.
     if (level > 0) nodes.insert(nodes.begin(), refined[static_cast<std::size_t>(level - 1)].front());
-    nodes.insert(nodes.end(), nodes.begin(), nodes.begin() + 2);
+    const std::vector<Point3> again(nodes.begin(), nodes.begin() + 2);
+    nodes.insert(nodes.end(), again.begin(), again.end());
     std::shuffle(nodes.begin() + 1, nodes.end(), rng);
     std::size_t expected = 0;
     for (const Point3& n : nodes) expected += d3::coarsen(g, n).applied();
