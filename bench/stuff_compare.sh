@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # bccmis stuff against its peers (issue 20, "Against the meshers users would
-# pick"; bench/RESULTS.md, section 10): on each input, `bccmis stuff` at one
+# pick"; bench/RESULTS.md, section 14): on each input, `bccmis stuff` at one
 # lattice level, then TetGen and CGAL Mesh_3 (bench/stuff_peers) at about the
 # same number of tetrahedra, and one markdown table per input: mesher | time |
 # tets | min dihedral | max dihedral | % below 10 deg | volume error. Time:

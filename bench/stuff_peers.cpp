@@ -26,7 +26,7 @@
 //
 // --verify: exit 1 unless the mesh has tetrahedra, every tetrahedron is
 // positively oriented (tet_quality.h, orient6 > 0) and |volume_rel_error|
-// is at most T (default 0.05). Numbers: bench/RESULTS.md, section 10.
+// is at most T (default 0.05). Numbers: bench/RESULTS.md, section 14.
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <time.h>
