@@ -120,6 +120,33 @@ def check_case(bccmis, d, name, args, euler, exact_volume, tolerance, on_unit_sp
         stats["volume_rel_error"], euler))
 
 
+def check_animation(bccmis, d):
+    """--animate 2 --check: the .pvd indexes frames 0..2, each a .vtu meshio
+    reads as tetrahedra; --check has compared every frame's lattice with the
+    one built from scratch (spec/stuffing.md S15)."""
+    import meshio
+    import xml.etree.ElementTree as ET
+    pvd = os.path.join(d, "anim", "ball.pvd")
+    os.makedirs(os.path.dirname(pvd))
+    run = subprocess.run([bccmis, "stuff", "--shape", "sphere:r=0.4", "-L", "2", "--cells", "6", "--animate", "2",
+                          "--path", "0.8,0,0", "-o", pvd, "--stats", "--json", "--check", "--quiet"],
+                         capture_output=True, text=True)
+    if run.returncode != 0:
+        fail("animate: exit %d: %s" % (run.returncode, run.stderr))
+    stats = json.loads(run.stdout)
+    files = [e.get("file") for e in ET.parse(pvd).getroot().iter("DataSet")]
+    if files != ["ball_0000.vtu", "ball_0001.vtu", "ball_0002.vtu"]:
+        fail("animate: the .pvd lists %s" % files)
+    for k, f in enumerate(files):
+        m = meshio.read(os.path.join(d, "anim", f))
+        if [c.type for c in m.cells] != ["tetra"] or len(m.cells[0].data) != stats["frames"][k]["tetrahedra"]:
+            fail("animate: %s has %s cells, the JSON says %d tetrahedra" % (f, [len(c.data) for c in m.cells],
+                                                                          stats["frames"][k]["tetrahedra"]))
+    if stats["operations"] != sum(f["refines"] + f["coarsens"] for f in stats["frames"]) or stats["operations"] == 0:
+        fail("animate: operations %d" % stats["operations"])
+    print("animate: %d frames, %d lattice operations" % (len(files), stats["operations"]))
+
+
 def main():
     if len(sys.argv) not in (2, 3):
         fail("usage: stuff_cli_readers.py BCCMIS [CGAL_MESHES_DIR]")
@@ -138,6 +165,7 @@ def main():
             # CGAL's double torus (genus 2), against the volume the JSON reports of the input.
             path = os.path.join(sys.argv[2], "double-torus-example.off")
             check_case(bccmis, d, "double_torus", [path, "-L", "3"], -2, None, 0.1)
+        check_animation(bccmis, d)
     print("ok")
 
 

@@ -13,6 +13,7 @@
 #include <random>
 
 #include "bccmis/d3/mesh.h"
+#include "bccmis/stuff/animate.h"
 #include "bccmis/stuff/stuff.h"
 
 namespace bccmis::stuff {
@@ -204,6 +205,40 @@ TEST(StuffShapes, BackgroundIsFinestWithinTheBand) {
     coarse += l < 3 ? 1 : 0;
   }
   EXPECT_GT(coarse, 0U);  // graded: not everything is refined
+}
+
+}  // namespace
+}  // namespace bccmis::stuff
+
+namespace bccmis::stuff {
+namespace {
+
+TEST(StuffAnimate, LocalStepsReachTheLatticeBuiltFromScratch) {
+  // S15: after every frame the locally updated lattice equals background()
+  // of the moved shape, computed from the initial lattice; and a step does
+  // fewer operations than building from scratch.
+  const std::shared_ptr<const Shape> ball = make_sphere({0, 0, 0}, 0.4);
+  const Vec3 path{1.2, 0.3, 0};
+  StuffOptions o;
+  o.max_level = 2;
+  o.cells = 6;
+  const Fit fit = fit_lattice(swept_bounds(*ball, path), o);
+  MovingLattice moving(ball, fit, o);
+  const std::size_t initial_leaves = fit.size.W * fit.size.H * fit.size.D;
+  for (int frame = 1; frame <= 4; ++frame) {
+    SCOPED_TRACE(frame);
+    const Vec3 offset{path[0] * frame / 4, path[1] * frame / 4, path[2] * frame / 4};
+    const FrameReport r = moving.step(offset);
+    const auto moved = translated(ball, offset);
+    const d3::Graph3 scratch = background(*moved, fit, o);
+    EXPECT_TRUE(moving.lattice() == scratch);
+    EXPECT_EQ(r.leaves, scratch.C.size());
+    EXPECT_GT(r.refines, 0U);
+    EXPECT_GT(r.coarsens, 0U);
+    // From scratch, every refined cell is one refine: (leaves - initial) / 7.
+    EXPECT_LT(r.refines + r.coarsens, (scratch.C.size() - initial_leaves) / 7);
+    check_mesh(*moved, fit, moving.stuffed());
+  }
 }
 
 }  // namespace

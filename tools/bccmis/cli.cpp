@@ -114,6 +114,13 @@ CLI::App* add_stuff(CLI::App& app, StuffOptions& o) {
       ->check(CLI::Range(1, 1 << 20));
   cmd->add_option("--size", o.size, "Finest edge length at most this (chooses --max-level)")
       ->check(CLI::PositiveNumber);
+  cmd->add_option("--animate", o.animate,
+                  "Move the shape through the lattice in N frames: local refine and coarsen per frame; -o names "
+                  "a .pvd (ParaView) and the frames are written beside it as .vtu")
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--path", o.path,
+                  "--animate: the whole motion DX,DY,DZ (default: 1.5 times the shape's x extent along x)");
+  cmd->add_flag("--compare", o.compare, "--animate: also build every frame from scratch and report both times");
   cmd->add_flag("--stats", o.stats,
                 "Print counts, volume and its error, Hausdorff distance, dihedral angles and seconds per phase");
   cmd->add_flag("--json", o.json, "Statistics as JSON");
@@ -123,7 +130,8 @@ CLI::App* add_stuff(CLI::App& app, StuffOptions& o) {
   cmd->add_flag("-q,--quiet", o.quiet, "No progress or summary on stderr");
   cmd->footer(
       "Examples:\n  bccmis stuff --shape torus -L 4 -o torus.vtu --stats\n"
-      "  bccmis stuff elephant.off -L 5 -o elephant.msh -o elephant.off --stats --json");
+      "  bccmis stuff elephant.off -L 5 -o elephant.msh -o elephant.off --stats --json\n"
+      "  bccmis stuff --shape sphere:r=0.5 -L 4 --animate 20 -o frames/ball.pvd --stats --compare");
   return cmd;
 }
 

@@ -4,6 +4,7 @@
 // boundary surface), with --stats for counts, volume, Hausdorff distance and
 // dihedral angles.
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -14,6 +15,7 @@
 #include <string>
 
 #include "bccmis/d3/mesh.h"
+#include "bccmis/stuff/animate.h"
 #include "bccmis/stuff/shape.h"
 #include "bccmis/stuff/stuff.h"
 #include "commands.h"
@@ -181,12 +183,136 @@ std::optional<std::string> check_stuffed(const stuff::Shape& shape, const stuff:
   return std::nullopt;
 }
 
+/// "DX,DY,DZ", or 1.5 times the shape's x extent along x when empty.
+Vec3 parse_path(const std::string& text, const stuff::Shape& shape) {
+  if (text.empty()) {
+    const stuff::Bounds b = shape.bounds();
+    return {1.5 * (b.hi[0] - b.lo[0]), 0, 0};
+  }
+  Vec3 d{};
+  std::size_t at = 0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const std::size_t end = i < 2 ? text.find(',', at) : text.size();
+    if (end == std::string::npos) throw InputError("--path '" + text + "': expected DX,DY,DZ");
+    const std::string item = text.substr(at, end - at);
+    const auto [ptr, ec] = std::from_chars(item.data(), item.data() + item.size(), d[i]);
+    if (item.empty() || ec != std::errc() || ptr != item.data() + item.size() || !std::isfinite(d[i]))
+      throw InputError("--path '" + text + "': '" + item + "' is not a number");
+    at = end + 1;
+  }
+  return d;
+}
+
+/// --animate N -o OUT.pvd: frames 0..N (frame 0 the shape where it is),
+/// written as OUT_0000.vtu ... beside the .pvd (spec/stuffing.md S15).
+int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>& shape, stuff::StuffOptions so) {
+  if (o.outputs.size() > 1 || (!o.outputs.empty() && !ends_with(o.outputs[0], ".pvd")))
+    throw InputError("--animate writes one .pvd (ParaView's index) with its .vtu frames beside it: give -o FILE.pvd");
+  if (o.outputs.empty() && !o.stats) throw InputError("nothing to do: give -o FILE.pvd or --stats");
+  const Vec3 path = parse_path(o.path, *shape);
+  stuff::Fit fit;
+  try {
+    fit = stuff::fit_lattice(stuff::swept_bounds(*shape, path), so);
+  } catch (const stuff::ShapeError& e) {
+    throw InputError(e.what());
+  }
+  const std::string pvd = o.outputs.empty() ? "" : o.outputs[0];
+  const std::string stem = pvd.substr(0, pvd.size() - 4);
+  const std::string base = stem.substr(stem.find_last_of('/') + 1);
+  const auto frame_name = [&](int k) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "_%04d.vtu", k);
+    return std::string(buf);
+  };
+  OutputSet outputs;
+  std::string index = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
+  std::string table = o.json ? "{\"frames\": ["
+                             : "frame refines coarsens leaves tetrahedra lattice_s stuff_s" +
+                                   std::string(o.compare ? " scratch_s" : "") + "\n";
+  const auto t0 = std::chrono::steady_clock::now();
+  stuff::MovingLattice moving(shape, fit, so);
+  const double initial = seconds_since(t0);
+  double step_total = 0, scratch_total = 0;
+  std::size_t ops = 0;
+  for (int k = 0; k <= o.animate; ++k) {
+    stuff::FrameReport r;
+    const Vec3 offset{path[0] * k / o.animate, path[1] * k / o.animate, path[2] * k / o.animate};
+    if (k == 0) {
+      r.leaves = moving.lattice().C.size();
+      r.lattice_seconds = initial;
+    } else {
+      r = moving.step(offset);
+      step_total += r.lattice_seconds + r.stuff_seconds;
+      ops += r.refines + r.coarsens;
+    }
+    double scratch = 0;
+    if (o.compare || o.check) {
+      const auto t = std::chrono::steady_clock::now();
+      const auto moved = stuff::translated(shape, offset);
+      const d3::Graph3 g = stuff::background(*moved, fit, so);
+      const stuff::Stuffed s = stuff::stuff(*moved, fit, g, so);
+      scratch = seconds_since(t);
+      if (k > 0) scratch_total += scratch;
+      if (o.check) {
+        if (!(g == moving.lattice()))
+          throw CheckFailure("frame " + std::to_string(k) +
+                             ": the lattice updated locally differs from the one built "
+                             "from scratch");
+        const auto boundary = stuff::boundary_triangles(moving.stuffed().mesh);
+        if (auto why = check_stuffed(moving.shape(), fit, moving.stuffed().mesh, boundary))
+          throw CheckFailure("frame " + std::to_string(k) + ": " + *why);
+      }
+    }
+    const d3::TetMeshF& mesh = moving.stuffed().mesh;
+    if (!pvd.empty()) {
+      outputs.add(stem + frame_name(k), [&](std::ostream& out) { d3::write_vtu(out, mesh); });
+      index +=
+          "    <DataSet timestep=\"" + std::to_string(k) + "\" part=\"0\" file=\"" + base + frame_name(k) + "\"/>\n";
+    }
+    if (o.json) {
+      table += std::string(k ? ", " : "") + "{\"frame\": " + std::to_string(k) +
+               ", \"refines\": " + std::to_string(r.refines) + ", \"coarsens\": " + std::to_string(r.coarsens) +
+               ", \"leaves\": " + std::to_string(r.leaves) + ", \"tetrahedra\": " + std::to_string(mesh.tets.size()) +
+               ", \"lattice_seconds\": " + number(r.lattice_seconds) +
+               ", \"stuff_seconds\": " + number(r.stuff_seconds) +
+               (o.compare ? ", \"scratch_seconds\": " + number(scratch) : "") + "}";
+    } else {
+      table += std::to_string(k) + " " + std::to_string(r.refines) + " " + std::to_string(r.coarsens) + " " +
+               std::to_string(r.leaves) + " " + std::to_string(mesh.tets.size()) + " " + number(r.lattice_seconds) +
+               " " + number(r.stuff_seconds) + (o.compare ? " " + number(scratch) : "") + "\n";
+    }
+    if (!o.quiet)
+      std::cerr << "bccmis stuff: frame " << k << "/" << o.animate << ": " << r.refines << " refines, " << r.coarsens
+                << " coarsens, " << mesh.tets.size() << " tetrahedra\n";
+  }
+  index += "  </Collection>\n</VTKFile>\n";
+  if (!pvd.empty()) outputs.add(pvd, index);
+  const double mean_step = step_total / o.animate, mean_scratch = scratch_total / o.animate;
+  if (o.json) {
+    table += "], \"mean_step_seconds\": " + number(mean_step) + ", \"operations\": " + std::to_string(ops);
+    if (o.compare)
+      table += ", \"mean_scratch_seconds\": " + number(mean_scratch) +
+               ", \"speedup\": " + number(mean_step > 0 ? mean_scratch / mean_step : 0);
+    table += "}\n";
+  } else {
+    table += "mean_step_seconds " + number(mean_step) + "\noperations " + std::to_string(ops) + "\n";
+    if (o.compare)
+      table += "mean_scratch_seconds " + number(mean_scratch) + "\nspeedup " +
+               number(mean_step > 0 ? mean_scratch / mean_step : 0) + "\n";
+  }
+  if (o.stats) outputs.add("-", table);
+  outputs.commit();
+  return kExitOk;
+}
+
 }  // namespace
 
 int run(const StuffOptions& o) {
-  for (const std::string& path : o.outputs) check_stuff_path(path);
-  if (o.outputs.empty() && !o.stats)
-    throw InputError("nothing to do: give -o FILE (.vtu, .msh, .mesh, .off, .obj) or --stats");
+  if (o.animate == 0) {
+    for (const std::string& path : o.outputs) check_stuff_path(path);
+    if (o.outputs.empty() && !o.stats)
+      throw InputError("nothing to do: give -o FILE (.vtu, .msh, .mesh, .off, .obj) or --stats");
+  }
   const auto progress = [&](const std::string& what) {
     if (!o.quiet) std::cerr << "bccmis stuff: " << what << std::endl;
   };
@@ -200,6 +326,8 @@ int run(const StuffOptions& o) {
   so.min_level = o.min_level;
   so.cells = o.cells;
   if (o.size > 0) so.size = o.size;
+  if (o.animate > 0) return run_animate(o, shape, so);
+  if (!o.path.empty() || o.compare) throw InputError("--path and --compare apply with --animate");
   stuff::Fit fit;
   try {
     fit = stuff::fit_lattice(shape->bounds(), so);
