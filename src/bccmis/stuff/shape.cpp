@@ -16,23 +16,6 @@ double norm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] *
 Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 Vec3 add(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 
-/// A root of f on [a, b] by bisection on the sign: 60 halvings bring the
-/// bracket below 2^-60 of the segment (spec/stuffing.md §1).
-double bisect(const Shape& s, const Vec3& a, const Vec3& b) {
-  const double fa = s.signed_distance(a);
-  if (fa == 0) return 0;
-  const bool a_inside = fa < 0;
-  double lo = 0, hi = 1;
-  for (int i = 0; i < 60; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    const Vec3 p{a[0] + mid * (b[0] - a[0]), a[1] + mid * (b[1] - a[1]), a[2] + mid * (b[2] - a[2])};
-    const double f = s.signed_distance(p);
-    if (f == 0) return mid;
-    ((f < 0) == a_inside ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
-}
-
 /// "name k1=v1 k2=v2" with the shortest round-trip text of each value.
 std::string fmt(const char* name, std::initializer_list<std::pair<const char*, double>> params) {
   std::string out = name;
@@ -63,7 +46,7 @@ class Sphere final : public Shape {
       for (double t : {(-B - s) / (2 * A), (-B + s) / (2 * A)})
         if (t >= 0 && t <= 1) return t;
     }
-    return bisect(*this, a, b);
+    return bisect_crossing(*this, a, b);
   }
   Bounds bounds() const override {
     return {{c_[0] - r_, c_[1] - r_, c_[2] - r_}, {c_[0] + r_, c_[1] + r_, c_[2] + r_}};
@@ -98,7 +81,7 @@ class Torus final : public Shape {
     const double ring = std::hypot(q[0], q[1]) - R_;
     return std::hypot(ring, q[2]) - r_;
   }
-  double crossing(const Vec3& a, const Vec3& b) const override { return bisect(*this, a, b); }
+  double crossing(const Vec3& a, const Vec3& b) const override { return bisect_crossing(*this, a, b); }
   Bounds bounds() const override {
     const double e = R_ + r_;
     return {{c_[0] - e, c_[1] - e, c_[2] - r_}, {c_[0] + e, c_[1] + e, c_[2] + r_}};
@@ -134,7 +117,7 @@ class Spheres final : public Shape {
     // neck's crease, which is all the sign and the crossings need.
     return std::min(a_.signed_distance(p), b_.signed_distance(p));
   }
-  double crossing(const Vec3& a, const Vec3& b) const override { return bisect(*this, a, b); }
+  double crossing(const Vec3& a, const Vec3& b) const override { return bisect_crossing(*this, a, b); }
   Bounds bounds() const override {
     const Bounds x = a_.bounds(), y = b_.bounds();
     Bounds out;
@@ -193,6 +176,21 @@ class Translated final : public Shape {
 };
 
 }  // namespace
+
+double bisect_crossing(const Shape& s, const Vec3& a, const Vec3& b) {
+  const double fa = s.signed_distance(a);
+  if (fa == 0) return 0;
+  const bool a_inside = fa < 0;
+  double lo = 0, hi = 1;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    const Vec3 p{a[0] + mid * (b[0] - a[0]), a[1] + mid * (b[1] - a[1]), a[2] + mid * (b[2] - a[2])};
+    const double f = s.signed_distance(p);
+    if (f == 0) return mid;
+    ((f < 0) == a_inside ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
 
 std::unique_ptr<Shape> make_sphere(const Vec3& c, double r) { return std::make_unique<Sphere>(c, r); }
 std::unique_ptr<Shape> make_torus(const Vec3& c, double R, double r) { return std::make_unique<Torus>(c, R, r); }

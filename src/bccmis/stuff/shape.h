@@ -44,6 +44,11 @@ class Shape {
   virtual std::string describe() const = 0;
 };
 
+/// A crossing of [a, b] by bisection on the sign of s.signed_distance: 60
+/// halvings bring the bracket below 2^-60 of the segment; 0 when a is on
+/// the surface. For shapes without a closed-form crossing.
+double bisect_crossing(const Shape& s, const Vec3& a, const Vec3& b);
+
 /// A sphere of radius r (r > 0) around c.
 std::unique_ptr<Shape> make_sphere(const Vec3& c, double r);
 
