@@ -118,6 +118,24 @@ struct MeshOptions {
 };
 int run(const MeshOptions& o);
 
+struct StuffOptions {
+  std::string input;                 ///< a closed triangle mesh (.off, .obj, .stl)
+  std::string shape;                 ///< or a built-in shape, NAME[:KEY=VALUE,...]
+  std::vector<std::string> outputs;  ///< -o, repeatable; the extension names the format
+  int max_level = 4;
+  int min_level = 0;
+  int cells = 4;
+  double size = 0;       ///< > 0: the finest edge length asked for (chooses the max level)
+  int animate = 0;       ///< > 0: frames of the shape moving along `path`
+  std::string path;      ///< "DX,DY,DZ": the whole motion (default: 1.5 times the shape's x extent along x)
+  bool compare = false;  ///< --animate: also build every frame from scratch and time it
+  bool stats = false;
+  bool json = false;
+  bool check = false;
+  bool quiet = false;
+};
+int run(const StuffOptions& o);
+
 struct RenderOptions {
   std::string state;
   std::string output;

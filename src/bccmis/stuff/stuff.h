@@ -71,7 +71,7 @@ std::vector<std::array<std::uint32_t, 3>> boundary_triangles(const d3::TetMeshF&
 struct StuffQuality {
   double volume = 0;
   double min_dihedral = 0, max_dihedral = 0;
-  std::size_t below10 = 0;               ///< tetrahedra with an angle below 10 degrees
+  std::size_t below10 = 0;                  ///< tetrahedra with an angle below 10 degrees
   std::array<std::size_t, 13> histogram{};  ///< as d3::MeshQuality::histogram
   std::size_t boundary_triangles = 0;
 };
