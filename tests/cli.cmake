@@ -347,13 +347,11 @@ bccmis_cli_test(mesh_render_histogram_of_a_state 2 ARGS render ${_face3} --histo
                 STDERR_REGEX "face_refined.state: --histogram applies to a .mesh file")
 bccmis_cli_test(mesh_render_from_trace 2 ARGS render --from-trace ${_two_tets} -o out.svg
                 STDERR_REGEX "two_tets.mesh: a .mesh file; --from-trace applies to traces")
-# docs/stuff-torus.svg and docs/stuff-torus-angles.svg are the pictures of a
-# torus stuffed at level 2 on 6 cells (tests/stuff/stuffed_example.cpp) as
-# drawn now.
+# docs/stuff-torus.svg and docs/stuff-torus-angles.svg are the README's
+# commands' output as drawn now: the torus stuffed at level 2 on 6 cells.
 add_test(NAME cli.mesh_render_docs_current
-         COMMAND sh -c "mkdir -p \"$3\" && cd \"$3\" && \"$1\" torus 2 6 > torus.mesh &&
-                        \"$2\" render torus.mesh --slice z=0 -o - | cmp - \"$4/docs/stuff-torus.svg\" &&
-                        \"$2\" render torus.mesh --histogram -o - | cmp - \"$4/docs/stuff-torus-angles.svg\""
-                 sh $<TARGET_FILE:stuffed_example> $<TARGET_FILE:bccmis> ${CMAKE_CURRENT_BINARY_DIR}/cli_work/mesh_render_docs
-                 ${PROJECT_SOURCE_DIR})
+         COMMAND sh -c "mkdir -p \"$2\" && cd \"$2\" && \"$1\" stuff --shape torus -L 2 --cells 6 -o torus.mesh -q &&
+                        \"$1\" render torus.mesh --slice z=0 -o - | cmp - \"$3/docs/stuff-torus.svg\" &&
+                        \"$1\" render torus.mesh --histogram -o - | cmp - \"$3/docs/stuff-torus-angles.svg\""
+                 sh $<TARGET_FILE:bccmis> ${CMAKE_CURRENT_BINARY_DIR}/cli_work/mesh_render_docs ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.mesh_render_docs_current PROPERTIES LABELS cli)
