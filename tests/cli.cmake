@@ -337,6 +337,18 @@ foreach(case
            COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${_cli}/check_svg3.py $<TARGET_FILE:bccmis> ${counts} ${args})
   set_tests_properties(cli.mesh_render_${name} PROPERTIES LABELS cli)
 endforeach()
+# The lattice's own mesh (bccmis mesh face_refined.state -o face.mesh): the
+# viewer sees exactly the box faces y = 0, z = 8 and x = 16 (outward normals
+# with a positive component along (1, -2, 1.5)), the 46 triangles counted
+# above; its angles are the lattice shapes' 45, 60, 90 and 120 degrees
+# (spec/mesh3d.md): 4 bars.
+add_test(NAME cli.mesh_render_lattice_mesh
+         COMMAND sh -c "mkdir -p \"$4\" && cd \"$4\" && \"$2\" mesh \"$3\" -o face.mesh -q &&
+                        \"$1\" \"$5\" \"$2\" tri=46,legend=2 face.mesh &&
+                        \"$1\" \"$5\" \"$2\" bar=4,min=1,max=1 face.mesh --histogram"
+                 sh ${BCCMIS_SYSTEM_PYTHON3} $<TARGET_FILE:bccmis> ${_face3} ${CMAKE_CURRENT_BINARY_DIR}/cli_work/mesh_render_lattice
+                 ${_cli}/check_svg3.py)
+set_tests_properties(cli.mesh_render_lattice_mesh PROPERTIES LABELS cli)
 bccmis_cli_test(mesh_render_slice_outside 2 ARGS render ${_two_tets} --slice z=1.5 -o out.svg
                 STDERR_REGEX "--slice 'z=1.5': outside the mesh: z in \\[-1, 1\\]")
 bccmis_cli_test(mesh_render_slice_not_a_number 2 ARGS render ${_two_tets} --slice x=half -o out.svg
