@@ -1,17 +1,29 @@
-// The 3D lattices' refine on a uniform sweep: every cell of a W x H x D
-// lattice refined, level by level, up to level L; the time per refine of each
-// level and of the whole sweep, for the reference (d3::Graph3) and the fast
-// lattice (fast::Lattice3). A plain program (one run, wall-clock time), not a
-// Google Benchmark: the sweep is one long workload. With --verify the two
-// final canonical states must be equal (exit 1 otherwise).
+// The 3D lattices' refine and coarsen on a uniform sweep: every cell of a
+// W x H x D lattice refined, level by level, up to level L, then every
+// refined cell coarsened again, level by level from the finest, back to the
+// initial lattice; the time per operation of each level and of the whole
+// sweep, for the reference (d3::Graph3) and the fast lattice
+// (fast::Lattice3). Within a level the operations run in position order
+// (sweep) or, with --random, in a shuffled order (fixed seed): on a uniform
+// level every order is allowed. A plain program (one run; the CPU time of
+// the thread, CLOCK_THREAD_CPUTIME_ID, so that other processes' time slices
+// on a shared machine are not counted), not a Google Benchmark: the sweep is
+// one long workload. With --verify the
+// two lattices' canonical states must be equal after the refines and after
+// the coarsens, and the coarsens must end at the initial lattice (exit 1
+// otherwise).
 //
-//   bench_fast3 W H D L [reference|fast|both] [--verify]
+//   bench_fast3 W H D L [reference|fast|both] [--random] [--verify]
 //
-// Numbers and the command that produced them: bench/RESULTS.md, "3D refine".
-#include <chrono>
+// Numbers and the commands that produced them: bench/RESULTS.md, "3D refine"
+// and "3D coarsen".
+#include <time.h>
+
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -23,60 +35,111 @@ namespace {
 
 using namespace bccmis;
 
-// Refines every cell level by level; prints one line per level and the total.
-// Returns ns per refine over the sweep.
-template <class L>
-double sweep(const char* name, L& g) {
-  using Clock = std::chrono::steady_clock;
-  std::size_t refines = 0;
-  double total_ns = 0;
+// The calling thread's CPU time in ns.
+double thread_ns() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) * 1e9 + static_cast<double>(t.tv_nsec);
+}
+
+struct Totals {
+  double refine_ns = 0;
+  double coarsen_ns = 0;
+  std::string refined_state;    // after the refines (--verify)
+  std::string coarsened_state;  // after the coarsens (--verify)
+};
+
+// Refines every cell level by level, then coarsens back; prints one line per
+// level and phase and the totals.
+template <class L, class State>
+Totals sweep(const char* name, L& g, bool random, bool verify, const State& state) {
+  std::mt19937_64 rng(19);
+  std::vector<std::vector<d3::Point3>> refined(static_cast<std::size_t>(size_of(g).L));
+  std::size_t refines = 0, coarsens = 0;
+  Totals t;
   for (int level = 0; level < size_of(g).L; ++level) {
-    std::vector<d3::Point3> todo;
+    std::vector<d3::Point3>& todo = refined[static_cast<std::size_t>(level)];
     for (const d3::Point3& c : cells(g)) todo.push_back(c);
-    const auto start = Clock::now();
+    if (random) std::shuffle(todo.begin(), todo.end(), rng);
+    const double start = thread_ns();
     for (const d3::Point3& c : todo)
       if (!refine(g, c).applied()) {
         std::fprintf(stderr, "bench_fast3: %s refused refine %s\n", name, d3::to_string(c).c_str());
         std::exit(1);
       }
-    const double ns = std::chrono::duration<double, std::nano>(Clock::now() - start).count();
-    total_ns += ns;
+    const double ns = thread_ns() - start;
+    t.refine_ns += ns;
     refines += todo.size();
-    std::printf("%-9s level %d -> %d: %9zu refines, %9zu cells, %8.1f ns/refine\n", name, level, level + 1, todo.size(),
+    std::printf("%-9s refine  level %d -> %d: %9zu ops, %9zu cells, %8.1f ns/op\n", name, level, level + 1, todo.size(),
                 cell_count(g), ns / static_cast<double>(todo.size()));
   }
-  const double per = refines ? total_ns / static_cast<double>(refines) : 0;
-  std::printf("%-9s sweep: %zu refines in %.3f s, %.1f ns/refine, %zu cells, %zu nodes\n", name, refines,
-              total_ns * 1e-9, per, cell_count(g), node_count(g));
-  return per;
+  if (verify) t.refined_state = state(g);
+  for (int level = size_of(g).L - 1; level >= 0; --level) {
+    std::vector<d3::Point3>& todo = refined[static_cast<std::size_t>(level)];
+    if (random) std::shuffle(todo.begin(), todo.end(), rng);
+    const std::size_t before = cell_count(g);
+    const double start = thread_ns();
+    for (const d3::Point3& n : todo)
+      if (!coarsen(g, n).applied()) {
+        std::fprintf(stderr, "bench_fast3: %s refused coarsen %s\n", name, d3::to_string(n).c_str());
+        std::exit(1);
+      }
+    const double ns = thread_ns() - start;
+    t.coarsen_ns += ns;
+    coarsens += todo.size();
+    std::printf("%-9s coarsen level %d -> %d: %9zu ops, %9zu cells, %8.1f ns/op\n", name, level + 1, level, todo.size(),
+                before, ns / static_cast<double>(todo.size()));
+  }
+  if (verify) t.coarsened_state = state(g);
+  t.refine_ns = refines ? t.refine_ns / static_cast<double>(refines) : 0;
+  t.coarsen_ns = coarsens ? t.coarsen_ns / static_cast<double>(coarsens) : 0;
+  std::printf("%-9s %s sweep: %zu refines, %.1f ns/refine; %zu coarsens, %.1f ns/coarsen; %zu cells at the end\n", name,
+              random ? "random" : "position-order", refines, t.refine_ns, coarsens, t.coarsen_ns, cell_count(g));
+  return t;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 5) {
-    std::fprintf(stderr, "usage: bench_fast3 W H D L [reference|fast|both] [--verify]\n");
+    std::fprintf(stderr, "usage: bench_fast3 W H D L [reference|fast|both] [--random] [--verify]\n");
     return 2;
   }
   const d3::LatticeSize3 size{std::atoll(argv[1]), std::atoll(argv[2]), std::atoll(argv[3]), std::atoi(argv[4])};
-  const std::string which = argc > 5 && argv[5][0] != '-' ? argv[5] : "both";
-  const bool verify = argc > 5 && std::strcmp(argv[argc - 1], "--verify") == 0;
-  double reference_ns = 0, fast_ns = 0;
-  std::string reference_state, fast_state;
+  std::string which = "both";
+  bool verify = false, random = false;
+  for (int i = 5; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--verify") == 0)
+      verify = true;
+    else if (std::strcmp(argv[i], "--random") == 0)
+      random = true;
+    else
+      which = argv[i];
+  }
+  Totals reference, fast;
   if (which != "fast") {
     d3::Graph3 g(size);
-    reference_ns = sweep("reference", g);
-    if (verify) reference_state = d3::canonical_state(g);
+    reference = sweep("reference", g, random, verify, [](const d3::Graph3& x) { return d3::canonical_state(x); });
   }
   if (which != "reference") {
     fast::Lattice3 g(size);
-    fast_ns = sweep("fast", g);
-    if (verify) fast_state = fast::canonical_state(g);
+    fast = sweep("fast", g, random, verify, [](const fast::Lattice3& x) { return fast::canonical_state(x); });
   }
-  if (which == "both" && fast_ns > 0) std::printf("ratio reference / fast: %.1f\n", reference_ns / fast_ns);
-  if (verify && which == "both" && reference_state != fast_state) {
-    std::fprintf(stderr, "bench_fast3: the final canonical states differ\n");
-    return 1;
+  if (which == "both" && fast.refine_ns > 0 && fast.coarsen_ns > 0)
+    std::printf("ratio reference / fast: refine %.1f, coarsen %.1f\n", reference.refine_ns / fast.refine_ns,
+                reference.coarsen_ns / fast.coarsen_ns);
+  if (verify) {
+    const std::string initial = d3::canonical_state(d3::Graph3(size));
+    const Totals& t = which == "reference" ? reference : fast;
+    if (which == "both" && reference.refined_state != fast.refined_state) {
+      std::fprintf(stderr, "bench_fast3: the canonical states after the refines differ\n");
+      return 1;
+    }
+    if (t.coarsened_state != initial || (which == "both" && reference.coarsened_state != initial)) {
+      std::fprintf(stderr, "bench_fast3: the coarsens did not end at the initial lattice\n");
+      return 1;
+    }
+    std::printf("verify: same canonical states after the refines; back to the initial lattice after the coarsens\n");
   }
   return 0;
 }

@@ -2,7 +2,7 @@
 // (fast::Lattice3, flat arrays) against the reference (d3::Graph3, ordered
 // maps) on the built-in sphere and torus. A plain program: one run per shape,
 // level and implementation; the reference only while its previous level
-// suggests it finishes within the budget. bench/RESULTS.md section 11.
+// suggests it finishes within the budget. bench/RESULTS.md section 15.
 //
 //   bench_stuff [min_level max_level] [--budget SECONDS] [--verify] [--no-reference]
 //

@@ -317,3 +317,53 @@ add_test(NAME cli.d3_render_docs_current
                  $<TARGET_FILE:bccmis>
          WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.d3_render_docs_current PROPERTIES LABELS cli)
+
+# bccmis render on a tetrahedral Medit mesh (spec/cli.md, render), counted as
+# above. tests/stuff/two_tets.mesh by hand (tests/stuff/render_test.cpp): 4 of
+# its 6 boundary triangles face the viewer (direction (1, -2, 1.5)), 2 of each
+# level, one legend entry per level; the cut z = 0.25 removes the first
+# tetrahedron and leaves 2 facing triangles of the second; the 12 dihedral
+# angles are 8 of 60 degrees (bin 12) and 4 of 90 (bin 18): 2 bars.
+set(_two_tets ${PROJECT_SOURCE_DIR}/tests/stuff/two_tets.mesh)
+foreach(case
+    "whole|tri=4,cut-tri=0,legend=2|${_two_tets}"
+    "cut|tri=4,cut-tri=2,legend=2|${_two_tets};--slice;z=0.25"
+    "histogram|bar=2,min=1,max=1,tri=0,legend=0|${_two_tets};--histogram")
+  string(REPLACE "|" ";" parts "${case}")
+  list(GET parts 0 name)
+  list(GET parts 1 counts)
+  list(SUBLIST parts 2 -1 args)
+  add_test(NAME cli.mesh_render_${name}
+           COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${_cli}/check_svg3.py $<TARGET_FILE:bccmis> ${counts} ${args})
+  set_tests_properties(cli.mesh_render_${name} PROPERTIES LABELS cli)
+endforeach()
+# The lattice's own mesh (bccmis mesh face_refined.state -o face.mesh): the
+# viewer sees exactly the box faces y = 0, z = 8 and x = 16 (outward normals
+# with a positive component along (1, -2, 1.5)), the 46 triangles counted
+# above; its angles are the lattice shapes' 45, 60, 90 and 120 degrees
+# (spec/mesh3d.md): 4 bars.
+add_test(NAME cli.mesh_render_lattice_mesh
+         COMMAND sh -c "mkdir -p \"$4\" && cd \"$4\" && \"$2\" mesh \"$3\" -o face.mesh -q &&
+                        \"$1\" \"$5\" \"$2\" tri=46,legend=2 face.mesh &&
+                        \"$1\" \"$5\" \"$2\" bar=4,min=1,max=1 face.mesh --histogram"
+                 sh ${BCCMIS_SYSTEM_PYTHON3} $<TARGET_FILE:bccmis> ${_face3} ${CMAKE_CURRENT_BINARY_DIR}/cli_work/mesh_render_lattice
+                 ${_cli}/check_svg3.py)
+set_tests_properties(cli.mesh_render_lattice_mesh PROPERTIES LABELS cli)
+bccmis_cli_test(mesh_render_slice_outside 2 ARGS render ${_two_tets} --slice z=1.5 -o out.svg
+                STDERR_REGEX "--slice 'z=1.5': outside the mesh: z in \\[-1, 1\\]")
+bccmis_cli_test(mesh_render_slice_not_a_number 2 ARGS render ${_two_tets} --slice x=half -o out.svg
+                STDERR_REGEX "--slice 'x=half': the value must be a number")
+bccmis_cli_test(mesh_render_histogram_and_slice 2 ARGS render ${_two_tets} --histogram --slice z=0 -o out.svg
+                STDERR_REGEX "--histogram draws no cut-away; drop --slice")
+bccmis_cli_test(mesh_render_histogram_of_a_state 2 ARGS render ${_face3} --histogram -o out.svg
+                STDERR_REGEX "face_refined.state: --histogram applies to a .mesh file")
+bccmis_cli_test(mesh_render_from_trace 2 ARGS render --from-trace ${_two_tets} -o out.svg
+                STDERR_REGEX "two_tets.mesh: a .mesh file; --from-trace applies to traces")
+# docs/stuff-torus.svg and docs/stuff-torus-angles.svg are the README's
+# commands' output as drawn now: the torus stuffed at level 2 on 6 cells.
+add_test(NAME cli.mesh_render_docs_current
+         COMMAND sh -c "mkdir -p \"$2\" && cd \"$2\" && \"$1\" stuff --shape torus -L 2 --cells 6 -o torus.mesh -q &&
+                        \"$1\" render torus.mesh --slice z=0 -o - | cmp - \"$3/docs/stuff-torus.svg\" &&
+                        \"$1\" render torus.mesh --histogram -o - | cmp - \"$3/docs/stuff-torus-angles.svg\""
+                 sh $<TARGET_FILE:bccmis> ${CMAKE_CURRENT_BINARY_DIR}/cli_work/mesh_render_docs ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.mesh_render_docs_current PROPERTIES LABELS cli)

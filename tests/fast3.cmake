@@ -16,3 +16,9 @@ gtest_discover_tests(fast3_differential_test DISCOVERY_MODE PRE_TEST TEST_FILTER
 add_executable(fast3_alloc_test fast3_alloc_test.cpp)
 target_link_libraries(fast3_alloc_test PRIVATE bccmis::fast bccmis::d3 GTest::gtest_main bccmis::warnings)
 gtest_discover_tests(fast3_alloc_test DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
+
+# Bulk construction: from_graph of reference states, refine_each /
+# coarsen_each against single reference calls.
+add_executable(fast3_bulk_test fast3_bulk_test.cpp)
+target_link_libraries(fast3_bulk_test PRIVATE bccmis::fast bccmis::d3 GTest::gtest_main bccmis::warnings)
+gtest_discover_tests(fast3_bulk_test DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)

@@ -1,7 +1,8 @@
 # Robustness against bad input and faults (issue 6), ctest label `robustness`.
 #
-# 1. tests/bad_input/: every file in trace/ must make `bccmis replay` and every
-#    file in state/ must make `bccmis check` exit 2 with exactly one line
+# 1. tests/bad_input/: every file in trace/ must make `bccmis replay`, every
+#    file in state/ `bccmis check` and every file in mesh/ `bccmis render`
+#    (Medit .mesh files) exit 2 with exactly one line
 #    `bccmis: FILE:LINE:COLUMN: MESSAGE` on stderr, nothing on stdout, within
 #    a second and bounded memory. expected.txt gives LINE:COLUMN and the start
 #    of MESSAGE for each file. Large inputs are generated at test time;
@@ -43,14 +44,16 @@ foreach(entry IN LISTS _bad_manifest)
   list(APPEND _bad_known ${file})
   if(file MATCHES "^trace/")
     set(mode replay)
+  elseif(file MATCHES "^mesh/")
+    set(mode render)
   else()
     set(mode check)
   endif()
-  string(REGEX REPLACE "^(trace|state)/(.*)\\.(trace|state)$" "\\1.\\2" name "${file}")
+  string(REGEX REPLACE "^(trace|state|mesh)/(.*)\\.(trace|state|mesh)$" "\\1.\\2" name "${file}")
   bccmis_bad_input_test(${name} ${mode} ${_bad}/${file} "${expect}")
 endforeach()
 # A file without a manifest entry fails until it gets one.
-file(GLOB _bad_files RELATIVE ${_bad} CONFIGURE_DEPENDS ${_bad}/trace/* ${_bad}/state/*)
+file(GLOB _bad_files RELATIVE ${_bad} CONFIGURE_DEPENDS ${_bad}/trace/* ${_bad}/state/* ${_bad}/mesh/*)
 foreach(file IN LISTS _bad_files)
   if(NOT file IN_LIST _bad_known)
     string(REGEX REPLACE "[^A-Za-z0-9_.]" "_" name "${file}")

@@ -1,4 +1,5 @@
-# Runs `bccmis MODE INPUT` on one malformed input and checks that it is
+# Runs `bccmis MODE INPUT` (for MODE render, `bccmis render INPUT -o -`) on
+# one malformed input and checks that it is
 # refused cleanly:
 #   - exit code 2 (bad input), not a crash, not 0/1/3;
 #   - nothing on stdout;
@@ -8,7 +9,7 @@
 #   - it takes less than MAX_SECONDS of wall time and, when GNU time is
 #     available, less than MAX_RSS_MB of peak resident memory.
 #
-#   cmake -DBCCMIS=path -DMODE=replay|check -DINPUT=path -DEXPECT=regex
+#   cmake -DBCCMIS=path -DMODE=replay|check|render -DINPUT=path -DEXPECT=regex
 #         [-DGENERATE=kind -DWORKDIR=dir] [-DNO_LINE=1]
 #         [-DMAX_SECONDS=1] [-DMAX_RSS_MB=256] -P run_bad_input.cmake
 #
@@ -52,6 +53,9 @@ if(GENERATE)
 endif()
 
 set(cmd "${BCCMIS}" "${MODE}" "${INPUT}")
+if(MODE STREQUAL "render")
+  list(APPEND cmd -o -)
+endif()
 set(rss_file "")
 if(EXISTS /usr/bin/time)
   if(WORKDIR)

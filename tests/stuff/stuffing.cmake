@@ -6,6 +6,46 @@ add_executable(stuffing_tests stuff/stuffing_test.cpp)
 target_link_libraries(stuffing_tests PRIVATE bccmis::stuff bccmis::d3 GTest::gtest_main bccmis::warnings)
 gtest_discover_tests(stuffing_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
 
+# The CLI's files read by meshio and gmsh, with the boundary's topology and
+# enclosed volume checked independently (tests/stuff/stuff_cli_readers.py).
+if(TARGET bccmis::stuff_surface)
+  set(_stuff_meshes ${bccmis_cgal_data}/data/meshes)
+endif()
+add_test(NAME cli.stuff_readers
+         COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/stuff/stuff_cli_readers.py $<TARGET_FILE:bccmis>
+                 ${_stuff_meshes})
+set_tests_properties(cli.stuff_readers PROPERTIES LABELS cli TIMEOUT 900)
+
+# bccmis stuff refusals: exit 2 (spec/cli.md), the message naming what is
+# wrong and where.
+bccmis_cli_test(stuff_unknown_shape 2 ARGS stuff --shape cube -o x.vtu
+                STDERR_REGEX "--shape 'cube': unknown shape 'cube' \\(sphere, torus, spheres\\)")
+bccmis_cli_test(stuff_bad_parameter 2 ARGS stuff --shape torus:R=1,q=2 -o x.vtu
+                STDERR_REGEX "--shape 'torus:R=1,q=2': unknown parameter 'q' of torus \\(R, r\\)")
+bccmis_cli_test(stuff_bad_value 2 ARGS stuff --shape sphere:r=abc -o x.vtu
+                STDERR_REGEX "--shape 'sphere:r=abc': 'abc' is not a number")
+bccmis_cli_test(stuff_torus_radii 2 ARGS stuff --shape torus:R=1,r=2 -o x.vtu
+                STDERR_REGEX "torus: the radii must satisfy 0 < r < R")
+bccmis_cli_test(stuff_nothing_to_mesh 2 ARGS stuff -o x.vtu STDERR_REGEX "nothing to mesh")
+bccmis_cli_test(stuff_nothing_to_do 2 ARGS stuff --shape sphere STDERR_REGEX "nothing to do")
+bccmis_cli_test(stuff_unknown_format 2 ARGS stuff --shape sphere -o x.stl
+                STDERR_REGEX "output 'x.stl': unknown format; the extension names it")
+bccmis_cli_test(stuff_margin 2 ARGS stuff --shape sphere --cells 5 -L 1 -o x.vtu
+                STDERR_REGEX "--cells x 2\\^max-level must exceed 10")
+if(TARGET bccmis::stuff_surface)
+  bccmis_cli_test(stuff_open_mesh 2 ARGS stuff ${CMAKE_CURRENT_SOURCE_DIR}/stuff/bad/open.off -o x.vtu
+                  STDERR_REGEX "open.off: open mesh: 3 border edges, one from vertex 3 to vertex 0")
+  bccmis_cli_test(stuff_syntax 2 ARGS stuff ${CMAKE_CURRENT_SOURCE_DIR}/stuff/bad/syntax.obj -o x.vtu
+                  STDERR_REGEX "syntax.obj:3:7: ")
+endif()
+
+# Reading back the Medit files and drawing them (bccmis render MESH.mesh):
+# a two-tetrahedron mesh drawn by hand (tests/stuff/two_tets.mesh).
+add_executable(stuff_render_tests stuff/render_test.cpp)
+target_link_libraries(stuff_render_tests PRIVATE bccmis::stuff bccmis::d3 bccmis::core GTest::gtest_main bccmis::warnings)
+target_compile_definitions(stuff_render_tests PRIVATE BCCMIS_TEST_DIR="${CMAKE_CURRENT_SOURCE_DIR}/stuff")
+gtest_discover_tests(stuff_render_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
+
 # The fast path against the reference: the same lattice, graded mesh and
 # stuffed mesh, exactly.
 add_executable(stuffing_fast_tests stuff/stuffing_fast_test.cpp)

@@ -96,18 +96,62 @@ CLI::App* add_mesh(CLI::App& app, MeshOptions& o) {
   return cmd;
 }
 
+CLI::App* add_stuff(CLI::App& app, StuffOptions& o) {
+  CLI::App* cmd = app.add_subcommand(
+      "stuff", "Mesh a closed shape with tetrahedra by isosurface stuffing on the graded BCC mesh (spec/stuffing.md).");
+  cmd->add_option("input", o.input, "Closed triangle mesh: .off, .obj or .stl (ASCII or binary)");
+  cmd->add_option("--shape", o.shape,
+                  "A built-in shape instead: sphere[:r=R], torus[:R=A,r=B], spheres[:r=R,d=D] (defaults r=1; R=1, "
+                  "r=0.4; r=0.7, d=1)");
+  cmd->add_option("-o,--output", o.outputs,
+                  "File to write (atomically, all or none); the extension names it: .vtu, .msh (Gmsh 4.1), .mesh "
+                  "(Medit) for the tetrahedra, .off, .obj for the boundary surface; repeatable");
+  cmd->add_option("-L,--max-level", o.max_level, "Finest lattice level, used where the surface is (default 4)")
+      ->check(CLI::Range(0, 20));
+  cmd->add_option("--min-level", o.min_level, "Every lattice leaf at least this level (default 0)")
+      ->check(CLI::Range(0, 20));
+  cmd->add_option("--cells", o.cells, "Level-0 cubes along the shape's longest side (default 4)")
+      ->check(CLI::Range(1, 1 << 20));
+  cmd->add_option("--size", o.size, "Finest edge length at most this (chooses --max-level)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--animate", o.animate,
+                  "Move the shape through the lattice in N frames: local refine and coarsen per frame; -o names "
+                  "a .pvd (ParaView) and the frames are written beside it as .vtu")
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--path", o.path,
+                  "--animate: the whole motion DX,DY,DZ (default: 1.5 times the shape's x extent along x)");
+  cmd->add_flag("--compare", o.compare, "--animate: also build every frame from scratch and report both times");
+  cmd->add_flag("--stats", o.stats,
+                "Print counts, volume and its error, Hausdorff distance, dihedral angles and seconds per phase");
+  cmd->add_flag("--json", o.json, "Statistics as JSON");
+  cmd->add_flag("--check", o.check,
+                "Check the mesh before writing: exact positive orientation, conformity, a closed boundary on the "
+                "surface (exit 1 on a violation)");
+  cmd->add_flag("-q,--quiet", o.quiet, "No progress or summary on stderr");
+  cmd->footer(
+      "Examples:\n  bccmis stuff --shape torus -L 4 -o torus.vtu --stats\n"
+      "  bccmis stuff elephant.off -L 5 -o elephant.msh -o elephant.off --stats --json\n"
+      "  bccmis stuff --shape sphere:r=0.5 -L 4 --animate 20 -o frames/ball.pvd --stats --compare");
+  return cmd;
+}
+
 CLI::App* add_render(CLI::App& app, RenderOptions& o) {
   CLI::App* cmd =
-      app.add_subcommand("render", "Draw a state as SVG (2D: cells, edges, junctions; 3D: the box and one slice).");
-  cmd->add_option("state", o.state, "State file ('-' for stdin)")->required();
+      app.add_subcommand("render",
+                         "Draw a state as SVG (2D: cells, edges, junctions; 3D: the box and one slice), or a "
+                         "tetrahedral mesh (.mesh: its boundary, a cut-away, its dihedral angles).");
+  cmd->add_option("state", o.state, "State file ('-' for stdin), or a Medit .mesh file of tetrahedra")->required();
   cmd->add_option("-o,--output", o.output, "SVG file to write (atomically); '-' for stdout")->required();
   cmd->add_flag("--from-trace", o.from_trace, "The input is a trace: replay it first");
   cmd->add_option("--slice", o.slice,
                   "3D only: the slice panel's plane, AXIS=VALUE with AXIS x, y or z (default: z at the middle of the "
-                  "box)");
+                  "box); for a .mesh, a cut-away beside the boundary at a real VALUE");
+  cmd->add_flag("--histogram", o.histogram, "A .mesh only: draw its dihedral-angle histogram instead");
   cmd->footer(
       "Examples:\n  bccmis render --from-trace spec/examples/fig2.trace -o fig2.svg\n"
-      "  bccmis render spec/examples/d3/face_refined.state --slice z=2 -o face.svg");
+      "  bccmis render spec/examples/d3/face_refined.state --slice z=2 -o face.svg\n"
+      "  bccmis render sphere.mesh --slice z=0 -o sphere.svg\n"
+      "  bccmis render sphere.mesh --histogram -o angles.svg");
   return cmd;
 }
 
@@ -340,6 +384,7 @@ std::variant<int, Command> parse_command_line(int argc, char** argv) {
   DiffOptions diff;
   StatsOptions stats;
   MeshOptions mesh;
+  StuffOptions stuff;
   RenderOptions render;
   ViewCommandOptions view;
   ConformanceCommandOptions conformance;
@@ -353,6 +398,7 @@ std::variant<int, Command> parse_command_line(int argc, char** argv) {
       {add_diff(app, diff), [&] { return Command(diff); }},
       {add_stats(app, stats), [&] { return Command(stats); }},
       {add_mesh(app, mesh), [&] { return Command(mesh); }},
+      {add_stuff(app, stuff), [&] { return Command(stuff); }},
       {add_render(app, render), [&] { return Command(render); }},
       {add_view(app, view), [&] { return Command(view); }},
       {add_conformance(app, conformance), [&] { return Command(conformance); }},

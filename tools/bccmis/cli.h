@@ -9,9 +9,9 @@
 namespace bccmis::cli {
 
 /// A subcommand with its options.
-using Command =
-    std::variant<ReplayOptions, CheckOptions, DiffOptions, StatsOptions, MeshOptions, RenderOptions, ViewCommandOptions,
-                 ConformanceCommandOptions, ExploreCommandOptions, HeightfieldCommandOptions, AnimateCommandOptions>;
+using Command = std::variant<ReplayOptions, CheckOptions, DiffOptions, StatsOptions, MeshOptions, StuffOptions,
+                             RenderOptions, ViewCommandOptions, ConformanceCommandOptions, ExploreCommandOptions,
+                             HeightfieldCommandOptions, AnimateCommandOptions>;
 
 /// The subcommand and its options; or the exit code when the command line
 /// itself was the whole run (--help and --version: 0; a usage error, reported

@@ -24,7 +24,10 @@ class Lattice3;
 }  // namespace bccmis::fast
 namespace bccmis::d3 {
 struct Graph3;
-struct TetMesh;
+struct Point3;
+template <class P>
+struct BasicTetMesh;
+using TetMesh = BasicTetMesh<Point3>;
 }  // namespace bccmis::d3
 
 namespace bccmis::cli {
@@ -115,11 +118,30 @@ struct MeshOptions {
 };
 int run(const MeshOptions& o);
 
+struct StuffOptions {
+  std::string input;                 ///< a closed triangle mesh (.off, .obj, .stl)
+  std::string shape;                 ///< or a built-in shape, NAME[:KEY=VALUE,...]
+  std::vector<std::string> outputs;  ///< -o, repeatable; the extension names the format
+  int max_level = 4;
+  int min_level = 0;
+  int cells = 4;
+  double size = 0;       ///< > 0: the finest edge length asked for (chooses the max level)
+  int animate = 0;       ///< > 0: frames of the shape moving along `path`
+  std::string path;      ///< "DX,DY,DZ": the whole motion (default: 1.5 times the shape's x extent along x)
+  bool compare = false;  ///< --animate: also build every frame from scratch and time it
+  bool stats = false;
+  bool json = false;
+  bool check = false;
+  bool quiet = false;
+};
+int run(const StuffOptions& o);
+
 struct RenderOptions {
   std::string state;
   std::string output;
   bool from_trace = false;
-  std::string slice;  ///< 3D: "AXIS=VALUE", empty for z at the middle of the box
+  std::string slice;       ///< 3D: "AXIS=VALUE", empty for z at the middle of the box; a .mesh: the cut-away
+  bool histogram = false;  ///< a .mesh: the dihedral-angle histogram instead of the picture
 };
 int run(const RenderOptions& o);
 

@@ -1,11 +1,20 @@
 // bccmis render STATE -o FILE: a state (or a trace's final state) as SVG;
-// a 3D state as the box and one slice (spec/cli.md, render).
+// a 3D state as the box and one slice; a tetrahedral Medit mesh as its
+// boundary (and a cut-away) or its dihedral-angle histogram (spec/cli.md,
+// render).
+#include <algorithm>
 #include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <variant>
 
 #include "bccmis/oracle/oracle.h"
+#include "bccmis/stuff/medit_read.h"
+#include "bccmis/stuff/render.h"
 #include "commands.h"
 #include "io.h"
 
@@ -32,9 +41,57 @@ SlicePlane parse_slice(const std::string& text, const d3::LatticeSize3& size) {
   return s;
 }
 
+// "--slice AXIS=VALUE" for a mesh: a real VALUE within the mesh's extent along AXIS.
+stuff::CutPlane parse_cut(const std::string& text, const d3::TetMeshF& mesh) {
+  const std::string axes = "xyz";
+  const auto bad = [&](const std::string& why) { return InputError("--slice '" + text + "': " + why); };
+  if (text.size() < 3 || text[1] != '=' || axes.find(text[0]) == std::string::npos)
+    throw bad("expected AXIS=VALUE with AXIS x, y or z, e.g. z=0.5");
+  stuff::CutPlane c{static_cast<int>(axes.find(text[0])), 0};
+  const char* first = text.data() + 2;
+  const char* last = text.data() + text.size();
+  const auto [end, ec] = std::from_chars(first, last, c.value);
+  if (ec != std::errc() || end != last || !std::isfinite(c.value)) throw bad("the value must be a number");
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const d3::Vec3& p : mesh.vertices) {
+    lo = std::min(lo, p[static_cast<std::size_t>(c.axis)]);
+    hi = std::max(hi, p[static_cast<std::size_t>(c.axis)]);
+  }
+  if (!(lo <= c.value && c.value <= hi)) {
+    char range[96];
+    std::snprintf(range, sizeof range, "outside the mesh: %c in [%g, %g]", text[0], lo, hi);
+    throw bad(mesh.vertices.empty() ? std::string("the mesh has no vertices") : std::string(range));
+  }
+  return c;
+}
+
+bool is_mesh_file(const std::string& path) {
+  const std::string ext = ".mesh";
+  return path.size() > ext.size() && path.compare(path.size() - ext.size(), ext.size(), ext) == 0;
+}
+
+int run_mesh(const RenderOptions& o) {
+  const std::string name = display_name(o.state);
+  if (o.from_trace) throw InputError(name + ": a .mesh file; --from-trace applies to traces");
+  if (o.histogram && !o.slice.empty()) throw InputError("--histogram draws no cut-away; drop --slice");
+  const d3::TetMeshF mesh = stuff::read_medit(read_input(o.state), name);
+  std::string svg;
+  if (o.histogram) {
+    svg = stuff::render_histogram_svg(mesh, name);
+  } else {
+    std::optional<stuff::CutPlane> cut;
+    if (!o.slice.empty()) cut = parse_cut(o.slice, mesh);
+    svg = stuff::render_mesh_svg(mesh, name, cut);
+  }
+  write_atomically(o.output, svg);
+  return kExitOk;
+}
+
 }  // namespace
 
 int run(const RenderOptions& o) {
+  if (is_mesh_file(o.state)) return run_mesh(o);
+  if (o.histogram) throw InputError(display_name(o.state) + ": --histogram applies to a .mesh file");
   const AnyState state = read_any_state_or_trace(o.state, o.from_trace);
   const std::string svg = std::visit(
       [&](const auto& g) {

@@ -94,6 +94,74 @@ void Lattice3::reserve(std::size_t cells) {
   if (slots != table_.size()) rehash(slots);
 }
 
+Lattice3 Lattice3::from_graph(const d3::Graph3& g) {
+  Lattice3 lat(g.size);  // validates the size
+  lat.centers_.clear();
+  lat.nodes_.clear();
+  lat.free_centers_ = lat.free_nodes_ = kNone;
+  lat.free_center_count_ = lat.free_node_count_ = 0;
+  lat.cell_count_ = lat.node_count_ = 0;
+  std::fill(lat.table_.begin(), lat.table_.end(), kNone);
+  lat.table_used_ = 0;
+  if (g.C.size() >= kNodeBit || g.N.size() >= kNodeBit)
+    throw std::invalid_argument("fast::Lattice3::from_graph: 2^31 or more vertices of one kind");
+  lat.centers_.reserve(g.C.size());
+  lat.nodes_.reserve(g.N.size());
+  lat.ensure_room(g.C.size(), g.N.size());
+  for (const Point3& n : g.N) {
+    if (g.nbr(n).size() > 8)
+      throw std::invalid_argument("fast::Lattice3::from_graph: node " + d3::to_string(n) +
+                                  " has more than 8 neighbors");
+    lat.table_insert(lat.alloc_node(n) | kNodeBit);
+  }
+  const std::int64_t S = d3::level0_side(g.size);
+  for (const Point3& c : g.C) {
+    const auto lv = g.level.find(c);
+    // A level-l center has odd multiples of 2^(L-l) as coordinates, inside the domain.
+    const auto zeros = [](std::int64_t v) { return v > 0 ? std::countr_zero(static_cast<std::uint64_t>(v)) : -1; };
+    const int tz = zeros(c.x);
+    const bool inside = c.x < g.size.W * S && c.y < g.size.H * S && c.z < g.size.D * S;
+    if (lv == g.level.end() || !inside || tz < 0 || zeros(c.y) != tz || zeros(c.z) != tz ||
+        g.size.L - tz != lv->second || lv->second < 0)
+      throw std::invalid_argument("fast::Lattice3::from_graph: center " + d3::to_string(c) +
+                                  " has no level in 0..L that matches its position");
+    const d3::PointSet3& B = g.nbr(c);
+    if (B.size() > 26)
+      throw std::invalid_argument("fast::Lattice3::from_graph: center " + d3::to_string(c) +
+                                  " has more than 26 neighbors");
+    const Index ci = lat.alloc_center(c, lv->second);
+    lat.table_insert(ci);
+    for (const Point3& b : B) {
+      const Index ni = lat.find_node(b);
+      if (ni == kNone)
+        throw std::invalid_argument("fast::Lattice3::from_graph: neighbor " + d3::to_string(b) + " of center " +
+                                    d3::to_string(c) + " is not a node");
+      lat.link(ci, ni);
+    }
+  }
+  return lat;
+}
+
+std::size_t Lattice3::refine_each(std::span<const Point3> cells) {
+  constexpr std::size_t kAhead = 8;
+  std::size_t applied = 0;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (i + kAhead < cells.size()) __builtin_prefetch(&table_[home(cells[i + kAhead])]);
+    applied += refine(cells[i]).applied();
+  }
+  return applied;
+}
+
+std::size_t Lattice3::coarsen_each(std::span<const Point3> nodes) {
+  constexpr std::size_t kAhead = 8;
+  std::size_t applied = 0;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    if (i + kAhead < nodes.size()) __builtin_prefetch(&table_[home(nodes[i + kAhead])]);
+    applied += coarsen(nodes[i]).applied();
+  }
+  return applied;
+}
+
 void reserve(Lattice3& g, std::size_t cells) {
   try {
     g.reserve(std::min(cells, kMaxReserveHint));

@@ -33,6 +33,7 @@
 #include <cstdint>
 #include <optional>
 #include <ostream>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -109,6 +110,13 @@ class Lattice3 {
   /// changes nothing.
   CoarsenResult3 coarsen(const d3::Point3& n);
 
+  /// refine / coarsen of every position in order, each exactly as a single
+  /// call would; returns how many were applied. Prefetches the position
+  /// table slot of an operation a few ahead, so long lists on large lattices
+  /// wait less for memory.
+  std::size_t refine_each(std::span<const d3::Point3> cells);
+  std::size_t coarsen_each(std::span<const d3::Point3> nodes);
+
   // ---- Queries (the reference's Graph3 accessors, by position) -------------
 
   std::size_t cell_count() const { return cell_count_; }  ///< |C|
@@ -125,6 +133,14 @@ class Lattice3 {
 
   /// The same state as a reference Graph3 (allocates; O(size log size)).
   d3::Graph3 to_graph() const;
+
+  /// Builds the lattice of a valid reference graph (one the checker accepts,
+  /// e.g. parsed from a canonical state): every operation and the canonical
+  /// state are then those of the graph. Throws std::invalid_argument when a
+  /// center has no level, or one its position does not give, or a neighbor
+  /// of a center is not a node, or a vertex has more neighbors than a
+  /// lattice allows (26 for a center, 8 for a node).
+  static Lattice3 from_graph(const d3::Graph3& g);
 
   // ---- Memory -----------------------------------------------------------------
 

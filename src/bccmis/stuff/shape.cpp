@@ -4,10 +4,10 @@
 #include "bccmis/stuff/shape.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <numbers>
 #include <random>
-#include <sstream>
 
 namespace bccmis::stuff {
 namespace {
@@ -16,28 +16,15 @@ double norm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] *
 Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 Vec3 add(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 
-/// A root of f on [a, b] by bisection on the sign: 60 halvings bring the
-/// bracket below 2^-60 of the segment (spec/stuffing.md §1).
-double bisect(const Shape& s, const Vec3& a, const Vec3& b) {
-  const double fa = s.signed_distance(a);
-  if (fa == 0) return 0;
-  const bool a_inside = fa < 0;
-  double lo = 0, hi = 1;
-  for (int i = 0; i < 60; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    const Vec3 p{a[0] + mid * (b[0] - a[0]), a[1] + mid * (b[1] - a[1]), a[2] + mid * (b[2] - a[2])};
-    const double f = s.signed_distance(p);
-    if (f == 0) return mid;
-    ((f < 0) == a_inside ? lo : hi) = mid;
+/// "name k1=v1 k2=v2" with the shortest round-trip text of each value.
+std::string fmt(const char* name, std::initializer_list<std::pair<const char*, double>> params) {
+  std::string out = name;
+  for (const auto& [key, value] : params) {
+    char buf[32];
+    const auto end = std::to_chars(buf, buf + sizeof buf, value).ptr;
+    out += std::string(" ") + key + "=" + std::string(buf, end);
   }
-  return 0.5 * (lo + hi);
-}
-
-std::string fmt(const char* what, std::initializer_list<double> xs) {
-  std::ostringstream o;
-  o << what;
-  for (double x : xs) o << ' ' << x;
-  return o.str();
+  return out;
 }
 
 class Sphere final : public Shape {
@@ -59,7 +46,7 @@ class Sphere final : public Shape {
       for (double t : {(-B - s) / (2 * A), (-B + s) / (2 * A)})
         if (t >= 0 && t <= 1) return t;
     }
-    return bisect(*this, a, b);
+    return bisect_crossing(*this, a, b);
   }
   Bounds bounds() const override {
     return {{c_[0] - r_, c_[1] - r_, c_[2] - r_}, {c_[0] + r_, c_[1] + r_, c_[2] + r_}};
@@ -77,7 +64,7 @@ class Sphere final : public Shape {
     }
     return out;
   }
-  std::string describe() const override { return fmt("sphere r=", {r_}); }
+  std::string describe() const override { return fmt("sphere", {{"r", r_}}); }
 
  private:
   Vec3 c_;
@@ -94,7 +81,7 @@ class Torus final : public Shape {
     const double ring = std::hypot(q[0], q[1]) - R_;
     return std::hypot(ring, q[2]) - r_;
   }
-  double crossing(const Vec3& a, const Vec3& b) const override { return bisect(*this, a, b); }
+  double crossing(const Vec3& a, const Vec3& b) const override { return bisect_crossing(*this, a, b); }
   Bounds bounds() const override {
     const double e = R_ + r_;
     return {{c_[0] - e, c_[1] - e, c_[2] - r_}, {c_[0] + e, c_[1] + e, c_[2] + r_}};
@@ -114,7 +101,7 @@ class Torus final : public Shape {
     }
     return out;
   }
-  std::string describe() const override { return fmt("torus R= r=", {R_, r_}); }
+  std::string describe() const override { return fmt("torus", {{"R", R_}, {"r", r_}}); }
 
  private:
   Vec3 c_;
@@ -130,7 +117,7 @@ class Spheres final : public Shape {
     // neck's crease, which is all the sign and the crossings need.
     return std::min(a_.signed_distance(p), b_.signed_distance(p));
   }
-  double crossing(const Vec3& a, const Vec3& b) const override { return bisect(*this, a, b); }
+  double crossing(const Vec3& a, const Vec3& b) const override { return bisect_crossing(*this, a, b); }
   Bounds bounds() const override {
     const Bounds x = a_.bounds(), y = b_.bounds();
     Bounds out;
@@ -157,7 +144,7 @@ class Spheres final : public Shape {
     }
     return out;
   }
-  std::string describe() const override { return fmt("spheres r=", {r_}); }
+  std::string describe() const override { return fmt("spheres", {{"r", r_}, {"d", norm(sub(ca_, cb_))}}); }
 
  private:
   Sphere a_, b_;
@@ -190,11 +177,79 @@ class Translated final : public Shape {
 
 }  // namespace
 
+double bisect_crossing(const Shape& s, const Vec3& a, const Vec3& b) {
+  const double fa = s.signed_distance(a);
+  if (fa == 0) return 0;
+  const bool a_inside = fa < 0;
+  double lo = 0, hi = 1;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    const Vec3 p{a[0] + mid * (b[0] - a[0]), a[1] + mid * (b[1] - a[1]), a[2] + mid * (b[2] - a[2])};
+    const double f = s.signed_distance(p);
+    if (f == 0) return mid;
+    ((f < 0) == a_inside ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
 std::unique_ptr<Shape> make_sphere(const Vec3& c, double r) { return std::make_unique<Sphere>(c, r); }
 std::unique_ptr<Shape> make_torus(const Vec3& c, double R, double r) { return std::make_unique<Torus>(c, R, r); }
 std::unique_ptr<Shape> make_spheres(const Vec3& a, const Vec3& b, double r) {
   return std::make_unique<Spheres>(a, b, r);
 }
+std::unique_ptr<Shape> make_builtin(const std::string& spec) {
+  const std::size_t colon = spec.find(':');
+  const std::string name = spec.substr(0, colon);
+  struct Param {
+    const char* key;
+    double value;
+    bool seen = false;
+  };
+  std::vector<Param> params;
+  if (name == "sphere")
+    params = {{"r", 1}};
+  else if (name == "torus")
+    params = {{"R", 1}, {"r", 0.4}};
+  else if (name == "spheres")
+    params = {{"r", 0.7}, {"d", 1}};
+  else
+    throw ShapeError("--shape '" + spec + "': unknown shape '" + name + "' (sphere, torus, spheres)");
+  const auto bad = [&](const std::string& why) { return ShapeError("--shape '" + spec + "': " + why); };
+  if (colon != std::string::npos) {
+    std::size_t at = colon + 1;
+    while (true) {
+      const std::size_t comma = std::min(spec.find(',', at), spec.size());
+      const std::string item = spec.substr(at, comma - at);
+      const std::size_t eq = item.find('=');
+      if (eq == std::string::npos) throw bad("expected KEY=VALUE, got '" + item + "'");
+      const std::string key = item.substr(0, eq), text = item.substr(eq + 1);
+      auto it = std::find_if(params.begin(), params.end(), [&](const Param& p) { return key == p.key; });
+      if (it == params.end()) {
+        std::string keys;
+        for (const Param& p : params) keys += (keys.empty() ? "" : ", ") + std::string(p.key);
+        throw bad("unknown parameter '" + key + "' of " + name + " (" + keys + ")");
+      }
+      if (it->seen) throw bad("parameter '" + key + "' given twice");
+      double v = 0;
+      const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+      if (ec != std::errc() || end != text.data() + text.size() || text.empty() || !std::isfinite(v))
+        throw bad("'" + text + "' is not a number");
+      it->value = v, it->seen = true;
+      if (comma == spec.size()) break;
+      at = comma + 1;
+    }
+  }
+  try {
+    if (name == "sphere") return make_sphere({0, 0, 0}, params[0].value);
+    if (name == "torus") return make_torus({0, 0, 0}, params[0].value, params[1].value);
+    const double r = params[0].value, d = params[1].value;
+    if (!(r > 0) || !(d >= 0)) throw ShapeError("spheres: r must be positive and d not negative");
+    return make_spheres({-d / 2, 0, 0}, {d / 2, 0, 0}, r);
+  } catch (const ShapeError& e) {
+    throw bad(e.what());
+  }
+}
+
 std::unique_ptr<Shape> translated(std::shared_ptr<const Shape> s, const Vec3& d) {
   return std::make_unique<Translated>(std::move(s), d);
 }

@@ -44,6 +44,11 @@ class Shape {
   virtual std::string describe() const = 0;
 };
 
+/// A crossing of [a, b] by bisection on the sign of s.signed_distance: 60
+/// halvings bring the bracket below 2^-60 of the segment; 0 when a is on
+/// the surface. For shapes without a closed-form crossing.
+double bisect_crossing(const Shape& s, const Vec3& a, const Vec3& b);
+
 /// A sphere of radius r (r > 0) around c.
 std::unique_ptr<Shape> make_sphere(const Vec3& c, double r);
 
@@ -57,6 +62,15 @@ std::unique_ptr<Shape> make_spheres(const Vec3& a, const Vec3& b, double r);
 
 /// The same shape translated by d (its samples, bounds and distances moved).
 std::unique_ptr<Shape> translated(std::shared_ptr<const Shape> s, const Vec3& d);
+
+/// A built-in shape by name and parameters (spec/stuffing.md S1):
+///   sphere[:r=R]                 radius R (1), centered at the origin
+///   torus[:R=A,r=B]              ring radius A (1), tube radius B (0.4), axis z
+///   spheres[:r=R,d=D]            two spheres of radius R (0.7) at x = -D/2 and
+///                                x = D/2 (D = 1), united
+/// Throws ShapeError naming an unknown shape, an unknown or repeated
+/// parameter, a value that is not a number, or one out of range.
+std::unique_ptr<Shape> make_builtin(const std::string& spec);
 
 /// A refused shape or input file: what is wrong, and where (file:line:col when a file).
 class ShapeError : public std::runtime_error {

@@ -279,12 +279,29 @@ class ReferenceStuffer {
     for (const auto& [k, c] : cuts_) out_.cut_points += c.removed ? 0 : 1;
   }
 
+  /// The angle at p between the directions to x and y.
+  static double angle(const Vec3& p, const Vec3& x, const Vec3& y) {
+    const Vec3 u{x[0] - p[0], x[1] - p[1], x[2] - p[2]}, v{y[0] - p[0], y[1] - p[1], y[2] - p[2]};
+    const double c = (u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) /
+                     std::sqrt((u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+    return std::acos(std::clamp(c, -1.0, 1.0));
+  }
+
   // S8: the diagonal of the face quadrilateral (a, b, c_bt, c_at) as a pair of keys.
   std::pair<VKey, VKey> face_diagonal(const Point3& a, const Point3& b, const Point3& t) const {
     const VKey ka = lattice_key(a), kb = lattice_key(b), cat = cut_key(a, t), cbt = cut_key(b, t);
     const std::int64_t la = length2(a, t), lb = length2(b, t);
     if (la > lb) return {cat, kb};
     if (lb > la) return {cbt, ka};
+    // Equal: the Delaunay diagonal of the planar quadrilateral (a, b, c_bt,
+    // c_at), computed from the ends in position order so that both
+    // tetrahedra at the face compute the same; a tie by the smallest key.
+    if (b < a) return face_diagonal(b, a, t);
+    const Vec3 pa = pos(ka), pb = pos(kb), pbt = pos(cbt), pat = pos(cat);
+    const double at_b = angle(pb, pa, pbt), at_cat = angle(pat, pbt, pa);
+    const double at_a = angle(pa, pat, pb), at_cbt = angle(pbt, pb, pat);
+    if (at_b + at_cat < at_a + at_cbt) return {ka, cbt};
+    if (at_b + at_cat > at_a + at_cbt) return {kb, cat};
     const VKey m = std::min({ka, kb, cat, cbt});
     if (m == ka || m == cbt) return {ka, cbt};
     return {kb, cat};
@@ -360,16 +377,9 @@ class ReferenceStuffer {
     const auto L = [](const Point3& p) { return lattice_key(p); };
     const auto C = [](const Point3& x, const Point3& y) { return cut_key(x, y); };
     if (plus.empty()) {
-      bool keep = !neg.empty();
-      if (!keep) {  // all four zero: the centroid of the unwarped vertices decides
-        Vec3 c{};
-        for (const Point3& p : t) {
-          const Vec3 s = fit_.to_space(p);
-          for (std::size_t k = 0; k < 3; ++k) c[k] += 0.25 * s[k];
-        }
-        keep = shape_.signed_distance(c) < 0;
-      }
-      if (keep) emit({L(t[0]), L(t[1]), L(t[2]), L(t[3])}, level);
+      // All four zero: nothing (the surface passes through every vertex, so
+      // the tetrahedron is a sliver along it; S7).
+      if (!neg.empty()) emit({L(t[0]), L(t[1]), L(t[2]), L(t[3])}, level);
       return;
     }
     if (neg.empty()) return;
@@ -673,12 +683,29 @@ class Stuffer {
     for (const Cut& c : cuts_) out_.cut_points += c.removed ? 0 : 1;
   }
 
+  /// The angle at p between the directions to x and y.
+  static double angle(const Vec3& p, const Vec3& x, const Vec3& y) {
+    const Vec3 u{x[0] - p[0], x[1] - p[1], x[2] - p[2]}, v{y[0] - p[0], y[1] - p[1], y[2] - p[2]};
+    const double c = (u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) /
+                     std::sqrt((u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+    return std::acos(std::clamp(c, -1.0, 1.0));
+  }
+
   // S8: the diagonal of the face quadrilateral (a, b, c_bt, c_at) as a pair of keys.
   std::pair<VKey, VKey> face_diagonal(std::uint32_t a, std::uint32_t b, std::uint32_t t) const {
     const VKey ka = lattice_key(a), kb = lattice_key(b), cat = cut_key(a, t), cbt = cut_key(b, t);
     const std::int64_t la = length2(points_[a], points_[t]), lb = length2(points_[b], points_[t]);
     if (la > lb) return {cat, kb};
     if (lb > la) return {cbt, ka};
+    // Equal: the Delaunay diagonal of the planar quadrilateral (a, b, c_bt,
+    // c_at), computed from the ends in position order so that both
+    // tetrahedra at the face compute the same; a tie by the smallest key.
+    if (b < a) return face_diagonal(b, a, t);
+    const Vec3 pa = pos(ka), pb = pos(kb), pbt = pos(cbt), pat = pos(cat);
+    const double at_b = angle(pb, pa, pbt), at_cat = angle(pat, pbt, pa);
+    const double at_a = angle(pa, pat, pb), at_cbt = angle(pbt, pb, pat);
+    if (at_b + at_cat < at_a + at_cbt) return {ka, cbt};
+    if (at_b + at_cat > at_a + at_cbt) return {kb, cat};
     const VKey m = std::min({ka, kb, cat, cbt});
     if (m == ka || m == cbt) return {ka, cbt};
     return {kb, cat};
@@ -764,16 +791,9 @@ class Stuffer {
     const auto L = [](std::uint32_t p) { return lattice_key(p); };
     const auto C = [](std::uint32_t x, std::uint32_t y) { return cut_key(x, y); };
     if (np == 0) {
-      bool keep = n != 0;
-      if (!keep) {  // all four zero: the centroid of the unwarped vertices decides
-        Vec3 c{};
-        for (const Point3& p : tets_[ti]) {
-          const Vec3 s = fit_.to_space(p);
-          for (std::size_t k = 0; k < 3; ++k) c[k] += 0.25 * s[k];
-        }
-        keep = shape_.signed_distance(c) < 0;
-      }
-      if (keep) emit({L(t[0]), L(t[1]), L(t[2]), L(t[3])}, level(ti));
+      // All four zero: nothing (the surface passes through every vertex, so
+      // the tetrahedron is a sliver along it; S7).
+      if (n != 0) emit({L(t[0]), L(t[1]), L(t[2]), L(t[3])}, level(ti));
       return;
     }
     if (n == 0) return;

@@ -475,21 +475,6 @@ class Checker {
 // ---------------------------------------------------------------------------
 // The shape.
 
-double bisect(const Shape& s, const Vec3& a, const Vec3& b) {
-  const double fa = s.signed_distance(a);
-  if (fa == 0) return 0;
-  const bool a_inside = fa < 0;
-  double lo = 0, hi = 1;
-  for (int i = 0; i < 60; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    const Vec3 p{a[0] + mid * (b[0] - a[0]), a[1] + mid * (b[1] - a[1]), a[2] + mid * (b[2] - a[2])};
-    const double f = s.signed_distance(p);
-    if (f == 0) return mid;
-    ((f < 0) == a_inside ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
-}
-
 class MeshShape final : public Shape {
  public:
   MeshShape(const Soup& s, const std::string& name) : name_(basename_of(name)) {
@@ -575,7 +560,7 @@ class MeshShape final : public Shape {
         best = std::min({best, param(sg->source()), param(sg->target())});
     }
     if (std::isfinite(best)) return best;
-    return bisect(*this, a, b);
+    return bisect_crossing(*this, a, b);
   }
 
   Bounds bounds() const override { return bounds_; }

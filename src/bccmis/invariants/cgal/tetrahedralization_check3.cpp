@@ -13,6 +13,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <utility>
@@ -104,10 +105,10 @@ std::optional<Violation3> invalid(std::size_t count, const std::string& why) {
                    "the " + std::to_string(count) + " tets do not load into a valid CGAL Triangulation_3: " + why);
 }
 
-// Loads the tets with CGAL's tet-soup loader and asks CGAL whether the result
-// is a valid triangulation. Assumes every tet is positively oriented.
-std::optional<Violation3> check_loaded(std::span<const Tet3> tets) {
-  if (tets.empty()) return invalid(0, "no tets");
+// Loads the tets into tr with CGAL's tet-soup loader (every temporary of the
+// load freed on return). False when the loader refuses them; CGAL's
+// assertions may throw CGAL::Failure_exception.
+bool load(std::span<const Tet3> tets, Soup& tr) {
   std::map<Point3, int> index;
   for (const Tet3& t : tets)
     for (const Point3& p : t) index.emplace(p, 0);
@@ -120,16 +121,22 @@ std::optional<Violation3> check_loaded(std::span<const Tet3> tets) {
   std::vector<std::array<int, 5>> cells;  // 4 vertex indices and a subdomain
   cells.reserve(tets.size());
   for (const Tet3& t : tets) cells.push_back({index.at(t[0]), index.at(t[1]), index.at(t[2]), index.at(t[3]), 1});
-  Soup tr;
   std::vector<Soup::Vertex_handle> handles;
   const std::map<std::array<int, 3>, int> no_border_facets;
+  // c3t3_loader_failed = true: build only; the validity checks follow.
+  return CGAL::build_triangulation<Soup, true>(tr, points, cells, no_border_facets, handles);
+}
+
+// Loads the tets with CGAL's tet-soup loader and asks CGAL whether the result
+// is a valid triangulation. Assumes every tet is positively oriented.
+std::optional<Violation3> check_loaded(std::span<const Tet3> tets) {
+  if (tets.empty()) return invalid(0, "no tets");
+  Soup tr;
   // Builds with CGAL's assertions on throw where the others return false; the
   // stage names the failure alike in both.
   const char* stage = "the loader refused them (a triangle of three or more tets)";
   try {
-    // c3t3_loader_failed = true: build only; the validity checks follow.
-    if (!CGAL::build_triangulation<Soup, true>(tr, points, cells, no_border_facets, handles))
-      return invalid(tets.size(), stage);
+    if (!load(tets, tr)) return invalid(tets.size(), stage);
     stage = "Triangulation_data_structure_3::is_valid fails";
     if (!tr.tds().is_valid()) return invalid(tets.size(), stage);
     stage = "Triangulation_3::is_valid fails";
@@ -192,6 +199,19 @@ std::optional<Violation3> find_tetrahedralization_violation(const Graph3& g, std
   if (auto v = check_orientation(tets)) return v;
   if (auto v = check_loaded(tets)) return v;
   return check_delaunay(g, tets);
+}
+
+std::optional<std::size_t> hold_triangulation(std::span<const Tet3> tets,
+                                              const std::function<void(std::size_t)>& held) {
+  Soup tr;
+  try {
+    if (!load(tets, tr)) return std::nullopt;
+  } catch (const CGAL::Failure_exception&) {
+    return std::nullopt;
+  }
+  const std::size_t cells = tr.number_of_finite_cells();
+  held(cells);
+  return cells;
 }
 
 }  // namespace bccmis::d3

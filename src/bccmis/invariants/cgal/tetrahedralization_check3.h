@@ -18,6 +18,8 @@
 // but it is safe on any graph and any list of tets.
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <optional>
 #include <span>
 
@@ -27,5 +29,12 @@ namespace bccmis::d3 {
 
 /// The first layer-6 problem of `tets` as a mesh of g, or nothing.
 std::optional<Violation3> find_tetrahedralization_violation(const Graph3& g, std::span<const Tet3> tets);
+
+/// Loads `tets` into a CGAL Triangulation_3 with the loader of cgal-invalid
+/// (exact kernel, Epeck) and calls held(finite cells) while the triangulation
+/// is alive and every temporary of the load is freed, so that a caller can
+/// measure what the triangulation holds (bench_memory3). Returns the finite
+/// cell count, or nothing when the loader refuses the tets.
+std::optional<std::size_t> hold_triangulation(std::span<const Tet3> tets, const std::function<void(std::size_t)>& held);
 
 }  // namespace bccmis::d3

@@ -1,0 +1,159 @@
+// Memory of the 3D lattices: bytes per cell of the reference (d3::Graph3 on
+// std::set / std::map), of the fast lattice (fast::Lattice3) and of a CGAL
+// Triangulation_3 holding the same tetrahedra (the tet-soup loader of the 3D
+// checker's layer 6, exact kernel Epeck: invariants/cgal/
+// tetrahedralization_check3.h, the only CGAL translation unit involved).
+//
+//   reference  what operator new hands out (malloc_usable_size of every live
+//              block; the global operator new of this program counts) for
+//              the Graph3 of the state (fast::Lattice3::to_graph(): the same
+//              containers a Graph3 refined step by step holds);
+//   fast       fast::Lattice3::memory_bytes() (pools and position table,
+//              capacity), and the counted heap of a copy of the lattice
+//              (a copy's pools have no spare capacity);
+//   cgal       the counted heap of the loaded triangulation while it is
+//              alive (the input tets and every temporary of the load freed
+//              or not counted).
+//
+// States: a uniform W x H x D lattice refined level by level to level L
+// (every cell), and the ball of bench_p8est (bench/local_feature3.h; graded).
+// A plain program, one run. Exit 1 when the triangulation does not load with
+// one cell per tet, or a count is empty (checked on every state).
+//
+//   bench_memory3 [--smoke]
+//
+// Numbers and the command: bench/RESULTS.md, "3D memory".
+#include <malloc.h>
+
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <new>
+#include <string>
+#include <vector>
+
+#include "bccmis/d3/lattice.h"
+#include "bccmis/d3/mesh.h"
+#include "bccmis/fast/lattice3.h"
+#include "bccmis/invariants/cgal/tetrahedralization_check3.h"
+#include "local_feature3.h"
+
+// ---- Counting operator new ----------------------------------------------------------------
+
+namespace {
+std::atomic<std::size_t> g_live_bytes{0};
+
+void* counted(std::size_t n) {
+  void* p = std::malloc(n ? n : 1);
+  if (!p) throw std::bad_alloc();
+  g_live_bytes += malloc_usable_size(p);
+  return p;
+}
+void* counted_aligned(std::size_t n, std::align_val_t a) {
+  const auto align = static_cast<std::size_t>(a);
+  void* p = std::aligned_alloc(align, (n + align - 1) / align * align);
+  if (!p) throw std::bad_alloc();
+  g_live_bytes += malloc_usable_size(p);
+  return p;
+}
+void uncounted(void* p) noexcept {
+  if (!p) return;
+  g_live_bytes -= malloc_usable_size(p);
+  std::free(p);
+}
+}  // namespace
+
+void* operator new(std::size_t n) { return counted(n); }
+void* operator new[](std::size_t n) { return counted(n); }
+void* operator new(std::size_t n, std::align_val_t a) { return counted_aligned(n, a); }
+void* operator new[](std::size_t n, std::align_val_t a) { return counted_aligned(n, a); }
+void operator delete(void* p) noexcept { uncounted(p); }
+void operator delete[](void* p) noexcept { uncounted(p); }
+void operator delete(void* p, std::size_t) noexcept { uncounted(p); }
+void operator delete[](void* p, std::size_t) noexcept { uncounted(p); }
+void operator delete(void* p, std::align_val_t) noexcept { uncounted(p); }
+void operator delete[](void* p, std::align_val_t) noexcept { uncounted(p); }
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept { uncounted(p); }
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { uncounted(p); }
+
+namespace {
+
+using namespace bccmis;
+
+std::size_t live_bytes() { return g_live_bytes.load(); }
+
+// Measures one state; returns false on a failed check.
+bool measure(const std::string& name, const fast::Lattice3& g) {
+  const double cells = static_cast<double>(g.cell_count());
+  // The fast lattice's own heap: a copy made while counting.
+  std::size_t fast_heap = 0;
+  {
+    const std::size_t before = live_bytes();
+    const fast::Lattice3 copy(g);
+    fast_heap = live_bytes() - before;
+  }
+  std::size_t reference_bytes = 0;
+  const std::size_t before_graph = live_bytes();
+  const d3::Graph3 graph = g.to_graph();
+  reference_bytes = live_bytes() - before_graph;
+  const std::vector<d3::Tet> tets = d3::tetrahedra(graph);
+  std::size_t cgal_bytes = 0;
+  const std::size_t before_cgal = live_bytes();
+  const std::optional<std::size_t> loaded =
+      d3::hold_triangulation(tets, [&](std::size_t) { cgal_bytes = live_bytes() - before_cgal; });
+  if (loaded != tets.size()) {
+    std::printf("%s: FAILED: the CGAL triangulation has %zu cells for %zu tets\n", name.c_str(), loaded.value_or(0),
+                tets.size());
+    return false;
+  }
+  if (cgal_bytes == 0 || reference_bytes == 0 || fast_heap == 0) {
+    std::printf("%s: FAILED: a count is empty (reference %zu, fast %zu, cgal %zu bytes)\n", name.c_str(),
+                reference_bytes, fast_heap, cgal_bytes);
+    return false;
+  }
+  const double fast_b = static_cast<double>(g.memory_bytes()) / cells;
+  const double cgal_b = static_cast<double>(cgal_bytes) / cells;
+  std::printf(
+      "%-22s %9zu cells %10zu tets | reference %7.0f B/cell | fast %6.0f B/cell (heap %6.0f) | cgal %7.0f B/cell "
+      "(%5.0f B/tet) | fast/cgal %.3f | reference/cgal %.2f\n",
+      name.c_str(), g.cell_count(), tets.size(), static_cast<double>(reference_bytes) / cells, fast_b,
+      static_cast<double>(fast_heap) / cells, cgal_b,
+      static_cast<double>(cgal_bytes) / static_cast<double>(tets.size()), fast_b / cgal_b,
+      static_cast<double>(reference_bytes) / static_cast<double>(cgal_bytes));
+  std::fflush(stdout);
+  return true;
+}
+
+fast::Lattice3 uniform(const d3::LatticeSize3& size) {
+  fast::Lattice3 g(size);
+  for (int l = 0; l < size.L; ++l)
+    for (const d3::Point3& c : g.cells()) g.refine(c);
+  return g;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const bool smoke = argc > 1 && std::strcmp(argv[1], "--smoke") == 0;
+  std::vector<d3::LatticeSize3> uniforms = {{2, 1, 1, 3}, {2, 2, 2, 3}, {4, 4, 2, 3}, {2, 2, 1, 5}};
+  struct Ball {
+    d3::LatticeSize3 size;
+    double radius;
+  };
+  std::vector<Ball> balls = {{{4, 2, 2, 8}, 22.0}, {{4, 2, 2, 8}, 50.0}};
+  if (smoke) {
+    uniforms = {{2, 1, 1, 2}};
+    balls = {{{2, 1, 1, 4}, 5.0}};
+  }
+  bool ok = true;
+  for (const d3::LatticeSize3& s : uniforms)
+    ok &= measure("uniform " + std::to_string(s.W) + "x" + std::to_string(s.H) + "x" + std::to_string(s.D) + " L" +
+                      std::to_string(s.L),
+                  uniform(s));
+  for (const Ball& b : balls) {
+    const bench::LocalFeature3<fast::Lattice3> ball(b.size, b.radius, 1);
+    ok &= measure("ball r=" + std::to_string(static_cast<int>(b.radius)), ball.state());
+  }
+  return ok ? 0 : 1;
+}

@@ -1,0 +1,23 @@
+// bccmis::stuff: reading back the Medit .mesh files that d3::write_medit
+// writes (spec/cli.md, render): MeshVersionFormatted, Dimension 3,
+// Vertices with a reference each, Tetrahedra with a reference each,
+// optionally Triangles (read and checked, then ignored), End.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "bccmis/d3/mesh.h"
+
+namespace bccmis::stuff {
+
+/// The tetrahedral mesh in `text`: vertices with their reference as kind
+/// (0..255), tetrahedra (1-based indices in the file) with their reference as
+/// level (0..63). Throws ParseError (file `name`, line, column) on anything
+/// else: an unknown keyword, a missing or repeated section, a count or number
+/// that does not parse or is out of range, a coordinate that is not finite,
+/// an index out of range, a tetrahedron with a repeated vertex or that is not
+/// positively oriented (exactly), or text after End.
+d3::TetMeshF read_medit(std::string_view text, const std::string& name);
+
+}  // namespace bccmis::stuff
