@@ -125,10 +125,11 @@ struct StuffOptions {
   int max_level = 4;
   int min_level = 0;
   int cells = 4;
-  double size = 0;       ///< > 0: the finest edge length asked for (chooses the max level)
-  int animate = 0;       ///< > 0: frames of the shape moving along `path`
-  std::string path;      ///< "DX,DY,DZ": the whole motion (default: 1.5 times the shape's x extent along x)
-  bool compare = false;  ///< --animate: also build every frame from scratch and time it
+  double size = 0;            ///< > 0: the finest edge length asked for (chooses the max level)
+  int animate = 0;            ///< > 0: frames of the shape moving along `path`
+  std::string path;           ///< "DX,DY,DZ": the whole motion (default: 1.5 times the shape's x extent along x)
+  bool compare = false;       ///< --animate: also build every frame from scratch and time it
+  std::string impl = "fast";  ///< fast (fast::Lattice3) or reference (d3::Graph3)
   bool stats = false;
   bool json = false;
   bool check = false;

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "bccmis/d3/mesh.h"
+#include "bccmis/fast/lattice3.h"
 #include "bccmis/stuff/animate.h"
 #include "bccmis/stuff/shape.h"
 #include "bccmis/stuff/stuff.h"
@@ -238,7 +239,7 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
     stuff::FrameReport r;
     const Vec3 offset{path[0] * k / o.animate, path[1] * k / o.animate, path[2] * k / o.animate};
     if (k == 0) {
-      r.leaves = moving.lattice().C.size();
+      r.leaves = moving.lattice().cell_count();
       r.lattice_seconds = initial;
     } else {
       r = moving.step(offset);
@@ -249,12 +250,12 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
     if (o.compare || o.check) {
       const auto t = std::chrono::steady_clock::now();
       const auto moved = stuff::translated(shape, offset);
-      const d3::Graph3 g = stuff::background(*moved, fit, so);
+      const fast::Lattice3 g = stuff::background_fast(*moved, fit, so);
       const stuff::Stuffed s = stuff::stuff(*moved, fit, g, so);
       scratch = seconds_since(t);
       if (k > 0) scratch_total += scratch;
       if (o.check) {
-        if (!(g == moving.lattice()))
+        if (!(g.to_graph() == moving.lattice().to_graph()))
           throw CheckFailure("frame " + std::to_string(k) +
                              ": the lattice updated locally differs from the one built "
                              "from scratch");
@@ -337,15 +338,28 @@ int run(const StuffOptions& o) {
   so.max_level = fit.size.L;
   progress(r.shape + ": lattice " + std::to_string(fit.size.W) + " x " + std::to_string(fit.size.H) + " x " +
            std::to_string(fit.size.D) + ", max level " + std::to_string(fit.size.L) + ", finest side " + number(fit.h));
+  // spec/stuffing.md S3-S9 on the fast lattice, or on the reference with --impl reference.
+  stuff::PhaseTimes times;
   auto t = std::chrono::steady_clock::now();
-  const d3::Graph3 g = stuff::background(*shape, fit, so);
-  r.seconds.emplace_back("lattice", seconds_since(t));
-  r.leaves = g.C.size();
-  progress(std::to_string(r.leaves) + " leaves (" + number(r.seconds.back().second) + " s)");
-  t = std::chrono::steady_clock::now();
-  const stuff::Stuffed s = stuff::stuff(*shape, fit, g, so);
-  r.seconds.emplace_back("stuffing", seconds_since(t));
-  progress(std::to_string(s.mesh.tets.size()) + " tetrahedra (" + number(r.seconds.back().second) + " s)");
+  const stuff::Stuffed s = [&] {
+    if (o.impl == "reference") {
+      const d3::Graph3 g = stuff::background(*shape, fit, so);
+      times.lattice = seconds_since(t);
+      r.leaves = g.C.size();
+      progress(std::to_string(r.leaves) + " leaves (" + number(times.lattice) + " s)");
+      return stuff::stuff(*shape, fit, g, so, &times);
+    }
+    const fast::Lattice3 g = stuff::background_fast(*shape, fit, so);
+    times.lattice = seconds_since(t);
+    r.leaves = g.cell_count();
+    progress(std::to_string(r.leaves) + " leaves (" + number(times.lattice) + " s)");
+    return stuff::stuff(*shape, fit, g, so, &times);
+  }();
+  for (const auto& [phase, seconds] :
+       {std::pair{"lattice", times.lattice}, std::pair{"mesh", times.mesh}, std::pair{"cut", times.cut},
+        std::pair{"warp", times.warp}, std::pair{"stencils", times.stencils}})
+    r.seconds.emplace_back(phase, seconds);
+  progress(std::to_string(s.mesh.tets.size()) + " tetrahedra (" + number(times.total() - times.lattice) + " s)");
   r.lattice_tetrahedra = s.lattice_tetrahedra;
   r.cut_points = s.cut_points;
   r.warped = s.warped;

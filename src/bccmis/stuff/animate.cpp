@@ -21,15 +21,21 @@ Bounds swept_bounds(const Shape& shape, const Vec3& d) {
 }
 
 namespace {
+StuffOptions with_level(StuffOptions o, int level) {
+  o.max_level = level;
+  return o;
+}
 double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 }  // namespace
 
 MovingLattice::MovingLattice(std::shared_ptr<const Shape> shape, const Fit& fit, const StuffOptions& options)
-    : shape_(std::move(shape)), moved_(shape_), fit_(fit), options_(options) {
-  options_.max_level = fit.size.L;
-  g_ = background(*moved_, fit_, options_);
+    : shape_(std::move(shape)),
+      moved_(shape_),
+      fit_(fit),
+      options_(with_level(options, fit.size.L)),
+      g_(background_fast(*moved_, fit_, options_)) {
   stuffed_ = stuff(*moved_, fit_, g_, options_);
 }
 
@@ -48,7 +54,7 @@ FrameReport MovingLattice::step(const Vec3& offset) {
   // S15: refine where the surface arrived, until no leaf passes S3's test.
   for (bool changed = true; changed;) {
     changed = false;
-    const std::vector<d3::Point3> cells(g_.C.begin(), g_.C.end());
+    const std::vector<d3::Point3> cells = g_.cells();
     for (const d3::Point3& c : cells)
       if (g_.is_center(c) && needs(c, g_.level_of(c))) {
         report.refines += d3::refine_balanced(g_, c).refined.size();
@@ -60,18 +66,18 @@ FrameReport MovingLattice::step(const Vec3& offset) {
   // fails S3's test; until none is left.
   for (bool changed = true; changed;) {
     changed = false;
-    const std::vector<d3::Point3> nodes(g_.N.begin(), g_.N.end());
+    const std::vector<d3::Point3> nodes = g_.nodes();
     for (const d3::Point3& n : nodes) {
-      if (!g_.is_node(n) || d3::can_coarsen(g_, n)) continue;
-      const std::optional<int> parent = d3::refined_center_level(g_.size, n);
+      if (!g_.is_node(n) || g_.can_coarsen(n)) continue;
+      const std::optional<int> parent = d3::refined_center_level(g_.size(), n);
       if (!parent || needs(n, *parent)) continue;
-      d3::coarsen(g_, n);
+      g_.coarsen(n);
       ++report.coarsens;
       changed = true;
     }
   }
   report.lattice_seconds = since(t0);
-  report.leaves = g_.C.size();
+  report.leaves = g_.cell_count();
   const auto t1 = std::chrono::steady_clock::now();
   stuffed_ = stuff(*moved_, fit_, g_, options_);
   report.stuff_seconds = since(t1);

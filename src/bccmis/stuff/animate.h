@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <memory>
 
-#include "bccmis/d3/graph.h"
+#include "bccmis/fast/lattice3.h"
 #include "bccmis/stuff/stuff.h"
 
 namespace bccmis::stuff {
@@ -22,15 +22,16 @@ struct FrameReport {
 /// S14: the box a shape covers when translated by t d for t in [0, 1].
 Bounds swept_bounds(const Shape& shape, const Vec3& d);
 
-/// S15: the lattice of background() kept up to date under a moving shape.
+/// S15: the lattice of background() kept up to date under a moving shape,
+/// on the fast lattice (fast::Lattice3), stuffed by its flat path.
 class MovingLattice {
  public:
-  /// The lattice of background(shape at offset 0, fit, options).
+  /// The lattice of background_fast(shape at offset 0, fit, options).
   MovingLattice(std::shared_ptr<const Shape> shape, const Fit& fit, const StuffOptions& options);
   /// Moves the shape to `offset` (from its own position): refines the leaves
   /// the surface came near, coarsens the parents it left, and stuffs again.
   FrameReport step(const Vec3& offset);
-  const d3::Graph3& lattice() const { return g_; }
+  const fast::Lattice3& lattice() const { return g_; }
   const Stuffed& stuffed() const { return stuffed_; }
   /// The shape at the current offset.
   const Shape& shape() const { return *moved_; }
@@ -41,7 +42,7 @@ class MovingLattice {
   std::shared_ptr<const Shape> moved_;
   Fit fit_;
   StuffOptions options_;
-  d3::Graph3 g_;
+  fast::Lattice3 g_;
   Stuffed stuffed_;
 };
 
