@@ -126,9 +126,12 @@ std::string stats_text(const Report& r, bool json) {
     for (std::size_t k = 0; k < r.q.histogram.size(); ++k)
       out += (k ? ", \"" : "\"") + std::to_string(15 * k) + "\": " + std::to_string(r.q.histogram[k]);
     out += "}, \"seconds\": {";
-    double total = 0;
-    for (const auto& [phase, s] : r.seconds) out += "\"" + phase + "\": " + number(s) + ", ", total += s;
-    return out + "\"total\": " + number(total) + "}}\n";
+    double total = 0, meshing = 0;
+    for (const auto& [phase, s] : r.seconds) {
+      out += "\"" + phase + "\": " + number(s) + ", ", total += s;
+      if (phase != "statistics" && phase != "write") meshing += s;
+    }
+    return out + "\"meshing\": " + number(meshing) + ", \"total\": " + number(total) + "}}\n";
   }
   out = "shape " + r.shape + "\nleaves " + std::to_string(r.leaves) + "\nlattice_tetrahedra " +
         std::to_string(r.lattice_tetrahedra) + "\ncut_points " + std::to_string(r.cut_points) + "\nwarped " +
