@@ -32,6 +32,12 @@ bccmis_cli_test(stuff_unknown_format 2 ARGS stuff --shape sphere -o x.stl
                 STDERR_REGEX "output 'x.stl': unknown format; the extension names it")
 bccmis_cli_test(stuff_margin 2 ARGS stuff --shape sphere --cells 5 -L 1 -o x.vtu
                 STDERR_REGEX "--cells x 2\\^max-level must exceed 10")
+bccmis_cli_test(stuff_bad_path 2 ARGS stuff --shape sphere --animate 2 --path 1,x,0 -o a.pvd
+                STDERR_REGEX "--path '1,x,0': 'x' is not a number")
+bccmis_cli_test(stuff_animate_not_pvd 2 ARGS stuff --shape sphere --animate 2 -o a.vtu
+                STDERR_REGEX "--animate writes one .pvd")
+bccmis_cli_test(stuff_path_without_animate 2 ARGS stuff --shape sphere --path 1,0,0 -o a.vtu
+                STDERR_REGEX "--path and --compare apply with --animate")
 if(TARGET bccmis::stuff_surface)
   bccmis_cli_test(stuff_open_mesh 2 ARGS stuff ${CMAKE_CURRENT_SOURCE_DIR}/stuff/bad/open.off -o x.vtu
                   STDERR_REGEX "open.off: open mesh: 3 border edges, one from vertex 3 to vertex 0")
