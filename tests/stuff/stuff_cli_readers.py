@@ -115,6 +115,24 @@ def check_case(bccmis, d, name, args, euler, exact_volume, tolerance, on_unit_sp
         for p in off.points:
             if abs(math.sqrt(p[0] ** 2 + p[1] ** 2 + p[2] ** 2) - 1) > 1e-9:
                 fail("%s: boundary vertex %s is off the unit sphere" % (name, list(p)))
+        # S13's Hausdorff distance from the boundary: the largest |1 - |p||
+        # over the vertices, edge midpoints and centroid of every boundary
+        # triangle, computed here from the .off; the distance from the
+        # surface is positive and below the largest boundary edge.
+        worst, longest = 0.0, 0.0
+        for t in tri_off:
+            a, b, c = (list(map(float, off.points[i])) for i in t)
+            samples = [a, b, c, [(a[k] + b[k]) / 2 for k in range(3)], [(b[k] + c[k]) / 2 for k in range(3)],
+                       [(a[k] + c[k]) / 2 for k in range(3)], [(a[k] + b[k] + c[k]) / 3 for k in range(3)]]
+            for q in samples:
+                worst = max(worst, abs(1 - math.sqrt(sum(x * x for x in q))))
+            for u, v in ((a, b), (b, c), (c, a)):
+                longest = max(longest, math.dist(u, v))
+        h = stats["hausdorff"]
+        if abs(h["from_boundary"] - worst) > 1e-8 * max(worst, 1e-12):  # the JSON has 9 digits
+            fail("%s: hausdorff from_boundary %.12g, computed %.12g" % (name, h["from_boundary"], worst))
+        if not (0 < h["from_surface"] < longest):
+            fail("%s: hausdorff from_surface %g not in (0, %g)" % (name, h["from_surface"], longest))
     print("%s: %d vertices, %d tetrahedra, dihedral [%.3f, %.3f], volume error %.4f, Euler %d" % (
         name, stats["vertices"], stats["tetrahedra"], stats["min_dihedral"], stats["max_dihedral"],
         stats["volume_rel_error"], euler))
