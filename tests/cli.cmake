@@ -359,11 +359,12 @@ bccmis_cli_test(mesh_render_histogram_of_a_state 2 ARGS render ${_face3} --histo
                 STDERR_REGEX "face_refined.state: --histogram applies to a .mesh file")
 bccmis_cli_test(mesh_render_from_trace 2 ARGS render --from-trace ${_two_tets} -o out.svg
                 STDERR_REGEX "two_tets.mesh: a .mesh file; --from-trace applies to traces")
-# docs/stuff-torus.svg and docs/stuff-torus-angles.svg are the README's
-# commands' output as drawn now: the torus stuffed at level 2 on 6 cells.
+# docs/stuff-sphere.svg and docs/stuff-sphere-angles.svg are the README's
+# commands' output as drawn now: the unit sphere stuffed at level 4 on 3
+# cells, levels 2 to 4 in the cut-away.
 add_test(NAME cli.mesh_render_docs_current
-         COMMAND sh -c "mkdir -p \"$2\" && cd \"$2\" && \"$1\" stuff --shape torus -L 2 --cells 6 -o torus.mesh -q &&
-                        \"$1\" render torus.mesh --slice z=0 -o - | cmp - \"$3/docs/stuff-torus.svg\" &&
-                        \"$1\" render torus.mesh --histogram -o - | cmp - \"$3/docs/stuff-torus-angles.svg\""
+         COMMAND sh -c "mkdir -p \"$2\" && cd \"$2\" && \"$1\" stuff --shape sphere -L 4 --cells 3 -o sphere.mesh -q &&
+                        \"$1\" render sphere.mesh --slice z=0 -o - | cmp - \"$3/docs/stuff-sphere.svg\" &&
+                        \"$1\" render sphere.mesh --histogram -o - | cmp - \"$3/docs/stuff-sphere-angles.svg\""
                  sh $<TARGET_FILE:bccmis> ${CMAKE_CURRENT_BINARY_DIR}/cli_work/mesh_render_docs ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.mesh_render_docs_current PROPERTIES LABELS cli)
