@@ -16,6 +16,17 @@ add_test(NAME cli.stuff_readers
                  ${_stuff_meshes})
 set_tests_properties(cli.stuff_readers PROPERTIES LABELS cli TIMEOUT 900)
 
+# A triangle mesh moved rigidly (--animate with an input file, S14 and S15):
+# the cube [0,2]^3 (tests/stuff/good/cube.off) in 3 steps; the .pvd's frames
+# read by meshio, each the cube moved by its share of the path
+# (tests/stuff/stuff_cli_animate_mesh.py).
+if(TARGET bccmis::stuff_surface)
+  add_test(NAME cli.stuff_animate_mesh
+           COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/stuff/stuff_cli_animate_mesh.py
+                   $<TARGET_FILE:bccmis> ${CMAKE_CURRENT_SOURCE_DIR}/stuff/good/cube.off)
+  set_tests_properties(cli.stuff_animate_mesh PROPERTIES LABELS cli)
+endif()
+
 # bccmis stuff refusals: exit 2 (spec/cli.md), the message naming what is
 # wrong and where.
 bccmis_cli_test(stuff_unknown_shape 2 ARGS stuff --shape cube -o x.vtu
