@@ -7,10 +7,14 @@
 // against the shape's closed form.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numbers>
 #include <random>
+#include <tuple>
+#include <vector>
 
 #include "bccmis/d3/mesh.h"
 #include "bccmis/fast/lattice3.h"
@@ -240,6 +244,57 @@ TEST(StuffAnimate, LocalStepsReachTheLatticeBuiltFromScratch) {
     // From scratch, every refined cell is one refine: (leaves - initial) / 7.
     EXPECT_LT(r.refines + r.coarsens, (scratch.C.size() - initial_leaves) / 7);
     check_mesh(*moved, fit, moving.stuffed());
+  }
+}
+
+// The tetrahedra of a mesh as a sorted list of (level, sorted vertex
+// positions with kinds): equal lists are equal meshes up to numbering.
+using TetKey = std::pair<int, std::array<std::tuple<double, double, double, int>, 4>>;
+std::vector<TetKey> tet_keys(const d3::TetMeshF& m) {
+  std::vector<TetKey> out;
+  for (std::size_t t = 0; t < m.tets.size(); ++t) {
+    TetKey k{m.level[t], {}};
+    for (std::size_t i = 0; i < 4; ++i) {
+      const auto& p = m.vertices[m.tets[t][i]];
+      k.second[i] = {p[0], p[1], p[2], m.kind[m.tets[t][i]]};
+    }
+    std::sort(k.second.begin(), k.second.end());
+    out.push_back(k);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+TEST(StuffAnimate, LocalStuffingEqualsTheReferenceStuffingOfEachFrame) {
+  // S16: the mesh kept up to date by stuffing only the active leaves equals
+  // the reference stuffing (std::map path, Graph3 lattice) of the moved
+  // shape built from scratch, tetrahedron for tetrahedron; for small steps,
+  // sign flips by a step longer than the band (the second path), and a step
+  // back to the start.
+  const std::shared_ptr<const Shape> ball = make_sphere({0, 0, 0}, 0.4);
+  StuffOptions o;
+  o.max_level = 2;
+  o.cells = 4;
+  for (const Vec3 path : {Vec3{0.06, 0.02, 0}, Vec3{1.1, -0.4, 0.3}}) {
+    SCOPED_TRACE(path[0]);
+    const Fit fit = fit_lattice(swept_bounds(*ball, path), o);
+    MovingLattice moving(ball, fit, o);
+    for (const double t : {0.25, 0.5, 1.0, 0.0}) {
+      SCOPED_TRACE(t);
+      const Vec3 offset{path[0] * t, path[1] * t, path[2] * t};
+      const FrameReport r = moving.step(offset);
+      const auto moved = translated(ball, offset);
+      const Stuffed reference = stuff(*moved, fit, background(*moved, fit, o), o);
+      ASSERT_EQ(moving.stuffed().mesh.tets.size(), reference.mesh.tets.size());
+      EXPECT_TRUE(tet_keys(moving.stuffed().mesh) == tet_keys(reference.mesh));
+      EXPECT_EQ(moving.stuffed().lattice_tetrahedra, reference.lattice_tetrahedra);
+      EXPECT_EQ(moving.stuffed().cut_points, reference.cut_points);
+      EXPECT_EQ(moving.stuffed().warped, reference.warped);
+      // Only a part of the lattice is stuffed again.
+      EXPECT_GT(r.restuffed_tetrahedra, 0U);
+      EXPECT_LT(r.restuffed_tetrahedra, reference.lattice_tetrahedra);
+      EXPECT_LT(r.restuffed_leaves, r.leaves);
+    }
   }
 }
 

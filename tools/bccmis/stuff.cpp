@@ -230,9 +230,10 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
   };
   OutputSet outputs;
   std::string index = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
-  std::string table = o.json ? "{\"frames\": ["
-                             : "frame refines coarsens leaves tetrahedra lattice_s stuff_s" +
-                                   std::string(o.compare ? " scratch_s" : "") + "\n";
+  std::string table =
+      o.json ? "{\"frames\": ["
+             : "frame refines coarsens leaves restuffed_leaves restuffed_tetrahedra tetrahedra lattice_s stuff_s" +
+                   std::string(o.compare ? " scratch_s" : "") + "\n";
   const auto t0 = std::chrono::steady_clock::now();
   stuff::MovingLattice moving(shape, fit, so);
   const double initial = seconds_since(t0);
@@ -262,6 +263,10 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
           throw CheckFailure("frame " + std::to_string(k) +
                              ": the lattice updated locally differs from the one built "
                              "from scratch");
+        if (!stuff::same_tetrahedra(s.mesh, moving.stuffed().mesh))
+          throw CheckFailure("frame " + std::to_string(k) +
+                             ": the mesh stuffed again locally differs from the one stuffed "
+                             "from scratch");
         const auto boundary = stuff::boundary_triangles(moving.stuffed().mesh);
         if (auto why = check_stuffed(moving.shape(), fit, moving.stuffed().mesh, boundary))
           throw CheckFailure("frame " + std::to_string(k) + ": " + *why);
@@ -276,14 +281,19 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
     if (o.json) {
       table += std::string(k ? ", " : "") + "{\"frame\": " + std::to_string(k) +
                ", \"refines\": " + std::to_string(r.refines) + ", \"coarsens\": " + std::to_string(r.coarsens) +
-               ", \"leaves\": " + std::to_string(r.leaves) + ", \"tetrahedra\": " + std::to_string(mesh.tets.size()) +
+               ", \"leaves\": " + std::to_string(r.leaves) +
+               ", \"restuffed_leaves\": " + std::to_string(r.restuffed_leaves) +
+               ", \"restuffed_tetrahedra\": " + std::to_string(r.restuffed_tetrahedra) +
+               ", \"tetrahedra\": " + std::to_string(mesh.tets.size()) +
                ", \"lattice_seconds\": " + number(r.lattice_seconds) +
                ", \"stuff_seconds\": " + number(r.stuff_seconds) +
                (o.compare ? ", \"scratch_seconds\": " + number(scratch) : "") + "}";
     } else {
       table += std::to_string(k) + " " + std::to_string(r.refines) + " " + std::to_string(r.coarsens) + " " +
-               std::to_string(r.leaves) + " " + std::to_string(mesh.tets.size()) + " " + number(r.lattice_seconds) +
-               " " + number(r.stuff_seconds) + (o.compare ? " " + number(scratch) : "") + "\n";
+               std::to_string(r.leaves) + " " + std::to_string(r.restuffed_leaves) + " " +
+               std::to_string(r.restuffed_tetrahedra) + " " + std::to_string(mesh.tets.size()) + " " +
+               number(r.lattice_seconds) + " " + number(r.stuff_seconds) + (o.compare ? " " + number(scratch) : "") +
+               "\n";
     }
     if (!o.quiet)
       std::cerr << "bccmis stuff: frame " << k << "/" << o.animate << ": " << r.refines << " refines, " << r.coarsens

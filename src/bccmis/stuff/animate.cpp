@@ -1,15 +1,20 @@
-// A shape moving through a fixed lattice (spec/stuffing.md S14, S15).
+// A shape moving through a fixed lattice (spec/stuffing.md S14-S16).
 #include "bccmis/stuff/animate.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
+#include <unordered_set>
 #include <vector>
 
 #include "bccmis/apps/balance3.h"
+#include "bccmis/d3/detail/tetrahedra.h"
 #include "bccmis/d3/ops.h"
 
 namespace bccmis::stuff {
+
+using d3::Point3;
 
 Bounds swept_bounds(const Shape& shape, const Vec3& d) {
   Bounds b = shape.bounds();
@@ -28,7 +33,25 @@ StuffOptions with_level(StuffOptions o, int level) {
 double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
+std::size_t mix(std::uint64_t h) { return static_cast<std::size_t>(h ^ (h >> 29)); }
+std::uint64_t point_hash(const Point3& p) {
+  return static_cast<std::uint64_t>(p.x) * 0x9E3779B97F4A7C15ull ^
+         static_cast<std::uint64_t>(p.y) * 0xC2B2AE3D27D4EB4Full ^
+         static_cast<std::uint64_t>(p.z) * 0x165667B19E3779F9ull;
+}
+Point3 shifted(const Point3& c, std::int64_t dx, std::int64_t dy, std::int64_t dz) {
+  return {c.x + dx, c.y + dy, c.z + dz};
+}
+/// The 8 children of the cell centred at c with side s.
+std::array<Point3, 8> children(const Point3& c, std::int64_t s) {
+  const std::int64_t q = s / 4;
+  std::array<Point3, 8> out{};
+  for (std::size_t i = 0; i < 8; ++i) out[i] = shifted(c, (i & 1) ? q : -q, (i & 2) ? q : -q, (i & 4) ? q : -q);
+  return out;
+}
 }  // namespace
+
+std::size_t MovingLattice::PointHash::operator()(const Point3& p) const noexcept { return mix(point_hash(p)); }
 
 MovingLattice::MovingLattice(std::shared_ptr<const Shape> shape, const Fit& fit, const StuffOptions& options)
     : shape_(std::move(shape)),
@@ -36,50 +59,311 @@ MovingLattice::MovingLattice(std::shared_ptr<const Shape> shape, const Fit& fit,
       fit_(fit),
       options_(with_level(options, fit.size.L)),
       g_(background_fast(*moved_, fit_, options_)) {
-  stuffed_ = stuff(*moved_, fit_, g_, options_);
+  const std::int64_t S = d3::level0_side(fit_.size);
+  if (std::max({fit_.size.W, fit_.size.H, fit_.size.D}) * S >= (std::int64_t{1} << 21))
+    throw ShapeError("--animate: the lattice is too fine (more than 2^21 lattice points along a side)");
+  std::vector<std::pair<Point3, bool>> all;
+  for (const Point3& u : g_.cells()) all.push_back({u, true});
+  FrameReport ignored;
+  restuff(all, ignored);
 }
 
 // S3's test for a cell of `level` centered at c, for the shape where it is now.
-bool MovingLattice::needs(const d3::Point3& c, int level) const {
+bool MovingLattice::needs(const Point3& c, int level) const {
   if (level >= fit_.size.L) return false;
   if (level < options_.min_level) return true;
-  const double r = 0.5 * static_cast<double>(d3::cell_side(fit_.size, level)) * fit_.scale;
+  const double r = 0.5 * static_cast<double>(side(level)) * fit_.scale;
   return std::abs(moved_->signed_distance(fit_.to_space(c))) <= std::sqrt(3.0) * r + 4 * fit_.h;
+}
+
+std::vector<Point3> MovingLattice::roots() const {
+  const std::int64_t s = side(0);
+  std::vector<Point3> out;
+  for (std::int64_t i = 0; i < fit_.size.W; ++i)
+    for (std::int64_t j = 0; j < fit_.size.H; ++j)
+      for (std::int64_t k = 0; k < fit_.size.D; ++k) out.push_back({s / 2 + i * s, s / 2 + j * s, s / 2 + k * s});
+  return out;
+}
+
+// S15's refine pass as a descent: S3's test fails on every cell inside a
+// cell that fails it (S16), so only cells whose parents pass are visited.
+void MovingLattice::refine_visit(const Point3& c, int level, FrameReport& report) {
+  if (!needs(c, level)) return;
+  if (g_.is_center(c)) {
+    const d3::BalancedRefineResult3 r = d3::refine_balanced(g_, c);
+    report.refines += r.refined.size();
+    for (const Point3& x : r.refined) changed_.push_back({x, *d3::refined_center_level(fit_.size, x)});
+  }
+  for (const Point3& child : children(c, side(level))) refine_visit(child, level + 1, report);
+}
+
+// S15's coarsen pass, first half: the refined cells that fail the test and
+// whose parents pass.
+void MovingLattice::coarsen_visit(const Point3& c, int level, std::vector<std::pair<Point3, int>>& failing) {
+  if (g_.is_center(c)) return;
+  if (!needs(c, level)) {
+    failing.push_back({c, level});
+    return;
+  }
+  for (const Point3& child : children(c, side(level))) coarsen_visit(child, level + 1, failing);
+}
+
+// Coarsens the refined cell c (which fails the test, as every cell inside
+// it) from the bottom up, as far as balance allows; true if anything changed.
+bool MovingLattice::coarsen_subtree(const Point3& c, int level, FrameReport& report) {
+  bool changed = false, leaves = true;
+  for (const Point3& child : children(c, side(level)))
+    if (!g_.is_center(child)) {
+      changed = coarsen_subtree(child, level + 1, report) || changed;
+      leaves = leaves && g_.is_center(child);
+    }
+  if (leaves && !g_.can_coarsen(c)) {
+    g_.coarsen(c);
+    changed_.push_back({c, level});
+    ++report.coarsens;
+    changed = true;
+  }
+  return changed;
+}
+
+// S16's candidates: the leaves that can be active now, |f(u)| <= s_u + h,
+// or whose sign can have changed since the last frame, |f(u)| <= the
+// distance moved (the surface passed u on the way).
+void MovingLattice::near_visit(const Point3& c, int level, double moved, std::vector<Point3>& out) const {
+  const double s = static_cast<double>(side(level)) * fit_.scale, h = 1.01 * fit_.h;
+  const double f = std::abs(moved_->signed_distance(fit_.to_space(c)));
+  if (g_.is_center(c)) {
+    if (f <= std::max(s + h, moved)) out.push_back(c);
+    return;
+  }
+  // A leaf u inside c is within sqrt(3)/2 s of c and has side at most s / 2.
+  if (f > 0.5 * std::sqrt(3.0) * s + std::max(0.5 * s + h, moved)) return;
+  for (const Point3& child : children(c, side(level))) near_visit(child, level + 1, moved, out);
+}
+
+// The leaf holding the points just beside p in the direction of `octant`
+// (each component -1 or 1); false outside the domain.
+bool MovingLattice::leaf_at(const Point3& p, const std::array<int, 3>& octant, int from, Point3& out) const {
+  const std::int64_t S = d3::level0_side(fit_.size);
+  const std::int64_t extent[3] = {fit_.size.W * S, fit_.size.H * S, fit_.size.D * S};
+  const std::int64_t at[3] = {octant[0] > 0 ? p.x : p.x - 1, octant[1] > 0 ? p.y : p.y - 1,
+                              octant[2] > 0 ? p.z : p.z - 1};
+  for (int i = 0; i < 3; ++i)
+    if (at[i] < 0 || at[i] >= extent[i]) return false;
+  // The leaf is at level `from` or finer when balance holds around the
+  // changed cell; from level 0 otherwise.
+  for (int i = 0; i <= fit_.size.L; ++i) {
+    const int level = i + from <= fit_.size.L ? i + from : i + from - fit_.size.L - 1;
+    const std::int64_t s = side(level);
+    const Point3 c{at[0] / s * s + s / 2, at[1] / s * s + s / 2, at[2] / s * s + s / 2};
+    if (g_.is_center(c)) {
+      out = c;
+      return true;
+    }
+  }
+  throw std::logic_error("MovingLattice: no leaf holds the points beside " + d3::to_string(p));
+}
+
+// S16: the leaves whose lattice tetrahedra changed with this step's refines
+// and coarsens: the new leaves, the leaves with a point of a changed cell's
+// half grid (where nodes appear or vanish) on their boundary, and the
+// leaves across a face from a center that appeared or vanished.
+std::vector<Point3> MovingLattice::lattice_dirty() {
+  std::vector<std::pair<Point3, int>> points, centers;
+  for (const auto& [c, level] : changed_) {
+    const std::int64_t h = side(level) / 2;
+    for (int i = -1; i <= 1; ++i)
+      for (int j = -1; j <= 1; ++j)
+        for (int k = -1; k <= 1; ++k)
+          if (i == 0 || j == 0 || k == 0) points.push_back({shifted(c, i * h, j * h, k * h), level});
+    centers.push_back({c, level});
+    for (const Point3& child : children(c, side(level))) centers.push_back({child, level + 1});
+  }
+  const auto unique = [](std::vector<std::pair<Point3, int>>& v) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end(), [](const auto& a, const auto& b) { return a.first == b.first; }), v.end());
+  };
+  unique(points);
+  unique(centers);
+  std::vector<Point3> out;
+  Point3 u;
+  for (const auto& [p, level] : points)
+    for (int o = 0; o < 8; ++o)
+      if (leaf_at(p, {(o & 1) ? 1 : -1, (o & 2) ? 1 : -1, (o & 4) ? 1 : -1}, std::max(0, level - 1), u))
+        out.push_back(u);
+  for (const auto& [c, level] : centers) {
+    if (g_.is_center(c)) out.push_back(c);
+    const std::int64_t s = side(level);
+    for (int axis = 0; axis < 3; ++axis)
+      for (const std::int64_t d : {-s, s}) {
+        const Point3 w = shifted(c, axis == 0 ? d : 0, axis == 1 ? d : 0, axis == 2 ? d : 0);
+        if (g_.is_center(w)) out.push_back(w);
+      }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+namespace {
+/// A lattice point as one integer (S16's pool; checked to fit by the
+/// constructor).
+std::uint64_t pack(const Point3& p) {
+  return static_cast<std::uint64_t>(p.x) << 42 | static_cast<std::uint64_t>(p.y) << 21 |
+         static_cast<std::uint64_t>(p.z);
+}
+}  // namespace
+
+void MovingLattice::release(Leaf& leaf) {
+  for (const auto& t : leaf.inside)
+    for (const std::uint32_t v : t)
+      if (--refs_[v] == 0) {
+        index_.erase(pack(point_[v]));
+        free_.push_back(v);
+      }
+  leaf.inside.clear();
+}
+
+std::uint32_t MovingLattice::acquire(const Point3& p) {
+  auto [it, inserted] = index_.try_emplace(pack(p), 0);
+  if (inserted) {
+    if (free_.empty()) {
+      it->second = static_cast<std::uint32_t>(point_.size());
+      point_.push_back(p);
+      refs_.push_back(0);
+    } else {
+      it->second = free_.back();
+      free_.pop_back();
+      point_[it->second] = p;
+    }
+  }
+  ++refs_[it->second];
+  return it->second;
+}
+
+// S16: settle each candidate leaf as active (stuffed this frame), inside
+// (its tetrahedra are output as they are) or outside (no output), its
+// lattice tetrahedra computed again where the lattice changed; then stuff
+// the active leaves and put the frame's mesh together.
+void MovingLattice::restuff(const std::vector<std::pair<Point3, bool>>& candidates, FrameReport& report) {
+  std::vector<Point3> ring;
+  std::vector<d3::Tet> tets, fresh;
+  std::vector<Point3> active;
+  for (const auto& [u, relattice] : candidates) {
+    Leaf& leaf = leaves_[u];
+    if (relattice) {
+      fresh.clear();
+      d3::detail::leaf_tetrahedra(g_, u, fresh, ring);
+      if (fresh != leaf.lattice) {
+        release(leaf);
+        std::swap(leaf.lattice, fresh);
+      }
+    }
+    const double s = static_cast<double>(side(g_.level_of(u))) * fit_.scale;
+    const double f = moved_->signed_distance(fit_.to_space(u));
+    if (std::abs(f) <= s + 1.01 * fit_.h) {
+      // Active: a vertex of its tetrahedra may be within h of the surface.
+      release(leaf);
+      active.push_back(u);
+      tets.insert(tets.end(), leaf.lattice.begin(), leaf.lattice.end());
+    } else if (f > 0) {
+      release(leaf);  // outside: every vertex is outside
+    } else if (leaf.inside.empty()) {
+      for (const d3::Tet& t : leaf.lattice)
+        leaf.inside.push_back({acquire(t[0]), acquire(t[1]), acquire(t[2]), acquire(t[3])});
+    }
+  }
+  report.restuffed_leaves = active.size();
+  report.restuffed_tetrahedra = tets.size();
+  active_ = std::move(active);
+  assemble(stuff_part(*moved_, fit_, g_, options_, std::move(tets)));
+}
+
+void MovingLattice::assemble(const StuffedPart& part) {
+  Stuffed& out = stuffed_;
+  out = Stuffed{};
+  d3::TetMeshF& m = out.mesh;
+  std::vector<std::uint32_t> index(point_.size(), 0xFFFFFFFFu);
+  for (std::uint32_t v = 0; v < point_.size(); ++v) {
+    if (refs_[v] == 0) continue;
+    index[v] = static_cast<std::uint32_t>(m.vertices.size());
+    m.vertices.push_back(fit_.to_space(point_[v]));
+    m.kind.push_back(static_cast<std::uint8_t>(StuffVertex::lattice));
+  }
+  for (const auto& [u, leaf] : leaves_) {
+    out.lattice_tetrahedra += leaf.lattice.size();
+    if (leaf.inside.empty()) continue;
+    const int level = g_.level_of(u);
+    for (const auto& t : leaf.inside) {
+      m.tets.push_back({index[t[0]], index[t[1]], index[t[2]], index[t[3]]});
+      m.level.push_back(level);
+    }
+  }
+  // The active leaves' stuffing: its lattice vertices that inside leaves
+  // use too are the same vertices.
+  const d3::TetMeshF& a = part.stuffed.mesh;
+  std::vector<std::uint32_t> to(a.vertices.size());
+  for (std::size_t i = 0; i < a.vertices.size(); ++i) {
+    if (a.kind[i] == static_cast<std::uint8_t>(StuffVertex::lattice))
+      if (auto it = index_.find(pack(part.keys[i][0])); it != index_.end()) {
+        to[i] = index[it->second];
+        continue;
+      }
+    to[i] = static_cast<std::uint32_t>(m.vertices.size());
+    m.vertices.push_back(a.vertices[i]);
+    m.kind.push_back(a.kind[i]);
+  }
+  for (std::size_t t = 0; t < a.tets.size(); ++t) {
+    m.tets.push_back({to[a.tets[t][0]], to[a.tets[t][1]], to[a.tets[t][2]], to[a.tets[t][3]]});
+    m.level.push_back(a.level[t]);
+  }
+  out.cut_points = part.stuffed.cut_points;
+  out.warped = part.stuffed.warped;
 }
 
 FrameReport MovingLattice::step(const Vec3& offset) {
   FrameReport report;
+  const double moved = std::hypot(offset[0] - offset_[0], offset[1] - offset_[1], offset[2] - offset_[2]);
+  offset_ = offset;
   moved_ = translated(shape_, offset);
+  changed_.clear();
   const auto t0 = std::chrono::steady_clock::now();
-  // S15: refine where the surface arrived, until no leaf passes S3's test.
+  // S15: refine every cell that passes S3's test (by descent, S16).
+  const std::vector<Point3> top = roots();
+  for (const Point3& c : top) refine_visit(c, 0, report);
+  // Then coarsen the refined cells that fail it, bottom up, until balance
+  // lets no more go.
+  std::vector<std::pair<Point3, int>> failing;
+  for (const Point3& c : top) coarsen_visit(c, 0, failing);
   for (bool changed = true; changed;) {
     changed = false;
-    const std::vector<d3::Point3> cells = g_.cells();
-    for (const d3::Point3& c : cells)
-      if (g_.is_center(c) && needs(c, g_.level_of(c))) {
-        report.refines += d3::refine_balanced(g_, c).refined.size();
-        changed = true;
-      }
-  }
-  // Then coarsen every parent the surface left: a node that coarsen accepts
-  // (its 8 cells are leaves, siblings, and balance allows) whose parent cell
-  // fails S3's test; until none is left.
-  for (bool changed = true; changed;) {
-    changed = false;
-    const std::vector<d3::Point3> nodes = g_.nodes();
-    for (const d3::Point3& n : nodes) {
-      if (!g_.is_node(n) || g_.can_coarsen(n)) continue;
-      const std::optional<int> parent = d3::refined_center_level(g_.size(), n);
-      if (!parent || needs(n, *parent)) continue;
-      g_.coarsen(n);
-      ++report.coarsens;
-      changed = true;
-    }
+    for (const auto& [c, level] : failing)
+      if (!g_.is_center(c)) changed = coarsen_subtree(c, level, report) || changed;
   }
   report.lattice_seconds = since(t0);
   report.leaves = g_.cell_count();
   const auto t1 = std::chrono::steady_clock::now();
-  stuffed_ = stuff(*moved_, fit_, g_, options_);
+  // S16: the leaves that left go; the candidates are the leaves whose
+  // lattice tetrahedra changed, the last frame's active leaves and the
+  // leaves near the surface or passed by it.
+  std::unordered_set<Point3, PointHash> gone;
+  for (const auto& [c, level] : changed_) {
+    gone.insert(c);
+    for (const Point3& child : children(c, side(level))) gone.insert(child);
+  }
+  for (const Point3& c : gone)
+    if (!g_.is_center(c))
+      if (auto it = leaves_.find(c); it != leaves_.end()) {
+        release(it->second);
+        leaves_.erase(it);
+      }
+  std::unordered_map<Point3, bool, PointHash> candidates;
+  for (const Point3& u : lattice_dirty()) candidates[u] = true;
+  std::vector<Point3> near = active_;
+  for (const Point3& c : top) near_visit(c, 0, moved * 1.01, near);
+  for (const Point3& u : near)
+    if (g_.is_center(u)) candidates.try_emplace(u, false);
+  restuff({candidates.begin(), candidates.end()}, report);
   report.stuff_seconds = since(t1);
   return report;
 }

@@ -1,48 +1,91 @@
 // bccmis::stuff: a shape moving through a fixed lattice (spec/stuffing.md
-// §8): per frame, refine where the surface arrived and coarsen where it
-// left, by local lattice operations, then stuff the mesh again.
+// S14-S16): per frame, refine where the surface arrived and coarsen where it
+// left, by local lattice operations, then stuff again only the leaves whose
+// tetrahedra can have changed.
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <unordered_map>
+#include <vector>
 
 #include "bccmis/fast/lattice3.h"
 #include "bccmis/stuff/stuff.h"
 
 namespace bccmis::stuff {
 
-/// What one frame did (S15).
+/// What one frame did (S15, S16).
 struct FrameReport {
   std::size_t refines = 0;   ///< refine operations (the cascade's included)
   std::size_t coarsens = 0;  ///< coarsen operations
   std::size_t leaves = 0;
+  std::size_t restuffed_leaves = 0;      ///< S16's dirty leaves
+  std::size_t restuffed_tetrahedra = 0;  ///< their lattice tetrahedra, stuffed again
   double lattice_seconds = 0, stuff_seconds = 0;
 };
 
 /// S14: the box a shape covers when translated by t d for t in [0, 1].
 Bounds swept_bounds(const Shape& shape, const Vec3& d);
 
-/// S15: the lattice of background() kept up to date under a moving shape,
-/// on the fast lattice (fast::Lattice3), stuffed by its flat path.
+/// S15, S16: the lattice of background() and its stuffing kept up to date
+/// under a moving shape, on the fast lattice (fast::Lattice3).
 class MovingLattice {
  public:
-  /// The lattice of background_fast(shape at offset 0, fit, options).
+  /// The lattice of background_fast(shape at offset 0, fit, options), stuffed.
   MovingLattice(std::shared_ptr<const Shape> shape, const Fit& fit, const StuffOptions& options);
-  /// Moves the shape to `offset` (from its own position): refines the leaves
-  /// the surface came near, coarsens the parents it left, and stuffs again.
+  /// Moves the shape to `offset` (from its own position): refines the cells
+  /// the surface came near, coarsens the parents it left (S15), and stuffs
+  /// again the leaves whose tetrahedra can have changed (S16).
   FrameReport step(const Vec3& offset);
   const fast::Lattice3& lattice() const { return g_; }
+  /// The mesh of the current frame: the same tetrahedra (vertex positions,
+  /// kinds and levels) as stuff() on this lattice, in another order.
   const Stuffed& stuffed() const { return stuffed_; }
   /// The shape at the current offset.
   const Shape& shape() const { return *moved_; }
 
  private:
+  struct PointHash {
+    std::size_t operator()(const d3::Point3& p) const noexcept;
+  };
+  /// What S16 keeps of a leaf between frames.
+  struct Leaf {
+    std::vector<d3::Tet> lattice;  ///< its tetrahedra (spec/mesh3d.md)
+    /// Inside and inactive: its tetrahedra as output, on the point pool.
+    std::vector<std::array<std::uint32_t, 4>> inside;
+  };
+
   bool needs(const d3::Point3& c, int level) const;
+  std::int64_t side(int level) const { return d3::cell_side(fit_.size, level); }
+  std::vector<d3::Point3> roots() const;
+  void refine_visit(const d3::Point3& c, int level, FrameReport& report);
+  void coarsen_visit(const d3::Point3& c, int level, std::vector<std::pair<d3::Point3, int>>& failing);
+  bool coarsen_subtree(const d3::Point3& c, int level, FrameReport& report);
+  void near_visit(const d3::Point3& c, int level, double moved, std::vector<d3::Point3>& out) const;
+  bool leaf_at(const d3::Point3& p, const std::array<int, 3>& octant, int from, d3::Point3& out) const;
+  std::vector<d3::Point3> lattice_dirty();
+  void restuff(const std::vector<std::pair<d3::Point3, bool>>& candidates, FrameReport& report);
+  void release(Leaf& leaf);
+  std::uint32_t acquire(const d3::Point3& p);
+  void assemble(const StuffedPart& part);
+
   std::shared_ptr<const Shape> shape_;
   std::shared_ptr<const Shape> moved_;
   Fit fit_;
   StuffOptions options_;
   fast::Lattice3 g_;
+  Vec3 offset_{};
+  /// The cells refined or coarsened in this step, with their levels.
+  std::vector<std::pair<d3::Point3, int>> changed_;
+  std::unordered_map<d3::Point3, Leaf, PointHash> leaves_;
+  std::vector<d3::Point3> active_;  ///< S16's active leaves of the last frame
+  // The lattice points of the inside leaves' tetrahedra, counted.
+  std::unordered_map<std::uint64_t, std::uint32_t> index_;
+  std::vector<d3::Point3> point_;
+  std::vector<std::uint32_t> refs_;
+  std::vector<std::uint32_t> free_;
   Stuffed stuffed_;
 };
 

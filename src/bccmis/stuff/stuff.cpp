@@ -13,6 +13,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "bccmis/apps/balance3.h"
@@ -547,6 +548,13 @@ class Stuffer {
   Stuffer(const Shape& shape, const Fit& fit, const G& g, const StuffOptions& options)
       : shape_(shape), fit_(fit), g_(g), options_(options) {}
 
+  /// Also report, for stuff_part(), each output vertex's key as lattice
+  /// points and where each lattice tetrahedron's output tetrahedra begin.
+  void record(std::vector<std::array<Point3, 2>>* keys, std::vector<std::uint32_t>* begin) {
+    keys_ = keys;
+    begin_ = begin;
+  }
+
   Stuffed run(std::vector<d3::Tet> tets, PhaseTimes* times) {
     auto t0 = Clock::now();
     tets_ = std::move(tets);
@@ -559,7 +567,12 @@ class Stuffer {
     warp();
     if (times) times->warp = seconds_since(t0);
     t0 = Clock::now();
-    for (std::size_t i = 0; i < tets_.size(); ++i) fill(i);
+    if (begin_) begin_->reserve(tets_.size() + 1);
+    for (std::size_t i = 0; i < tets_.size(); ++i) {
+      if (begin_) begin_->push_back(static_cast<std::uint32_t>(tets_out_.size()));
+      fill(i);
+    }
+    if (begin_) begin_->push_back(static_cast<std::uint32_t>(tets_out_.size()));
     Stuffed s = finish();
     if (times) times->stencils = seconds_since(t0);
     return s;
@@ -576,7 +589,7 @@ class Stuffer {
   void number() {
     // The vertices are centers, nodes and hull points (centers of the
     // domain's faces, at most one per leaf): load at most 1/2.
-    const std::size_t most = 2 * cell_count(g_) + node_count(g_);
+    const std::size_t most = std::min(2 * cell_count(g_) + node_count(g_), 4 * tets_.size());
     std::size_t slots = 16;
     while (slots < 2 * most) slots *= 2;
     std::vector<std::uint32_t> table(slots, EdgeTable::kNone);
@@ -881,6 +894,7 @@ class Stuffer {
       else
         vertex_index[first(k)] = index;
       m.vertices.push_back(pos(k));
+      if (keys_) keys_->push_back({points_[first(k)], points_[second(k)]});
       m.kind.push_back(static_cast<std::uint8_t>(is_cut(k)                ? StuffVertex::cut
                                                  : warped_[first(k)] != 0 ? StuffVertex::warped
                                                                           : StuffVertex::lattice));
@@ -918,6 +932,8 @@ class Stuffer {
   std::vector<std::array<VKey, 4>> tets_out_;
   std::vector<int> levels_out_;
   Stuffed out_;
+  std::vector<std::array<Point3, 2>>* keys_ = nullptr;
+  std::vector<std::uint32_t>* begin_ = nullptr;
 };
 
 }  // namespace flat_path
@@ -937,6 +953,15 @@ Stuffed stuff(const Shape& shape, const Fit& fit, const fast::Lattice3& g, const
   std::vector<d3::Tet> tets = fast::tetrahedra(g);
   if (times) times->mesh = seconds_since(t0);
   return flat_path::Stuffer<fast::Lattice3>(shape, fit, g, options).run(std::move(tets), times);
+}
+
+StuffedPart stuff_part(const Shape& shape, const Fit& fit, const fast::Lattice3& g, const StuffOptions& options,
+                       std::vector<d3::Tet> tets) {
+  StuffedPart part;
+  flat_path::Stuffer<fast::Lattice3> stuffer(shape, fit, g, options);
+  stuffer.record(&part.keys, &part.begin);
+  part.stuffed = stuffer.run(std::move(tets), nullptr);
+  return part;
 }
 
 Stuffed stuff_shape(const Shape& shape, const StuffOptions& options, Impl impl, PhaseTimes* times) {
@@ -973,6 +998,30 @@ std::vector<std::array<std::uint32_t, 3>> boundary_triangles(const d3::TetMeshF&
   for (const auto& [key, entry] : seen)
     if (entry.first == 1) out.push_back(entry.second);
   return out;
+}
+
+namespace {
+using Corner = std::tuple<double, double, double, std::uint8_t>;
+using Canonical = std::pair<int, std::array<Corner, 4>>;
+std::vector<Canonical> canonical(const d3::TetMeshF& m) {
+  std::vector<Canonical> out;
+  out.reserve(m.tets.size());
+  for (std::size_t t = 0; t < m.tets.size(); ++t) {
+    Canonical c{m.level.empty() ? 0 : m.level[t], {}};
+    for (std::size_t i = 0; i < 4; ++i) {
+      const std::uint32_t v = m.tets[t][i];
+      c.second[i] = {m.vertices[v][0], m.vertices[v][1], m.vertices[v][2], m.kind.empty() ? 0 : m.kind[v]};
+    }
+    std::sort(c.second.begin(), c.second.end());
+    out.push_back(c);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+}  // namespace
+
+bool same_tetrahedra(const d3::TetMeshF& a, const d3::TetMeshF& b) {
+  return a.tets.size() == b.tets.size() && canonical(a) == canonical(b);
 }
 
 StuffQuality quality(const d3::TetMeshF& mesh) {

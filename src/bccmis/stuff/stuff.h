@@ -81,6 +81,20 @@ Stuffed stuff(const Shape& shape, const Fit& fit, const d3::Graph3& g, const Stu
 Stuffed stuff(const Shape& shape, const Fit& fit, const fast::Lattice3& g, const StuffOptions& options,
               PhaseTimes* times = nullptr);
 
+/// S5-S9 on some tetrahedra of the graded mesh of g (S16's incremental
+/// stuffing): `tets` holds, for each lattice vertex within h of the surface,
+/// every tetrahedron at it, so each of them is cut, warped and filled as in
+/// the whole mesh. Also reports each output vertex's key (S8: (p, p) for
+/// lattice vertex p, the ends in position order for a cut point) and where
+/// the output tetrahedra of tets[i] begin (begin[i] .. begin[i + 1]).
+struct StuffedPart {
+  Stuffed stuffed;
+  std::vector<std::array<d3::Point3, 2>> keys;
+  std::vector<std::uint32_t> begin;
+};
+StuffedPart stuff_part(const Shape& shape, const Fit& fit, const fast::Lattice3& g, const StuffOptions& options,
+                       std::vector<d3::Tet> tets);
+
 /// Which lattice a run uses: fast::Lattice3 (the default) or the reference
 /// d3::Graph3 (--impl reference).
 enum class Impl { fast, reference };
@@ -96,6 +110,11 @@ int orientation(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 /// The triangles of exactly one tetrahedron, oriented outward (counter-
 /// clockwise seen from outside), for positively oriented tetrahedra.
 std::vector<std::array<std::uint32_t, 3>> boundary_triangles(const d3::TetMeshF& mesh);
+
+/// True when a and b hold the same tetrahedra, whatever their numbering:
+/// each tetrahedron compared as its level with its four vertices' positions
+/// and kinds, sorted (S16's equality with stuff()).
+bool same_tetrahedra(const d3::TetMeshF& a, const d3::TetMeshF& b);
 
 /// What --stats reports of the mesh itself (S13).
 struct StuffQuality {
