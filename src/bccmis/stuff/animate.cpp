@@ -5,7 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
-#include <unordered_set>
+#include <tuple>
 #include <vector>
 
 #include "bccmis/apps/balance3.h"
@@ -58,10 +58,12 @@ MovingLattice::MovingLattice(std::shared_ptr<const Shape> shape, const Fit& fit,
       moved_(shape_),
       fit_(fit),
       options_(with_level(options, fit.size.L)),
-      g_(background_fast(*moved_, fit_, options_)) {
+      g_(background_fast(*moved_, fit_, options_)),
+      reach_(1.05 * std::max(options_.alpha_long * fit_.h, options_.alpha_short * 0.5 * std::sqrt(3.0) * fit_.h)) {
   const std::int64_t S = d3::level0_side(fit_.size);
   if (std::max({fit_.size.W, fit_.size.H, fit_.size.D}) * S >= (std::int64_t{1} << 21))
     throw ShapeError("--animate: the lattice is too fine (more than 2^21 lattice points along a side)");
+  leaves_.reserve(2 * g_.cell_count());
   std::vector<std::pair<Point3, bool>> all;
   for (const Point3& u : g_.cells()) all.push_back({u, true});
   FrameReport ignored;
@@ -87,25 +89,20 @@ std::vector<Point3> MovingLattice::roots() const {
 
 // S15's refine pass as a descent: S3's test fails on every cell inside a
 // cell that fails it (S16), so only cells whose parents pass are visited.
-void MovingLattice::refine_visit(const Point3& c, int level, FrameReport& report) {
-  if (!needs(c, level)) return;
+// The refined cells that fail while their parents pass are collected for
+// the coarsen pass (a level-L cell is never refined).
+void MovingLattice::refine_visit(const Point3& c, int level, FrameReport& report,
+                                 std::vector<std::pair<Point3, int>>& failing) {
+  if (!needs(c, level)) {
+    if (level < fit_.size.L && !g_.is_center(c)) failing.push_back({c, level});
+    return;
+  }
   if (g_.is_center(c)) {
     const d3::BalancedRefineResult3 r = d3::refine_balanced(g_, c);
     report.refines += r.refined.size();
     for (const Point3& x : r.refined) changed_.push_back({x, *d3::refined_center_level(fit_.size, x)});
   }
-  for (const Point3& child : children(c, side(level))) refine_visit(child, level + 1, report);
-}
-
-// S15's coarsen pass, first half: the refined cells that fail the test and
-// whose parents pass.
-void MovingLattice::coarsen_visit(const Point3& c, int level, std::vector<std::pair<Point3, int>>& failing) {
-  if (g_.is_center(c)) return;
-  if (!needs(c, level)) {
-    failing.push_back({c, level});
-    return;
-  }
-  for (const Point3& child : children(c, side(level))) coarsen_visit(child, level + 1, failing);
+  for (const Point3& child : children(c, side(level))) refine_visit(child, level + 1, report, failing);
 }
 
 // Coarsens the refined cell c (which fails the test, as every cell inside
@@ -130,14 +127,14 @@ bool MovingLattice::coarsen_subtree(const Point3& c, int level, FrameReport& rep
 // or whose sign can have changed since the last frame, |f(u)| <= the
 // distance moved (the surface passed u on the way).
 void MovingLattice::near_visit(const Point3& c, int level, double moved, std::vector<Point3>& out) const {
-  const double s = static_cast<double>(side(level)) * fit_.scale, h = 1.01 * fit_.h;
+  const double s = static_cast<double>(side(level)) * fit_.scale;
   const double f = std::abs(moved_->signed_distance(fit_.to_space(c)));
   if (g_.is_center(c)) {
-    if (f <= std::max(s + h, moved)) out.push_back(c);
+    if (f <= std::max(s + reach_, moved)) out.push_back(c);
     return;
   }
   // A leaf u inside c is within sqrt(3)/2 s of c and has side at most s / 2.
-  if (f > 0.5 * std::sqrt(3.0) * s + std::max(0.5 * s + h, moved)) return;
+  if (f > 0.5 * std::sqrt(3.0) * s + std::max(0.5 * s + reach_, moved)) return;
   for (const Point3& child : children(c, side(level))) near_visit(child, level + 1, moved, out);
 }
 
@@ -169,28 +166,43 @@ bool MovingLattice::leaf_at(const Point3& p, const std::array<int, 3>& octant, i
 // half grid (where nodes appear or vanish) on their boundary, and the
 // leaves across a face from a center that appeared or vanished.
 std::vector<Point3> MovingLattice::lattice_dirty() {
-  std::vector<std::pair<Point3, int>> points, centers;
+  // Probes: a point of a changed cell's half grid with an octant pointing
+  // out of the cell (the leaves inside it are its center or children,
+  // which `centers` holds), and the level to look from.
+  struct Probe {
+    Point3 p;
+    int octant, level;
+    bool operator<(const Probe& o) const { return std::tie(p, octant) < std::tie(o.p, o.octant); }
+    bool operator==(const Probe& o) const { return p == o.p && octant == o.octant; }
+  };
+  std::vector<Probe> probes;
+  std::vector<std::pair<Point3, int>> centers;
+  std::vector<Point3> out;
   for (const auto& [c, level] : changed_) {
     const std::int64_t h = side(level) / 2;
     for (int i = -1; i <= 1; ++i)
       for (int j = -1; j <= 1; ++j)
-        for (int k = -1; k <= 1; ++k)
-          if (i == 0 || j == 0 || k == 0) points.push_back({shifted(c, i * h, j * h, k * h), level});
+        for (int k = -1; k <= 1; ++k) {
+          if (i != 0 && j != 0 && k != 0) continue;  // a corner: a node before and after
+          const int d[3] = {i, j, k};
+          for (int o = 0; o < 8; ++o) {
+            bool inward = true;
+            for (int a = 0; a < 3; ++a) inward = inward && (d[a] == 0 || ((o >> a) & 1) == (d[a] < 0 ? 1 : 0));
+            if (!inward) probes.push_back({shifted(c, i * h, j * h, k * h), o, level});
+          }
+        }
     centers.push_back({c, level});
     for (const Point3& child : children(c, side(level))) centers.push_back({child, level + 1});
   }
-  const auto unique = [](std::vector<std::pair<Point3, int>>& v) {
-    std::sort(v.begin(), v.end());
-    v.erase(std::unique(v.begin(), v.end(), [](const auto& a, const auto& b) { return a.first == b.first; }), v.end());
-  };
-  unique(points);
-  unique(centers);
-  std::vector<Point3> out;
+  std::sort(probes.begin(), probes.end());
+  probes.erase(std::unique(probes.begin(), probes.end()), probes.end());
   Point3 u;
-  for (const auto& [p, level] : points)
-    for (int o = 0; o < 8; ++o)
-      if (leaf_at(p, {(o & 1) ? 1 : -1, (o & 2) ? 1 : -1, (o & 4) ? 1 : -1}, std::max(0, level - 1), u))
-        out.push_back(u);
+  for (const Probe& q : probes)
+    if (leaf_at(q.p, {(q.octant & 1) ? 1 : -1, (q.octant & 2) ? 1 : -1, (q.octant & 4) ? 1 : -1},
+                std::max(0, q.level - 1), u))
+      out.push_back(u);
+  std::sort(centers.begin(), centers.end());
+  centers.erase(std::unique(centers.begin(), centers.end()), centers.end());
   for (const auto& [c, level] : centers) {
     if (g_.is_center(c)) out.push_back(c);
     const std::int64_t s = side(level);
@@ -214,6 +226,60 @@ std::uint64_t pack(const Point3& p) {
 }
 }  // namespace
 
+std::size_t MovingLattice::PackedIndex::home(std::uint64_t k) const {
+  return static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> 20) & (keys_.size() - 1);
+}
+
+std::uint32_t MovingLattice::PackedIndex::find(std::uint64_t k) const {
+  if (keys_.empty()) return kNone;
+  for (std::size_t i = home(k);; i = (i + 1) & (keys_.size() - 1)) {
+    if (keys_[i] == k) return values_[i];
+    if (keys_[i] == kEmpty) return kNone;
+  }
+}
+
+std::pair<std::uint32_t, bool> MovingLattice::PackedIndex::insert(std::uint64_t k, std::uint32_t v) {
+  if (2 * (used_ + 1) > keys_.size()) grow();
+  std::size_t i = home(k);
+  for (; keys_[i] != kEmpty; i = (i + 1) & (keys_.size() - 1))
+    if (keys_[i] == k) return {values_[i], false};
+  keys_[i] = k;
+  values_[i] = v;
+  ++used_;
+  return {v, true};
+}
+
+void MovingLattice::PackedIndex::erase(std::uint64_t k) {
+  const std::size_t mask = keys_.size() - 1;
+  std::size_t i = home(k);
+  while (keys_[i] != k) {
+    if (keys_[i] == kEmpty) return;
+    i = (i + 1) & mask;
+  }
+  // Backward shift: move up every later key of the run whose home does not
+  // lie cyclically in (i, j].
+  for (std::size_t j = (i + 1) & mask; keys_[j] != kEmpty; j = (j + 1) & mask) {
+    const std::size_t h = home(keys_[j]);
+    const bool stays = i <= j ? (i < h && h <= j) : (i < h || h <= j);
+    if (stays) continue;
+    keys_[i] = keys_[j];
+    values_[i] = values_[j];
+    i = j;
+  }
+  keys_[i] = kEmpty;
+  --used_;
+}
+
+void MovingLattice::PackedIndex::grow() {
+  std::vector<std::uint64_t> keys = std::move(keys_);
+  std::vector<std::uint32_t> values = std::move(values_);
+  keys_.assign(std::max<std::size_t>(1024, 2 * keys.size()), kEmpty);
+  values_.assign(keys_.size(), 0);
+  used_ = 0;
+  for (std::size_t i = 0; i < keys.size(); ++i)
+    if (keys[i] != kEmpty) insert(keys[i], values[i]);
+}
+
 void MovingLattice::release(Leaf& leaf) {
   for (const auto& t : leaf.inside)
     for (const std::uint32_t v : t)
@@ -225,20 +291,19 @@ void MovingLattice::release(Leaf& leaf) {
 }
 
 std::uint32_t MovingLattice::acquire(const Point3& p) {
-  auto [it, inserted] = index_.try_emplace(pack(p), 0);
+  const std::uint32_t next = free_.empty() ? static_cast<std::uint32_t>(point_.size()) : free_.back();
+  const auto [v, inserted] = index_.insert(pack(p), next);
   if (inserted) {
     if (free_.empty()) {
-      it->second = static_cast<std::uint32_t>(point_.size());
       point_.push_back(p);
       refs_.push_back(0);
     } else {
-      it->second = free_.back();
       free_.pop_back();
-      point_[it->second] = p;
+      point_[v] = p;
     }
   }
-  ++refs_[it->second];
-  return it->second;
+  ++refs_[v];
+  return v;
 }
 
 // S16: settle each candidate leaf as active (stuffed this frame), inside
@@ -251,23 +316,29 @@ void MovingLattice::restuff(const std::vector<std::pair<Point3, bool>>& candidat
   std::vector<Point3> active;
   for (const auto& [u, relattice] : candidates) {
     Leaf& leaf = leaves_[u];
-    if (relattice) {
+    if (leaf.level < 0) leaf.level = g_.level_of(u);
+    leaf.stale = leaf.stale || relattice;
+    const double s = static_cast<double>(side(leaf.level)) * fit_.scale;
+    const double f = moved_->signed_distance(fit_.to_space(u));
+    const bool is_active = std::abs(f) <= s + reach_;
+    if (!is_active && f > 0) {
+      release(leaf);  // outside: every vertex is outside; its tetrahedra wait until needed
+      continue;
+    }
+    if (leaf.stale) {
       fresh.clear();
       d3::detail::leaf_tetrahedra(g_, u, fresh, ring);
       if (fresh != leaf.lattice) {
         release(leaf);
         std::swap(leaf.lattice, fresh);
       }
+      leaf.stale = false;
     }
-    const double s = static_cast<double>(side(g_.level_of(u))) * fit_.scale;
-    const double f = moved_->signed_distance(fit_.to_space(u));
-    if (std::abs(f) <= s + 1.01 * fit_.h) {
-      // Active: a vertex of its tetrahedra may be within h of the surface.
+    if (is_active) {
+      // A vertex of its tetrahedra may be warped, or an edge cut.
       release(leaf);
       active.push_back(u);
       tets.insert(tets.end(), leaf.lattice.begin(), leaf.lattice.end());
-    } else if (f > 0) {
-      release(leaf);  // outside: every vertex is outside
     } else if (leaf.inside.empty()) {
       for (const d3::Tet& t : leaf.lattice)
         leaf.inside.push_back({acquire(t[0]), acquire(t[1]), acquire(t[2]), acquire(t[3])});
@@ -280,9 +351,14 @@ void MovingLattice::restuff(const std::vector<std::pair<Point3, bool>>& candidat
 }
 
 void MovingLattice::assemble(const StuffedPart& part) {
+  // The buffers of the last frame are reused.
   Stuffed& out = stuffed_;
-  out = Stuffed{};
   d3::TetMeshF& m = out.mesh;
+  m.vertices.clear();
+  m.kind.clear();
+  m.tets.clear();
+  m.level.clear();
+  out.lattice_tetrahedra = 0;
   std::vector<std::uint32_t> index(point_.size(), 0xFFFFFFFFu);
   for (std::uint32_t v = 0; v < point_.size(); ++v) {
     if (refs_[v] == 0) continue;
@@ -291,12 +367,11 @@ void MovingLattice::assemble(const StuffedPart& part) {
     m.kind.push_back(static_cast<std::uint8_t>(StuffVertex::lattice));
   }
   for (const auto& [u, leaf] : leaves_) {
-    out.lattice_tetrahedra += leaf.lattice.size();
+    if (!leaf.stale) out.lattice_tetrahedra += leaf.lattice.size();
     if (leaf.inside.empty()) continue;
-    const int level = g_.level_of(u);
     for (const auto& t : leaf.inside) {
       m.tets.push_back({index[t[0]], index[t[1]], index[t[2]], index[t[3]]});
-      m.level.push_back(level);
+      m.level.push_back(leaf.level);
     }
   }
   // The active leaves' stuffing: its lattice vertices that inside leaves
@@ -305,8 +380,8 @@ void MovingLattice::assemble(const StuffedPart& part) {
   std::vector<std::uint32_t> to(a.vertices.size());
   for (std::size_t i = 0; i < a.vertices.size(); ++i) {
     if (a.kind[i] == static_cast<std::uint8_t>(StuffVertex::lattice))
-      if (auto it = index_.find(pack(part.keys[i][0])); it != index_.end()) {
-        to[i] = index[it->second];
+      if (const std::uint32_t v = index_.find(pack(part.keys[i][0])); v != PackedIndex::kNone) {
+        to[i] = index[v];
         continue;
       }
     to[i] = static_cast<std::uint32_t>(m.vertices.size());
@@ -330,11 +405,10 @@ FrameReport MovingLattice::step(const Vec3& offset) {
   const auto t0 = std::chrono::steady_clock::now();
   // S15: refine every cell that passes S3's test (by descent, S16).
   const std::vector<Point3> top = roots();
-  for (const Point3& c : top) refine_visit(c, 0, report);
   // Then coarsen the refined cells that fail it, bottom up, until balance
   // lets no more go.
   std::vector<std::pair<Point3, int>> failing;
-  for (const Point3& c : top) coarsen_visit(c, 0, failing);
+  for (const Point3& c : top) refine_visit(c, 0, report, failing);
   for (bool changed = true; changed;) {
     changed = false;
     for (const auto& [c, level] : failing)
@@ -346,24 +420,34 @@ FrameReport MovingLattice::step(const Vec3& offset) {
   // S16: the leaves that left go; the candidates are the leaves whose
   // lattice tetrahedra changed, the last frame's active leaves and the
   // leaves near the surface or passed by it.
-  std::unordered_set<Point3, PointHash> gone;
+  std::vector<Point3> gone;
   for (const auto& [c, level] : changed_) {
-    gone.insert(c);
-    for (const Point3& child : children(c, side(level))) gone.insert(child);
+    gone.push_back(c);
+    for (const Point3& child : children(c, side(level))) gone.push_back(child);
   }
+  std::sort(gone.begin(), gone.end());
+  gone.erase(std::unique(gone.begin(), gone.end()), gone.end());
   for (const Point3& c : gone)
     if (!g_.is_center(c))
       if (auto it = leaves_.find(c); it != leaves_.end()) {
         release(it->second);
         leaves_.erase(it);
       }
-  std::unordered_map<Point3, bool, PointHash> candidates;
-  for (const Point3& u : lattice_dirty()) candidates[u] = true;
+  // (leaf, lattice changed), sorted, each leaf once with `true` first.
+  std::vector<std::pair<Point3, bool>> candidates;
+  for (const Point3& u : lattice_dirty()) candidates.push_back({u, true});
   std::vector<Point3> near = active_;
   for (const Point3& c : top) near_visit(c, 0, moved * 1.01, near);
-  for (const Point3& u : near)
-    if (g_.is_center(u)) candidates.try_emplace(u, false);
-  restuff({candidates.begin(), candidates.end()}, report);
+  for (const Point3& u : near) candidates.push_back({u, false});
+  std::sort(candidates.begin(), candidates.end(), [](const auto& a, const auto& b) {
+    return a.first < b.first || (a.first == b.first && a.second > b.second);
+  });
+  candidates.erase(std::unique(candidates.begin(), candidates.end(),
+                               [](const auto& a, const auto& b) { return a.first == b.first; }),
+                   candidates.end());
+  // The last frame's active leaves may have gone since.
+  std::erase_if(candidates, [&](const auto& c) { return !c.second && !g_.is_center(c.first); });
+  restuff(candidates, report);
   report.stuff_seconds = since(t1);
   return report;
 }

@@ -41,7 +41,8 @@ class MovingLattice {
   FrameReport step(const Vec3& offset);
   const fast::Lattice3& lattice() const { return g_; }
   /// The mesh of the current frame: the same tetrahedra (vertex positions,
-  /// kinds and levels) as stuff() on this lattice, in another order.
+  /// kinds and levels) as stuff() on this lattice, in another order;
+  /// lattice_tetrahedra counts those of the leaves that are not outside.
   const Stuffed& stuffed() const { return stuffed_; }
   /// The shape at the current offset.
   const Shape& shape() const { return *moved_; }
@@ -55,13 +56,15 @@ class MovingLattice {
     std::vector<d3::Tet> lattice;  ///< its tetrahedra (spec/mesh3d.md)
     /// Inside and inactive: its tetrahedra as output, on the point pool.
     std::vector<std::array<std::uint32_t, 4>> inside;
+    bool stale = true;  ///< `lattice` not computed since the lattice changed here
+    int level = -1;
   };
 
   bool needs(const d3::Point3& c, int level) const;
   std::int64_t side(int level) const { return d3::cell_side(fit_.size, level); }
   std::vector<d3::Point3> roots() const;
-  void refine_visit(const d3::Point3& c, int level, FrameReport& report);
-  void coarsen_visit(const d3::Point3& c, int level, std::vector<std::pair<d3::Point3, int>>& failing);
+  void refine_visit(const d3::Point3& c, int level, FrameReport& report,
+                    std::vector<std::pair<d3::Point3, int>>& failing);
   bool coarsen_subtree(const d3::Point3& c, int level, FrameReport& report);
   void near_visit(const d3::Point3& c, int level, double moved, std::vector<d3::Point3>& out) const;
   bool leaf_at(const d3::Point3& p, const std::array<int, 3>& octant, int from, d3::Point3& out) const;
@@ -76,13 +79,33 @@ class MovingLattice {
   Fit fit_;
   StuffOptions options_;
   fast::Lattice3 g_;
+  /// S16: how far from the surface a warped vertex can be.
+  double reach_;
   Vec3 offset_{};
   /// The cells refined or coarsened in this step, with their levels.
   std::vector<std::pair<d3::Point3, int>> changed_;
   std::unordered_map<d3::Point3, Leaf, PointHash> leaves_;
   std::vector<d3::Point3> active_;  ///< S16's active leaves of the last frame
+  /// Packed lattice point -> pool index: open addressing with linear
+  /// probing, deletion by backward shift.
+  class PackedIndex {
+   public:
+    static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+    std::uint32_t find(std::uint64_t k) const;
+    /// The value of k, first set to v if k was absent; and whether it was.
+    std::pair<std::uint32_t, bool> insert(std::uint64_t k, std::uint32_t v);
+    void erase(std::uint64_t k);
+
+   private:
+    static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};  // no packed point (bit 63 is 0)
+    std::size_t home(std::uint64_t k) const;
+    void grow();
+    std::vector<std::uint64_t> keys_;
+    std::vector<std::uint32_t> values_;
+    std::size_t used_ = 0;
+  };
   // The lattice points of the inside leaves' tetrahedra, counted.
-  std::unordered_map<std::uint64_t, std::uint32_t> index_;
+  PackedIndex index_;
   std::vector<d3::Point3> point_;
   std::vector<std::uint32_t> refs_;
   std::vector<std::uint32_t> free_;
