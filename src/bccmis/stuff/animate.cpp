@@ -312,7 +312,9 @@ std::uint32_t MovingLattice::acquire(const Point3& p) {
 // the active leaves and put the frame's mesh together.
 void MovingLattice::restuff(const std::vector<std::pair<Point3, bool>>& candidates, FrameReport& report) {
   std::vector<Point3> ring;
-  std::vector<d3::Tet> tets, fresh;
+  std::vector<d3::Tet>& tets = tets_;
+  std::vector<d3::Tet> fresh;
+  tets.clear();
   std::vector<Point3> active;
   for (const auto& [u, relattice] : candidates) {
     Leaf& leaf = leaves_[u];
@@ -347,7 +349,7 @@ void MovingLattice::restuff(const std::vector<std::pair<Point3, bool>>& candidat
   report.restuffed_leaves = active.size();
   report.restuffed_tetrahedra = tets.size();
   active_ = std::move(active);
-  assemble(stuff_part(*moved_, fit_, g_, options_, std::move(tets)));
+  assemble(stuff_part(*moved_, fit_, g_, options_, tets));
 }
 
 void MovingLattice::assemble(const StuffedPart& part) {

@@ -109,6 +109,7 @@ class MovingLattice {
   std::vector<d3::Point3> point_;
   std::vector<std::uint32_t> refs_;
   std::vector<std::uint32_t> free_;
+  std::vector<d3::Tet> tets_;  ///< the active leaves' lattice tetrahedra (kept for its capacity)
   Stuffed stuffed_;
 };
 

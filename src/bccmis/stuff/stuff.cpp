@@ -11,6 +11,7 @@
 #include <map>
 #include <ostream>
 #include <set>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -556,8 +557,14 @@ class Stuffer {
   }
 
   Stuffed run(std::vector<d3::Tet> tets, PhaseTimes* times) {
+    owned_ = std::move(tets);
+    return run(std::span<const d3::Tet>(owned_), times);
+  }
+
+  /// The same on tetrahedra the caller keeps.
+  Stuffed run(std::span<const d3::Tet> tets, PhaseTimes* times) {
     auto t0 = Clock::now();
-    tets_ = std::move(tets);
+    tets_ = tets;
     out_.lattice_tetrahedra = tets_.size();
     number();
     evaluate();
@@ -918,7 +925,8 @@ class Stuffer {
   const Fit& fit_;
   const G& g_;
   const StuffOptions& options_;
-  std::vector<d3::Tet> tets_;
+  std::vector<d3::Tet> owned_;
+  std::span<const d3::Tet> tets_;
   std::vector<Point3> points_;  ///< the lattice vertices of the mesh, sorted
   std::vector<Ids> ids_;        ///< tets_ on points_
   std::vector<double> value_;   ///< f, 0 once warped
@@ -956,11 +964,11 @@ Stuffed stuff(const Shape& shape, const Fit& fit, const fast::Lattice3& g, const
 }
 
 StuffedPart stuff_part(const Shape& shape, const Fit& fit, const fast::Lattice3& g, const StuffOptions& options,
-                       std::vector<d3::Tet> tets) {
+                       std::span<const d3::Tet> tets) {
   StuffedPart part;
   flat_path::Stuffer<fast::Lattice3> stuffer(shape, fit, g, options);
   stuffer.record(&part.keys, &part.begin);
-  part.stuffed = stuffer.run(std::move(tets), nullptr);
+  part.stuffed = stuffer.run(tets, nullptr);
   return part;
 }
 

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "bccmis/d3/graph.h"
@@ -93,7 +94,7 @@ struct StuffedPart {
   std::vector<std::uint32_t> begin;
 };
 StuffedPart stuff_part(const Shape& shape, const Fit& fit, const fast::Lattice3& g, const StuffOptions& options,
-                       std::vector<d3::Tet> tets);
+                       std::span<const d3::Tet> tets);
 
 /// Which lattice a run uses: fast::Lattice3 (the default) or the reference
 /// d3::Graph3 (--impl reference).
