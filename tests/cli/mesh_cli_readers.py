@@ -15,27 +15,14 @@ import subprocess
 import sys
 import tempfile
 
-
-def fail(message):
-    print("FAIL: " + message)
-    sys.exit(1)
-
-
-def six_volume(p):
-    a = [p[1][k] - p[0][k] for k in range(3)]
-    b = [p[2][k] - p[0][k] for k in range(3)]
-    c = [p[3][k] - p[0][k] for k in range(3)]
-    return (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
-            + a[2] * (b[0] * c[1] - b[1] * c[0]))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "pylib"))
+from meshcheck import fail, need_meshio, six_volume  # noqa: E402
 
 
 def main():
     if len(sys.argv) != 3:
         fail("usage: mesh_cli_readers.py BCCMIS STATE")
-    try:
-        import meshio
-    except ImportError as e:
-        fail("meshio is not installed (scripts/setup.sh installs python3-meshio): %s" % e)
+    meshio = need_meshio()
     if shutil.which("gmsh") is None:
         fail("gmsh is not installed (scripts/setup.sh installs it)")
     with tempfile.TemporaryDirectory() as d:

@@ -11,31 +11,19 @@ import subprocess
 import sys
 import tempfile
 
-
-def fail(message):
-    print("FAIL: " + message)
-    sys.exit(1)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "pylib"))
+from meshcheck import fail, need_meshio, six_volume  # noqa: E402
 
 
 def six_volumes(points, tets):
-    out = []
-    for t in tets:
-        p = [[int(round(float(c))) for c in points[i]] for i in t]
-        a = [p[1][k] - p[0][k] for k in range(3)]
-        b = [p[2][k] - p[0][k] for k in range(3)]
-        c = [p[3][k] - p[0][k] for k in range(3)]
-        out.append(a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
-                   + a[2] * (b[0] * c[1] - b[1] * c[0]))
-    return out
+    """Six times each tetrahedron's volume, on the lattice's integer points."""
+    return [six_volume([[int(round(float(c))) for c in points[i]] for i in t]) for t in tets]
 
 
 def main():
     if len(sys.argv) != 2:
         fail("usage: mesh_readers_test.py d3_mesh_write")
-    try:
-        import meshio
-    except ImportError as e:
-        fail("meshio is not installed (scripts/setup.sh installs python3-meshio): %s" % e)
+    meshio = need_meshio()
     gmsh = shutil.which("gmsh")
     if gmsh is None:
         fail("gmsh is not installed (scripts/setup.sh installs it)")

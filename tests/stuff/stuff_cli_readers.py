@@ -31,18 +31,8 @@ import subprocess
 import sys
 import tempfile
 
-
-def fail(message):
-    print("FAIL: " + message)
-    sys.exit(1)
-
-
-def six_volume(p):
-    a = [p[1][k] - p[0][k] for k in range(3)]
-    b = [p[2][k] - p[0][k] for k in range(3)]
-    c = [p[3][k] - p[0][k] for k in range(3)]
-    return (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
-            + a[2] * (b[0] * c[1] - b[1] * c[0]))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "pylib"))
+from meshcheck import fail, need_meshio, six_volume  # noqa: E402
 
 
 def check_case(bccmis, d, name, args, euler, exact_volume, tolerance, on_unit_sphere=False):
@@ -168,10 +158,7 @@ def check_animation(bccmis, d):
 def main():
     if len(sys.argv) not in (2, 3):
         fail("usage: stuff_cli_readers.py BCCMIS [CGAL_MESHES_DIR]")
-    try:
-        import meshio  # noqa: F401
-    except ImportError as e:
-        fail("meshio is not installed (scripts/setup.sh installs python3-meshio): %s" % e)
+    need_meshio()
     if shutil.which("gmsh") is None:
         fail("gmsh is not installed (scripts/setup.sh installs it)")
     bccmis = sys.argv[1]
