@@ -64,18 +64,10 @@ MovingLattice::MovingLattice(std::shared_ptr<const Shape> shape, const Fit& fit,
   if (std::max({fit_.size.W, fit_.size.H, fit_.size.D}) * S >= (std::int64_t{1} << 21))
     throw ShapeError("--animate: the lattice is too fine (more than 2^21 lattice points along a side)");
   leaves_.reserve(2 * g_.cell_count());
-  std::vector<std::pair<Point3, bool>> all;
-  for (const Point3& u : g_.cells()) all.push_back({u, true});
+  std::vector<Candidate> all;
+  for (const Point3& u : g_.cells()) all.push_back({u, true, -1});
   FrameReport ignored;
   restuff(all, ignored);
-}
-
-// S3's test for a cell of `level` centered at c, for the shape where it is now.
-bool MovingLattice::needs(const Point3& c, int level) const {
-  if (level >= fit_.size.L) return false;
-  if (level < options_.min_level) return true;
-  const double r = 0.5 * static_cast<double>(side(level)) * fit_.scale;
-  return std::abs(moved_->signed_distance(fit_.to_space(c))) <= std::sqrt(3.0) * r + 4 * fit_.h;
 }
 
 std::vector<Point3> MovingLattice::roots() const {
@@ -88,13 +80,26 @@ std::vector<Point3> MovingLattice::roots() const {
 }
 
 // S15's refine pass as a descent: S3's test fails on every cell inside a
-// cell that fails it (S16), so only cells whose parents pass are visited.
-// The refined cells that fail while their parents pass are collected for
-// the coarsen pass (a level-L cell is never refined).
-void MovingLattice::refine_visit(const Point3& c, int level, FrameReport& report,
-                                 std::vector<std::pair<Point3, int>>& failing) {
-  if (!needs(c, level)) {
-    if (level < fit_.size.L && !g_.is_center(c)) failing.push_back({c, level});
+// cell that fails it, so only cells whose parents pass are visited. On the
+// way it collects the refined cells that fail while their parents pass (for
+// the coarsen pass; a level-L cell is never refined) and S16's candidates
+// near the surface, with the distances it computed: the level-L leaves
+// below cells that pass, the coarser leaves that fail, and, to search after
+// the coarsen pass, the failing refined cells that may hold some.
+void MovingLattice::refine_visit(const Point3& c, int level, FrameReport& report, Descent& d) {
+  const double s = static_cast<double>(side(level)) * fit_.scale;
+  const double f = moved_->distance(fit_.to_space(c));
+  const double k = 0.5 * std::sqrt(3.0);
+  // near_visit's bound: a leaf inside c may be a candidate.
+  const bool may_hold = f <= k * s + std::max((1 - k) * 0.5 * s + reach_, d.moved);
+  const bool pass = level < fit_.size.L && (level < options_.min_level || f <= std::sqrt(3.0) * (0.5 * s) + 4 * fit_.h);
+  if (!pass) {
+    if (g_.is_center(c)) {
+      if (f <= std::max(s + reach_, d.moved)) d.near.push_back({c, false, f});
+    } else {
+      d.failing.push_back({c, level});
+      if (may_hold) d.deferred.push_back({c, level});
+    }
     return;
   }
   if (g_.is_center(c)) {
@@ -102,7 +107,16 @@ void MovingLattice::refine_visit(const Point3& c, int level, FrameReport& report
     report.refines += r.refined.size();
     for (const Point3& x : r.refined) changed_.push_back({x, *d3::refined_center_level(fit_.size, x)});
   }
-  for (const Point3& child : children(c, side(level))) refine_visit(child, level + 1, report, failing);
+  if (level + 1 < fit_.size.L) {
+    for (const Point3& child : children(c, side(level))) refine_visit(child, level + 1, report, d);
+    return;
+  }
+  // The children are level-L leaves.
+  if (!may_hold) return;
+  for (const Point3& child : children(c, side(level))) {
+    const double fc = moved_->distance(fit_.to_space(child));
+    if (fc <= std::max(0.5 * s + reach_, d.moved)) d.near.push_back({child, false, fc});
+  }
 }
 
 // Coarsens the refined cell c (which fails the test, as every cell inside
@@ -126,15 +140,18 @@ bool MovingLattice::coarsen_subtree(const Point3& c, int level, FrameReport& rep
 // S16's candidates: the leaves that can be active now, |f(u)| <= s_u + h,
 // or whose sign can have changed since the last frame, |f(u)| <= the
 // distance moved (the surface passed u on the way).
-void MovingLattice::near_visit(const Point3& c, int level, double moved, std::vector<Point3>& out) const {
+void MovingLattice::near_visit(const Point3& c, int level, double moved, std::vector<Candidate>& out) const {
   const double s = static_cast<double>(side(level)) * fit_.scale;
-  const double f = std::abs(moved_->signed_distance(fit_.to_space(c)));
+  const double f = moved_->distance(fit_.to_space(c));
   if (g_.is_center(c)) {
-    if (f <= std::max(s + reach_, moved)) out.push_back(c);
+    if (f <= std::max(s + reach_, moved)) out.push_back({c, false, f});
     return;
   }
-  // A leaf u inside c is within sqrt(3)/2 s of c and has side at most s / 2.
-  if (f > 0.5 * std::sqrt(3.0) * s + std::max(0.5 * s + reach_, moved)) return;
+  // A leaf u of side s_u inside c is within sqrt(3)/2 (s - s_u) of c's
+  // center, and s_u <= s / 2: it passes only if f(c) <= sqrt(3)/2 s +
+  // max((1 - sqrt(3)/2) s / 2 + reach, moved).
+  const double k = 0.5 * std::sqrt(3.0);
+  if (f > k * s + std::max((1 - k) * 0.5 * s + reach_, moved)) return;
   for (const Point3& child : children(c, side(level))) near_visit(child, level + 1, moved, out);
 }
 
@@ -310,20 +327,23 @@ std::uint32_t MovingLattice::acquire(const Point3& p) {
 // (its tetrahedra are output as they are) or outside (no output), its
 // lattice tetrahedra computed again where the lattice changed; then stuff
 // the active leaves and put the frame's mesh together.
-void MovingLattice::restuff(const std::vector<std::pair<Point3, bool>>& candidates, FrameReport& report) {
+void MovingLattice::restuff(const std::vector<Candidate>& candidates, FrameReport& report) {
   std::vector<Point3> ring;
   std::vector<d3::Tet>& tets = tets_;
   std::vector<d3::Tet> fresh;
   tets.clear();
   std::vector<Point3> active;
-  for (const auto& [u, relattice] : candidates) {
+  for (const auto& [u, relattice, known] : candidates) {
     Leaf& leaf = leaves_[u];
     if (leaf.level < 0) leaf.level = g_.level_of(u);
     leaf.stale = leaf.stale || relattice;
     const double s = static_cast<double>(side(leaf.level)) * fit_.scale;
-    const double f = moved_->signed_distance(fit_.to_space(u));
+    // The sign only where it decides, inside or outside; a distance the
+    // descent found spares a query.
+    const Vec3 at = fit_.to_space(u);
+    const double f = known >= 0 ? known : moved_->signed_distance(at);
     const bool is_active = std::abs(f) <= s + reach_;
-    if (!is_active && f > 0) {
+    if (!is_active && (known >= 0 ? moved_->signed_distance(at) : f) > 0) {
       release(leaf);  // outside: every vertex is outside; its tetrahedra wait until needed
       continue;
     }
@@ -409,11 +429,12 @@ FrameReport MovingLattice::step(const Vec3& offset) {
   const std::vector<Point3> top = roots();
   // Then coarsen the refined cells that fail it, bottom up, until balance
   // lets no more go.
-  std::vector<std::pair<Point3, int>> failing;
-  for (const Point3& c : top) refine_visit(c, 0, report, failing);
+  Descent descent;
+  descent.moved = moved * 1.01;
+  for (const Point3& c : top) refine_visit(c, 0, report, descent);
   for (bool changed = true; changed;) {
     changed = false;
-    for (const auto& [c, level] : failing)
+    for (const auto& [c, level] : descent.failing)
       if (!g_.is_center(c)) changed = coarsen_subtree(c, level, report) || changed;
   }
   report.lattice_seconds = since(t0);
@@ -435,20 +456,24 @@ FrameReport MovingLattice::step(const Vec3& offset) {
         release(it->second);
         leaves_.erase(it);
       }
-  // (leaf, lattice changed), sorted, each leaf once with `true` first.
-  std::vector<std::pair<Point3, bool>> candidates;
-  for (const Point3& u : lattice_dirty()) candidates.push_back({u, true});
-  std::vector<Point3> near = active_;
-  for (const Point3& c : top) near_visit(c, 0, moved * 1.01, near);
-  for (const Point3& u : near) candidates.push_back({u, false});
-  std::sort(candidates.begin(), candidates.end(), [](const auto& a, const auto& b) {
-    return a.first < b.first || (a.first == b.first && a.second > b.second);
-  });
-  candidates.erase(std::unique(candidates.begin(), candidates.end(),
-                               [](const auto& a, const auto& b) { return a.first == b.first; }),
-                   candidates.end());
+  // Each candidate leaf once: its lattice changed if any entry says so, its
+  // distance if any entry knows it.
+  std::vector<Candidate> all = std::move(descent.near);
+  for (const Point3& u : lattice_dirty()) all.push_back({u, true, -1});
+  for (const Point3& u : active_) all.push_back({u, false, -1});
+  for (const auto& [c, level] : descent.deferred) near_visit(c, level, descent.moved, all);
+  std::sort(all.begin(), all.end(), [](const Candidate& a, const Candidate& b) { return a.u < b.u; });
+  std::vector<Candidate> candidates;
+  for (const Candidate& c : all) {
+    if (!candidates.empty() && candidates.back().u == c.u) {
+      candidates.back().relattice = candidates.back().relattice || c.relattice;
+      candidates.back().distance = std::max(candidates.back().distance, c.distance);
+    } else {
+      candidates.push_back(c);
+    }
+  }
   // The last frame's active leaves may have gone since.
-  std::erase_if(candidates, [&](const auto& c) { return !c.second && !g_.is_center(c.first); });
+  std::erase_if(candidates, [&](const Candidate& c) { return !c.relattice && !g_.is_center(c.u); });
   restuff(candidates, report);
   report.stuff_seconds = since(t1);
   return report;

@@ -60,16 +60,29 @@ class MovingLattice {
     int level = -1;
   };
 
-  bool needs(const d3::Point3& c, int level) const;
+  /// A leaf S16 classifies again: whether its lattice tetrahedra changed,
+  /// its distance to the surface if known (else negative).
+  struct Candidate {
+    d3::Point3 u;
+    bool relattice = false;
+    double distance = -1;
+  };
+
+  /// What the frame's descent collects (S15, S16).
+  struct Descent {
+    double moved = 0;  ///< the distance moved since the last frame, with a margin
+    std::vector<std::pair<d3::Point3, int>> failing, deferred;
+    std::vector<Candidate> near;
+  };
+
   std::int64_t side(int level) const { return d3::cell_side(fit_.size, level); }
   std::vector<d3::Point3> roots() const;
-  void refine_visit(const d3::Point3& c, int level, FrameReport& report,
-                    std::vector<std::pair<d3::Point3, int>>& failing);
+  void refine_visit(const d3::Point3& c, int level, FrameReport& report, Descent& d);
   bool coarsen_subtree(const d3::Point3& c, int level, FrameReport& report);
-  void near_visit(const d3::Point3& c, int level, double moved, std::vector<d3::Point3>& out) const;
+  void near_visit(const d3::Point3& c, int level, double moved, std::vector<Candidate>& out) const;
   bool leaf_at(const d3::Point3& p, const std::array<int, 3>& octant, int from, d3::Point3& out) const;
   std::vector<d3::Point3> lattice_dirty();
-  void restuff(const std::vector<std::pair<d3::Point3, bool>>& candidates, FrameReport& report);
+  void restuff(const std::vector<Candidate>& candidates, FrameReport& report);
   void release(Leaf& leaf);
   std::uint32_t acquire(const d3::Point3& p);
   void assemble(const StuffedPart& part);

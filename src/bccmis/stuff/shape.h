@@ -9,6 +9,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -31,6 +32,9 @@ class Shape {
   /// Distance to the surface, negative inside. For a triangle mesh the sign
   /// comes from exact predicates; the magnitude is a double.
   virtual double signed_distance(const Vec3& p) const = 0;
+  /// |signed_distance(p)|, for tests that need no sign (S3, S16); shapes
+  /// whose sign costs more than their distance compute it without the sign.
+  virtual double distance(const Vec3& p) const { return std::abs(signed_distance(p)); }
   /// For a segment [a, b] whose ends lie on opposite sides (or one on the
   /// surface): a parameter t in [0, 1] with a + t (b - a) on the surface.
   virtual double crossing(const Vec3& a, const Vec3& b) const = 0;

@@ -90,7 +90,7 @@ void refine_near(const Shape& shape, const Fit& fit, const StuffOptions& options
       const int l = level_of(g, c);
       if (l >= L) continue;
       const double r = 0.5 * static_cast<double>(d3::cell_side(fit.size, l)) * fit.scale;
-      const bool near = std::abs(shape.signed_distance(fit.to_space(c))) <= std::sqrt(3.0) * r + 4 * fit.h;
+      const bool near = shape.distance(fit.to_space(c)) <= std::sqrt(3.0) * r + 4 * fit.h;
       if (near || l < options.min_level) {
         d3::refine_balanced(g, c);
         changed = true;

@@ -543,6 +543,9 @@ class MeshShape final : public Shape {
     return side == CGAL::ON_BOUNDED_SIDE ? -d : d;
   }
 
+  // Without the side query (a ray cast): the distance alone.
+  double distance(const Vec3& p) const override { return std::sqrt(tree_.squared_distance(Point(p[0], p[1], p[2]))); }
+
   double crossing(const Vec3& a, const Vec3& b) const override {
     if (a == b) return 0;
     const Point pa(a[0], a[1], a[2]), qb(b[0], b[1], b[2]);
