@@ -125,7 +125,9 @@ TEST(MeshPicture, CutAway) {
   EXPECT_EQ(count(svg, "<polygon class=\"tri\""), 4u);
   EXPECT_EQ(count(svg, "<polygon class=\"cut-tri\" data-level=\"2\""), 2u);
   EXPECT_EQ(count(svg, "<polygon class=\"cut-tri\""), 2u);
-  EXPECT_NE(svg.find("1 tetrahedra with centroid z &gt; 0.25 removed, 2 of 4 triangles"), std::string::npos);
+  EXPECT_NE(svg.find(">cut at z = 0.25: 1 tetrahedra removed,<"), std::string::npos);
+  EXPECT_NE(svg.find(">those with centroid z &gt; 0.25;<"), std::string::npos);
+  EXPECT_NE(svg.find(">2 of 4 triangles face the viewer<"), std::string::npos);
   const std::string none = render_mesh_svg(two_tets(), "two", CutPlane{2, 0.5});
   EXPECT_EQ(count(none, "<polygon class=\"cut-tri\""), 4u);
   // Both centroids have x = 1: the cut x = 0.5 removes both.
@@ -136,7 +138,9 @@ TEST(MeshPicture, CutAway) {
   const std::string y = render_mesh_svg(two_tets(), "two", CutPlane{1, -0.1});
   EXPECT_EQ(count(y, "<polygon class=\"cut-tri\" data-level=\"1\""), 3u);
   EXPECT_EQ(count(y, "<polygon class=\"cut-tri\""), 3u);
-  EXPECT_NE(y.find("1 tetrahedra with centroid y &lt; -0.1 removed, 3 of 4 triangles"), std::string::npos);
+  EXPECT_NE(y.find(">cut at y = -0.1: 1 tetrahedra removed,<"), std::string::npos);
+  EXPECT_NE(y.find(">those with centroid y &lt; -0.1;<"), std::string::npos);
+  EXPECT_NE(y.find(">3 of 4 triangles face the viewer<"), std::string::npos);
   EXPECT_THROW(render_mesh_svg(two_tets(), "two", CutPlane{3, 0}), std::invalid_argument);
 }
 

@@ -53,6 +53,46 @@ std::string escape(const std::string& s) {
   return r;
 }
 
+// The drawn width of text in the sans-serif font, estimated at 0.6 of the
+// font size a character (DejaVu Sans averages less, its digits 0.64).
+double text_width(const std::string& s, double font_size) { return 0.6 * font_size * static_cast<double>(s.size()); }
+
+// The words of text in lines no wider than width; a word wider than that
+// gets a line of its own.
+std::vector<std::string> wrap(const std::string& text, double width, double font_size) {
+  std::vector<std::string> lines;
+  std::string line;
+  for (std::size_t i = 0; i <= text.size();) {
+    std::size_t j = text.find(' ', i);
+    if (j == std::string::npos) j = text.size();
+    const std::string word = text.substr(i, j - i);
+    const std::string longer = line.empty() ? word : line + " " + word;
+    if (!line.empty() && text_width(longer, font_size) > width) {
+      lines.push_back(line);
+      line = word;
+    } else {
+      line = longer;
+    }
+    i = j + 1;
+  }
+  lines.push_back(line);
+  return lines;
+}
+
+// Lines of text, escaped, one <text> each at x, the first baseline at y and
+// the next ones step below it.
+std::string text_lines(const std::vector<std::string>& lines, double x, double y, double step,
+                       const std::string& attributes) {
+  std::string out;
+  char buf[160];
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    std::snprintf(buf, sizeof buf, "<text x=\"%.0f\" y=\"%.0f\" %s>", x, y + step * static_cast<double>(k),
+                  attributes.c_str());
+    out += std::string(buf) + escape(lines[k]) + "</text>\n";
+  }
+  return out;
+}
+
 // The colour of a level (levels above 9 share the last one), scaled by a
 // face's brightness.
 constexpr int kPalette[10][3] = {{0xd9, 0xd9, 0xd9}, {0xfd, 0xd4, 0x9e}, {0xfd, 0xae, 0x6b}, {0xa1, 0xd9, 0x9b},
@@ -137,18 +177,46 @@ std::string render_mesh_svg(const d3::TetMeshF& mesh, const std::string& title, 
   const double panels = cut ? 2 : 1;
   const double box_w = cut ? 460.0 : 620.0, box_h = 520.0;
   const double scale = std::min(box_w / std::max(x1 - x0, 1e-300), box_h / std::max(y1 - y0, 1e-300));
-  const double margin = 20, gap = 40, head = 30;
+  const double margin = 20, gap = 40, font_size = 13, line = 17;
   const double panel_w = (x1 - x0) * scale, panel_h = (y1 - y0) * scale;
-  const double width = std::max(panels * panel_w + (panels - 1) * gap + 2 * margin, 560.0);
-  const double top = margin + head;
-  const double height = top + panel_h + 80;
+  // A panel's column is wide enough for its title in a few lines.
+  const double column = std::max(panel_w, 340.0);
+  const double width = std::max(panels * column + (panels - 1) * gap + 2 * margin, 560.0);
+  const std::string font = "font-family=\"sans-serif\" font-size=\"13\"";
+
+  // The panels' titles, wrapped to their columns; the pictures start below the longer one.
+  std::size_t boundary = 0;
+  const std::vector<Face> all = visible_faces(mesh, std::vector<bool>(mesh.tets.size(), true), boundary);
+  const std::vector<std::string> all_title =
+      wrap(std::to_string(all.size()) + " of " + std::to_string(boundary) + " boundary triangles face the viewer",
+           column, font_size);
+  std::vector<Face> rest;
+  std::vector<std::string> cut_title;
+  if (cut) {
+    const auto a = static_cast<std::size_t>(cut->axis);
+    const bool above = kViewDirection[a] > 0;  // the viewer's side
+    std::vector<bool> keep(mesh.tets.size());
+    std::size_t removed = 0;
+    for (std::size_t i = 0; i < mesh.tets.size(); ++i) {
+      double c = 0;
+      for (const std::uint32_t v : mesh.tets[i]) c += 0.25 * mesh.vertices[v][a];
+      keep[i] = above ? !(c > cut->value) : !(c < cut->value);
+      removed += keep[i] ? 0 : 1;
+    }
+    std::size_t cut_boundary = 0;
+    rest = visible_faces(mesh, keep, cut_boundary);
+    // In lines of their own: what was removed, which, what is left.
+    const std::string c = std::string(axis_name(cut->axis)), at = fmt(cut->value);
+    for (const std::string& part :
+         {"cut at " + c + " = " + at + ": " + std::to_string(removed) + " tetrahedra removed,",
+          "those with centroid " + c + (above ? " > " : " < ") + at + ";",
+          std::to_string(rest.size()) + " of " + std::to_string(cut_boundary) + " triangles face the viewer"})
+      for (const std::string& l : wrap(part, column, font_size)) cut_title.push_back(l);
+  }
+  const double top = margin + 14 + line * static_cast<double>(std::max(all_title.size(), cut_title.size()) - 1) + 16;
 
   char buf[320];
   std::string out;
-  std::snprintf(buf, sizeof buf,
-                "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\">\n",
-                width, height, width, height);
-  out += buf;
   out += "<title>" + escape(title) + "</title>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
 
   const auto panel = [&](const std::vector<Face>& faces, double left, const char* cls) {
@@ -168,57 +236,49 @@ std::string render_mesh_svg(const d3::TetMeshF& mesh, const std::string& title, 
     out += "</g>\n";
   };
 
-  const std::string font = "font-family=\"sans-serif\" font-size=\"13\"";
-  std::size_t boundary = 0;
-  const std::vector<Face> all = visible_faces(mesh, std::vector<bool>(mesh.tets.size(), true), boundary);
   panel(all, margin, "tri");
-  std::snprintf(buf, sizeof buf, "<text x=\"%.0f\" y=\"%.0f\" %s>", margin, margin + 14, font.c_str());
-  out += std::string(buf) + std::to_string(all.size()) + " of " + std::to_string(boundary) +
-         " boundary triangles face the viewer</text>\n";
-
+  out += text_lines(all_title, margin, margin + 14, line, font);
   if (cut) {
-    const auto a = static_cast<std::size_t>(cut->axis);
-    const bool above = kViewDirection[a] > 0;  // the viewer's side
-    std::vector<bool> keep(mesh.tets.size());
-    std::size_t removed = 0;
-    for (std::size_t i = 0; i < mesh.tets.size(); ++i) {
-      double c = 0;
-      for (const std::uint32_t v : mesh.tets[i]) c += 0.25 * mesh.vertices[v][a];
-      keep[i] = above ? !(c > cut->value) : !(c < cut->value);
-      removed += keep[i] ? 0 : 1;
-    }
-    std::size_t cut_boundary = 0;
-    const std::vector<Face> rest = visible_faces(mesh, keep, cut_boundary);
-    const double left = margin + panel_w + gap;
+    const double left = margin + column + gap;
     panel(rest, left, "cut-tri");
-    std::snprintf(buf, sizeof buf, "<text x=\"%.0f\" y=\"%.0f\" %s>", left, margin + 14, font.c_str());
-    out += std::string(buf) + "cut at " + axis_name(cut->axis) + " = " + fmt(cut->value) + ": " +
-           std::to_string(removed) + " tetrahedra with centroid " + axis_name(cut->axis) +
-           (above ? " &gt; " : " &lt; ") + fmt(cut->value) + " removed, " + std::to_string(rest.size()) + " of " +
-           std::to_string(cut_boundary) + " triangles face the viewer</text>\n";
+    out += text_lines(cut_title, left, margin + 14, line, font);
   }
 
   // Legend and summary.
   std::map<int, std::size_t> per_level;
   for (std::size_t i = 0; i < mesh.tets.size(); ++i) ++per_level[i < mesh.level.size() ? mesh.level[i] : 0];
-  const double foot = top + panel_h + 24;
+  // Legend entries side by side, as wide as their text, in rows across the picture.
+  double foot = top + panel_h + 24;
   double lx = margin;
   out += "<g stroke=\"#333333\" stroke-width=\"0.6\">\n";
   for (const auto& [l, n] : per_level) {
+    const std::string label = "level " + std::to_string(l) + ": " + std::to_string(n);
+    const double entry = 16 + text_width(label, font_size);
+    if (lx > margin && lx + entry > width - margin) {
+      lx = margin;
+      foot += line + 4;
+    }
     std::snprintf(buf, sizeof buf,
                   "<rect class=\"legend\" x=\"%.0f\" y=\"%.0f\" width=\"12\" height=\"12\" fill=\"%s\"/>"
-                  "<text x=\"%.0f\" y=\"%.0f\" %s stroke=\"none\">level %d: %zu</text>\n",
-                  lx, foot - 10, colour(l, 1.0).c_str(), lx + 16, foot, font.c_str(), l, n);
+                  "<text x=\"%.0f\" y=\"%.0f\" %s stroke=\"none\">%s</text>\n",
+                  lx, foot - 10, colour(l, 1.0).c_str(), lx + 16, foot, font.c_str(), label.c_str());
     out += buf;
-    lx += 110;
+    lx += std::max(110.0, entry + 24);
   }
   out += "</g>\n";
-  std::snprintf(buf, sizeof buf, "<text x=\"%.0f\" y=\"%.0f\" %s>", margin, foot + 22, font.c_str());
-  out += std::string(buf) + escape(title) + ": " + std::to_string(mesh.vertices.size()) + " vertices, " +
-         std::to_string(mesh.tets.size()) +
-         " tetrahedra; fill: the level of the tetrahedron (tetrahedra per level), shaded by the normal</text>\n";
+  std::vector<std::string> summary;
+  for (const std::string& part :
+       {title + ": " + std::to_string(mesh.vertices.size()) + " vertices, " + std::to_string(mesh.tets.size()) +
+            " tetrahedra;",
+        std::string("fill: the level of the tetrahedron (tetrahedra per level), shaded by the normal")})
+    for (const std::string& l : wrap(part, width - 2 * margin, font_size)) summary.push_back(l);
+  out += text_lines(summary, margin, foot + 22, line, font);
   out += "</svg>\n";
-  return out;
+  const double height = foot + 22 + line * static_cast<double>(summary.size() - 1) + 34;
+  std::snprintf(buf, sizeof buf,
+                "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\">\n",
+                width, height, width, height);
+  return buf + out;
 }
 
 AngleHistogram angle_histogram(const d3::TetMeshF& mesh) {
@@ -239,8 +299,6 @@ AngleHistogram angle_histogram(const d3::TetMeshF& mesh) {
 
 std::string render_histogram_svg(const d3::TetMeshF& mesh, const std::string& title) {
   const AngleHistogram h = angle_histogram(mesh);
-  const double left = 70, top = 50, bar_w = 17, plot_w = 36 * bar_w, plot_h = 260;
-  const double width = left + plot_w + 30, height = top + plot_h + 70;
   std::size_t most = 1;
   for (const std::size_t n : h.bins) most = std::max(most, n);
   // A round step for the count axis: 1, 2 or 5 times a power of ten, about 5 ticks.
@@ -256,6 +314,22 @@ std::string render_histogram_svg(const d3::TetMeshF& mesh, const std::string& ti
     if (found) break;
   }
   const double ymax = std::ceil(static_cast<double>(most) / step) * step;
+  // The left margin holds the widest count and, left of it, the axis label
+  // turned upright; the plot starts below the title's lines.
+  const double font_size = 12, bar_w = 17, plot_w = 36 * bar_w, plot_h = 260;
+  double widest = 0;
+  for (double c = 0; c <= ymax + 0.5 * step; c += step) widest = std::max(widest, text_width(fmt(c), font_size));
+  const double left = std::max(70.0, std::ceil(widest + 32)), width = left + plot_w + 30;
+  const double label_x = left - widest - 18;
+  std::string heading =
+      title + ": " + std::to_string(mesh.tets.size()) + " tetrahedra, " + std::to_string(h.angles) + " dihedral angles";
+  if (h.angles > 0) {
+    char extremes[80];
+    std::snprintf(extremes, sizeof extremes, ", min %.2f, max %.2f degrees", h.min, h.max);
+    heading += extremes;
+  }
+  const std::vector<std::string> heading_lines = wrap(heading, width - left - 10, font_size);
+  const double top = 50 + 15 * static_cast<double>(heading_lines.size() - 1), height = top + plot_h + 70;
   const auto X = [&](double degrees) { return left + degrees / 180 * plot_w; };
   const auto Y = [&](double count) { return top + plot_h - count / ymax * plot_h; };
 
@@ -268,6 +342,7 @@ std::string render_histogram_svg(const d3::TetMeshF& mesh, const std::string& ti
   out +=
       "<title>" + escape(title) + ": dihedral angles</title>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   const std::string font = "font-family=\"sans-serif\" font-size=\"12\"";
+  out += text_lines(heading_lines, left, 18, 15, font);
   // Grid and count ticks.
   out += "<g stroke=\"#dddddd\" stroke-width=\"1\">\n";
   for (double c = 0; c <= ymax + 0.5 * step; c += step) {
@@ -306,29 +381,26 @@ std::string render_histogram_svg(const d3::TetMeshF& mesh, const std::string& ti
                 "<text x=\"%.1f\" y=\"%.1f\" %s text-anchor=\"middle\">dihedral angle (degrees), bins of 5</text>\n"
                 "<text x=\"%.1f\" y=\"%.1f\" %s text-anchor=\"middle\" transform=\"rotate(-90 %.1f %.1f)\">"
                 "angles per bin</text>\n",
-                left + plot_w / 2, top + plot_h + 38, font.c_str(), left - 48, top + plot_h / 2, font.c_str(),
-                left - 48, top + plot_h / 2);
+                left + plot_w / 2, top + plot_h + 38, font.c_str(), label_x, top + plot_h / 2, font.c_str(), label_x,
+                top + plot_h / 2);
   out += buf;
   // The extremes.
   if (h.angles > 0) {
     for (const auto& [cls, a] : {std::pair<const char*, double>{"min", h.min}, {"max", h.max}}) {
+      // The label centred on its line but kept inside the picture.
+      std::snprintf(buf, sizeof buf, "%s %.2f", cls, a);
+      const double half = text_width(buf, font_size) / 2;
+      const double label = std::clamp(X(a), half + 4, width - half - 4);
       std::snprintf(buf, sizeof buf,
                     "<line class=\"%s\" x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#d02020\" "
                     "stroke-width=\"1.5\" stroke-dasharray=\"5 3\"/>"
                     "<text x=\"%.1f\" y=\"%.1f\" %s fill=\"#d02020\" text-anchor=\"middle\">%s %.2f</text>\n",
-                    cls, X(a), top - 4, X(a), top + plot_h, X(a), top - (std::string_view(cls) == "min" ? 22 : 8),
+                    cls, X(a), top - 4, X(a), top + plot_h, label, top - (std::string_view(cls) == "min" ? 22 : 8),
                     font.c_str(), cls, a);
       out += buf;
     }
   }
-  std::snprintf(buf, sizeof buf, "<text x=\"%.1f\" y=\"%.1f\" %s>", left, 18.0, font.c_str());
-  out += std::string(buf) + escape(title) + ": " + std::to_string(mesh.tets.size()) + " tetrahedra, " +
-         std::to_string(h.angles) + " dihedral angles";
-  if (h.angles > 0) {
-    std::snprintf(buf, sizeof buf, ", min %.2f, max %.2f degrees", h.min, h.max);
-    out += buf;
-  }
-  out += "</text>\n</svg>\n";
+  out += "</svg>\n";
   return out;
 }
 
