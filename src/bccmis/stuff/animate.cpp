@@ -183,52 +183,55 @@ bool MovingLattice::leaf_at(const Point3& p, const std::array<int, 3>& octant, i
 // half grid (where nodes appear or vanish) on their boundary, and the
 // leaves across a face from a center that appeared or vanished.
 std::vector<Point3> MovingLattice::lattice_dirty() {
-  // Probes: a point of a changed cell's half grid with an octant pointing
-  // out of the cell (the leaves inside it are its center or children,
-  // which `centers` holds), and the level to look from.
+  // Probes: from a face center of a changed cell, each octant pointing out
+  // of it (any leaf there shares part of that face); from an edge midpoint,
+  // the two octants pointing out across the edge (a leaf there shares only
+  // the edge, and changes only when it has the cell's level: the midpoint
+  // is then its own edge midpoint; finer, it is its corner). `only` is that
+  // level, or -1.
   struct Probe {
     Point3 p;
-    int octant, level;
-    bool operator<(const Probe& o) const { return std::tie(p, octant) < std::tie(o.p, o.octant); }
-    bool operator==(const Probe& o) const { return p == o.p && octant == o.octant; }
+    int octant, from, only;
+    bool operator<(const Probe& o) const { return std::tie(p, octant, only) < std::tie(o.p, o.octant, o.only); }
   };
   std::vector<Probe> probes;
-  std::vector<std::pair<Point3, int>> centers;
   std::vector<Point3> out;
   for (const auto& [c, level] : changed_) {
     const std::int64_t h = side(level) / 2;
     for (int i = -1; i <= 1; ++i)
       for (int j = -1; j <= 1; ++j)
         for (int k = -1; k <= 1; ++k) {
-          if (i != 0 && j != 0 && k != 0) continue;  // a corner: a node before and after
           const int d[3] = {i, j, k};
+          const int nonzero = (i != 0) + (j != 0) + (k != 0);
+          if (nonzero == 0 || nonzero == 3) continue;  // the center (inside) or a corner (a node throughout)
           for (int o = 0; o < 8; ++o) {
-            bool inward = true;
-            for (int a = 0; a < 3; ++a) inward = inward && (d[a] == 0 || ((o >> a) & 1) == (d[a] < 0 ? 1 : 0));
-            if (!inward) probes.push_back({shifted(c, i * h, j * h, k * h), o, level});
+            bool outward = true, inward = true;
+            for (int a = 0; a < 3; ++a) {
+              if (d[a] == 0) continue;
+              const bool up = ((o >> a) & 1) != 0;
+              outward = outward && up == (d[a] > 0);
+              inward = inward && up != (d[a] > 0);
+            }
+            if (nonzero == 1 && !inward) probes.push_back({shifted(c, i * h, j * h, k * h), o, level - 1, -1});
+            if (nonzero == 2 && outward) probes.push_back({shifted(c, i * h, j * h, k * h), o, level, level});
           }
         }
-    centers.push_back({c, level});
-    for (const Point3& child : children(c, side(level))) centers.push_back({child, level + 1});
+    // The changed cell and its children: the leaves among them are new or
+    // lose or gain a node.
+    if (g_.is_center(c)) out.push_back(c);
+    for (const Point3& child : children(c, side(level)))
+      if (g_.is_center(child)) out.push_back(child);
   }
   std::sort(probes.begin(), probes.end());
-  probes.erase(std::unique(probes.begin(), probes.end()), probes.end());
+  probes.erase(std::unique(probes.begin(), probes.end(),
+                           [](const Probe& a, const Probe& b) { return a.p == b.p && a.octant == b.octant; }),
+               probes.end());
   Point3 u;
   for (const Probe& q : probes)
-    if (leaf_at(q.p, {(q.octant & 1) ? 1 : -1, (q.octant & 2) ? 1 : -1, (q.octant & 4) ? 1 : -1},
-                std::max(0, q.level - 1), u))
+    if (leaf_at(q.p, {(q.octant & 1) ? 1 : -1, (q.octant & 2) ? 1 : -1, (q.octant & 4) ? 1 : -1}, std::max(0, q.from),
+                u) &&
+        (q.only < 0 || g_.level_of(u) == q.only))
       out.push_back(u);
-  std::sort(centers.begin(), centers.end());
-  centers.erase(std::unique(centers.begin(), centers.end()), centers.end());
-  for (const auto& [c, level] : centers) {
-    if (g_.is_center(c)) out.push_back(c);
-    const std::int64_t s = side(level);
-    for (int axis = 0; axis < 3; ++axis)
-      for (const std::int64_t d : {-s, s}) {
-        const Point3 w = shifted(c, axis == 0 ? d : 0, axis == 1 ? d : 0, axis == 2 ? d : 0);
-        if (g_.is_center(w)) out.push_back(w);
-      }
-  }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
