@@ -265,6 +265,36 @@ std::vector<TetKey> tet_keys(const d3::TetMeshF& m) {
   return out;
 }
 
+TEST(StuffAnimate, SameTetrahedraIgnoresNumberingOnly) {
+  // What --check compares each frame by: the tetrahedra as sets, whatever
+  // the vertex and tetrahedron numbering; one ulp, a kind or a level apart
+  // is a difference.
+  d3::TetMeshF a;
+  a.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};
+  a.kind = {0, 0, 2, 1, 0};
+  a.tets = {{0, 1, 2, 3}, {1, 2, 3, 4}};
+  a.level = {3, 2};
+  d3::TetMeshF b;  // vertices reversed, tetrahedra swapped, corners rotated
+  b.vertices = {{1, 1, 1}, {0, 0, 1}, {0, 1, 0}, {1, 0, 0}, {0, 0, 0}};
+  b.kind = {0, 1, 2, 0, 0};
+  b.tets = {{3, 2, 0, 1}, {4, 3, 2, 1}};
+  b.level = {2, 3};
+  EXPECT_TRUE(same_tetrahedra(a, b));
+  d3::TetMeshF c = b;
+  c.vertices[0][2] = std::nextafter(1.0, 2.0);
+  EXPECT_FALSE(same_tetrahedra(a, c));
+  c = b;
+  c.kind[2] = 0;
+  EXPECT_FALSE(same_tetrahedra(a, c));
+  c = b;
+  c.level = {3, 2};
+  EXPECT_FALSE(same_tetrahedra(a, c));
+  c = b;
+  c.tets.pop_back();
+  c.level.pop_back();
+  EXPECT_FALSE(same_tetrahedra(a, c));
+}
+
 TEST(StuffAnimate, LocalStuffingEqualsTheReferenceStuffingOfEachFrame) {
   // S16: the mesh kept up to date by stuffing only the active leaves equals
   // the reference stuffing (std::map path, Graph3 lattice) of the moved
