@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,14 @@ TEST(SurfaceCube, SignedDistanceAtKnownPoints) {
   EXPECT_EQ(s->signed_distance({1, 1, 0}), 0);  // on a face
   EXPECT_EQ(s->signed_distance({2, 2, 2}), 0);  // a corner
   EXPECT_EQ(s->signed_distance({2, 1, 2}), 0);  // on an edge
+  // side() and distance() answer without the other query: the same sign
+  // and magnitude.
+  for (const Vec3& p :
+       std::vector<Vec3>{{1, 1, 1}, {1, 1, 0.5}, {3, 1, 1}, {1, -0.5, 1}, {3, 3, 3}, {1, 1, 0}, {2, 2, 2}, {2, 1, 2}}) {
+    const double f = s->signed_distance(p);
+    EXPECT_EQ(s->side(p), (f > 0) - (f < 0));
+    EXPECT_EQ(s->distance(p), std::abs(f));
+  }
 }
 
 TEST(SurfaceCube, CrossingAtKnownParameter) {
@@ -311,6 +320,22 @@ TEST(SurfaceCgalMeshes, Elephant) {
   const auto s = load_surface(kCgal + "/elephant.off");
   EXPECT_EQ(s->describe(), "mesh elephant.off: 5558 triangles");
   check_closed(*s);
+  // side() and distance() (S3, S5, S16) agree with signed_distance on
+  // points spread over the box, inside and outside (seed 7).
+  const Bounds b = s->bounds();
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(0, 1);
+  int inside = 0;
+  for (int i = 0; i < 300; ++i) {
+    Vec3 p{};
+    for (std::size_t k = 0; k < 3; ++k) p[k] = b.lo[k] + u(rng) * (b.hi[k] - b.lo[k]);
+    const double f = s->signed_distance(p);
+    EXPECT_EQ(s->side(p), (f > 0) - (f < 0)) << "seed 7, point " << i;
+    EXPECT_EQ(s->distance(p), std::abs(f)) << "seed 7, point " << i;
+    inside += f < 0 ? 1 : 0;
+  }
+  EXPECT_GT(inside, 10);
+  EXPECT_LT(inside, 290);
 }
 
 TEST(SurfaceCgalMeshes, DoubleTorus) {

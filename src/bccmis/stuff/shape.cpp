@@ -157,6 +157,7 @@ class Translated final : public Shape {
   Translated(std::shared_ptr<const Shape> s, const Vec3& d) : s_(std::move(s)), d_(d) {}
   double signed_distance(const Vec3& p) const override { return s_->signed_distance(sub(p, d_)); }
   double distance(const Vec3& p) const override { return s_->distance(sub(p, d_)); }
+  int side(const Vec3& p) const override { return s_->side(sub(p, d_)); }
   double crossing(const Vec3& a, const Vec3& b) const override { return s_->crossing(sub(a, d_), sub(b, d_)); }
   Bounds bounds() const override {
     Bounds b = s_->bounds();

@@ -35,6 +35,12 @@ class Shape {
   /// |signed_distance(p)|, for tests that need no sign (S3, S16); shapes
   /// whose sign costs more than their distance compute it without the sign.
   virtual double distance(const Vec3& p) const { return std::abs(signed_distance(p)); }
+  /// The sign of signed_distance(p): -1 inside, 0 on the surface, 1 outside
+  /// (S5); shapes whose distance costs more than their sign compute it alone.
+  virtual int side(const Vec3& p) const {
+    const double f = signed_distance(p);
+    return (f > 0) - (f < 0);
+  }
   /// For a segment [a, b] whose ends lie on opposite sides (or one on the
   /// surface): a parameter t in [0, 1] with a + t (b - a) on the surface.
   virtual double crossing(const Vec3& a, const Vec3& b) const = 0;

@@ -637,7 +637,7 @@ class Stuffer {
     pos_.resize(points_.size());
     for (std::size_t i = 0; i < points_.size(); ++i) {
       pos_[i] = fit_.to_space(points_[i]);
-      value_[i] = shape_.signed_distance(pos_[i]);
+      value_[i] = shape_.side(pos_[i]);  // S5: only the sign enters
     }
   }
 
@@ -929,7 +929,7 @@ class Stuffer {
   std::span<const d3::Tet> tets_;
   std::vector<Point3> points_;  ///< the lattice vertices of the mesh, sorted
   std::vector<Ids> ids_;        ///< tets_ on points_
-  std::vector<double> value_;   ///< f, 0 once warped
+  std::vector<double> value_;   ///< the sign of f (-1, 0, 1), 0 once warped
   std::vector<Vec3> pos_;       ///< in space, warped or not
   std::vector<std::uint8_t> warped_;
   std::vector<int> level_;  ///< of the leaves, -1 until asked

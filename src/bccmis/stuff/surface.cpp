@@ -543,6 +543,12 @@ class MeshShape final : public Shape {
     return side == CGAL::ON_BOUNDED_SIDE ? -d : d;
   }
 
+  // The side query alone (a ray cast, exact), without the distance.
+  int side(const Vec3& p) const override {
+    const CGAL::Bounded_side s = (*side_)(Point(p[0], p[1], p[2]));
+    return s == CGAL::ON_BOUNDED_SIDE ? -1 : s == CGAL::ON_BOUNDARY ? 0 : 1;
+  }
+
   // Without the side query (a ray cast): the distance alone.
   double distance(const Vec3& p) const override { return std::sqrt(tree_.squared_distance(Point(p[0], p[1], p[2]))); }
 
