@@ -47,6 +47,8 @@ bccmis_cli_test(stuff_bad_path 2 ARGS stuff --shape sphere --animate 2 --path 1,
                 STDERR_REGEX "--path '1,x,0': 'x' is not a number")
 bccmis_cli_test(stuff_animate_not_pvd 2 ARGS stuff --shape sphere --animate 2 -o a.vtu
                 STDERR_REGEX "--animate writes one .pvd")
+bccmis_cli_test(stuff_animate_too_fine 2 ARGS stuff --shape sphere -L 19 --cells 4 --animate 2 -o a.pvd
+                STDERR_REGEX "--animate: the lattice is too fine: 4194304 lattice points along a side")
 bccmis_cli_test(stuff_path_without_animate 2 ARGS stuff --shape sphere --path 1,0,0 -o a.vtu
                 STDERR_REGEX "--path and --compare apply with --animate")
 if(TARGET bccmis::stuff_surface)

@@ -217,6 +217,7 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
   stuff::Fit fit;
   try {
     fit = stuff::fit_lattice(stuff::swept_bounds(*shape, path), so);
+    stuff::check_moving_fit(fit);
   } catch (const stuff::ShapeError& e) {
     throw InputError(e.what());
   }

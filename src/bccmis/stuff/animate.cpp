@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -53,16 +54,21 @@ std::array<Point3, 8> children(const Point3& c, std::int64_t s) {
 
 std::size_t MovingLattice::PointHash::operator()(const Point3& p) const noexcept { return mix(point_hash(p)); }
 
+void check_moving_fit(const Fit& fit) {
+  const std::int64_t S = d3::level0_side(fit.size);
+  if (std::max({fit.size.W, fit.size.H, fit.size.D}) * S >= (std::int64_t{1} << 21))
+    throw ShapeError(
+        "--animate: the lattice is too fine: " + std::to_string(std::max({fit.size.W, fit.size.H, fit.size.D}) * S) +
+        " lattice points along a side, at most 2^21 - 1 (S16's pool packs 21 bits a coordinate)");
+}
+
 MovingLattice::MovingLattice(std::shared_ptr<const Shape> shape, const Fit& fit, const StuffOptions& options)
     : shape_(std::move(shape)),
       moved_(shape_),
-      fit_(fit),
+      fit_((check_moving_fit(fit), fit)),
       options_(with_level(options, fit.size.L)),
       g_(background_fast(*moved_, fit_, options_)),
       reach_(1.05 * std::max(options_.alpha_long * fit_.h, options_.alpha_short * 0.5 * std::sqrt(3.0) * fit_.h)) {
-  const std::int64_t S = d3::level0_side(fit_.size);
-  if (std::max({fit_.size.W, fit_.size.H, fit_.size.D}) * S >= (std::int64_t{1} << 21))
-    throw ShapeError("--animate: the lattice is too fine (more than 2^21 lattice points along a side)");
   leaves_.reserve(2 * g_.cell_count());
   std::vector<Candidate> all;
   for (const Point3& u : g_.cells()) all.push_back({u, true, -1});
@@ -137,7 +143,7 @@ bool MovingLattice::coarsen_subtree(const Point3& c, int level, FrameReport& rep
   return changed;
 }
 
-// S16's candidates: the leaves that can be active now, |f(u)| <= s_u + h,
+// S16's candidates: the leaves that can be active now, |f(u)| <= s_u + 1.05 r_w,
 // or whose sign can have changed since the last frame, |f(u)| <= the
 // distance moved (the surface passed u on the way).
 void MovingLattice::near_visit(const Point3& c, int level, double moved, std::vector<Candidate>& out) const {
@@ -178,10 +184,10 @@ bool MovingLattice::leaf_at(const Point3& p, const std::array<int, 3>& octant, i
   throw std::logic_error("MovingLattice: no leaf holds the points beside " + d3::to_string(p));
 }
 
-// S16: the leaves whose lattice tetrahedra changed with this step's refines
-// and coarsens: the new leaves, the leaves with a point of a changed cell's
-// half grid (where nodes appear or vanish) on their boundary, and the
-// leaves across a face from a center that appeared or vanished.
+// S16: the leaves whose lattice tetrahedra may have changed with this step's
+// refines and coarsens: the changed cells and their children that are
+// leaves, and the leaves beside the changed cells' face centers and edge
+// midpoints found by the probes below.
 std::vector<Point3> MovingLattice::lattice_dirty() {
   // Probes: from a face center of a changed cell, each octant pointing out
   // of it (any leaf there shares part of that face); from an edge midpoint,

@@ -29,6 +29,10 @@ struct FrameReport {
 /// S14: the box a shape covers when translated by t d for t in [0, 1].
 Bounds swept_bounds(const Shape& shape, const Vec3& d);
 
+/// S16: throws ShapeError when the lattice has 2^21 or more lattice points
+/// along a side (the moving lattice's pool packs 21 bits a coordinate).
+void check_moving_fit(const Fit& fit);
+
 /// S15, S16: the lattice of background() and its stuffing kept up to date
 /// under a moving shape, on the fast lattice (fast::Lattice3).
 class MovingLattice {
