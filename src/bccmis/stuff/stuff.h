@@ -83,9 +83,9 @@ Stuffed stuff(const Shape& shape, const Fit& fit, const fast::Lattice3& g, const
               PhaseTimes* times = nullptr);
 
 /// S5-S9 on some tetrahedra of the graded mesh of g (S16's incremental
-/// stuffing): `tets` holds, for each lattice vertex within h of the surface,
-/// every tetrahedron at it, so each of them is cut, warped and filled as in
-/// the whole mesh. Also reports each output vertex's key (S8: (p, p) for
+/// stuffing): when `tets` holds every tetrahedron of the whole mesh that has
+/// a cut edge, and no tetrahedron left out has a warped vertex, each of them
+/// is cut, warped and filled as in the whole mesh. Also reports each output vertex's key (S8: (p, p) for
 /// lattice vertex p, the ends in position order for a cut point) and where
 /// the output tetrahedra of tets[i] begin (begin[i] .. begin[i + 1]).
 struct StuffedPart {
