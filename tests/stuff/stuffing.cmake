@@ -2,8 +2,9 @@
 # orientation, and on the built-in shapes the mesh's own checks: closed
 # boundary on the surface, enclosed volume equal to the tetrahedra's, every
 # interior triangle in two tetrahedra, positive orientation, angle bounds.
-add_executable(stuffing_tests stuff/stuffing_test.cpp)
-target_link_libraries(stuffing_tests PRIVATE bccmis::stuff bccmis::d3 GTest::gtest_main bccmis::warnings)
+# The checker's stuffed-mesh layer on hand-built meshes shares the executable.
+add_executable(stuffing_tests stuff/stuffing_test.cpp stuff/stuffed_mesh_check_test.cpp)
+target_link_libraries(stuffing_tests PRIVATE bccmis::stuff bccmis::d3 bccmis::invariants3 GTest::gtest_main bccmis::warnings)
 gtest_discover_tests(stuffing_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
 
 # The CLI's files read by meshio and gmsh, with the boundary's topology and

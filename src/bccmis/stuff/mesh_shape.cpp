@@ -1,0 +1,90 @@
+// The stuffing library's entry point (mesh_shape.h): S2-S13 in one call.
+#include "bccmis/stuff/mesh_shape.h"
+
+#include <chrono>
+#include <cstdio>
+
+#include "bccmis/fast/lattice3.h"
+#include "bccmis/invariants/d3/stuffed_mesh.h"
+#if BCCMIS_HAVE_STUFF_SURFACE
+#include "bccmis/stuff/surface.h"
+#endif
+
+namespace bccmis::stuff {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+std::string number(double x) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.9g", x);
+  return buf;
+}
+
+}  // namespace
+
+std::unique_ptr<Shape> load_mesh_file(const std::string& path) {
+#if BCCMIS_HAVE_STUFF_SURFACE
+  return load_surface(path);
+#else
+  throw ShapeError(path + ": this build has no CGAL, so it reads no meshes; use --shape");
+#endif
+}
+
+std::optional<std::string> find_stuffed_problem(const Shape& shape, const Fit& fit, const d3::TetMeshF& mesh) {
+  d3::StuffedMeshClaims claims;
+  claims.distance = [&shape](const Vec3& p) { return shape.signed_distance(p); };
+  // S11: cut points and warped vertices lie on the surface; 1e-9 of the
+  // finest side allows for the crossing's bisection and the distance's rounding.
+  claims.tolerance = 1e-9 * fit.h;
+  claims.dihedral = d3::kStuffedDihedralBounds;
+  if (auto v = d3::check_stuffed_mesh(mesh.vertices, mesh.tets, claims)) return v->message;
+  return std::nullopt;
+}
+
+Meshed mesh_shape(const Shape& shape, const Settings& settings, const Progress& progress) {
+  const auto say = [&](const std::string& what) {
+    if (progress) progress(what);
+  };
+  Meshed r;
+  StuffOptions options = settings.lattice;
+  r.fit = fit_lattice(shape.bounds(), options);
+  options.max_level = r.fit.size.L;
+  say(shape.describe() + ": lattice " + std::to_string(r.fit.size.W) + " x " + std::to_string(r.fit.size.H) + " x " +
+      std::to_string(r.fit.size.D) + ", max level " + std::to_string(r.fit.size.L) + ", finest side " +
+      number(r.fit.h));
+  // S3-S9 on the fast lattice, or on the reference.
+  PhaseTimes times;
+  const auto t0 = Clock::now();
+  const auto stuff_on = [&](const auto& g, std::size_t leaves) {
+    times.lattice = seconds_since(t0);
+    r.leaves = leaves;
+    say(std::to_string(leaves) + " leaves (" + number(times.lattice) + " s)");
+    return stuff(shape, r.fit, g, options, &times);
+  };
+  if (settings.impl == Impl::reference) {
+    const d3::Graph3 g = background(shape, r.fit, options);
+    r.stuffed = stuff_on(g, g.C.size());
+  } else {
+    const fast::Lattice3 g = background_fast(shape, r.fit, options);
+    r.stuffed = stuff_on(g, g.cell_count());
+  }
+  r.seconds = {{"lattice", times.lattice},
+               {"mesh", times.mesh},
+               {"cut", times.cut},
+               {"warp", times.warp},
+               {"stencils", times.stencils}};
+  say(std::to_string(r.stuffed.mesh.tets.size()) + " tetrahedra (" + number(times.total() - times.lattice) + " s)");
+
+  const auto t1 = Clock::now();
+  r.boundary = boundary_triangles(r.stuffed.mesh);
+  if (settings.check)
+    if (auto why = find_stuffed_problem(shape, r.fit, r.stuffed.mesh)) throw CheckError(shape.describe() + ": " + *why);
+  if (settings.statistics) r.statistics = statistics(shape, r.stuffed.mesh, r.boundary);
+  r.seconds.emplace_back("statistics", seconds_since(t1));
+  return r;
+}
+
+}  // namespace bccmis::stuff

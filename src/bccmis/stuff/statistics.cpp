@@ -1,0 +1,49 @@
+// S13's statistics (statistics.h).
+#include "bccmis/stuff/statistics.h"
+
+#include <cmath>
+
+#if BCCMIS_HAVE_STUFF_SURFACE
+#include "bccmis/stuff/surface.h"
+#endif
+
+namespace bccmis::stuff {
+
+namespace {
+
+/// S13: the boundary's side of the Hausdorff distance, |f| at the three
+/// vertices, three edge midpoints and the centroid of every triangle.
+double from_boundary(const Shape& shape, const d3::TetMeshF& mesh,
+                     const std::vector<std::array<std::uint32_t, 3>>& boundary) {
+  double d = 0;
+  for (const auto& t : boundary) {
+    const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+    const auto mix = [](const Vec3& x, const Vec3& y, const Vec3& z, double u, double v, double w) {
+      return Vec3{u * x[0] + v * y[0] + w * z[0], u * x[1] + v * y[1] + w * z[1], u * x[2] + v * y[2] + w * z[2]};
+    };
+    for (const Vec3& p : {a, b, c, mix(a, b, c, 0.5, 0.5, 0), mix(a, b, c, 0, 0.5, 0.5), mix(a, b, c, 0.5, 0, 0.5),
+                          mix(a, b, c, 1.0 / 3, 1.0 / 3, 1.0 / 3)})
+      d = std::max(d, std::abs(shape.signed_distance(p)));
+  }
+  return d;
+}
+
+}  // namespace
+
+Statistics statistics(const Shape& shape, const d3::TetMeshF& mesh,
+                      const std::vector<std::array<std::uint32_t, 3>>& boundary) {
+  Statistics s;
+  s.quality = quality(mesh);
+  s.hausdorff.from_boundary = from_boundary(shape, mesh, boundary);
+#if BCCMIS_HAVE_STUFF_SURFACE
+  // S13: the surface's side, 20,000 samples (seed 1) to the boundary triangles.
+  if (!boundary.empty())
+    s.hausdorff.from_surface = max_distance_to_triangles(shape.sample_surface(20000, 1), mesh.vertices, boundary);
+#endif
+  s.shape_volume = shape.volume();
+  s.vertices = mesh.vertices.size();
+  s.tetrahedra = mesh.tets.size();
+  return s;
+}
+
+}  // namespace bccmis::stuff

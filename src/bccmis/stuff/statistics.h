@@ -1,0 +1,44 @@
+// bccmis::stuff::statistics: what `--stats` reports of a stuffed mesh
+// (spec/stuffing.md S13): its quality, its volume against the shape's, and
+// the Hausdorff distance between its boundary and the shape's surface.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "bccmis/d3/mesh.h"
+#include "bccmis/stuff/shape.h"
+#include "bccmis/stuff/stuff.h"
+
+namespace bccmis::stuff {
+
+/// S13: the Hausdorff distance, sampled both ways.
+struct Hausdorff {
+  double from_boundary = 0;  ///< max |f| over 7 points of every boundary triangle
+  double from_surface = -1;  ///< max distance of 20,000 surface samples to the boundary (-1: not computed)
+  double max() const { return std::max(from_boundary, from_surface); }
+};
+
+struct Statistics {
+  StuffQuality quality;  ///< volume, dihedral angles, histogram, boundary triangles
+  Hausdorff hausdorff;
+  double shape_volume = 0;
+  std::size_t vertices = 0, tetrahedra = 0;
+  /// (volume - shape volume) / shape volume.
+  double volume_rel_error() const { return (quality.volume - shape_volume) / shape_volume; }
+  /// The fraction of tetrahedra with a dihedral angle below 10 degrees.
+  double below10() const {
+    return tetrahedra ? static_cast<double>(quality.below10) / static_cast<double>(tetrahedra) : 0;
+  }
+};
+
+/// S13 on `mesh`, a mesh of `shape` whose boundary is `boundary`. The
+/// distance from the surface needs CGAL's triangle distances: without CGAL
+/// in the build it is not computed (from_surface stays -1).
+Statistics statistics(const Shape& shape, const d3::TetMeshF& mesh,
+                      const std::vector<std::array<std::uint32_t, 3>>& boundary);
+
+}  // namespace bccmis::stuff
