@@ -45,6 +45,9 @@ class JsonWriter {
     return raw(std::to_string(i));
   }
   JsonWriter& null() { return raw("null"); }
+  /// A value already written as JSON: a number in a fixed format ("%.6f"),
+  /// a document made elsewhere.
+  JsonWriter& json_value(std::string_view text) { return raw(text); }
 
   /// key(name).value(v) in one call.
   template <class T>

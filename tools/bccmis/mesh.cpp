@@ -9,6 +9,7 @@
 
 #include "bccmis/d3/lattice.h"
 #include "bccmis/d3/mesh.h"
+#include "bccmis/json_writer.h"
 #include "bccmis/trace.h"
 #include "commands.h"
 #include "io.h"
@@ -22,21 +23,26 @@ bool ends_with(const std::string& s, std::string_view suffix) {
 }
 
 std::string stats_text(const d3::MeshQuality& q, bool json) {
-  char angles[96];
-  std::string out;
+  const auto fixed6 = [](double x) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.6f", x);
+    return std::string(buf);
+  };
   if (json) {
-    std::snprintf(angles, sizeof angles, "\"min_dihedral\": %.6f, \"max_dihedral\": %.6f", q.min_dihedral,
-                  q.max_dihedral);
-    out = "{\"vertices\": " + std::to_string(q.vertices) + ", \"tetrahedra\": " + std::to_string(q.tetrahedra) +
-          ", \"boundary_triangles\": " + std::to_string(q.boundary_triangles) + ", " + angles +
-          ", \"dihedral_histogram\": {";
-    for (std::size_t k = 0; k < q.histogram.size(); ++k)
-      out += (k ? ", \"" : "\"") + std::to_string(15 * k) + "\": " + std::to_string(q.histogram[k]);
-    return out + "}}\n";
+    JsonWriter w;
+    w.begin_object()
+        .member("vertices", q.vertices)
+        .member("tetrahedra", q.tetrahedra)
+        .member("boundary_triangles", q.boundary_triangles);
+    w.key("min_dihedral").json_value(fixed6(q.min_dihedral)).key("max_dihedral").json_value(fixed6(q.max_dihedral));
+    w.key("dihedral_histogram").begin_object();
+    for (std::size_t k = 0; k < q.histogram.size(); ++k) w.member(std::to_string(15 * k), q.histogram[k]);
+    w.end_object().end_object();
+    return w.str() + "\n";
   }
-  std::snprintf(angles, sizeof angles, "min_dihedral %.6f\nmax_dihedral %.6f\n", q.min_dihedral, q.max_dihedral);
-  out = "vertices " + std::to_string(q.vertices) + "\ntetrahedra " + std::to_string(q.tetrahedra) +
-        "\nboundary_triangles " + std::to_string(q.boundary_triangles) + "\n" + angles;
+  std::string out = "vertices " + std::to_string(q.vertices) + "\ntetrahedra " + std::to_string(q.tetrahedra) +
+                    "\nboundary_triangles " + std::to_string(q.boundary_triangles) + "\nmin_dihedral " +
+                    fixed6(q.min_dihedral) + "\nmax_dihedral " + fixed6(q.max_dihedral) + "\n";
   for (std::size_t k = 0; k < q.histogram.size(); ++k)
     if (q.histogram[k] != 0) out += "dihedral_" + std::to_string(15 * k) + " " + std::to_string(q.histogram[k]) + "\n";
   return out;

@@ -13,6 +13,7 @@
 #include "bccmis/d3/mesh.h"
 #include "bccmis/fast/lattice.h"
 #include "bccmis/fast/lattice3.h"
+#include "bccmis/json_writer.h"
 #include "bccmis/trace.h"
 #include "commands.h"
 #include "io.h"
@@ -22,18 +23,6 @@ namespace bccmis::cli {
 namespace {
 
 // The decision log, one JSON string per line.
-std::string json_lines(const std::string& log) {
-  std::string out;
-  std::size_t start = 0;
-  bool first = true;
-  while (start < log.size()) {
-    const std::size_t nl = log.find('\n', start);
-    out += (first ? "" : ", ") + json_string(std::string_view(log).substr(start, nl - start));
-    first = false;
-    start = nl + 1;
-  }
-  return out;
-}
 
 template <class L>
 int replay_with(const ReplayOptions& o, const trace_t<L>& trace) {
@@ -97,12 +86,23 @@ int replay_with(const ReplayOptions& o, const trace_t<L>& trace) {
   outputs.add(o.state_file, state);
   if (o.json) {
     // One JSON object on stdout: the decisions, the canonical state and the counts.
-    outputs.add("-", "{\"trace\": " + json_string(name) + ", \"impl\": " + json_string(o.impl) + ", \"decisions\": [" +
-                         json_lines(log) + "], \"refines\": " + std::to_string(refines) +
-                         ", \"coarsens\": " + std::to_string(coarsens) + ", \"refused\": " + std::to_string(refused) +
-                         ", \"checks\": " + std::to_string(checks) + ", \"cells\": " + std::to_string(cell_count(g)) +
-                         ", \"nodes\": " + std::to_string(node_count(g)) +
-                         ", \"state\": " + json_string(canonical_text(g)) + "}\n");
+    JsonWriter w;
+    w.begin_object().member("trace", name).member("impl", o.impl).key("decisions").begin_array();
+    for (std::size_t start = 0; start < log.size();) {
+      const std::size_t nl = log.find('\n', start);
+      w.value(std::string_view(log).substr(start, nl - start));
+      start = nl + 1;
+    }
+    w.end_array()
+        .member("refines", refines)
+        .member("coarsens", coarsens)
+        .member("refused", refused)
+        .member("checks", checks)
+        .member("cells", cell_count(g))
+        .member("nodes", node_count(g))
+        .member("state", canonical_text(g))
+        .end_object();
+    outputs.add("-", w.str() + "\n");
     outputs.commit();
     return kExitOk;
   }
