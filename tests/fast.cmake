@@ -21,6 +21,7 @@ gtest_discover_tests(output_paths_test DISCOVERY_MODE PRE_TEST PROPERTIES LABELS
 # No allocation per operation in steady state; strong guarantee (replaces
 # the global operator new, so its own executable).
 add_executable(fast_alloc_test fast_alloc_test.cpp)
+target_include_directories(fast_alloc_test PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(fast_alloc_test PRIVATE bccmis::fast GTest::gtest_main bccmis::warnings)
 gtest_discover_tests(fast_alloc_test DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
 

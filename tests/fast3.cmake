@@ -14,6 +14,7 @@ gtest_discover_tests(fast3_differential_test DISCOVERY_MODE PRE_TEST TEST_FILTER
 # No allocation per operation in steady state; strong guarantee when growth
 # fails (replaces the global operator new, so its own executable).
 add_executable(fast3_alloc_test fast3_alloc_test.cpp)
+target_include_directories(fast3_alloc_test PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(fast3_alloc_test PRIVATE bccmis::fast bccmis::d3 GTest::gtest_main bccmis::warnings)
 gtest_discover_tests(fast3_alloc_test DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
 
