@@ -63,7 +63,7 @@ bccmis_add_gtest(d3_explore_tests SOURCES explore_test.cpp LIBS bccmis::explore 
 bccmis_discover_gtests(d3_explore_tests NO_PRETTY_VALUES FILTER "*Exhaustive3.*" TEST_LIST d3_explore_tests_EXHAUSTIVE
                        LABELS exhaustive TIMEOUT 600)
 
-# bccmis explore with four numbers: the 3D lattice (tests/cli.cmake's helper).
+# bccmis explore with four numbers: the 3D lattice (tests/cli/cli.cmake's helper).
 bccmis_cli_test(explore3_1111 0 ARGS explore 1 1 1 1 --no-progress
                 STDOUT_REGEX "^explore 1 1 1 1: 2 states, 1 refine edges, 1 coarsen edges, .* ok")
 bccmis_cli_test(explore3_2211_json 0 ARGS explore 2 2 1 1 --json

@@ -1,8 +1,8 @@
-# Included by tests/CMakeLists.txt: the apps' tests (issue 8).
+# Included by tests/CMakeLists.txt: the apps' tests (issue 8, src/bccmis/apps).
 # The 66k-state corner-balance counts run under `exhaustive` (release build,
-# excluded from the default test presets), like tests/exhaustive_test.cpp.
+# excluded from the default test presets), like tests/explore/exhaustive_test.cpp.
 bccmis_add_gtest(apps_tests
-  SOURCES apps_balance_test.cpp apps_image_test.cpp apps_heightfield_test.cpp apps_animate_test.cpp apps_fast_test.cpp
+  SOURCES balance_test.cpp image_test.cpp heightfield_test.cpp animate_test.cpp fast_test.cpp
   LIBS bccmis::apps bccmis::fast bccmis::core bccmis::invariants bccmis::oracle
   DEFINITIONS BCCMIS_APPS_SAMPLES="${PROJECT_SOURCE_DIR}/apps/samples"
   FILTER "-*Exhaustive.*" TEST_LIST apps_tests_UNIT LABELS unit apps)
@@ -24,7 +24,7 @@ endif()
 
 # The height field's streamed writers and fast-lattice mesh paths against the
 # texts and values they replace.
-bccmis_add_gtest(apps_output_test SOURCES apps_output_test.cpp LIBS bccmis::apps bccmis::fast bccmis::core LABELS unit)
+bccmis_add_gtest(apps_output_test SOURCES output_test.cpp LIBS bccmis::apps bccmis::fast bccmis::core LABELS unit)
 
 # The CLI of the apps (tools/bccmis/heightfield.cpp, animate.cpp): outputs,
 # both implementations, bad input (tests/cli/run_cli.cmake).
