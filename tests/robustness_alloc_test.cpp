@@ -74,17 +74,12 @@ bool exercise(const Graph& g, const Trace& walk, const Op& op, long& faults) {
     Graph h = g;
     const long injected_before = alloc::failures;
     bool threw = false;
-    alloc::countdown = k;
     try {
-      apply(h, op);
-    } catch (const std::bad_alloc&) {
-      threw = true;
+      threw = alloc::fails_at(k, [&] { apply(h, op); });
     } catch (const std::exception& e) {
-      alloc::countdown = -1;
       ADD_FAILURE() << "unexpected exception " << e.what() << "\n" << describe(walk, op, k);
       return false;
     }
-    alloc::countdown = -1;
     if (!threw) {
       EXPECT_EQ(alloc::failures, injected_before);
       if (!(h == expected)) {

@@ -45,6 +45,25 @@ long allocations_during(F&& f) {
   return allocations;
 }
 
+/// Runs op with the k-th allocation from now failing (k = 0: the first);
+/// true when op threw std::bad_alloc. The countdown is disarmed afterwards,
+/// also when op throws anything else (which propagates).
+template <class Op>
+bool fails_at(long k, Op&& op) {
+  countdown = k;
+  try {
+    op();
+  } catch (const std::bad_alloc&) {
+    countdown = -1;
+    return true;
+  } catch (...) {
+    countdown = -1;
+    throw;
+  }
+  countdown = -1;
+  return false;
+}
+
 namespace detail {
 
 /// Counts, then throws if the countdown reaches the allocation.

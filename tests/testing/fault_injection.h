@@ -27,15 +27,7 @@ long exercise(const L& g, Op op, long limit = 1000000) {
   for (long k = 0;; ++k) {
     L h = g;
     const long failures_before = alloc::failures;
-    bool threw = false;
-    alloc::countdown = k;
-    try {
-      op(h);
-    } catch (const std::bad_alloc&) {
-      threw = true;
-    }
-    alloc::countdown = -1;
-    if (!threw) {
+    if (!alloc::fails_at(k, [&] { op(h); })) {
       EXPECT_EQ(alloc::failures, failures_before);
       return k;
     }
