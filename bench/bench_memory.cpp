@@ -7,7 +7,8 @@
 // Bytes are counted two ways while the structure is alive:
 //   bytes_per_cell       what operator new handed out (malloc_usable_size of
 //                        every live block: the global operator new of this
-//                        executable is replaced to count it)
+//                        executable is replaced to count it,
+//                        tests/testing/counting_allocator.h)
 //   heap_bytes_per_cell  glibc's in-use heap (mallinfo2: uordblks + hblkhd), which
 //                        adds the allocator's per-block headers: what the
 //                        process actually pays for many small std::set nodes
@@ -27,64 +28,25 @@
 #include <benchmark/benchmark.h>
 #include <malloc.h>
 
-#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <map>
 #include <memory>
-#include <new>
 #include <string>
 #include <vector>
 
 #include "bench_main.h"
 #include "halfedge_mesh.h"
+#include "testing/counting_allocator.h"
 #include "workloads.h"
-
-// ---- Counting operator new ----------------------------------------------------------------
-
-namespace {
-std::atomic<std::size_t> g_live_bytes{0};
-
-void* counted(std::size_t n) {
-  void* p = std::malloc(n ? n : 1);
-  if (!p) throw std::bad_alloc();
-  g_live_bytes += malloc_usable_size(p);
-  return p;
-}
-void* counted_aligned(std::size_t n, std::align_val_t a) {
-  const auto align = static_cast<std::size_t>(a);
-  void* p = std::aligned_alloc(align, (n + align - 1) / align * align);
-  if (!p) throw std::bad_alloc();
-  g_live_bytes += malloc_usable_size(p);
-  return p;
-}
-void uncounted(void* p) noexcept {
-  if (!p) return;
-  g_live_bytes -= malloc_usable_size(p);
-  std::free(p);
-}
-}  // namespace
-
-void* operator new(std::size_t n) { return counted(n); }
-void* operator new[](std::size_t n) { return counted(n); }
-void* operator new(std::size_t n, std::align_val_t a) { return counted_aligned(n, a); }
-void* operator new[](std::size_t n, std::align_val_t a) { return counted_aligned(n, a); }
-void operator delete(void* p) noexcept { uncounted(p); }
-void operator delete[](void* p) noexcept { uncounted(p); }
-void operator delete(void* p, std::size_t) noexcept { uncounted(p); }
-void operator delete[](void* p, std::size_t) noexcept { uncounted(p); }
-void operator delete(void* p, std::align_val_t) noexcept { uncounted(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { uncounted(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { uncounted(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { uncounted(p); }
 
 namespace bccmis::bench {
 namespace {
 
 bool g_smoke = false;
 
-std::size_t live_bytes() { return g_live_bytes.load(); }
+std::size_t live_bytes() { return testing::alloc::live_bytes.load(); }
 std::size_t heap_bytes() {
   const struct mallinfo2 m = mallinfo2();
   return m.uordblks + m.hblkhd;  // small blocks in the arenas + large blocks mmapped on their own

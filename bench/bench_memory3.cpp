@@ -5,7 +5,8 @@
 // tetrahedralization_check3.h, the only CGAL translation unit involved).
 //
 //   reference  what operator new hands out (malloc_usable_size of every live
-//              block; the global operator new of this program counts) for
+//              block; the global operator new of this program counts:
+//              tests/testing/counting_allocator.h) for
 //              the Graph3 of the state (fast::Lattice3::to_graph(): the same
 //              containers a Graph3 refined step by step holds);
 //   fast       fast::Lattice3::memory_bytes() (pools and position table,
@@ -25,11 +26,9 @@
 // Numbers and the command: bench/RESULTS.md, "3D memory".
 #include <malloc.h>
 
-#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <new>
 #include <string>
 #include <vector>
 
@@ -38,50 +37,13 @@
 #include "bccmis/fast/lattice3.h"
 #include "bccmis/invariants/cgal/tetrahedralization_check3.h"
 #include "local_feature3.h"
-
-// ---- Counting operator new ----------------------------------------------------------------
-
-namespace {
-std::atomic<std::size_t> g_live_bytes{0};
-
-void* counted(std::size_t n) {
-  void* p = std::malloc(n ? n : 1);
-  if (!p) throw std::bad_alloc();
-  g_live_bytes += malloc_usable_size(p);
-  return p;
-}
-void* counted_aligned(std::size_t n, std::align_val_t a) {
-  const auto align = static_cast<std::size_t>(a);
-  void* p = std::aligned_alloc(align, (n + align - 1) / align * align);
-  if (!p) throw std::bad_alloc();
-  g_live_bytes += malloc_usable_size(p);
-  return p;
-}
-void uncounted(void* p) noexcept {
-  if (!p) return;
-  g_live_bytes -= malloc_usable_size(p);
-  std::free(p);
-}
-}  // namespace
-
-void* operator new(std::size_t n) { return counted(n); }
-void* operator new[](std::size_t n) { return counted(n); }
-void* operator new(std::size_t n, std::align_val_t a) { return counted_aligned(n, a); }
-void* operator new[](std::size_t n, std::align_val_t a) { return counted_aligned(n, a); }
-void operator delete(void* p) noexcept { uncounted(p); }
-void operator delete[](void* p) noexcept { uncounted(p); }
-void operator delete(void* p, std::size_t) noexcept { uncounted(p); }
-void operator delete[](void* p, std::size_t) noexcept { uncounted(p); }
-void operator delete(void* p, std::align_val_t) noexcept { uncounted(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { uncounted(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { uncounted(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { uncounted(p); }
+#include "testing/counting_allocator.h"
 
 namespace {
 
 using namespace bccmis;
 
-std::size_t live_bytes() { return g_live_bytes.load(); }
+std::size_t live_bytes() { return bccmis::testing::alloc::live_bytes.load(); }
 
 // Measures one state; returns false on a failed check.
 bool measure(const std::string& name, const fast::Lattice3& g) {

@@ -7,41 +7,26 @@ find_package(rapidcheck REQUIRED CONFIG)  # Debian's package has no version file
 set(BCCMIS_RC_SEED 20090303)  # the paper's publication date
 
 # RapidCheck properties of the reference core.
-add_executable(properties_test properties_test.cpp)
-target_include_directories(properties_test PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
-target_link_libraries(properties_test PRIVATE rapidcheck_gtest GTest::gtest_main bccmis::testing
-                      bccmis::core bccmis::invariants bccmis::warnings)
-target_compile_definitions(properties_test PRIVATE BCCMIS_REGRESSIONS_DIR="${CMAKE_CURRENT_SOURCE_DIR}/regressions")
-gtest_discover_tests(properties_test DISCOVERY_MODE PRE_TEST
-  PROPERTIES LABELS property ENVIRONMENT "RC_PARAMS=seed=${BCCMIS_RC_SEED} max_success=300")
+bccmis_add_gtest(properties_test SOURCES properties_test.cpp
+  LIBS rapidcheck_gtest bccmis::testing bccmis::core bccmis::invariants
+  DEFINITIONS BCCMIS_REGRESSIONS_DIR="${CMAKE_CURRENT_SOURCE_DIR}/regressions"
+  LABELS property ENVIRONMENT "RC_PARAMS=seed=${BCCMIS_RC_SEED} max_success=300")
 
 # Model-based test: the graph against the independent quadtree-leaf model.
-add_executable(model_test model_test.cpp)
-target_include_directories(model_test PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
-target_link_libraries(model_test PRIVATE rapidcheck_gtest GTest::gtest_main bccmis::testing
-                      bccmis::core bccmis::invariants bccmis::warnings)
-gtest_discover_tests(model_test DISCOVERY_MODE PRE_TEST
-  PROPERTIES LABELS property ENVIRONMENT "RC_PARAMS=seed=${BCCMIS_RC_SEED} max_success=300")
+bccmis_add_gtest(model_test SOURCES model_test.cpp
+  LIBS rapidcheck_gtest bccmis::testing bccmis::core bccmis::invariants
+  LABELS property ENVIRONMENT "RC_PARAMS=seed=${BCCMIS_RC_SEED} max_success=300")
 
 # Exhaustive exploration: lattices of up to 512 states run with the properties;
 # 3 1 2, 2 2 2 and 1 1 3 (4250, 66641, 66642 states) under the `exhaustive`
 # label, which the test presets exclude. Run them in the release build:
 #   ctest --test-dir build/release -L exhaustive      (about 70 s CPU each for the two large ones)
-add_executable(exhaustive_test exhaustive_test.cpp)
-target_include_directories(exhaustive_test PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
-target_link_libraries(exhaustive_test PRIVATE GTest::gtest_main
-                      bccmis::explore bccmis::core bccmis::invariants bccmis::warnings)
-gtest_discover_tests(exhaustive_test DISCOVERY_MODE PRE_TEST NO_PRETTY_VALUES TEST_FILTER "-*ExhaustiveLarge.*"
-  PROPERTIES LABELS property)
-gtest_discover_tests(exhaustive_test DISCOVERY_MODE PRE_TEST NO_PRETTY_VALUES TEST_FILTER "*ExhaustiveLarge.*"
-  PROPERTIES LABELS exhaustive TIMEOUT 1800)
+bccmis_add_gtest(exhaustive_test SOURCES explore/exhaustive_test.cpp LIBS bccmis::explore bccmis::core bccmis::invariants
+  NO_PRETTY_VALUES FILTER "-*ExhaustiveLarge.*" LABELS property)
+bccmis_discover_gtests(exhaustive_test NO_PRETTY_VALUES FILTER "*ExhaustiveLarge.*" LABELS exhaustive TIMEOUT 1800)
 
 # Planted-bug mutants: every property suite must be able to fail.
-add_executable(mutants_property_test mutants/mutant_ops.cpp mutants/mutants_test.cpp)
-target_include_directories(mutants_property_test PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
-target_link_libraries(mutants_property_test PRIVATE rapidcheck_gtest GTest::gtest_main bccmis::testing
-                      bccmis::explore bccmis::core bccmis::invariants bccmis::warnings)
-target_compile_definitions(mutants_property_test PRIVATE
-                           BCCMIS_REGRESSIONS_DIR="${CMAKE_CURRENT_SOURCE_DIR}/regressions")
-gtest_discover_tests(mutants_property_test DISCOVERY_MODE PRE_TEST NO_PRETTY_VALUES TEST_FILTER "-MutantDemo.*"
-  PROPERTIES LABELS property ENVIRONMENT "RC_PARAMS=seed=${BCCMIS_RC_SEED}")
+bccmis_add_gtest(mutants_property_test SOURCES mutants/mutant_ops.cpp mutants/mutants_test.cpp
+  LIBS rapidcheck_gtest bccmis::testing bccmis::explore bccmis::core bccmis::invariants
+  DEFINITIONS BCCMIS_REGRESSIONS_DIR="${CMAKE_CURRENT_SOURCE_DIR}/regressions"
+  NO_PRETTY_VALUES FILTER "-MutantDemo.*" LABELS property ENVIRONMENT "RC_PARAMS=seed=${BCCMIS_RC_SEED}")

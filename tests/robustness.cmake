@@ -90,6 +90,5 @@ endforeach()
 # /dev/null) is written in place, never renamed over.
 
 # Strong exception guarantee: every k-th allocation fails, for every k.
-add_executable(robustness_alloc_test robustness_alloc_test.cpp)
-target_link_libraries(robustness_alloc_test PRIVATE bccmis::invariants bccmis::core GTest::gtest_main bccmis::warnings)
-gtest_discover_tests(robustness_alloc_test DISCOVERY_MODE PRE_TEST PROPERTIES LABELS robustness)
+bccmis_add_gtest(robustness_alloc_test SOURCES robustness_alloc_test.cpp LIBS bccmis::invariants bccmis::core
+                 LABELS robustness)

@@ -1,13 +1,14 @@
 // Strong exception guarantee under allocation failure, over many states.
 //
-// The global operator new of this executable counts allocations while a
-// countdown is armed and throws std::bad_alloc on the k-th one. For every
-// (state, operation) pair below, the operation is run on a copy of the state
-// with k = 0, 1, 2, ... until it completes without reaching the fault. After
-// every throw the copy must equal the state before (graph equality, which is
-// equality of canonical texts); the run that completes must give the same
-// graph as a run without injection. A failure prints the minimal reproducer:
-// the trace that builds the state, the operation and k.
+// The global operator new of this executable (testing/counting_allocator.h)
+// counts allocations while a countdown is armed and throws std::bad_alloc on
+// the k-th one. For every (state, operation) pair below, the operation is run
+// on a copy of the state with k = 0, 1, 2, ... until it completes without
+// reaching the fault. After every throw the copy must equal the state before
+// (graph equality, which is equality of canonical texts); the run that
+// completes must give the same graph as a run without injection. A failure
+// prints the minimal reproducer: the trace that builds the state, the
+// operation and k.
 //
 // The states come from seeded random walks on several lattice sizes, so they
 // have boundary and interior cells, junctions and several levels; every
@@ -16,7 +17,6 @@
 // are exercised too.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <new>
 #include <random>
 #include <string>
@@ -27,43 +27,12 @@
 #include "bccmis/graph.h"
 #include "bccmis/invariants/checked.h"
 #include "bccmis/ops.h"
-
-namespace {
-// Allocations left before the injected failure; negative: not armed.
-long g_countdown = -1;
-long g_injected = 0;
-
-void* allocate(std::size_t n) {
-  if (g_countdown == 0) {
-    g_countdown = -1;
-    ++g_injected;
-    throw std::bad_alloc();
-  }
-  if (g_countdown > 0) --g_countdown;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-}  // namespace
-
-void* operator new(std::size_t n) { return allocate(n); }
-void* operator new[](std::size_t n) { return allocate(n); }
-void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
-  try {
-    return allocate(n);
-  } catch (const std::bad_alloc&) {
-    return nullptr;
-  }
-}
-void* operator new[](std::size_t n, const std::nothrow_t& t) noexcept { return operator new(n, t); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
+#include "testing/counting_allocator.h"
 
 namespace bccmis {
 namespace {
+
+namespace alloc = testing::alloc;
 
 struct Op {
   TraceCommand::Kind kind;
@@ -103,21 +72,16 @@ bool exercise(const Graph& g, const Trace& walk, const Op& op, long& faults) {
   apply(expected, op);
   for (long k = 0;; ++k) {
     Graph h = g;
-    const long injected_before = g_injected;
+    const long injected_before = alloc::failures;
     bool threw = false;
-    g_countdown = k;
     try {
-      apply(h, op);
-    } catch (const std::bad_alloc&) {
-      threw = true;
+      threw = alloc::fails_at(k, [&] { apply(h, op); });
     } catch (const std::exception& e) {
-      g_countdown = -1;
       ADD_FAILURE() << "unexpected exception " << e.what() << "\n" << describe(walk, op, k);
       return false;
     }
-    g_countdown = -1;
     if (!threw) {
-      EXPECT_EQ(g_injected, injected_before);
+      EXPECT_EQ(alloc::failures, injected_before);
       if (!(h == expected)) {
         ADD_FAILURE() << "the completed operation differs from a run without injection\n" << describe(walk, op, k);
         return false;
@@ -180,11 +144,11 @@ void run_walks(const LatticeSize& size, unsigned seed, int steps, int snapshot_e
 }
 
 TEST(AllocationFailure, InjectionWorks) {
-  g_countdown = 2;
+  alloc::countdown = 2;
   void* a = operator new(8);
   void* b = operator new(8);
   EXPECT_THROW((void)operator new(8), std::bad_alloc);
-  EXPECT_EQ(g_countdown, -1);
+  EXPECT_EQ(alloc::countdown, -1);
   operator delete(a);
   operator delete(b);
 }

@@ -3,45 +3,28 @@
 # cardinality facts and the independent structural check in every state of
 # random operation sequences, round trips, and state counts by BFS against a
 # direct enumeration of balanced leaf sets.
-add_executable(d3_tests
-  d3/lattice_test.cpp
-  d3/refine_test.cpp
-  d3/coarsen_test.cpp
-  d3/refusals_test.cpp
-  d3/examples_test.cpp)
-target_link_libraries(d3_tests PRIVATE bccmis::d3 GTest::gtest_main bccmis::warnings)
-target_compile_definitions(d3_tests PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
-gtest_discover_tests(d3_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
+bccmis_add_gtest(d3_tests
+  SOURCES lattice_test.cpp refine_test.cpp coarsen_test.cpp refusals_test.cpp examples_test.cpp
+  LIBS bccmis::d3 DEFINITIONS BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples" LABELS unit)
 
-add_executable(d3_property_tests d3/facts_test.cpp d3/counts_test.cpp)
-target_link_libraries(d3_property_tests PRIVATE bccmis::d3 GTest::gtest_main bccmis::warnings)
-target_compile_definitions(d3_property_tests PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
-gtest_discover_tests(d3_property_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS property)
+bccmis_add_gtest(d3_property_tests SOURCES facts_test.cpp counts_test.cpp LIBS bccmis::d3
+  DEFINITIONS BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples" LABELS property)
 
 # RapidCheck properties (the seed of tests/properties.cmake; a smaller budget,
 # each case checks every state against the geometric model).
 find_package(rapidcheck REQUIRED CONFIG)
-add_executable(d3_rapidcheck_tests d3/properties_test.cpp d3/model_test.cpp)
-target_link_libraries(d3_rapidcheck_tests PRIVATE bccmis::d3 bccmis::invariants3 rapidcheck_gtest GTest::gtest_main
-                      bccmis::warnings)
-target_compile_definitions(d3_rapidcheck_tests PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
-gtest_discover_tests(d3_rapidcheck_tests DISCOVERY_MODE PRE_TEST
-  PROPERTIES LABELS property ENVIRONMENT "RC_PARAMS=seed=20090303 max_success=60")
+bccmis_add_gtest(d3_rapidcheck_tests SOURCES properties_test.cpp model_test.cpp
+  LIBS bccmis::d3 bccmis::invariants3 rapidcheck_gtest DEFINITIONS BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples"
+  LABELS property ENVIRONMENT "RC_PARAMS=seed=20090303 max_success=60")
 
 # Strong exception guarantee under injected allocation failures (replaces the
 # global operator new, so it is its own executable).
-add_executable(d3_exception_safety_test d3/exception_safety_test.cpp)
-target_include_directories(d3_exception_safety_test PRIVATE ${PROJECT_SOURCE_DIR}/tests)
-target_link_libraries(d3_exception_safety_test PRIVATE bccmis::d3 GTest::gtest_main bccmis::warnings)
-target_compile_definitions(d3_exception_safety_test PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
-gtest_discover_tests(d3_exception_safety_test DISCOVERY_MODE PRE_TEST PROPERTIES LABELS robustness)
+bccmis_add_gtest(d3_exception_safety_test SOURCES exception_safety_test.cpp LIBS bccmis::d3 DEFINITIONS BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples"
+                 LABELS robustness)
 
 # The graded BCC tetrahedral mesh (spec/mesh3d.md): hand counts, shapes and
 # angles, the mesh facts in random states, and the writers read back.
-add_executable(d3_mesh_tests d3/mesh_test.cpp)
-target_link_libraries(d3_mesh_tests PRIVATE bccmis::d3 GTest::gtest_main bccmis::warnings)
-target_compile_definitions(d3_mesh_tests PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
-gtest_discover_tests(d3_mesh_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
+bccmis_add_gtest(d3_mesh_tests SOURCES mesh_test.cpp LIBS bccmis::d3 DEFINITIONS BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples" LABELS unit)
 
 # The writers against outside readers: meshio (Debian's python3-meshio, for
 # the system interpreter /usr/bin/python3) and gmsh must load every file; a
@@ -55,21 +38,16 @@ set_tests_properties(d3.mesh_readers PROPERTIES LABELS unit)
 # The independent 3D checker (src/bccmis/invariants/d3/): every code planted,
 # random states valid, random mutations caught, the mesh layer on hand-built
 # tetrahedra.
-add_executable(d3_invariants_tests d3/invariants_test.cpp)
-target_link_libraries(d3_invariants_tests PRIVATE bccmis::invariants3 bccmis::d3 GTest::gtest_main bccmis::warnings)
-target_compile_definitions(d3_invariants_tests PRIVATE BCCMIS_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
-  BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
-gtest_discover_tests(d3_invariants_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
+bccmis_add_gtest(d3_invariants_tests SOURCES invariants_test.cpp LIBS bccmis::invariants3 bccmis::d3
+  DEFINITIONS BCCMIS_SOURCE_DIR="${PROJECT_SOURCE_DIR}" BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples"
+  LABELS unit)
 
 # Layer 6 of the 3D checker: CGAL as a second referee of the mesh
 # (src/bccmis/invariants/cgal/tetrahedralization_check3.cpp); built when CGAL
 # was found.
 if(TARGET bccmis::tetrahedralization_check)
-  add_executable(d3_cgal_tests d3/tetrahedralization_check_test.cpp)
-  target_link_libraries(d3_cgal_tests PRIVATE bccmis::tetrahedralization_check bccmis::d3 GTest::gtest_main
-    bccmis::warnings)
-  target_compile_definitions(d3_cgal_tests PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
-  gtest_discover_tests(d3_cgal_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
+  bccmis_add_gtest(d3_cgal_tests SOURCES tetrahedralization_check_test.cpp
+    LIBS bccmis::tetrahedralization_check bccmis::d3 DEFINITIONS BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples" LABELS unit)
 endif()
 
 # Exhaustive exploration (src/bccmis/explore, 3D): every reachable state of
@@ -80,14 +58,12 @@ endif()
 # (cmake --workflow --preset exhaustive); the exploration of 2 1 1 2 and
 # 1 1 2 2 (ExploreLong3, tens of CPU minutes each) is not registered: run
 # build/release/tests/d3_explore_tests --gtest_filter='*ExploreLong3*' by hand.
-add_executable(d3_explore_tests d3/explore_test.cpp)
-target_link_libraries(d3_explore_tests PRIVATE bccmis::explore bccmis::d3 GTest::gtest_main bccmis::warnings)
-gtest_discover_tests(d3_explore_tests DISCOVERY_MODE PRE_TEST NO_PRETTY_VALUES
-  TEST_FILTER "-*Exhaustive3.*:*ExploreLong3.*" TEST_LIST d3_explore_tests_SMALL PROPERTIES LABELS property)
-gtest_discover_tests(d3_explore_tests DISCOVERY_MODE PRE_TEST NO_PRETTY_VALUES TEST_FILTER "*Exhaustive3.*"
-  TEST_LIST d3_explore_tests_EXHAUSTIVE PROPERTIES LABELS exhaustive TIMEOUT 600)
+bccmis_add_gtest(d3_explore_tests SOURCES explore_test.cpp LIBS bccmis::explore bccmis::d3
+  NO_PRETTY_VALUES FILTER "-*Exhaustive3.*:*ExploreLong3.*" TEST_LIST d3_explore_tests_SMALL LABELS property)
+bccmis_discover_gtests(d3_explore_tests NO_PRETTY_VALUES FILTER "*Exhaustive3.*" TEST_LIST d3_explore_tests_EXHAUSTIVE
+                       LABELS exhaustive TIMEOUT 600)
 
-# bccmis explore with four numbers: the 3D lattice (tests/cli.cmake's helper).
+# bccmis explore with four numbers: the 3D lattice (tests/cli/cli.cmake's helper).
 bccmis_cli_test(explore3_1111 0 ARGS explore 1 1 1 1 --no-progress
                 STDOUT_REGEX "^explore 1 1 1 1: 2 states, 1 refine edges, 1 coarsen edges, .* ok")
 bccmis_cli_test(explore3_2211_json 0 ARGS explore 2 2 1 1 --json
@@ -101,17 +77,10 @@ bccmis_cli_test(explore3_too_many_numbers 2 ARGS explore 1 1 1 1 1 STDERR_REGEX 
 
 # The 3D picture of bccmis render (src/bccmis/oracle render_svg3): the leaves
 # a slice cuts, by hand and as a tiling of every plane; hand counts.
-add_executable(d3_render_tests d3/render_test.cpp)
-target_link_libraries(d3_render_tests PRIVATE bccmis::oracle bccmis::d3 GTest::gtest_main bccmis::warnings)
-target_compile_definitions(d3_render_tests PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
-gtest_discover_tests(d3_render_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
+bccmis_add_gtest(d3_render_tests SOURCES render_test.cpp LIBS bccmis::oracle bccmis::d3 DEFINITIONS BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples" LABELS unit)
 
 # The 3D cascade (spec/lattice3d.md §8, apps/balance3.h): hand cases, and
 # random target sets in random orders against the geometric closure of
 # tests/d3/cascade_model.h, in edge and corner mode, every state checked.
-add_executable(d3_balance_tests d3/balance_test.cpp)
-target_include_directories(d3_balance_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests)
-target_link_libraries(d3_balance_tests PRIVATE bccmis::apps bccmis::invariants3 bccmis::d3 GTest::gtest_main
-  bccmis::warnings)
-target_compile_definitions(d3_balance_tests PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
-gtest_discover_tests(d3_balance_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS property)
+bccmis_add_gtest(d3_balance_tests SOURCES balance_test.cpp LIBS bccmis::apps bccmis::invariants3 bccmis::d3
+  DEFINITIONS BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples" LABELS property)

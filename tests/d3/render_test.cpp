@@ -67,7 +67,7 @@ TEST(Render3, SliceOutsideTheBoxIsRefused) {
   EXPECT_NO_THROW(render_svg3(g, "t", {0, 16}));
 }
 
-// The counts of tests/cli.cmake (cli.d3_render_face_default), and the title escaped.
+// The counts of tests/cli/cli.cmake (cli.d3_render_face_default), and the title escaped.
 TEST(Render3, FaceRefinedCounts) {
   const Graph3 g = face_refined();
   EXPECT_EQ(middle_slice(g.size).axis, 2);

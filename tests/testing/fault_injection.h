@@ -1,40 +1,20 @@
-// Fault injection for the strong exception guarantee: a replaced global
-// operator new that fails the k-th allocation, and exercise(), which runs an
+// Fault injection for the strong exception guarantee: exercise() runs an
 // operation on copies of a lattice failing allocation k = 0, 1, 2, ... until
 // the operation completes, and checks after every failure that the copy is
-// exactly the original (canonical text and ==).
+// exactly the original (canonical text and ==). The failures come from the
+// counting allocator (testing/counting_allocator.h).
 //
-// The header defines the replaced operator new and delete: include it from
-// exactly one translation unit of a test executable of its own.
+// The header defines the replaced operator new and delete (it includes
+// testing/counting_allocator.h): include it from exactly one translation unit
+// of a test executable of its own.
 #pragma once
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <new>
 #include <string>
 
 #include "bccmis/lattice.h"
-
-namespace bccmis::testing::fault {
-// Allocations left before the injected failure; negative: no injection.
-inline long countdown = -1;
-inline long failures = 0;
-}  // namespace bccmis::testing::fault
-
-void* operator new(std::size_t n) {
-  using namespace bccmis::testing;
-  if (fault::countdown == 0) {
-    fault::countdown = -1;
-    ++fault::failures;
-    throw std::bad_alloc();
-  }
-  if (fault::countdown > 0) --fault::countdown;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "testing/counting_allocator.h"
 
 namespace bccmis::testing {
 
@@ -46,17 +26,9 @@ long exercise(const L& g, Op op, long limit = 1000000) {
   const std::string before = canonical_text(g);
   for (long k = 0;; ++k) {
     L h = g;
-    const long failures_before = fault::failures;
-    bool threw = false;
-    fault::countdown = k;
-    try {
-      op(h);
-    } catch (const std::bad_alloc&) {
-      threw = true;
-    }
-    fault::countdown = -1;
-    if (!threw) {
-      EXPECT_EQ(fault::failures, failures_before);
+    const long failures_before = alloc::failures;
+    if (!alloc::fails_at(k, [&] { op(h); })) {
+      EXPECT_EQ(alloc::failures, failures_before);
       return k;
     }
     EXPECT_EQ(canonical_text(h), before) << "allocation " << k << " failed and the lattice changed";

@@ -1,6 +1,6 @@
 // Shared RapidCheck generators and property bodies for the property suites
 // (tests/properties_test.cpp, tests/model_test.cpp, tests/mutants/,
-// tests/fast_differential_test.cpp).
+// tests/fast/differential_test.cpp).
 //
 // A Scenario is a lattice size plus a list of Steps. A Step is generated
 // without looking at any state and resolved against the current graph only

@@ -6,7 +6,7 @@
 // and the fast lattice must pass its own audit (mirrored links, position
 // table, free lists). compare_queries() asks every query at every vertex.
 //
-// Used by tests/fast_differential_test.cpp (RapidCheck) and
+// Used by tests/fast/differential_test.cpp (RapidCheck) and
 // fuzz/fuzz_differential.cpp (libFuzzer). A difference is reported through
 // the Fail callback with the trace of the commands run so far, ready to be
 // replayed by `bccmis replay`; the callback must not return (it fails the

@@ -6,7 +6,7 @@
 // and the fast lattice must pass its own audit. compare_queries() asks every
 // query at every vertex and around it.
 //
-// Used by tests/fast3_differential_test.cpp and fuzz/fuzz_differential_3d.cpp.
+// Used by tests/fast/differential3_test.cpp and fuzz/fuzz_differential_3d.cpp.
 // A difference is reported through the Fail callback with the trace of the
 // commands run so far (readable by `bccmis replay`); the callback must not
 // return, and the twin throws std::logic_error if it does.

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The viewer in a real browser (ctest label `browser`, tests/viewer.cmake).
+"""The viewer in a real browser (ctest label `browser`, tests/viewer/viewer.cmake).
 
 usage: browser_test.py BCCMIS SOURCE_DIR WORKDIR [--chromium PATH]
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Non-browser checks of a `bccmis view` page (tests/viewer.cmake).
+"""Non-browser checks of a `bccmis view` page (tests/viewer/viewer.cmake).
 
 usage: check_model.py BCCMIS TRACE WORKDIR [--budget BYTES] [--check MODE]
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes a deterministic random trace for the viewer tests (tests/viewer.cmake).
+"""Writes a deterministic random trace for the viewer tests (tests/viewer/viewer.cmake).
 
 It keeps its own quadtree-leaf model (leaf cell center -> level) with the
 preconditions of spec/formats.md, so most operations are legal: refine a

@@ -1,7 +1,7 @@
 // Height-field tessellation (src/bccmis/apps/heightfield.h, mesh.h, apps.h) on
 // synthetic fields with known answers, the mesh's watertightness and area,
 // the output formats parsed back. The CLI (`bccmis heightfield`) is tested in
-// tests/apps.cmake.
+// tests/apps/apps.cmake.
 #include <gtest/gtest.h>
 
 #include <cmath>

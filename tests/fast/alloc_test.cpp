@@ -1,76 +1,22 @@
 // Allocation behaviour of bccmis::fast::Lattice (issue 9): no heap allocation
 // per operation in steady state, and the strong exception guarantee when an
-// allocation fails. Replaces the global operator new, so it is its own
-// executable.
+// allocation fails. Replaces the global operator new
+// (testing/counting_allocator.h), so it is its own executable.
 #include <gtest/gtest.h>
 
 #include <cstddef>
-#include <cstdlib>
 #include <new>
 #include <string>
 #include <vector>
 
 #include "bccmis/fast/lattice.h"
-
-namespace {
-
-long g_allocations = 0;
-bool g_counting = false;
-long g_fail_after = -1;  // >= 0: that many allocations succeed, the next throws
-
-void* counted_alloc(std::size_t n) {
-  if (g_counting) ++g_allocations;
-  if (g_fail_after == 0) {
-    g_fail_after = -1;
-    throw std::bad_alloc();
-  }
-  if (g_fail_after > 0) --g_fail_after;
-  void* p = std::malloc(n ? n : 1);
-  if (!p) throw std::bad_alloc();
-  return p;
-}
-
-void* counted_aligned_alloc(std::size_t n, std::align_val_t a) {
-  const auto align = static_cast<std::size_t>(a);
-  void* p = nullptr;
-  if (g_counting) ++g_allocations;
-  if (g_fail_after == 0) {
-    g_fail_after = -1;
-    throw std::bad_alloc();
-  }
-  if (g_fail_after > 0) --g_fail_after;
-  if (posix_memalign(&p, align < sizeof(void*) ? sizeof(void*) : align, n ? n : 1) != 0) throw std::bad_alloc();
-  return p;
-}
-
-}  // namespace
-
-// The lattice's arrays use the aligned forms (64-byte aligned pools and table).
-void* operator new(std::size_t n) { return counted_alloc(n); }
-void* operator new[](std::size_t n) { return counted_alloc(n); }
-void* operator new(std::size_t n, std::align_val_t a) { return counted_aligned_alloc(n, a); }
-void* operator new[](std::size_t n, std::align_val_t a) { return counted_aligned_alloc(n, a); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+#include "testing/counting_allocator.h"
 
 namespace bccmis::fast {
 namespace {
 
-/// Counts the allocations made while f runs.
-template <class F>
-long allocations_during(F&& f) {
-  g_allocations = 0;
-  g_counting = true;
-  f();
-  g_counting = false;
-  return g_allocations;
-}
+namespace alloc = bccmis::testing::alloc;
+using alloc::allocations_during;
 
 /// Every level-0 cell, then every level-1 cell, of a W x H lattice.
 std::vector<Point> cells_of_level(const LatticeSize& size, int level) {
@@ -126,18 +72,18 @@ TEST(FastAllocation, AFailingAllocationLeavesTheLatticeUnchanged) {
     for (const Point& c : cells_of_level(size, level)) {
       if (lat.can_refine(c)) continue;  // refused: nothing to try
       const std::string before = canonical_state(lat);
-      g_fail_after = 0;
+      alloc::countdown = 0;
       bool applied = false;
       try {
         applied = lat.refine(c).applied();  // succeeds when no allocation is needed
       } catch (const std::bad_alloc&) {
         ++failures;
-        g_fail_after = -1;
+        alloc::countdown = -1;
         ASSERT_EQ(canonical_state(lat), before) << "refine (" << c.x << ", " << c.y << ") threw half-way";
         const auto problem = lat.audit();
         ASSERT_FALSE(problem) << *problem;
       }
-      g_fail_after = -1;
+      alloc::countdown = -1;
       if (!applied) {
         ASSERT_TRUE(lat.refine(c).applied());
       }

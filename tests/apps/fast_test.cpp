@@ -1,8 +1,8 @@
 // The applications on the fast implementation (src/bccmis/apps/detail/generic.h):
 // refine_balanced and tessellate on bccmis::fast::Lattice make the reference's
 // decisions. The reference instantiation is checked on its own by
-// apps_balance_test.cpp (against a geometric closure) and
-// apps_heightfield_test.cpp (fields with known answers); here the fast one is
+// balance_test.cpp (against a geometric closure) and
+// heightfield_test.cpp (fields with known answers); here the fast one is
 // compared with it call by call: the same cells refined in the same order,
 // the same sweeps, the same final state.
 #include <gtest/gtest.h>

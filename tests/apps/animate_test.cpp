@@ -1,7 +1,7 @@
 // Moving-feature adaptivity (src/bccmis/apps/animate.h, apps.h): the checker
 // after every frame, history independence, the lattice far from the feature
 // back at level 0, the lift back to the initial lattice, both implementations.
-// The CLI's outputs (`bccmis animate`) are tested in tests/apps.cmake.
+// The CLI's outputs (`bccmis animate`) are tested in tests/apps/apps.cmake.
 #include <gtest/gtest.h>
 
 #include <cmath>

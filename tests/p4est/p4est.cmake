@@ -9,12 +9,9 @@ endif()
 # One variable only: gtest_discover_tests flattens list-valued properties.
 set(_bccmis_p4est_env "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1")
 foreach(name bridge_test differential_test bridge3_test differential3_test)
-  add_executable(p4est_${name} ${CMAKE_CURRENT_LIST_DIR}/p4est/${name}.cpp)
-  target_include_directories(p4est_${name} PRIVATE ${CMAKE_CURRENT_LIST_DIR})
-  target_link_libraries(p4est_${name} PRIVATE bccmis::p4est bccmis::apps bccmis::invariants bccmis::invariants3
-                        bccmis::core GTest::gtest bccmis::warnings)
-  gtest_discover_tests(p4est_${name} DISCOVERY_MODE PRE_TEST TEST_PREFIX p4est.
-    PROPERTIES LABELS p4est ENVIRONMENT "${_bccmis_p4est_env}")
+  bccmis_add_gtest(p4est_${name} SOURCES ${name}.cpp OWN_MAIN
+    LIBS bccmis::p4est bccmis::apps bccmis::invariants bccmis::invariants3 bccmis::core
+    PREFIX p4est. LABELS p4est ENVIRONMENT "${_bccmis_p4est_env}")
 endforeach()
 
 # The distributed run on two ranks, when mpirun exists; on one rank (a

@@ -1,48 +1,23 @@
 // Allocation behaviour of bccmis::fast::Lattice3: no heap allocation per
 // refine or coarsen in steady state (free records for what an operation
 // creates), and the strong exception guarantee when the growth an operation
-// needs fails. Replaces the global operator new, so it is its own executable.
+// needs fails. Replaces the global operator new (testing/counting_allocator.h),
+// so it is its own executable.
 #include <gtest/gtest.h>
 
 #include <cstddef>
-#include <cstdlib>
 #include <new>
 #include <string>
 #include <vector>
 
 #include "bccmis/d3/ops.h"
 #include "bccmis/fast/lattice3.h"
-
-namespace {
-
-long g_allocations = 0;
-bool g_counting = false;
-long g_fail_after = -1;  // >= 0: that many allocations succeed, the next throws
-
-void* counted_alloc(std::size_t n) {
-  if (g_counting) ++g_allocations;
-  if (g_fail_after == 0) {
-    g_fail_after = -1;
-    throw std::bad_alloc();
-  }
-  if (g_fail_after > 0) --g_fail_after;
-  void* p = std::malloc(n ? n : 1);
-  if (!p) throw std::bad_alloc();
-  return p;
-}
-
-}  // namespace
-
-void* operator new(std::size_t n) { return counted_alloc(n); }
-void* operator new[](std::size_t n) { return counted_alloc(n); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+#include "testing/counting_allocator.h"
 
 namespace {
 
 using namespace bccmis;
+namespace alloc = bccmis::testing::alloc;
 using d3::Point3;
 
 // Refines every cell to level `to`, then coarsens back to level 0, finest
@@ -73,21 +48,17 @@ TEST(Fast3Alloc, NoAllocationPerOperationInSteadyState) {
   long inside = 0;
   for (int level = 0; level < 3; ++level) {
     std::vector<Point3> todo = g.cells();
-    g_allocations = 0;
-    g_counting = true;
-    for (const Point3& c : todo) EXPECT_TRUE(g.refine(c).applied());
-    g_counting = false;
-    inside += g_allocations;
+    inside += alloc::allocations_during([&] {
+      for (const Point3& c : todo) EXPECT_TRUE(g.refine(c).applied());
+    });
   }
   for (int level = 2; level >= 0; --level) {
     std::vector<Point3> todo;
     for (const Point3& n : g.nodes())
       if (d3::refined_center_level(g.size(), n) == level) todo.push_back(n);
-    g_allocations = 0;
-    g_counting = true;
-    for (const Point3& n : todo) EXPECT_TRUE(g.coarsen(n).applied());
-    g_counting = false;
-    inside += g_allocations;
+    inside += alloc::allocations_during([&] {
+      for (const Point3& n : todo) EXPECT_TRUE(g.coarsen(n).applied());
+    });
   }
   EXPECT_EQ(inside, 0);
   EXPECT_EQ(fast::canonical_state(g), initial);
@@ -100,14 +71,14 @@ TEST(Fast3Alloc, AFailedGrowthLeavesTheLatticeUnchanged) {
   for (long k = 0; k < 64; ++k) {
     fast::Lattice3 g({1, 1, 1, 2});
     const std::string before = fast::canonical_state(g);
-    g_fail_after = k;
+    alloc::countdown = k;
     try {
       const auto r = g.refine({4, 4, 4});
-      g_fail_after = -1;
+      alloc::countdown = -1;
       EXPECT_TRUE(r.applied());
       break;
     } catch (const std::bad_alloc&) {
-      g_fail_after = -1;
+      alloc::countdown = -1;
       ++failures;
       EXPECT_EQ(fast::canonical_state(g), before) << "allocation " << k;
       EXPECT_FALSE(g.audit()) << "allocation " << k;

@@ -1,26 +1,13 @@
-# Included by tests/CMakeLists.txt: the apps' tests (issue 8).
-add_executable(apps_tests
-  ${CMAKE_CURRENT_LIST_DIR}/apps_balance_test.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/apps_image_test.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/apps_heightfield_test.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/apps_animate_test.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/apps_fast_test.cpp)
-target_link_libraries(apps_tests PRIVATE bccmis::apps bccmis::fast bccmis::core bccmis::invariants bccmis::oracle
-                      GTest::gtest_main bccmis::warnings)
-target_compile_definitions(apps_tests PRIVATE BCCMIS_APPS_SAMPLES="${PROJECT_SOURCE_DIR}/apps/samples")
+# Included by tests/CMakeLists.txt: the apps' tests (issue 8, src/bccmis/apps).
 # The 66k-state corner-balance counts run under `exhaustive` (release build,
-# excluded from the default test presets), like tests/exhaustive_test.cpp.
-gtest_discover_tests(apps_tests DISCOVERY_MODE PRE_TEST TEST_FILTER "-*Exhaustive.*"
-  TEST_LIST apps_tests_UNIT PROPERTIES LABELS unit)
-gtest_discover_tests(apps_tests DISCOVERY_MODE PRE_TEST TEST_FILTER "*Exhaustive.*"
-  TEST_LIST apps_tests_EXHAUSTIVE PROPERTIES LABELS exhaustive TIMEOUT 1800)
-# gtest_discover_tests flattens a list-valued LABELS ("unit;apps" becomes the
-# label "unit" and a stray property "apps"), so the `apps` label is added by a
-# test include file that runs after the discovered tests are defined.
-file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/apps_tests_labels.cmake
-     "if(apps_tests_UNIT)\n  set_tests_properties(\${apps_tests_UNIT} PROPERTIES LABELS \"unit;apps\")\nendif()\n"
-     "if(apps_tests_EXHAUSTIVE)\n  set_tests_properties(\${apps_tests_EXHAUSTIVE} PROPERTIES LABELS \"exhaustive;apps\")\nendif()\n")
-set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${CMAKE_CURRENT_BINARY_DIR}/apps_tests_labels.cmake)
+# excluded from the default test presets), like tests/explore/exhaustive_test.cpp.
+bccmis_add_gtest(apps_tests
+  SOURCES balance_test.cpp image_test.cpp heightfield_test.cpp animate_test.cpp fast_test.cpp
+  LIBS bccmis::apps bccmis::fast bccmis::core bccmis::invariants bccmis::oracle
+  DEFINITIONS BCCMIS_APPS_SAMPLES="${PROJECT_SOURCE_DIR}/apps/samples"
+  FILTER "-*Exhaustive.*" TEST_LIST apps_tests_UNIT LABELS unit apps)
+bccmis_discover_gtests(apps_tests FILTER "*Exhaustive.*" TEST_LIST apps_tests_EXHAUSTIVE LABELS exhaustive apps
+                       TIMEOUT 1800)
 
 # The committed sample is what its generator script writes.
 find_package(Python3 COMPONENTS Interpreter QUIET)
@@ -37,9 +24,7 @@ endif()
 
 # The height field's streamed writers and fast-lattice mesh paths against the
 # texts and values they replace.
-add_executable(apps_output_test ${CMAKE_CURRENT_LIST_DIR}/apps_output_test.cpp)
-target_link_libraries(apps_output_test PRIVATE bccmis::apps bccmis::fast bccmis::core GTest::gtest_main bccmis::warnings)
-gtest_discover_tests(apps_output_test DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
+bccmis_add_gtest(apps_output_test SOURCES output_test.cpp LIBS bccmis::apps bccmis::fast bccmis::core LABELS unit)
 
 # The CLI of the apps (tools/bccmis/heightfield.cpp, animate.cpp): outputs,
 # both implementations, bad input (tests/cli/run_cli.cmake).

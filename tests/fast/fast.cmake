@@ -1,0 +1,54 @@
+# Included by tests/CMakeLists.txt: the fast lattices (src/bccmis/fast) against
+# the references.
+#
+# The fast 2D implementation against the reference (issue 9), ctest labels
+# `unit` and `property`. Seeds and budgets are fixed here; a failing property
+# prints its reproducer trace (save it in tests/regressions/).
+find_package(rapidcheck REQUIRED CONFIG)  # Debian's package has no version file
+
+set(BCCMIS_FAST_RC_SEED 20090303)
+
+# Unit tests: initial lattices, every project trace replayed through both
+# (states compared after every command), queries, conversions, interface.
+bccmis_add_gtest(fast_lattice_test SOURCES lattice_test.cpp LIBS bccmis::fast bccmis::invariants
+                 DEFINITIONS BCCMIS_SOURCE_DIR="${PROJECT_SOURCE_DIR}" LABELS unit)
+
+# The streamed canonical states and decision lines against the texts built
+# line by line (both lattices, random states).
+bccmis_add_gtest(output_paths_test SOURCES output_paths_test.cpp LIBS bccmis::fast LABELS unit)
+
+# No allocation per operation in steady state; strong guarantee (replaces
+# the global operator new: testing/counting_allocator.h, so its own executable).
+bccmis_add_gtest(fast_alloc_test SOURCES alloc_test.cpp LIBS bccmis::fast LABELS unit)
+
+# RapidCheck: the same random sequences through both, compared after every
+# operation; and the reference's property bodies run on the fast lattice.
+bccmis_add_gtest(fast_differential_test SOURCES differential_test.cpp
+  LIBS rapidcheck_gtest bccmis::testing bccmis::fast bccmis::invariants
+  LABELS property ENVIRONMENT "RC_PARAMS=seed=${BCCMIS_FAST_RC_SEED} max_success=100")
+
+# The conformance harness (src/bccmis/oracle, `bccmis conformance`) against the fast
+# implementation: the bundled traces, then random traces with shrinking (2D:
+# the fast lattice is 2D).
+add_test(NAME fast.conformance
+         COMMAND bccmis conformance --impl $<TARGET_FILE:bccmis_fast_replay>
+                 --traces ${PROJECT_SOURCE_DIR}/spec/examples --random 300 --seed 20090303 --max-ops 40 --dim 2)
+set_tests_properties(fast.conformance PROPERTIES LABELS conformance TIMEOUT 300)
+
+# The fast 3D lattice (bccmis::fast::Lattice3) against the 3D reference
+# (issue "3D at scale"): random sequences in lock-step with fixed seeds
+# (label property), the spec/examples/d3 traces byte for byte (label unit),
+# and no allocation per operation in steady state (label unit).
+bccmis_add_gtest(fast3_differential_test SOURCES differential3_test.cpp LIBS bccmis::fast bccmis::d3
+  DEFINITIONS BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples"
+  FILTER "Fast3Differential.Random*" LABELS property)
+bccmis_discover_gtests(fast3_differential_test FILTER "-Fast3Differential.Random*" LABELS unit)
+
+# No allocation per operation in steady state; strong guarantee when growth
+# fails (replaces the global operator new: testing/counting_allocator.h, so its
+# own executable).
+bccmis_add_gtest(fast3_alloc_test SOURCES alloc3_test.cpp LIBS bccmis::fast bccmis::d3 LABELS unit)
+
+# Bulk construction: from_graph of reference states, refine_each /
+# coarsen_each against single reference calls.
+bccmis_add_gtest(fast3_bulk_test SOURCES bulk3_test.cpp LIBS bccmis::fast bccmis::d3 LABELS unit)
