@@ -3,7 +3,7 @@
 // prints: the decision log, then the canonical state. The conformance
 // protocol of spec/conformance.md, so that
 //   bccmis conformance --impl bccmis-fast-replay --traces spec/examples --random 300
-// checks the fast implementation against the reference (tests/fast.cmake).
+// checks the fast implementation against the reference (tests/fast/fast.cmake).
 //
 // Exit codes: 0 ok; 2 unreadable file or malformed trace (one line on stderr).
 #include <cerrno>

@@ -8,7 +8,7 @@ terrain: five octaves of value noise (a hashed integer lattice, smoothstep
          interpolation) plus a diagonal ridge: hills, valleys and one sharp crest.
 crater:  a rim around a flat floor, a central peak, on a gentle slope.
 The values are normalized to [0, maxval]. No randomness beyond a fixed hash,
-so the files are reproducible: `--check FILE` compares (tests/apps.cmake runs it
+so the files are reproducible: `--check FILE` compares (tests/apps/apps.cmake runs it
 for terrain128.pgm, which uses only + - * / and floor; crater uses exp and
 hypot, whose last bit may differ between C libraries).
 """

@@ -32,9 +32,8 @@ if(TARGET bccmis::stuff_surface)
     endforeach()
   endif()
 
-  add_executable(stuff_surface_tests stuff/surface_test.cpp)
-  target_link_libraries(stuff_surface_tests PRIVATE bccmis::stuff_surface GTest::gtest_main bccmis::warnings)
-  target_compile_definitions(stuff_surface_tests PRIVATE BCCMIS_STUFF_TEST_DIR="${CMAKE_CURRENT_SOURCE_DIR}/stuff"
-    BCCMIS_CGAL_MESHES_DIR="${bccmis_cgal_data}/data/meshes")
-  gtest_discover_tests(stuff_surface_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
+  bccmis_add_gtest(stuff_surface_tests SOURCES surface_test.cpp LIBS bccmis::stuff_surface
+                   DEFINITIONS BCCMIS_STUFF_TEST_DIR="${CMAKE_CURRENT_LIST_DIR}"
+                               BCCMIS_CGAL_MESHES_DIR="${bccmis_cgal_data}/data/meshes"
+                   LABELS unit)
 endif()

@@ -3,9 +3,8 @@
 # boundary on the surface, enclosed volume equal to the tetrahedra's, every
 # interior triangle in two tetrahedra, positive orientation, angle bounds.
 # The checker's stuffed-mesh layer on hand-built meshes shares the executable.
-add_executable(stuffing_tests stuff/stuffing_test.cpp stuff/stuffed_mesh_check_test.cpp)
-target_link_libraries(stuffing_tests PRIVATE bccmis::stuff bccmis::d3 bccmis::invariants3 GTest::gtest_main bccmis::warnings)
-gtest_discover_tests(stuffing_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
+bccmis_add_gtest(stuffing_tests SOURCES stuffing_test.cpp stuffed_mesh_check_test.cpp
+                 LIBS bccmis::stuff bccmis::d3 bccmis::invariants3 LABELS unit)
 
 # The CLI's files read by meshio and gmsh, with the boundary's topology and
 # enclosed volume checked independently (tests/stuff/stuff_cli_readers.py).
@@ -61,13 +60,10 @@ endif()
 
 # Reading back the Medit files and drawing them (bccmis render MESH.mesh):
 # a two-tetrahedron mesh drawn by hand (tests/stuff/two_tets.mesh).
-add_executable(stuff_render_tests stuff/render_test.cpp)
-target_link_libraries(stuff_render_tests PRIVATE bccmis::stuff bccmis::d3 bccmis::core GTest::gtest_main bccmis::warnings)
-target_compile_definitions(stuff_render_tests PRIVATE BCCMIS_TEST_DIR="${CMAKE_CURRENT_SOURCE_DIR}/stuff")
-gtest_discover_tests(stuff_render_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
+bccmis_add_gtest(stuff_render_tests SOURCES render_test.cpp LIBS bccmis::stuff bccmis::d3 bccmis::core
+                 DEFINITIONS BCCMIS_TEST_DIR="${CMAKE_CURRENT_LIST_DIR}" LABELS unit)
 
 # The fast path against the reference: the same lattice, graded mesh and
 # stuffed mesh, exactly.
-add_executable(stuffing_fast_tests stuff/stuffing_fast_test.cpp)
-target_link_libraries(stuffing_fast_tests PRIVATE bccmis::stuff bccmis::d3 bccmis::fast GTest::gtest_main bccmis::warnings)
-gtest_discover_tests(stuffing_fast_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
+bccmis_add_gtest(stuffing_fast_tests SOURCES stuffing_fast_test.cpp LIBS bccmis::stuff bccmis::d3 bccmis::fast
+                 LABELS unit)
