@@ -21,6 +21,7 @@
 #include "bccmis/apps/image.h"
 #include "bccmis/apps/mesh.h"
 #include "bccmis/fast/lattice.h"
+#include "bccmis/io/obj.h"
 
 namespace {
 
@@ -65,7 +66,7 @@ int main(int argc, char** argv) {
   phase("triangulate");
   {
     std::ofstream out(argv[4], std::ios::binary | std::ios::trunc);
-    write_obj(out, mesh, "bccmis heightfield");
+    io::write_obj(out, mesh, "bccmis heightfield");
     if (!out.flush()) return 2;
   }
   phase("write obj");
@@ -78,7 +79,7 @@ int main(int argc, char** argv) {
     const TriangleMesh m = triangulate(reference, [&](const Point& p) { return sampler.at(p); });
     const bool same = e.max_abs == error.max_abs && e.rms == error.rms && e.pixels == error.pixels &&
                       e.worst_cell == error.worst_cell &&
-                      format_obj(m, "bccmis heightfield") == format_obj(mesh, "bccmis heightfield");
+                      io::format_obj(m, "bccmis heightfield") == io::format_obj(mesh, "bccmis heightfield");
     std::fprintf(stderr, "check        %s\n", same ? "the reference Graph gives the same error and OBJ" : "DIFFERENT");
     if (!same) return 1;
   }

@@ -4,8 +4,8 @@
 
 #include "bccmis/detail/parse.h"
 #include "bccmis/detail/state_writer.h"
+#include "bccmis/lattice.h"
 #include "bccmis/text_writer.h"
-#include "bccmis/trace.h"
 
 #include <algorithm>
 #include <array>
@@ -18,13 +18,6 @@
 #include <utility>
 
 namespace bccmis {
-
-ParseError::ParseError(std::string file_, int line_, int column_, std::string message_)
-    : std::runtime_error(file_ + ":" + std::to_string(line_) + ":" + std::to_string(column_) + ": " + message_),
-      file(std::move(file_)),
-      line(line_),
-      column(column_),
-      message(std::move(message_)) {}
 
 using detail::LineParser;
 using detail::shown;

@@ -5,7 +5,6 @@
 
 #include <cstdint>
 #include <functional>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -13,18 +12,10 @@
 
 #include "bccmis/d3/point.h"
 #include "bccmis/graph.h"
+#include "bccmis/io/parse_error.h"
 #include "bccmis/ops.h"
 
 namespace bccmis {
-
-/// A malformed trace or state. what() is `file:line:column: message`.
-struct ParseError : std::runtime_error {
-  ParseError(std::string file, int line, int column, std::string message);
-  std::string file;
-  int line;
-  int column;
-  std::string message;
-};
 
 // ---- Canonical state (spec/formats.md, "Canonical state") ------------------
 

@@ -20,6 +20,9 @@
 #include "bccmis/apps/mesh.h"
 #include "bccmis/format.h"
 #include "bccmis/invariants/invariants.h"
+#include "bccmis/io/obj.h"
+#include "bccmis/io/ply.h"
+#include "bccmis/io/vtu.h"
 
 namespace bccmis {
 namespace {
@@ -304,7 +307,7 @@ TEST(Mesh, ObjPlyVtuParseBack) {
   TriangleMesh m = triangulate(r.g, [&](const Point& p) { return s.at(p); });
   for (const Point& c : m.triangle_cell) m.triangle_error.push_back(cell_error(r.g, c, s, {}));
 
-  for (const Parsed& p : {parse_obj(format_obj(m, "test\nwith a newline")), parse_ply(format_ply(m, "test"))}) {
+  for (const Parsed& p : {parse_obj(io::format_obj(m, "test\nwith a newline")), parse_ply(io::format_ply(m, "test"))}) {
     ASSERT_EQ(p.v.size(), m.vertices.size());
     ASSERT_EQ(p.f.size(), m.triangles.size());
     for (std::size_t i = 0; i < p.v.size(); ++i) EXPECT_EQ(p.v[i], m.vertices[i]) << "exact round trip";
@@ -314,7 +317,7 @@ TEST(Mesh, ObjPlyVtuParseBack) {
     }
   }
 
-  const std::string vtu = format_vtu(m);
+  const std::string vtu = io::format_vtu(m);
   EXPECT_EQ(vtu.rfind("<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\"", 0), 0u);
   EXPECT_NE(vtu.find("NumberOfPoints=\"" + std::to_string(m.vertices.size()) + "\" NumberOfCells=\"" +
                      std::to_string(m.triangles.size()) + "\""),

@@ -18,6 +18,9 @@
 #include "bccmis/apps/image.h"
 #include "bccmis/apps/mesh.h"
 #include "bccmis/fast/lattice.h"
+#include "bccmis/io/obj.h"
+#include "bccmis/io/ply.h"
+#include "bccmis/io/vtu.h"
 #include "bccmis/ops.h"
 
 namespace bccmis {
@@ -135,12 +138,12 @@ TEST(AppsOutput, RandomStatesBothLatticesEveryFormat) {
       EXPECT_EQ(a.worst_cell, b.worst_cell);
       EXPECT_EQ(a.pixels, f.width * f.height);
 
-      EXPECT_EQ(format_obj(mesh, "a\ncomment"), spec_obj(mesh, "a comment"));
-      EXPECT_EQ(format_ply(mesh, "c"), spec_ply(mesh, "c"));
-      EXPECT_EQ(format_vtu(mesh), spec_vtu(mesh));
+      EXPECT_EQ(io::format_obj(mesh, "a\ncomment"), spec_obj(mesh, "a comment"));
+      EXPECT_EQ(io::format_ply(mesh, "c"), spec_ply(mesh, "c"));
+      EXPECT_EQ(io::format_vtu(mesh), spec_vtu(mesh));
       for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
         mesh.triangle_error.push_back(std::ldexp(static_cast<double>(i % 97), -static_cast<int>(i % 40)) / 3.0);
-      EXPECT_EQ(format_vtu(mesh), spec_vtu(mesh));
+      EXPECT_EQ(io::format_vtu(mesh), spec_vtu(mesh));
     }
   }
 }
@@ -161,8 +164,8 @@ TEST(AppsOutput, ManyDistinctCoordinates) {
   for (const auto& v : mesh.vertices) xs.push_back(v[0]);
   std::sort(xs.begin(), xs.end());
   EXPECT_EQ(std::unique(xs.begin(), xs.end()) - xs.begin(), 8193);
-  EXPECT_EQ(format_obj(mesh, "x"), spec_obj(mesh, "x"));
-  EXPECT_EQ(format_ply(mesh, "x"), spec_ply(mesh, "x"));
+  EXPECT_EQ(io::format_obj(mesh, "x"), spec_obj(mesh, "x"));
+  EXPECT_EQ(io::format_ply(mesh, "x"), spec_ply(mesh, "x"));
 }
 
 }  // namespace

@@ -19,6 +19,9 @@
 #include <utility>
 #include <vector>
 
+#include "bccmis/io/medit.h"
+#include "bccmis/io/msh.h"
+#include "bccmis/io/vtu.h"
 #include "util3.h"
 
 namespace bccmis::d3 {
@@ -503,7 +506,7 @@ TEST(D3MeshWriters, VtuReadsBack) {
   Tets tets;
   const TetMesh mesh = split_face_mesh(&tets);
   std::ostringstream out;
-  write_vtu(out, mesh);
+  io::write_vtu(out, mesh);
   const std::string text = out.str();
   EXPECT_NE(text.find("<Piece NumberOfPoints=\"65\" NumberOfCells=\"168\">"), std::string::npos);
   // The six DataArrays in order: kind, level, points, connectivity, offsets, types.
@@ -540,7 +543,7 @@ TEST(D3MeshWriters, MshReadsBack) {
   Tets tets;
   const TetMesh mesh = split_face_mesh(&tets);
   std::ostringstream out;
-  write_msh(out, mesh);
+  io::write_msh(out, mesh);
   std::istringstream in(out.str());
   std::string word;
   in >> word;
@@ -590,7 +593,7 @@ TEST(D3MeshWriters, EmptyAndHandBuiltMeshes) {
   EXPECT_EQ(q.max_dihedral, 0.0);
   const TetMesh empty;
   std::ostringstream msh;
-  write_msh(msh, empty);
+  io::write_msh(msh, empty);
   EXPECT_EQ(msh.str(),
             "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 0 0 0\n3 1 0 0\n$EndNodes\n"
             "$Elements\n1 0 0 0\n3 1 4 0\n$EndElements\n");
@@ -603,7 +606,7 @@ TEST(D3MeshWriters, EmptyAndHandBuiltMeshes) {
   TetMesh no_levels = m;
   no_levels.level.clear();
   std::ostringstream medit;
-  write_medit(medit, no_levels);
+  io::write_medit(medit, no_levels);
   // Vertices sorted by position: (0,0,0) 1, (0,0,2) 2, (0,2,0) 3, (2,0,0) 4.
   EXPECT_NE(medit.str().find("Tetrahedra\n1\n1 4 3 2 0\n"), std::string::npos) << medit.str();
 }
@@ -612,7 +615,7 @@ TEST(D3MeshWriters, MeditReadsBack) {
   Tets tets;
   const TetMesh mesh = split_face_mesh(&tets);
   std::ostringstream out;
-  write_medit(out, mesh);
+  io::write_medit(out, mesh);
   std::istringstream in(out.str());
   std::string a, b;
   in >> a >> b;

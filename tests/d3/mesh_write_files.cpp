@@ -9,6 +9,9 @@
 
 #include "bccmis/d3/mesh.h"
 #include "bccmis/d3/ops.h"
+#include "bccmis/io/medit.h"
+#include "bccmis/io/msh.h"
+#include "bccmis/io/vtu.h"
 
 namespace {
 
@@ -17,9 +20,9 @@ using namespace bccmis::d3;
 bool write_all(const std::string& stem, const Graph3& g) {
   const TetMesh mesh = index_mesh(g, tetrahedra(g));
   std::ofstream vtu(stem + ".vtu"), msh(stem + ".msh"), medit(stem + ".mesh");
-  write_vtu(vtu, mesh);
-  write_msh(msh, mesh);
-  write_medit(medit, mesh);
+  bccmis::io::write_vtu(vtu, mesh);
+  bccmis::io::write_msh(msh, mesh);
+  bccmis::io::write_medit(medit, mesh);
   return vtu.good() && msh.good() && medit.good();
 }
 

@@ -1,5 +1,5 @@
 // The Medit reader and the mesh pictures of `bccmis render` (render.h,
-// medit_read.h) on meshes small enough to draw by hand.
+// bccmis/io/medit.h) on meshes small enough to draw by hand.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -9,8 +9,8 @@
 #include <string>
 #include <utility>
 
-#include "bccmis/format.h"
-#include "bccmis/stuff/medit_read.h"
+#include "bccmis/io/medit.h"
+#include "bccmis/io/parse_error.h"
 #include "bccmis/stuff/render.h"
 #include "bccmis/stuff/stuff.h"
 
@@ -24,7 +24,9 @@ std::string slurp(const std::string& path) {
   return s.str();
 }
 
-d3::TetMeshF two_tets() { return read_medit(slurp(BCCMIS_TEST_DIR "/two_tets.mesh"), "two_tets.mesh"); }
+d3::TetMeshF two_tets() {
+  return io::read_medit(slurp(BCCMIS_TEST_DIR "/two_tets.mesh"), "two_tets.mesh", orientation);
+}
 
 std::size_t count(const std::string& text, const std::string& pattern) {
   const std::regex re(pattern);
@@ -51,8 +53,8 @@ TEST(MeditRead, ReadsBackWhatTheWriterWrites) {
   if (orientation(m.vertices[0], m.vertices[1], m.vertices[2], m.vertices[3]) < 0)
     std::swap(m.tets[0][0], m.tets[0][1]);
   std::ostringstream out;
-  d3::write_medit(out, m);
-  const d3::TetMeshF back = read_medit(out.str(), "m.mesh");
+  io::write_medit(out, m);
+  const d3::TetMeshF back = io::read_medit(out.str(), "m.mesh", orientation);
   EXPECT_EQ(back.vertices, m.vertices);
   EXPECT_EQ(back.kind, m.kind);
   EXPECT_EQ(back.tets, m.tets);
@@ -85,7 +87,7 @@ TEST(MeditRead, RefusesWithThePlace) {
   };
   for (const auto& c : cases) {
     try {
-      read_medit(c.text, "in.mesh");
+      io::read_medit(c.text, "in.mesh", orientation);
       ADD_FAILURE() << "accepted: " << c.text;
     } catch (const ParseError& e) {
       EXPECT_EQ(std::string(e.what()).rfind("in.mesh:" + c.where, 0), 0u) << e.what();

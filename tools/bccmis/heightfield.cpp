@@ -17,6 +17,9 @@
 #include "bccmis/apps/image.h"
 #include "bccmis/apps/mesh.h"
 #include "bccmis/fast/lattice.h"
+#include "bccmis/io/obj.h"
+#include "bccmis/io/ply.h"
+#include "bccmis/io/vtu.h"
 #include "bccmis/oracle/oracle.h"
 #include "commands.h"
 #include "io.h"
@@ -120,15 +123,15 @@ int run_heightfield(const HeightfieldCommandOptions& o) {
               std::make_shared<TriangleMesh>(triangulate(lattice, [&](const Point& p) { return sampler.at(p); }));
           const std::string comment = "bccmis " + title;
           if (!o.obj.empty())
-            outputs.add(o.obj, [mesh, comment](std::ostream& out) { write_obj(out, *mesh, comment); });
+            outputs.add(o.obj, [mesh, comment](std::ostream& out) { io::write_obj(out, *mesh, comment); });
           if (!o.ply.empty())
-            outputs.add(o.ply, [mesh, comment](std::ostream& out) { write_ply(out, *mesh, comment); });
+            outputs.add(o.ply, [mesh, comment](std::ostream& out) { io::write_ply(out, *mesh, comment); });
           if (!o.vtu.empty()) {
             std::map<Point, double> cell_err;
             for (const Point& c : graph->C)
               cell_err[c] = cell_error(*graph, c, sampler, {ErrorMeasure::MaxPixel, 0, 0});
             for (const Point& c : mesh->triangle_cell) mesh->triangle_error.push_back(cell_err.at(c));
-            outputs.add(o.vtu, [mesh](std::ostream& out) { write_vtu(out, *mesh); });
+            outputs.add(o.vtu, [mesh](std::ostream& out) { io::write_vtu(out, *mesh); });
           }
         }
         if (!o.svg.empty()) outputs.add(o.svg, render_svg(*graph, title));

@@ -14,6 +14,7 @@
 #include <system_error>
 
 #include "bccmis/d3/lattice.h"
+#include "bccmis/io/parse_error.h"
 #include "bccmis/trace.h"
 
 namespace bccmis::cli {

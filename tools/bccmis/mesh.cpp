@@ -9,6 +9,9 @@
 
 #include "bccmis/d3/lattice.h"
 #include "bccmis/d3/mesh.h"
+#include "bccmis/io/medit.h"
+#include "bccmis/io/msh.h"
+#include "bccmis/io/vtu.h"
 #include "bccmis/json_writer.h"
 #include "bccmis/trace.h"
 #include "commands.h"
@@ -61,9 +64,9 @@ void check_mesh_path(const std::string& path) {
 
 void add_mesh_output(OutputSet& outputs, const std::string& path, const d3::TetMesh& mesh) {
   check_mesh_path(path);
-  if (ends_with(path, ".vtu")) outputs.add(path, [&](std::ostream& out) { d3::write_vtu(out, mesh); });
-  if (ends_with(path, ".msh")) outputs.add(path, [&](std::ostream& out) { d3::write_msh(out, mesh); });
-  if (ends_with(path, ".mesh")) outputs.add(path, [&](std::ostream& out) { d3::write_medit(out, mesh); });
+  if (ends_with(path, ".vtu")) outputs.add(path, [&](std::ostream& out) { io::write_vtu(out, mesh); });
+  if (ends_with(path, ".msh")) outputs.add(path, [&](std::ostream& out) { io::write_msh(out, mesh); });
+  if (ends_with(path, ".mesh")) outputs.add(path, [&](std::ostream& out) { io::write_medit(out, mesh); });
 }
 
 int run(const MeshOptions& o) {

@@ -12,9 +12,10 @@
 #include <type_traits>
 #include <variant>
 
+#include "bccmis/io/medit.h"
 #include "bccmis/oracle/oracle.h"
-#include "bccmis/stuff/medit_read.h"
 #include "bccmis/stuff/render.h"
+#include "bccmis/stuff/stuff.h"
 #include "commands.h"
 #include "io.h"
 
@@ -74,7 +75,7 @@ int run_mesh(const RenderOptions& o) {
   const std::string name = display_name(o.state);
   if (o.from_trace) throw InputError(name + ": a .mesh file; --from-trace applies to traces");
   if (o.histogram && !o.slice.empty()) throw InputError("--histogram draws no cut-away; drop --slice");
-  const d3::TetMeshF mesh = stuff::read_medit(read_input(o.state), name);
+  const d3::TetMeshF mesh = io::read_medit(read_input(o.state), name, stuff::orientation);
   std::string svg;
   if (o.histogram) {
     svg = stuff::render_histogram_svg(mesh, name);

@@ -1,18 +1,15 @@
-// bccmis::d3: extraction of the graded BCC tetrahedral mesh (spec/mesh3d.md)
-// and its three writers.
+// bccmis::d3: extraction of the graded BCC tetrahedral mesh (spec/mesh3d.md),
+// its exact orientation, dihedral angles and quality.
 #include "bccmis/d3/mesh.h"
 
 #include <gmpxx.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <map>
-#include <ostream>
 #include <stdexcept>
 #include <string>
-#include <type_traits>
 
 #include "bccmis/d3/detail/tetrahedra.h"
 #include "bccmis/d3/geometry.h"
@@ -102,98 +99,9 @@ TetMesh index_mesh(const Graph3& g, const std::vector<Tet>& tets) {
 
 namespace {
 
-// The writers and the angles, once for lattice points and once for points in
-// space: a point's coordinates, their VTK type and their text.
+// The angles, once for lattice points and once for points in space.
 long double coordinate(const Point3& p, int i) { return static_cast<long double>(i == 0 ? p.x : i == 1 ? p.y : p.z); }
 long double coordinate(const Vec3& p, int i) { return p[static_cast<std::size_t>(i)]; }
-
-template <class P>
-const char* coordinate_type() {
-  return std::is_same_v<P, Point3> ? "Int64" : "Float64";
-}
-
-void write_point(std::ostream& out, const Point3& p, char end = '\n') { out << p.x << ' ' << p.y << ' ' << p.z << end; }
-
-/// The shortest decimal that reads back to the same double.
-void write_point(std::ostream& out, const Vec3& p, char end = '\n') {
-  char buf[3 * 32];
-  char* it = buf;
-  for (std::size_t i = 0; i < 3; ++i) {
-    it = std::to_chars(it, buf + sizeof buf, p[i]).ptr;
-    *it++ = i < 2 ? ' ' : end;
-  }
-  out.write(buf, it - buf);
-}
-
-template <class P>
-void write_vtu_impl(std::ostream& out, const BasicTetMesh<P>& mesh) {
-  out << "<?xml version=\"1.0\"?>\n"
-      << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-      << "  <UnstructuredGrid>\n"
-      << "    <Piece NumberOfPoints=\"" << mesh.vertices.size() << "\" NumberOfCells=\"" << mesh.tets.size() << "\">\n"
-      << "      <PointData Scalars=\"kind\">\n"
-      << "        <DataArray type=\"UInt8\" Name=\"kind\" format=\"ascii\">\n";
-  for (const std::uint8_t k : mesh.kind) out << static_cast<int>(k) << '\n';
-  out << "        </DataArray>\n"
-      << "      </PointData>\n"
-      << "      <CellData Scalars=\"level\">\n"
-      << "        <DataArray type=\"Int32\" Name=\"level\" format=\"ascii\">\n";
-  for (const int l : mesh.level) out << l << '\n';
-  out << "        </DataArray>\n"
-      << "      </CellData>\n"
-      << "      <Points>\n"
-      << "        <DataArray type=\"" << coordinate_type<P>() << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  for (const P& p : mesh.vertices) write_point(out, p);
-  out << "        </DataArray>\n"
-      << "      </Points>\n"
-      << "      <Cells>\n"
-      << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (const auto& t : mesh.tets) out << t[0] << ' ' << t[1] << ' ' << t[2] << ' ' << t[3] << '\n';
-  out << "        </DataArray>\n"
-      << "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-  for (std::size_t i = 0; i < mesh.tets.size(); ++i) out << 4 * (i + 1) << '\n';
-  out << "        </DataArray>\n"
-      << "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-  for (std::size_t i = 0; i < mesh.tets.size(); ++i) out << "10\n";
-  out << "        </DataArray>\n"
-      << "      </Cells>\n"
-      << "    </Piece>\n"
-      << "  </UnstructuredGrid>\n"
-      << "</VTKFile>\n";
-}
-
-template <class P>
-void write_msh_impl(std::ostream& out, const BasicTetMesh<P>& mesh) {
-  const std::size_t n = mesh.vertices.size(), m = mesh.tets.size();
-  out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
-  // One entity block: the volume entity 1 holds every node.
-  out << "$Nodes\n1 " << n << ' ' << (n ? 1 : 0) << ' ' << n << '\n' << "3 1 0 " << n << '\n';
-  for (std::size_t i = 1; i <= n; ++i) out << i << '\n';
-  for (const P& p : mesh.vertices) write_point(out, p);
-  out << "$EndNodes\n";
-  out << "$Elements\n1 " << m << ' ' << (m ? 1 : 0) << ' ' << m << '\n' << "3 1 4 " << m << '\n';
-  for (std::size_t i = 0; i < m; ++i) {
-    const auto& t = mesh.tets[i];
-    out << i + 1 << ' ' << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << ' ' << t[3] + 1 << '\n';
-  }
-  out << "$EndElements\n";
-}
-
-template <class P>
-void write_medit_impl(std::ostream& out, const BasicTetMesh<P>& mesh) {
-  out << "MeshVersionFormatted 2\n\nDimension 3\n\nVertices\n" << mesh.vertices.size() << '\n';
-  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-    write_point(out, mesh.vertices[i], ' ');
-    out << static_cast<int>(mesh.kind[i]) << '\n';
-  }
-  out << "\nTetrahedra\n" << mesh.tets.size() << '\n';
-  for (std::size_t i = 0; i < mesh.tets.size(); ++i) {
-    const auto& t = mesh.tets[i];
-    out << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << ' ' << t[3] + 1 << ' '
-        << (i < mesh.level.size() ? mesh.level[i] : 0) << '\n';
-  }
-  out << "\nEnd\n";
-}
 
 template <class P>
 std::array<double, 6> dihedral_angles_impl(const std::array<P, 4>& t) {
@@ -223,12 +131,6 @@ std::array<double, 6> dihedral_angles_impl(const std::array<P, 4>& t) {
 
 }  // namespace
 
-void write_vtu(std::ostream& out, const TetMesh& mesh) { write_vtu_impl(out, mesh); }
-void write_vtu(std::ostream& out, const TetMeshF& mesh) { write_vtu_impl(out, mesh); }
-void write_msh(std::ostream& out, const TetMesh& mesh) { write_msh_impl(out, mesh); }
-void write_msh(std::ostream& out, const TetMeshF& mesh) { write_msh_impl(out, mesh); }
-void write_medit(std::ostream& out, const TetMesh& mesh) { write_medit_impl(out, mesh); }
-void write_medit(std::ostream& out, const TetMeshF& mesh) { write_medit_impl(out, mesh); }
 std::array<double, 6> dihedral_angles(const Tet& t) { return dihedral_angles_impl(t); }
 std::array<double, 6> dihedral_angles(const std::array<Vec3, 4>& t) { return dihedral_angles_impl(t); }
 

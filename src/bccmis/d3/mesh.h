@@ -1,15 +1,18 @@
 // bccmis::d3: the graded BCC tetrahedral mesh of a 3D lattice
-// (spec/mesh3d.md) and its writers: VTK XML unstructured grid (.vtu), Gmsh
-// MSH 4.1 (.msh) and Medit (.mesh), all ASCII with integer coordinates.
+// (spec/mesh3d.md), its exact orientation and volume, its dihedral angles and
+// quality. The mesh types are in d3/tet_mesh.h, their writers in bccmis/io/.
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <iosfwd>
 #include <vector>
 
 #include "bccmis/d3/graph.h"
+#include "bccmis/d3/tet_mesh.h"
+#include "bccmis/io/medit.h"
+#include "bccmis/io/msh.h"
+#include "bccmis/io/vtu.h"
 
 namespace bccmis::d3 {
 
@@ -36,51 +39,9 @@ int orientation(const Point3& a, const Point3& b, const Point3& c, const Point3&
 /// throws std::overflow_error otherwise.
 Int128 six_volume(const Tet& t);
 
-/// The kind of a mesh vertex (TetMesh::kind).
-enum class VertexKind : std::uint8_t { node = 0, center = 1, hull = 2 };
-
-/// A point in space (double coordinates): the vertices of meshes whose
-/// vertices are not lattice points (isosurface stuffing, spec/stuffing.md).
-using Vec3 = std::array<double, 3>;
-
-/// An indexed mesh for writers: vertices, tets as indices into them, a small
-/// integer per vertex (written as the point data "kind") and one per
-/// tetrahedron (the cell data "level"). P is Point3 (lattice coordinates,
-/// written as integers) or Vec3 (written as the shortest decimal that reads
-/// back to the same double).
-template <class P>
-struct BasicTetMesh {
-  std::vector<P> vertices;
-  std::vector<std::array<std::uint32_t, 4>> tets;
-  std::vector<std::uint8_t> kind; /* per vertex */
-  std::vector<int> level;         /* per tetrahedron */
-};
-
-/// The lattice's mesh: vertices sorted by position, kind 0 node, 1 center,
-/// 2 hull, level the level of the tetrahedron's leaf v[0].
-using TetMesh = BasicTetMesh<Point3>;
-/// A mesh in space (spec/stuffing.md S11).
-using TetMeshF = BasicTetMesh<Vec3>;
-
 /// The vertices of `tets` (sorted, each once, with their kind in g) and the
 /// tetrahedra as indices into them, in the order of `tets`.
 TetMesh index_mesh(const Graph3& g, const std::vector<Tet>& tets);
-
-/// VTK XML UnstructuredGrid, ASCII: Int64 points, VTK_TETRA (10) cells, the
-/// point data array "kind" and the cell data array "level".
-void write_vtu(std::ostream& out, const TetMesh& mesh);
-/// The same with Float64 points.
-void write_vtu(std::ostream& out, const TetMeshF& mesh);
-
-/// Gmsh MSH 4.1 ASCII: one volume entity (tag 1) holding every node and
-/// every 4-node tetrahedron (element type 4); node and element tags from 1.
-void write_msh(std::ostream& out, const TetMesh& mesh);
-void write_msh(std::ostream& out, const TetMeshF& mesh);
-
-/// Medit .mesh (MeshVersionFormatted 2, Dimension 3): Vertices with the
-/// kind as reference, Tetrahedra (1-based) with the level as reference, End.
-void write_medit(std::ostream& out, const TetMesh& mesh);
-void write_medit(std::ostream& out, const TetMeshF& mesh);
 
 /// The 6 dihedral angles of t in degrees (long double arithmetic, so within
 /// about 1e-12 degrees of the exact values), in the order of the edges
@@ -100,5 +61,14 @@ struct MeshQuality {
   std::array<std::size_t, 13> histogram{};
 };
 MeshQuality mesh_quality(const std::vector<Tet>& tets);
+
+}  // namespace bccmis::d3
+
+namespace bccmis::d3 {
+
+/// The mesh writers of bccmis::io, also by their names in this namespace.
+using io::write_medit;
+using io::write_msh;
+using io::write_vtu;
 
 }  // namespace bccmis::d3

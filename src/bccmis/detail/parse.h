@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "bccmis/d3/point.h"
-#include "bccmis/format.h"
 #include "bccmis/graph.h"
+#include "bccmis/io/parse_error.h"
 
 namespace bccmis::detail {
 

@@ -23,7 +23,6 @@
 // or of c's level (a new junction is made on that cell's side instead).
 #include "bccmis/fast/lattice.h"
 #include "bccmis/text_writer.h"
-#include "bccmis/trace.h"
 
 #include <algorithm>
 #include <array>

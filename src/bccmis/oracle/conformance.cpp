@@ -17,6 +17,7 @@
 
 #include "bccmis/d3/lattice.h"
 #include "bccmis/invariants/invariants.h"
+#include "bccmis/io/parse_error.h"
 #include "bccmis/oracle/oracle.h"
 #include "bccmis/oracle/view.h"
 #include "bccmis/trace.h"

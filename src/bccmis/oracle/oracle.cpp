@@ -4,10 +4,12 @@
 #include <array>
 #include <cstdio>
 #include <set>
+#include <string_view>
 #include <utility>
 
 #include "bccmis/d3/mesh.h"
 #include "bccmis/geometry.h"
+#include "bccmis/io/svg.h"
 
 namespace bccmis {
 
@@ -43,20 +45,6 @@ std::string kind(const G& g, const typename G::point_type& p) {
     return "center " + pos(p) + (it == g.level.end() ? "" : " level " + std::to_string(it->second));
   }
   return "node " + pos(p);
-}
-
-std::string xml_escape(const std::string& s) {
-  std::string r;
-  for (char ch : s) {
-    switch (ch) {
-      case '&': r += "&amp;"; break;
-      case '<': r += "&lt;"; break;
-      case '>': r += "&gt;"; break;
-      case '"': r += "&quot;"; break;
-      default: r += ch;
-    }
-  }
-  return r;
 }
 
 }  // namespace
@@ -256,12 +244,7 @@ std::string render_svg(const Graph& g, const std::string& title) {
   char buf[256];
   auto X = [&](std::int64_t x) { return margin + static_cast<double>(x) * scale; };
   auto Y = [&](std::int64_t y) { return margin + (h - static_cast<double>(y)) * scale; };
-  std::string out;
-  std::snprintf(buf, sizeof buf,
-                "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\">\n",
-                width, height, width, height);
-  out += buf;
-  out += "<title>" + xml_escape(title) + "</title>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  std::string out = io::svg_header(width, height, title);
   // Cells shaded by level.
   static const char* shades[] = {"#f2f2f2", "#dde8f5", "#c2d6ee", "#a3c1e5", "#84abdb", "#6796d0", "#4c81c4"};
   out += "<g stroke=\"none\">\n";
@@ -326,14 +309,12 @@ std::string render_svg(const Graph& g, const std::string& title) {
     out += buf;
   }
   out += "</g>\n";
-  std::snprintf(buf, sizeof buf, "<text x=\"%.0f\" y=\"%.0f\" font-family=\"sans-serif\" font-size=\"12\">", margin,
-                height - 22);
-  out += buf + xml_escape(title) + ": " + std::to_string(g.C.size()) + " cells, " + std::to_string(g.N.size()) +
-         " nodes.</text>\n";
-  std::snprintf(buf, sizeof buf, "<text x=\"%.0f\" y=\"%.0f\" font-family=\"sans-serif\" font-size=\"12\">", margin,
-                height - 6);
-  out += std::string(buf) + "Solid: stored edges; dashed: hull edges of eq. (1); red rings: junctions.</text>\n";
-  out += "</svg>\n";
+  const std::string_view font = "font-family=\"sans-serif\" font-size=\"12\"";
+  out += io::text_start(margin, height - 22, font) + io::xml_escape(title) + ": " + std::to_string(g.C.size()) +
+         " cells, " + std::to_string(g.N.size()) + " nodes.</text>\n";
+  out += io::text_start(margin, height - 6, font) +
+         "Solid: stored edges; dashed: hull edges of eq. (1); red rings: junctions.</text>\n";
+  out += io::svg_end();
   return out;
 }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "bccmis/d3/mesh.h"
+#include "bccmis/io/svg.h"
 #include "bccmis/oracle/oracle.h"
 
 namespace bccmis {
@@ -30,20 +31,6 @@ Extents extents(const d3::LatticeSize3& s) {
 
 const char* axis_name(int axis) { return axis == 0 ? "x" : axis == 1 ? "y" : "z"; }
 
-std::string escape(const std::string& s) {
-  std::string r;
-  for (const char ch : s) {
-    switch (ch) {
-      case '&': r += "&amp;"; break;
-      case '<': r += "&lt;"; break;
-      case '>': r += "&gt;"; break;
-      case '"': r += "&quot;"; break;
-      default: r += ch;
-    }
-  }
-  return r;
-}
-
 // Fill colour of a leaf of `level` (light grey at level 0, darker blue for
 // finer leaves), scaled by a face's brightness.
 std::string shade(int level, double brightness) {
@@ -51,9 +38,7 @@ std::string shade(int level, double brightness) {
                                 {0x4f, 0x86, 0xc6}, {0x36, 0x6a, 0xad}, {0x25, 0x50, 0x8c}};
   const int l = std::clamp(level, 0, 6);
   auto channel = [&](int i) { return static_cast<int>(std::lround(rgb[l][i] * brightness)); };
-  char buf[8];
-  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", channel(0), channel(1), channel(2));
-  return buf;
+  return io::hex_colour(channel(0), channel(1), channel(2));
 }
 
 // The three box faces a viewer of the cabinet projection sees, with the
@@ -146,12 +131,7 @@ std::string render_svg3(const d3::Graph3& g, const std::string& title, const Sli
   auto SY = [&](std::int64_t v) { return top + (sh - static_cast<double>(v)) * scale; };
 
   char buf[320];
-  std::string out;
-  std::snprintf(buf, sizeof buf,
-                "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\">\n",
-                width, height, width, height);
-  out += buf;
-  out += "<title>" + escape(title) + "</title>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  std::string out = io::svg_header(width, height, title);
 
   // Left panel: the visible boundary triangles, filled by level and shaded per face.
   const std::vector<d3::Tet> tets = d3::tetrahedra(g);
@@ -241,14 +221,13 @@ std::string render_svg3(const d3::Graph3& g, const std::string& title, const Sli
 
   // Panel headings, legend and summary.
   const std::string font = "font-family=\"sans-serif\" font-size=\"13\"";
-  std::snprintf(buf, sizeof buf, "<text x=\"%.0f\" y=\"%.0f\" %s>", margin, margin + 14, font.c_str());
-  out += std::string(buf) + std::to_string(drawn) + " of " + std::to_string(boundary.size()) +
+  out += io::text_start(margin, margin + 14, font) + std::to_string(drawn) + " of " + std::to_string(boundary.size()) +
          " boundary triangles: the faces y = 0, z = " + std::to_string(ext[2]) + ", x = " + std::to_string(ext[0]) +
          "</text>\n";
-  std::snprintf(buf, sizeof buf, "<text x=\"%.0f\" y=\"%.0f\" %s>", sx0, margin + 14, font.c_str());
-  out += std::string(buf) + "slice " + axis_name(slice.axis) + " = " + std::to_string(slice.value) + ": " +
-         std::to_string(leaves.size()) + " leaves, " + std::to_string(nodes) + " nodes, " + std::to_string(junctions) +
-         " junctions (" + axis_name(ua) + " right, " + axis_name(va) + " up)</text>\n";
+  out += io::text_start(sx0, margin + 14, font) + "slice " + axis_name(slice.axis) + " = " +
+         std::to_string(slice.value) + ": " + std::to_string(leaves.size()) + " leaves, " + std::to_string(nodes) +
+         " nodes, " + std::to_string(junctions) + " junctions (" + axis_name(ua) + " right, " + axis_name(va) +
+         " up)</text>\n";
   const double foot = top + panel_h + 20;
   std::map<int, std::size_t> per_level;
   for (const auto& [c, l] : g.level) ++per_level[l];
@@ -257,22 +236,17 @@ std::string render_svg3(const d3::Graph3& g, const std::string& title, const Sli
   out += "<g stroke=\"#333333\" stroke-width=\"0.6\">\n";
   for (const auto& [l, n] : per_level) {
     levels += (levels.empty() ? "" : ", ") + std::string("level ") + std::to_string(l) + ": " + std::to_string(n);
-    std::snprintf(buf, sizeof buf,
-                  "<rect class=\"legend\" x=\"%.0f\" y=\"%.0f\" width=\"12\" height=\"12\" fill=\"%s\"/>"
-                  "<text x=\"%.0f\" y=\"%.0f\" %s stroke=\"none\">level %d</text>\n",
-                  lx, foot - 10, shade(l, 1.0).c_str(), lx + 16, foot, font.c_str(), l);
-    out += buf;
+    out += io::legend_entry(lx, foot, shade(l, 1.0), "level " + std::to_string(l), font);
     lx += 80;
   }
   out += "</g>\n";
-  std::snprintf(buf, sizeof buf, "<text x=\"%.0f\" y=\"%.0f\" %s>", margin, foot + 20, font.c_str());
-  out += std::string(buf) + escape(title) + ": " + std::to_string(g.C.size()) + " cells (" + levels + "), " +
-         std::to_string(g.N.size()) + " nodes, " + std::to_string(tets.size()) + " tetrahedra.</text>\n";
-  std::snprintf(buf, sizeof buf, "<text x=\"%.0f\" y=\"%.0f\" %s>", margin, foot + 38, font.c_str());
-  out += std::string(buf) +
+  out += io::text_start(margin, foot + 20, font) + io::xml_escape(title) + ": " + std::to_string(g.C.size()) +
+         " cells (" + levels + "), " + std::to_string(g.N.size()) + " nodes, " + std::to_string(tets.size()) +
+         " tetrahedra.</text>\n";
+  out += io::text_start(margin, foot + 38, font) +
          "Fill: level of the leaf; thick green: leaf cube edges; dashed red: the slice; dots: nodes on the slice; "
          "red rings: junctions.</text>\n";
-  out += "</svg>\n";
+  out += io::svg_end();
   return out;
 }
 

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "bccmis/io/svg.h"
 #include "bccmis/stuff/stuff.h"
 
 namespace bccmis::stuff {
@@ -38,20 +39,6 @@ const V kLight = unit({kEye[0] - 0.5 * kRight[0] + 0.6 * kUp[0], kEye[1] - 0.5 *
                        kEye[2] - 0.5 * kRight[2] + 0.6 * kUp[2]});
 
 const char* axis_name(int axis) { return axis == 0 ? "x" : axis == 1 ? "y" : "z"; }
-
-std::string escape(const std::string& s) {
-  std::string r;
-  for (const char ch : s) {
-    switch (ch) {
-      case '&': r += "&amp;"; break;
-      case '<': r += "&lt;"; break;
-      case '>': r += "&gt;"; break;
-      case '"': r += "&quot;"; break;
-      default: r += ch;
-    }
-  }
-  return r;
-}
 
 // The drawn width of text in the sans-serif font, estimated at 0.6 of the
 // font size a character (DejaVu Sans averages less, its digits 0.64).
@@ -84,12 +71,8 @@ std::vector<std::string> wrap(const std::string& text, double width, double font
 std::string text_lines(const std::vector<std::string>& lines, double x, double y, double step,
                        const std::string& attributes) {
   std::string out;
-  char buf[160];
-  for (std::size_t k = 0; k < lines.size(); ++k) {
-    std::snprintf(buf, sizeof buf, "<text x=\"%.0f\" y=\"%.0f\" %s>", x, y + step * static_cast<double>(k),
-                  attributes.c_str());
-    out += std::string(buf) + escape(lines[k]) + "</text>\n";
-  }
+  for (std::size_t k = 0; k < lines.size(); ++k)
+    out += io::text_start(x, y + step * static_cast<double>(k), attributes) + io::xml_escape(lines[k]) + "</text>\n";
   return out;
 }
 
@@ -103,9 +86,7 @@ std::string colour(int level, double brightness) {
   const auto channel = [&](std::size_t i) {
     return static_cast<int>(std::clamp(std::lround(kPalette[l][i] * brightness), 0L, 255L));
   };
-  char buf[8];
-  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", channel(0), channel(1), channel(2));
-  return buf;
+  return io::hex_colour(channel(0), channel(1), channel(2));
 }
 
 // A boundary triangle facing the viewer, ready to draw.
@@ -217,7 +198,7 @@ std::string render_mesh_svg(const d3::TetMeshF& mesh, const std::string& title, 
 
   char buf[320];
   std::string out;
-  out += "<title>" + escape(title) + "</title>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  out += io::svg_title(title);
 
   const auto panel = [&](const std::vector<Face>& faces, double left, const char* cls) {
     out += "<g stroke=\"#404040\" stroke-width=\"0.4\" stroke-linejoin=\"round\">\n";
@@ -258,11 +239,7 @@ std::string render_mesh_svg(const d3::TetMeshF& mesh, const std::string& title, 
       lx = margin;
       foot += line + 4;
     }
-    std::snprintf(buf, sizeof buf,
-                  "<rect class=\"legend\" x=\"%.0f\" y=\"%.0f\" width=\"12\" height=\"12\" fill=\"%s\"/>"
-                  "<text x=\"%.0f\" y=\"%.0f\" %s stroke=\"none\">%s</text>\n",
-                  lx, foot - 10, colour(l, 1.0).c_str(), lx + 16, foot, font.c_str(), label.c_str());
-    out += buf;
+    out += io::legend_entry(lx, foot, colour(l, 1.0), label, font);
     lx += std::max(110.0, entry + 24);
   }
   out += "</g>\n";
@@ -273,12 +250,9 @@ std::string render_mesh_svg(const d3::TetMeshF& mesh, const std::string& title, 
         std::string("fill: the level of the tetrahedron (tetrahedra per level), shaded by the normal")})
     for (const std::string& l : wrap(part, width - 2 * margin, font_size)) summary.push_back(l);
   out += text_lines(summary, margin, foot + 22, line, font);
-  out += "</svg>\n";
+  out += io::svg_end();
   const double height = foot + 22 + line * static_cast<double>(summary.size() - 1) + 34;
-  std::snprintf(buf, sizeof buf,
-                "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\">\n",
-                width, height, width, height);
-  return buf + out;
+  return io::svg_start(width, height) + out;
 }
 
 AngleHistogram angle_histogram(const d3::TetMeshF& mesh) {
@@ -334,13 +308,7 @@ std::string render_histogram_svg(const d3::TetMeshF& mesh, const std::string& ti
   const auto Y = [&](double count) { return top + plot_h - count / ymax * plot_h; };
 
   char buf[400];
-  std::string out;
-  std::snprintf(buf, sizeof buf,
-                "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\">\n",
-                width, height, width, height);
-  out += buf;
-  out +=
-      "<title>" + escape(title) + ": dihedral angles</title>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  std::string out = io::svg_header(width, height, title + ": dihedral angles");
   const std::string font = "font-family=\"sans-serif\" font-size=\"12\"";
   out += text_lines(heading_lines, left, 18, 15, font);
   // Grid and count ticks.
@@ -400,7 +368,7 @@ std::string render_histogram_svg(const d3::TetMeshF& mesh, const std::string& ti
       out += buf;
     }
   }
-  out += "</svg>\n";
+  out += io::svg_end();
   return out;
 }
 

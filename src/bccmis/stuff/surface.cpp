@@ -1,7 +1,8 @@
 // Closed triangle meshes as shapes (spec/stuffing.md §1): the OFF, OBJ and
-// STL readers, the checks that make a triangle soup a closed, manifold,
-// consistently oriented, self-intersection free surface, and the Shape over
-// it. The only translation unit of bccmis::stuff that includes CGAL.
+// STL files read (by bccmis/io/), the checks that make a triangle soup a
+// closed, manifold, consistently oriented, self-intersection free surface,
+// and the Shape over it. The only translation unit of bccmis::stuff that
+// includes CGAL.
 #include "bccmis/stuff/surface.h"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -31,6 +32,12 @@
 #include <string_view>
 #include <utility>
 
+#include "bccmis/io/obj.h"
+#include "bccmis/io/off.h"
+#include "bccmis/io/read_error.h"
+#include "bccmis/io/stl.h"
+#include "bccmis/io/triangle_soup.h"
+
 namespace bccmis::stuff {
 namespace {
 
@@ -44,306 +51,11 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 
 using Tri = std::array<std::uint32_t, 3>;
 
-/// A triangle soup as read, with what the messages need: for each triangle
-/// the face of the input it comes from (a polygon is fanned into several) and
-/// that face's line (0 when there is none), and the number the input gives
-/// its first vertex (1 for OBJ, 0 otherwise).
-struct Soup {
-  std::vector<Vec3> vertices;
-  std::vector<Tri> triangles;
-  std::vector<std::size_t> face;
-  std::vector<std::size_t> line;
-  std::uint32_t vertex_base = 0;
-};
+using Soup = io::TriangleSoup;
 
 std::string basename_of(const std::string& path) {
   const auto slash = path.find_last_of('/');
   return slash == std::string::npos ? path : path.substr(slash + 1);
-}
-
-// ---------------------------------------------------------------------------
-// Text scanning with line and column (1-based; a column counts bytes).
-
-class Text {
- public:
-  Text(const std::string& file, const std::string& data) : file_(file), data_(data) {}
-
-  /// The next line, without its end (\n, \r\n); false at the end of the data.
-  bool next_line() {
-    if (pos_ >= data_.size()) return false;
-    const auto end = data_.find('\n', pos_);
-    line_start_ = pos_;
-    line_end_ = end == std::string::npos ? data_.size() : end;
-    pos_ = end == std::string::npos ? data_.size() : end + 1;
-    if (line_end_ > line_start_ && data_[line_end_ - 1] == '\r') --line_end_;
-    ++line_no_;
-    cur_ = line_start_;
-    return true;
-  }
-  /// The next whitespace-separated token of the line, cut at '#' when
-  /// `comments`; empty at the end of the line.
-  std::string_view token(bool comments = true) {
-    while (cur_ < line_end_ && is_space(data_[cur_])) ++cur_;
-    tok_start_ = cur_;
-    if (cur_ >= line_end_ || (comments && data_[cur_] == '#')) return {};
-    while (cur_ < line_end_ && !is_space(data_[cur_]) && !(comments && data_[cur_] == '#')) ++cur_;
-    return std::string_view(data_).substr(tok_start_, cur_ - tok_start_);
-  }
-  /// Whether the rest of the line is blank or a comment.
-  bool line_blank() {
-    const std::size_t save = cur_;
-    const bool blank = token().empty();
-    cur_ = save;
-    return blank;
-  }
-  std::size_t line() const { return line_no_; }
-  /// file:line:col of the last token (or of the end of the line when it was empty).
-  [[noreturn]] void fail(const std::string& what) const {
-    throw ShapeError(file_ + ":" + std::to_string(line_no_) + ":" + std::to_string(tok_start_ - line_start_ + 1) +
-                     ": " + what);
-  }
-  double number(std::string_view what) {
-    const std::string_view t = token();
-    if (t.empty()) fail("expected " + std::string(what) + ", found the end of the line");
-    double x = 0;
-    const char* first = t.data();
-    if (*first == '+') ++first;
-    const auto [p, ec] = std::from_chars(first, t.data() + t.size(), x);
-    if (ec != std::errc() || p != t.data() + t.size() || !std::isfinite(x))
-      fail("bad number '" + std::string(t) + "' (expected " + std::string(what) + ")");
-    return x;
-  }
-  long long integer(std::string_view t, std::string_view what) const {
-    long long x = 0;
-    const char* first = t.data();
-    if (!t.empty() && *first == '+') ++first;
-    const auto [p, ec] = std::from_chars(first, t.data() + t.size(), x);
-    if (t.empty() || ec != std::errc() || p != t.data() + t.size())
-      fail("bad integer '" + std::string(t) + "' (expected " + std::string(what) + ")");
-    return x;
-  }
-  long long integer(std::string_view what) {
-    const std::string_view t = token();
-    if (t.empty()) fail("expected " + std::string(what) + ", found the end of the line");
-    return integer(t, what);
-  }
-
- private:
-  static bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
-  const std::string& file_;
-  const std::string& data_;
-  std::size_t pos_ = 0, line_start_ = 0, line_end_ = 0, cur_ = 0, tok_start_ = 0, line_no_ = 0;
-};
-
-/// Fans a polygon (indices already checked) into triangles of the soup.
-void add_polygon(Soup& s, const std::vector<std::uint32_t>& poly, std::size_t face, std::size_t line) {
-  for (std::size_t i = 1; i + 1 < poly.size(); ++i) {
-    s.triangles.push_back({poly[0], poly[i], poly[i + 1]});
-    s.face.push_back(face);
-    s.line.push_back(line);
-  }
-}
-
-Soup read_off(const std::string& file, const std::string& data) {
-  Text t(file, data);
-  Soup s;
-  auto next = [&](const char* what) {
-    do {
-      if (!t.next_line()) {
-        t.fail(std::string("unexpected end of file, expected ") + what);
-      }
-    } while (t.line_blank());
-  };
-  next("the OFF header");
-  const std::string_view head = t.token();
-  // OFF, or a variant with texture coordinates, colours or normals per vertex
-  // (STOFF, COFF, NOFF, CNOFF, ...), which follow the coordinates and are ignored.
-  const bool off = head.size() >= 3 && head.substr(head.size() - 3) == "OFF" &&
-                   head.substr(0, head.size() - 3).find_first_not_of("STCN") == std::string_view::npos;
-  if (!off) t.fail("expected the OFF header 'OFF' (or STOFF, COFF, NOFF, CNOFF), found '" + std::string(head) + "'");
-  if (t.line_blank()) next("the vertex, face and edge counts");
-  const long long nv = t.integer("the vertex count");
-  const long long nf = t.integer("the face count");
-  t.integer("the edge count");
-  if (nv < 0) t.fail("negative vertex count");
-  if (nf < 0) t.fail("negative face count");
-  if (!t.line_blank()) {
-    t.token();
-    t.fail("unexpected text after the counts");
-  }
-  if (nv > std::numeric_limits<std::uint32_t>::max()) t.fail("too many vertices");
-  for (long long i = 0; i < nv; ++i) {
-    next("a vertex");
-    const double x = t.number("a coordinate"), y = t.number("a coordinate"), z = t.number("a coordinate");
-    s.vertices.push_back({x, y, z});  // anything after the coordinates (a colour) is ignored
-  }
-  std::vector<std::uint32_t> poly;
-  for (long long f = 0; f < nf; ++f) {
-    next("a face");
-    const long long n = t.integer("the number of vertices of a face");
-    if (n < 3) t.fail("face " + std::to_string(f) + " has " + std::to_string(n) + " vertices (at least 3 needed)");
-    poly.clear();
-    for (long long i = 0; i < n; ++i) {
-      const long long v = t.integer("a vertex index");
-      if (v < 0 || v >= nv)
-        t.fail("face " + std::to_string(f) + ": vertex index " + std::to_string(v) + " out of range (" +
-               std::to_string(nv) + " vertices)");
-      poly.push_back(static_cast<std::uint32_t>(v));
-    }
-    add_polygon(s, poly, static_cast<std::size_t>(f), t.line());
-  }
-  while (t.next_line())
-    if (!t.line_blank()) {
-      t.token();
-      t.fail("unexpected text after the last face");
-    }
-  return s;
-}
-
-Soup read_obj(const std::string& file, const std::string& data) {
-  Text t(file, data);
-  Soup s;
-  s.vertex_base = 1;
-  std::size_t faces = 0;
-  std::vector<std::uint32_t> poly;
-  while (t.next_line()) {
-    const std::string_view key = t.token();
-    if (key == "v") {
-      const double x = t.number("a coordinate"), y = t.number("a coordinate"), z = t.number("a coordinate");
-      s.vertices.push_back({x, y, z});  // an optional weight or colour is ignored
-    } else if (key == "f") {
-      poly.clear();
-      for (std::string_view tok = t.token(); !tok.empty(); tok = t.token()) {
-        const std::string_view idx = tok.substr(0, tok.find('/'));  // v, v/vt, v//vn, v/vt/vn
-        const long long v = t.integer(idx, "a vertex index");
-        const long long n = static_cast<long long>(s.vertices.size());
-        // 1-based; negative counts back from the last vertex read so far.
-        const long long abs = v > 0 ? v : n + v + 1;
-        if (v == 0 || abs < 1 || abs > n)
-          t.fail("face " + std::to_string(faces) + ": vertex index " + std::to_string(v) + " out of range (" +
-                 std::to_string(n) + " vertices so far)");
-        poly.push_back(static_cast<std::uint32_t>(abs - 1));
-      }
-      if (poly.size() < 3)
-        t.fail("face " + std::to_string(faces) + " has " + std::to_string(poly.size()) +
-               " vertices (at least 3 needed)");
-      add_polygon(s, poly, faces++, t.line());
-    }
-    // Other statements (vt, vn, g, o, s, usemtl, mtllib, l, ...) and comments are ignored.
-  }
-  return s;
-}
-
-/// Exact merging of the STL's repeated corners.
-struct Merger {
-  Soup& s;
-  std::map<Vec3, std::uint32_t> index;
-  std::uint32_t operator()(const Vec3& p) {
-    const auto [it, fresh] = index.try_emplace(p, static_cast<std::uint32_t>(s.vertices.size()));
-    if (fresh) s.vertices.push_back(p);
-    return it->second;
-  }
-};
-
-Soup read_stl_ascii(const std::string& file, const std::string& data) {
-  Text t(file, data);
-  Soup s;
-  Merger merge{s, {}};
-  auto next = [&](const char* what) {
-    do {
-      if (!t.next_line()) t.fail(std::string("unexpected end of file, expected ") + what);
-    } while (t.line_blank());
-  };
-  auto expect = [&](std::string_view word) {
-    const std::string_view w = t.token(false);
-    if (w != word) t.fail("expected '" + std::string(word) + "', found '" + std::string(w) + "'");
-  };
-  next("'solid'");
-  expect("solid");
-  std::size_t facets = 0;
-  for (;;) {
-    next("'facet' or 'endsolid'");
-    const std::string_view w = t.token(false);
-    if (w == "endsolid") break;
-    if (w != "facet") t.fail("expected 'facet' or 'endsolid', found '" + std::string(w) + "'");
-    const std::size_t line = t.line();
-    expect("normal");
-    for (int i = 0; i < 3; ++i) t.number("a normal component");
-    next("'outer loop'");
-    expect("outer");
-    expect("loop");
-    std::array<std::uint32_t, 3> tri{};
-    for (auto& v : tri) {
-      next("'vertex'");
-      expect("vertex");
-      const double x = t.number("a coordinate"), y = t.number("a coordinate"), z = t.number("a coordinate");
-      v = merge({x, y, z});
-    }
-    next("'endloop'");
-    expect("endloop");
-    next("'endfacet'");
-    expect("endfacet");
-    s.triangles.push_back(tri);
-    s.face.push_back(facets++);
-    s.line.push_back(line);
-  }
-  return s;
-}
-
-Soup read_stl_binary(const std::string& file, const std::string& data) {
-  auto fail = [&](std::size_t offset, const std::string& what) -> void {
-    throw ShapeError(file + ": byte " + std::to_string(offset) + ": " + what);
-  };
-  if (data.size() < 84)
-    fail(data.size(), "binary STL truncated in its 84-byte header (" + std::to_string(data.size()) + " bytes)");
-  const auto u8 = [&](std::size_t i) { return static_cast<std::uint32_t>(static_cast<unsigned char>(data[i])); };
-  const std::uint32_t n = u8(80) | u8(81) << 8 | u8(82) << 16 | u8(83) << 24;
-  const std::size_t expected = 84 + 50 * static_cast<std::size_t>(n);
-  if (data.size() < expected) {
-    const std::size_t whole = (data.size() - 84) / 50;
-    fail(84 + 50 * whole, "binary STL truncated in triangle " + std::to_string(whole) + " of " + std::to_string(n) +
-                              " (" + std::to_string(expected) + " bytes expected, " + std::to_string(data.size()) +
-                              " present)");
-  }
-  if (data.size() > expected)
-    fail(expected, "binary STL has " + std::to_string(data.size() - expected) + " bytes after its " +
-                       std::to_string(n) + " triangles");
-  Soup s;
-  Merger merge{s, {}};
-  for (std::size_t f = 0; f < n; ++f) {
-    const std::size_t at = 84 + 50 * f;
-    std::array<std::uint32_t, 3> tri{};
-    for (int k = 0; k < 3; ++k) {
-      Vec3 p{};
-      for (int c = 0; c < 3; ++c) {
-        const std::size_t off = at + 12 + 12 * static_cast<std::size_t>(k) + 4 * static_cast<std::size_t>(c);
-        const std::uint32_t bits = u8(off) | u8(off + 1) << 8 | u8(off + 2) << 16 | u8(off + 3) << 24;
-        float x = 0;
-        std::memcpy(&x, &bits, sizeof x);
-        if (!std::isfinite(x)) fail(off, "binary STL: triangle " + std::to_string(f) + ": coordinate not finite");
-        p[static_cast<std::size_t>(c)] = static_cast<double>(x);
-      }
-      tri[static_cast<std::size_t>(k)] = merge(p);
-    }
-    s.triangles.push_back(tri);
-    s.face.push_back(f);
-    s.line.push_back(0);
-  }
-  return s;
-}
-
-Soup read_stl(const std::string& file, const std::string& data) {
-  // Binary when the size matches the triangle count at byte 80 or the file
-  // does not start with "solid" (binary headers may start with it too).
-  if (data.size() >= 84) {
-    const auto u8 = [&](std::size_t i) { return static_cast<std::uint32_t>(static_cast<unsigned char>(data[i])); };
-    const std::uint64_t n = u8(80) | u8(81) << 8 | u8(82) << 16 | u8(83) << 24;
-    if (data.size() == 84 + 50 * n) return read_stl_binary(file, data);
-  }
-  std::size_t i = 0;
-  while (i < data.size() && std::isspace(static_cast<unsigned char>(data[i]))) ++i;
-  if (data.compare(i, 5, "solid") == 0) return read_stl_ascii(file, data);
-  return read_stl_binary(file, data);
 }
 
 // ---------------------------------------------------------------------------
@@ -633,7 +345,12 @@ std::unique_ptr<Shape> load_surface(const std::string& path) {
   buf << in.rdbuf();
   if (in.bad()) throw ShapeError(path + ": cannot read");
   const std::string data = std::move(buf).str();
-  const Soup s = ext == "off" ? read_off(path, data) : ext == "obj" ? read_obj(path, data) : read_stl(path, data);
+  Soup s;
+  try {
+    s = ext == "off" ? io::read_off(path, data) : ext == "obj" ? io::read_obj(path, data) : io::read_stl(path, data);
+  } catch (const io::ReadError& e) {
+    throw ShapeError(e.what());
+  }
   return shape_of(s, path);
 }
 

@@ -1,6 +1,6 @@
-// The Medit reader (medit_read.h): a tokenizer that knows each token's line
+// The Medit reader (medit.h): a tokenizer that knows each token's line
 // and column, and one pass over the sections.
-#include "bccmis/stuff/medit_read.h"
+#include "bccmis/io/medit.h"
 
 #include <charconv>
 #include <cmath>
@@ -10,10 +10,9 @@
 #include <string>
 #include <system_error>
 
-#include "bccmis/format.h"
-#include "bccmis/stuff/stuff.h"
+#include "bccmis/io/parse_error.h"
 
-namespace bccmis::stuff {
+namespace bccmis::io {
 
 namespace {
 
@@ -118,7 +117,7 @@ constexpr std::int64_t kMaxCount = std::numeric_limits<std::uint32_t>::max() - 1
 
 }  // namespace
 
-d3::TetMeshF read_medit(std::string_view text, const std::string& name) {
+d3::TetMeshF read_medit(std::string_view text, const std::string& name, Orientation orientation) {
   Tokens in(text, name);
   d3::TetMeshF mesh;
   bool version = false, dimension = false, vertices = false, tetrahedra = false, triangles = false;
@@ -193,4 +192,4 @@ d3::TetMeshF read_medit(std::string_view text, const std::string& name) {
   }
 }
 
-}  // namespace bccmis::stuff
+}  // namespace bccmis::io

@@ -1,0 +1,19 @@
+// bccmis::io: reading STL surfaces, ASCII or binary.
+#pragma once
+
+#include <string>
+
+#include "bccmis/io/triangle_soup.h"
+
+namespace bccmis::io {
+
+/// The triangle soup of the STL file `data` (file name `file` for messages),
+/// each corner that repeats exactly merged into one vertex. Binary when the
+/// size matches the triangle count at byte 80 or the text does not start with
+/// "solid" (binary headers may start with it too). Throws ReadError: in ASCII
+/// `file:line:column: message` on a keyword or number out of place, in binary
+/// `file: byte N: message` on a truncated file, bytes after the triangles or a
+/// coordinate that is not finite.
+TriangleSoup read_stl(const std::string& file, const std::string& data);
+
+}  // namespace bccmis::io

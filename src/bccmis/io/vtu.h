@@ -1,0 +1,26 @@
+// bccmis::io: VTK XML UnstructuredGrid (.vtu), ASCII: the tetrahedral mesh
+// of a 3D lattice or of isosurface stuffing, and the triangle mesh of a
+// height field (spec/apps.md, "Output formats").
+#pragma once
+
+#include <iosfwd>
+#include <string>
+
+#include "bccmis/d3/tet_mesh.h"
+#include "bccmis/triangle_mesh.h"
+
+namespace bccmis::io {
+
+/// Int64 points, VTK_TETRA (10) cells, the point data array "kind" and the
+/// cell data array "level".
+void write_vtu(std::ostream& out, const d3::TetMesh& mesh);
+/// The same with Float64 points.
+void write_vtu(std::ostream& out, const d3::TetMeshF& mesh);
+
+/// Triangles (type 5); point data `height`; cell data `level` (Int32) and,
+/// when present, `error` (Float64). Streams through TextWriter
+/// (bccmis/text_writer.h); format_vtu returns the same text.
+void write_vtu(std::ostream& out, const TriangleMesh& m);
+std::string format_vtu(const TriangleMesh& m);
+
+}  // namespace bccmis::io
