@@ -24,13 +24,13 @@ bccmis_add_gtest(d3_exception_safety_test SOURCES exception_safety_test.cpp LIBS
 
 # The graded BCC tetrahedral mesh (spec/mesh3d.md): hand counts, shapes and
 # angles, the mesh facts in random states, and the writers read back.
-bccmis_add_gtest(d3_mesh_tests SOURCES mesh_test.cpp LIBS bccmis::d3 DEFINITIONS BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples" LABELS unit)
+bccmis_add_gtest(d3_mesh_tests SOURCES mesh_test.cpp LIBS bccmis::d3 bccmis::io DEFINITIONS BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples" LABELS unit)
 
 # The writers against outside readers: meshio (Debian's python3-meshio, for
 # the system interpreter /usr/bin/python3) and gmsh must load every file; a
 # missing meshio or gmsh fails the test (scripts/setup.sh installs both).
 add_executable(d3_mesh_write d3/mesh_write_files.cpp)
-target_link_libraries(d3_mesh_write PRIVATE bccmis::d3 bccmis::warnings)
+target_link_libraries(d3_mesh_write PRIVATE bccmis::d3 bccmis::io bccmis::warnings)
 add_test(NAME d3.mesh_readers
          COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/d3/mesh_readers_test.py $<TARGET_FILE:d3_mesh_write>)
 set_tests_properties(d3.mesh_readers PROPERTIES LABELS unit)

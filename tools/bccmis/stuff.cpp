@@ -12,7 +12,10 @@
 #include <memory>
 #include <string>
 
-#include "bccmis/d3/mesh.h"
+#include "bccmis/io/medit.h"
+#include "bccmis/io/msh.h"
+#include "bccmis/io/pvd.h"
+#include "bccmis/io/vtu.h"
 #include "bccmis/json_writer.h"
 #include "bccmis/stuff/animate_shape.h"
 #include "bccmis/stuff/mesh_shape.h"
@@ -147,7 +150,7 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
     return std::string(buf);
   };
   OutputSet outputs;
-  std::string index = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
+  std::vector<std::pair<int, std::string>> frames;  // the .pvd index: timestep, file
   JsonWriter json;
   json.begin_object().key("frames").begin_array();
   std::string table =
@@ -158,9 +161,8 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
     const stuff::FrameReport& r = f.report;
     const d3::TetMeshF& mesh = *f.mesh;
     if (!pvd.empty()) {
-      outputs.add(stem + frame_name(k), [&](std::ostream& out) { d3::write_vtu(out, mesh); });
-      index +=
-          "    <DataSet timestep=\"" + std::to_string(k) + "\" part=\"0\" file=\"" + base + frame_name(k) + "\"/>\n";
+      outputs.add(stem + frame_name(k), [&](std::ostream& out) { io::write_vtu(out, mesh); });
+      frames.emplace_back(k, base + frame_name(k));
     }
     json.begin_object()
         .member("frame", k)
@@ -189,8 +191,7 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
   } catch (const stuff::CheckError& e) {
     throw CheckFailure(e.what());
   }
-  index += "  </Collection>\n</VTKFile>\n";
-  if (!pvd.empty()) outputs.add(pvd, index);
+  if (!pvd.empty()) outputs.add(pvd, [&](std::ostream& out) { io::write_pvd(out, frames); });
   json.end_array().member("mean_step_seconds", summary.mean_step_seconds).member("operations", summary.operations);
   table += "mean_step_seconds " + number(summary.mean_step_seconds) + "\noperations " +
            std::to_string(summary.operations) + "\n";
@@ -248,9 +249,9 @@ int run(const StuffOptions& o) {
   const d3::TetMeshF& mesh = m.stuffed.mesh;
   OutputSet outputs;
   for (const std::string& path : o.outputs) {
-    if (ends_with(path, ".vtu")) outputs.add(path, [&](std::ostream& out) { d3::write_vtu(out, mesh); });
-    if (ends_with(path, ".msh")) outputs.add(path, [&](std::ostream& out) { d3::write_msh(out, mesh); });
-    if (ends_with(path, ".mesh")) outputs.add(path, [&](std::ostream& out) { d3::write_medit(out, mesh); });
+    if (ends_with(path, ".vtu")) outputs.add(path, [&](std::ostream& out) { io::write_vtu(out, mesh); });
+    if (ends_with(path, ".msh")) outputs.add(path, [&](std::ostream& out) { io::write_msh(out, mesh); });
+    if (ends_with(path, ".mesh")) outputs.add(path, [&](std::ostream& out) { io::write_medit(out, mesh); });
     if (ends_with(path, ".off")) outputs.add(path, [&](std::ostream& out) { stuff::write_off(out, mesh, m.boundary); });
     if (ends_with(path, ".obj")) outputs.add(path, [&](std::ostream& out) { stuff::write_obj(out, mesh, m.boundary); });
   }

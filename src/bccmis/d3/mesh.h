@@ -10,9 +10,6 @@
 
 #include "bccmis/d3/graph.h"
 #include "bccmis/d3/tet_mesh.h"
-#include "bccmis/io/medit.h"
-#include "bccmis/io/msh.h"
-#include "bccmis/io/vtu.h"
 
 namespace bccmis::d3 {
 
@@ -61,14 +58,5 @@ struct MeshQuality {
   std::array<std::size_t, 13> histogram{};
 };
 MeshQuality mesh_quality(const std::vector<Tet>& tets);
-
-}  // namespace bccmis::d3
-
-namespace bccmis::d3 {
-
-/// The mesh writers of bccmis::io, also by their names in this namespace.
-using io::write_medit;
-using io::write_msh;
-using io::write_vtu;
 
 }  // namespace bccmis::d3
