@@ -1,0 +1,103 @@
+// The background lattice of isosurface stuffing (spec/stuffing.md S2, S3):
+// fit_lattice() places the lattice around the shape, background() and
+// background_fast() refine it near the surface.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "bccmis/apps/balance3.h"
+#include "bccmis/d3/lattice.h"
+#include "bccmis/d3/point.h"
+#include "bccmis/stuff/stuff.h"
+
+namespace bccmis::stuff {
+
+using d3::Point3;
+
+Fit fit_lattice(const Bounds& box, const StuffOptions& options) {
+  Vec3 extent{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    extent[i] = box.hi[i] - box.lo[i];
+    if (!std::isfinite(box.lo[i]) || !std::isfinite(box.hi[i]) || extent[i] < 0)
+      throw ShapeError("the shape's bounding box is empty or not finite");
+  }
+  const double E = std::max({extent[0], extent[1], extent[2]});
+  if (!(E > 0)) throw ShapeError("the shape's bounding box has no extent");
+  if (options.cells < 1) throw ShapeError("--cells must be at least 1");
+  int L = options.max_level;
+  if (options.size) {
+    // S2: the smallest L with N 2^L h >= E + 10h.
+    const double h = *options.size;
+    if (!(h > 0) || !std::isfinite(h)) throw ShapeError("--size must be positive");
+    L = 0;
+    while (static_cast<double>(options.cells) * std::ldexp(h, L) < E + 10 * h) {
+      if (++L > 20) throw ShapeError("--size is too small for the shape: it needs more than 20 levels");
+    }
+  }
+  if (L < 0 || L > 20) throw ShapeError("--max-level must be in [0, 20]");
+  if (options.min_level < 0 || options.min_level > L)
+    throw ShapeError("--min-level must be in [0, max level " + std::to_string(L) + "]");
+  const double n2L = std::ldexp(static_cast<double>(options.cells), L);
+  if (n2L <= 10)
+    throw ShapeError("--cells x 2^max-level must exceed 10 (the margin of 5 finest cells on each side); it is " +
+                     std::to_string(static_cast<long long>(n2L)));
+  Fit fit;
+  const double S = E / (options.cells - 10.0 / std::ldexp(1.0, L));
+  fit.h = std::ldexp(S, -L);
+  std::int64_t counts[3];
+  for (std::size_t i = 0; i < 3; ++i) {
+    const double need = extent[i] + 10 * fit.h;
+    counts[i] = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(need / S - 1e-12)));
+    fit.origin[i] = 0.5 * (box.lo[i] + box.hi[i]) - 0.5 * static_cast<double>(counts[i]) * S;
+  }
+  fit.size = d3::LatticeSize3{counts[0], counts[1], counts[2], L};
+  fit.scale = std::ldexp(S, -(L + 1));
+  return fit;
+}
+
+namespace {
+
+/// S3 on either lattice: the same passes, the same refines in the same order
+/// (every pass visits the leaves of its start in sorted order), so the same
+/// leaf set on Graph3 and fast::Lattice3.
+template <class G>
+void refine_near(const Shape& shape, const Fit& fit, const StuffOptions& options, G& g) {
+  const int L = fit.size.L;
+  std::vector<Point3> snapshot;
+  for (bool changed = true; changed;) {
+    changed = false;
+    {
+      const auto& cs = cells(g);  // sorted on both lattices
+      snapshot.assign(cs.begin(), cs.end());
+    }
+    for (const Point3& c : snapshot) {
+      if (!is_center(g, c)) continue;  // refined by the cascade earlier in this pass
+      const int l = level_of(g, c);
+      if (l >= L) continue;
+      const double r = 0.5 * static_cast<double>(d3::cell_side(fit.size, l)) * fit.scale;
+      const bool near = shape.distance(fit.to_space(c)) <= std::sqrt(3.0) * r + 4 * fit.h;
+      if (near || l < options.min_level) {
+        d3::refine_balanced(g, c);
+        changed = true;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+d3::Graph3 background(const Shape& shape, const Fit& fit, const StuffOptions& options) {
+  d3::Graph3 g = d3::make_lattice(fit.size);
+  refine_near(shape, fit, options, g);
+  return g;
+}
+
+fast::Lattice3 background_fast(const Shape& shape, const Fit& fit, const StuffOptions& options) {
+  fast::Lattice3 g(fit.size);
+  refine_near(shape, fit, options, g);
+  return g;
+}
+
+}  // namespace bccmis::stuff

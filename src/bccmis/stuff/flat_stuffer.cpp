@@ -1,0 +1,353 @@
+// The flat stuffer: S5-S9 of spec/stuffing.md with the same decisions in
+// the same order as the reference stuffer (reference_stuffer.cpp), on arrays
+// indexed by the lattice vertices numbered in position order. stuff() on a
+// fast::Lattice3 and stuff_part() (S16).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "bccmis/d3/point.h"
+#include "bccmis/fast/mesh3.h"
+#include "bccmis/stuff/detail/stencils.h"
+#include "bccmis/stuff/detail/stuffer.h"
+#include "bccmis/stuff/stuff.h"
+
+namespace bccmis::stuff {
+
+using d3::Point3;
+
+namespace {
+
+/// A vertex of the output (S8's key) on the lattice vertices numbered in
+/// position order: lattice vertex i is (i, i), the cut point on lattice edge
+/// ij is (min(i, j), max(i, j)), packed as high << 32 | low. The numbering
+/// keeps the order of positions, so the packed keys sort as S8's pairs of
+/// points.
+using VKey = std::uint64_t;
+std::uint32_t first(VKey k) { return static_cast<std::uint32_t>(k >> 32); }
+std::uint32_t second(VKey k) { return static_cast<std::uint32_t>(k); }
+bool is_cut(VKey k) { return first(k) != second(k); }
+
+/// Cut edge -> cut index: open addressing on the packed edge key (linear
+/// probing, no deletion).
+class EdgeTable {
+ public:
+  void reserve(std::size_t n) {
+    std::size_t slots = 16;
+    while (slots < 2 * n) slots *= 2;
+    keys_.assign(slots, kEmpty);
+    values_.assign(slots, 0);
+    used_ = 0;
+  }
+  /// The value at k, or kNone.
+  std::uint32_t find(VKey k) const {
+    for (std::size_t i = hash(k);; i = (i + 1) & (keys_.size() - 1)) {
+      if (keys_[i] == k) return values_[i];
+      if (keys_[i] == kEmpty) return kNone;
+    }
+  }
+  /// Inserts k -> v; k must be absent.
+  void insert(VKey k, std::uint32_t v) {
+    if (2 * (used_ + 1) > keys_.size()) grow();
+    std::size_t i = hash(k);
+    while (keys_[i] != kEmpty) i = (i + 1) & (keys_.size() - 1);
+    keys_[i] = k;
+    values_[i] = v;
+    ++used_;
+  }
+  static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+
+ private:
+  static constexpr VKey kEmpty = ~VKey{0};  // never an edge: its ends differ
+  std::size_t hash(VKey k) const {
+    return static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> 17) & (keys_.size() - 1);
+  }
+  void grow() {
+    std::vector<VKey> keys = std::move(keys_);
+    std::vector<std::uint32_t> values = std::move(values_);
+    reserve(keys.size());
+    for (std::size_t i = 0; i < keys.size(); ++i)
+      if (keys[i] != kEmpty) insert(keys[i], values[i]);
+  }
+  std::vector<VKey> keys_;
+  std::vector<std::uint32_t> values_;
+  std::size_t used_ = 0;
+};
+
+/// S5-S9 on the graded mesh of a lattice G (d3::Graph3 or fast::Lattice3,
+/// through the vocabulary: is_center, level_of). The lattice's vertices are
+/// numbered in position order and every per-vertex datum is an array.
+template <class G>
+class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey> {
+  using Stencils = detail::Stencils<Stuffer<G>, std::uint32_t, VKey>;
+
+ public:
+  Stuffer(const Shape& shape, const Fit& fit, const G& g, const StuffOptions& options)
+      : shape_(shape), fit_(fit), g_(g), options_(options) {}
+
+  /// Also report, for stuff_part(), each output vertex's key as lattice
+  /// points and where each lattice tetrahedron's output tetrahedra begin.
+  void record(std::vector<std::array<Point3, 2>>* keys, std::vector<std::uint32_t>* begin) {
+    keys_ = keys;
+    begin_ = begin;
+  }
+
+  Stuffed run(std::vector<d3::Tet> tets, PhaseTimes* times) {
+    owned_ = std::move(tets);
+    return run(std::span<const d3::Tet>(owned_), times);
+  }
+
+  /// The same on tetrahedra the caller keeps.
+  Stuffed run(std::span<const d3::Tet> tets, PhaseTimes* times) {
+    detail::PhaseClock clock(times);
+    tets_ = tets;
+    out_.lattice_tetrahedra = tets_.size();
+    number();
+    evaluate();
+    cut();
+    clock.lap(&PhaseTimes::cut);
+    warp();
+    clock.lap(&PhaseTimes::warp);
+    if (begin_) begin_->reserve(tets_.size() + 1);
+    for (std::size_t i = 0; i < tets_.size(); ++i) {
+      if (begin_) begin_->push_back(static_cast<std::uint32_t>(this->tets_out_.size()));
+      fill(i);
+    }
+    if (begin_) begin_->push_back(static_cast<std::uint32_t>(this->tets_out_.size()));
+    Stuffed s = finish();
+    clock.lap(&PhaseTimes::stencils);
+    return s;
+  }
+
+ private:
+  friend Stencils;
+  using Ids = std::array<std::uint32_t, 4>;
+
+  // What the stencils (detail/stencils.h) ask of a stuffer.
+  static VKey lattice_key(std::uint32_t i) { return (VKey{i} << 32) | i; }
+  static VKey cut_key(std::uint32_t i, std::uint32_t j) { return i < j ? (VKey{i} << 32) | j : (VKey{j} << 32) | i; }
+  std::int64_t length2(std::uint32_t i, std::uint32_t j) const { return detail::length2(points_[i], points_[j]); }
+  Point3 point_of(VKey k) const { return points_[first(k)]; }
+  double value(std::uint32_t i) const { return value_[i]; }
+  Vec3 pos(VKey k) const { return is_cut(k) ? cuts_[cut_index_.find(k)].pos : pos_[first(k)]; }
+
+  // The lattice vertices of the mesh in position order, the tetrahedra on
+  // them: ids in order of first use through a hash table, then renumbered by
+  // rank of position.
+  void number() {
+    // The vertices are centers, nodes and hull points (centers of the
+    // domain's faces, at most one per leaf): load at most 1/2.
+    const std::size_t most = std::min(2 * cell_count(g_) + node_count(g_), 4 * tets_.size());
+    std::size_t slots = 16;
+    while (slots < 2 * most) slots *= 2;
+    std::vector<std::uint32_t> table(slots, EdgeTable::kNone);
+    const auto hash = [&](const Point3& p) {
+      const std::uint64_t h = static_cast<std::uint64_t>(p.x) * 0x9E3779B97F4A7C15ull ^
+                              static_cast<std::uint64_t>(p.y) * 0xC2B2AE3D27D4EB4Full ^
+                              static_cast<std::uint64_t>(p.z) * 0x165667B19E3779F9ull;
+      return static_cast<std::size_t>(h ^ (h >> 29)) & (slots - 1);
+    };
+    ids_.reserve(tets_.size());
+    for (const d3::Tet& t : tets_) {
+      Ids ids{};
+      for (std::size_t i = 0; i < 4; ++i) {
+        std::size_t k = hash(t[i]);
+        while (table[k] != EdgeTable::kNone && !(points_[table[k]] == t[i])) k = (k + 1) & (slots - 1);
+        if (table[k] == EdgeTable::kNone) {
+          table[k] = static_cast<std::uint32_t>(points_.size());
+          points_.push_back(t[i]);
+        }
+        ids[i] = table[k];
+      }
+      ids_.push_back(ids);
+    }
+    std::vector<std::uint32_t> order(points_.size());
+    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return points_[a] < points_[b]; });
+    std::vector<std::uint32_t> rank(points_.size());
+    std::vector<Point3> sorted(points_.size());
+    for (std::uint32_t r = 0; r < order.size(); ++r) rank[order[r]] = r, sorted[r] = points_[order[r]];
+    points_ = std::move(sorted);
+    for (Ids& ids : ids_)
+      for (std::uint32_t& i : ids) i = rank[i];
+    level_.assign(points_.size(), -1);
+  }
+
+  void evaluate() {
+    value_.resize(points_.size());
+    pos_.resize(points_.size());
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+      pos_[i] = fit_.to_space(points_[i]);
+      value_[i] = shape_.side(pos_[i]);  // S5: only the sign enters
+    }
+  }
+
+  // S5
+  void cut() {
+    cut_index_.reserve(points_.size() / 4);
+    for (std::size_t ti = 0; ti < tets_.size(); ++ti) {
+      const Ids& t = ids_[ti];
+      bool has_cut = false;
+      for (std::size_t i = 0; i < 4; ++i)
+        for (std::size_t j = i + 1; j < 4; ++j) {
+          const std::uint32_t x = std::min(t[i], t[j]), y = std::max(t[i], t[j]);
+          const double fx = value_[x], fy = value_[y];
+          if (!((fx < 0 && fy > 0) || (fx > 0 && fy < 0))) continue;
+          has_cut = true;
+          const VKey k = cut_key(x, y);
+          if (cut_index_.find(k) != EdgeTable::kNone) continue;
+          const Vec3 &px = pos_[x], &py = pos_[y];
+          const double s = std::clamp(shape_.crossing(px, py), 0.0, 1.0);
+          detail::Cut c;
+          c.t = s;
+          for (std::size_t d = 0; d < 3; ++d) c.pos[d] = px[d] + s * (py[d] - px[d]);
+          cut_index_.insert(k, static_cast<std::uint32_t>(cuts_.size()));
+          cuts_.push_back(c);
+          edges_.push_back({x, y});
+          ends_.push_back({x, y});
+          ends_.push_back({y, x});
+        }
+      if (has_cut) detail::check_regular(tets_[ti], fit_.size.L);
+    }
+  }
+
+  // S6, in increasing position order of v, the other ends w in increasing
+  // position order.
+  void warp() {
+    std::sort(ends_.begin(), ends_.end());
+    warped_.assign(points_.size(), 0);
+    for (std::size_t b = 0, e = 0; b < ends_.size(); b = e) {
+      const std::uint32_t v = ends_[b].first;
+      for (e = b; e < ends_.size() && ends_[e].first == v; ++e) {
+      }
+      const bool v_center = is_center(g_, points_[v]);
+      std::uint32_t best = EdgeTable::kNone;
+      double best_distance = 0;
+      for (std::size_t i = b; i < e; ++i) {
+        const std::uint32_t w = ends_[i].second;
+        const detail::Cut& c = cuts_[cut_index_.find(cut_key(v, w))];
+        if (c.removed) continue;
+        const double from_v = v < w ? c.t : 1 - c.t;
+        const bool same_kind = v_center == is_center(g_, points_[w]);
+        const double alpha = same_kind ? options_.alpha_long : options_.alpha_short;
+        if (!(from_v < alpha)) continue;
+        const double distance = from_v * std::sqrt(static_cast<double>(length2(v, w)));
+        if (best == EdgeTable::kNone || distance < best_distance) best = w, best_distance = distance;
+      }
+      if (best == EdgeTable::kNone) continue;
+      pos_[v] = cuts_[cut_index_.find(cut_key(v, best))].pos;
+      warped_[v] = 1;
+      value_[v] = 0;
+      ++out_.warped;
+      for (std::size_t i = b; i < e; ++i) cuts_[cut_index_.find(cut_key(v, ends_[i].second))].removed = true;
+    }
+    for (const detail::Cut& c : cuts_) out_.cut_points += c.removed ? 0 : 1;
+  }
+
+  // S7
+  void fill(std::size_t ti) {
+    bool warped = false;
+    for (const std::uint32_t p : ids_[ti]) warped = warped || warped_[p];
+    if (warped) detail::check_regular(tets_[ti], fit_.size.L);
+    Stencils::fill(ids_[ti], [this, ti] { return level(ti); });
+  }
+
+  /// The level of the leaf of tetrahedron ti (its vertex 0, spec/mesh3d.md),
+  /// asked of the lattice once per leaf.
+  int level(std::size_t ti) {
+    int& l = level_[ids_[ti][0]];
+    if (l < 0) l = level_of(g_, tets_[ti][0]);
+    return l;
+  }
+
+  Stuffed finish() {
+    // S8: the output vertices in key order: the lattice vertices used (keys
+    // (i, i), in order of i) merged with the cut points used (in key order).
+    std::vector<std::uint8_t> used_vertex(points_.size(), 0), used_cut(cuts_.size(), 0);
+    for (const auto& t : this->tets_out_)
+      for (const VKey k : t) {
+        if (is_cut(k))
+          used_cut[cut_index_.find(k)] = 1;
+        else
+          used_vertex[first(k)] = 1;
+      }
+    std::vector<VKey> cut_keys;
+    for (std::size_t c = 0; c < cuts_.size(); ++c)
+      if (used_cut[c]) cut_keys.push_back(cut_key(edges_[c].first, edges_[c].second));
+    std::sort(cut_keys.begin(), cut_keys.end());
+    std::vector<std::uint32_t> vertex_index(points_.size(), EdgeTable::kNone),
+        cut_index(cuts_.size(), EdgeTable::kNone);
+    d3::TetMeshF& m = out_.mesh;
+    const auto add = [&](VKey k) {
+      const std::uint32_t index = static_cast<std::uint32_t>(m.vertices.size());
+      if (is_cut(k))
+        cut_index[cut_index_.find(k)] = index;
+      else
+        vertex_index[first(k)] = index;
+      m.vertices.push_back(pos(k));
+      if (keys_) keys_->push_back({points_[first(k)], points_[second(k)]});
+      m.kind.push_back(static_cast<std::uint8_t>(is_cut(k)                ? StuffVertex::cut
+                                                 : warped_[first(k)] != 0 ? StuffVertex::warped
+                                                                          : StuffVertex::lattice));
+    };
+    std::size_t next_cut = 0;
+    for (std::uint32_t i = 0; i < points_.size(); ++i) {
+      if (!used_vertex[i]) continue;
+      const VKey k = lattice_key(i);
+      for (; next_cut < cut_keys.size() && cut_keys[next_cut] < k; ++next_cut) add(cut_keys[next_cut]);
+      add(k);
+    }
+    for (; next_cut < cut_keys.size(); ++next_cut) add(cut_keys[next_cut]);
+    const auto index = [&](VKey k) { return is_cut(k) ? cut_index[cut_index_.find(k)] : vertex_index[first(k)]; };
+    m.tets.reserve(this->tets_out_.size());
+    for (const auto& t : this->tets_out_) m.tets.push_back({index(t[0]), index(t[1]), index(t[2]), index(t[3])});
+    m.level = std::move(this->levels_out_);
+    return std::move(out_);
+  }
+
+  const Shape& shape_;
+  const Fit& fit_;
+  const G& g_;
+  const StuffOptions& options_;
+  std::vector<d3::Tet> owned_;
+  std::span<const d3::Tet> tets_;
+  std::vector<Point3> points_;  ///< the lattice vertices of the mesh, sorted
+  std::vector<Ids> ids_;        ///< tets_ on points_
+  std::vector<double> value_;   ///< the sign of f (-1, 0, 1), 0 once warped
+  std::vector<Vec3> pos_;       ///< in space, warped or not
+  std::vector<std::uint8_t> warped_;
+  std::vector<int> level_;  ///< of the leaves, -1 until asked
+  std::vector<detail::Cut> cuts_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges_;  ///< of cuts_, smaller end first
+  EdgeTable cut_index_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> ends_;  ///< (v, w) for each cut edge vw, both ways
+  Stuffed out_;
+  std::vector<std::array<Point3, 2>>* keys_ = nullptr;
+  std::vector<std::uint32_t>* begin_ = nullptr;
+};
+
+}  // namespace
+
+Stuffed stuff(const Shape& shape, const Fit& fit, const fast::Lattice3& g, const StuffOptions& options,
+              PhaseTimes* times) {
+  detail::PhaseClock clock(times);
+  std::vector<d3::Tet> tets = fast::tetrahedra(g);
+  clock.lap(&PhaseTimes::mesh);
+  return Stuffer<fast::Lattice3>(shape, fit, g, options).run(std::move(tets), times);
+}
+
+StuffedPart stuff_part(const Shape& shape, const Fit& fit, const fast::Lattice3& g, const StuffOptions& options,
+                       std::span<const d3::Tet> tets) {
+  StuffedPart part;
+  Stuffer<fast::Lattice3> stuffer(shape, fit, g, options);
+  stuffer.record(&part.keys, &part.begin);
+  part.stuffed = stuffer.run(tets, nullptr);
+  return part;
+}
+
+}  // namespace bccmis::stuff

@@ -1,0 +1,59 @@
+// Checks on a stuffed mesh: its boundary triangles (spec/stuffing.md S11)
+// and whether two meshes hold the same tetrahedra (S16).
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <map>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "bccmis/stuff/stuff.h"
+
+namespace bccmis::stuff {
+
+std::vector<std::array<std::uint32_t, 3>> boundary_triangles(const d3::TetMeshF& mesh) {
+  // The face opposite v_i of a positive tetrahedron, outward.
+  static constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+  std::map<std::array<std::uint32_t, 3>, std::pair<int, std::array<std::uint32_t, 3>>> seen;
+  for (const auto& t : mesh.tets)
+    for (const auto& f : kFaces) {
+      const std::array<std::uint32_t, 3> tri{t[static_cast<std::size_t>(f[0])], t[static_cast<std::size_t>(f[1])],
+                                             t[static_cast<std::size_t>(f[2])]};
+      std::array<std::uint32_t, 3> key = tri;
+      std::sort(key.begin(), key.end());
+      auto& [count, oriented] = seen[key];
+      ++count;
+      oriented = tri;
+    }
+  std::vector<std::array<std::uint32_t, 3>> out;
+  for (const auto& [key, entry] : seen)
+    if (entry.first == 1) out.push_back(entry.second);
+  return out;
+}
+
+namespace {
+using Corner = std::tuple<double, double, double, std::uint8_t>;
+using Canonical = std::pair<int, std::array<Corner, 4>>;
+std::vector<Canonical> canonical(const d3::TetMeshF& m) {
+  std::vector<Canonical> out;
+  out.reserve(m.tets.size());
+  for (std::size_t t = 0; t < m.tets.size(); ++t) {
+    Canonical c{m.level.empty() ? 0 : m.level[t], {}};
+    for (std::size_t i = 0; i < 4; ++i) {
+      const std::uint32_t v = m.tets[t][i];
+      c.second[i] = {m.vertices[v][0], m.vertices[v][1], m.vertices[v][2], m.kind.empty() ? 0 : m.kind[v]};
+    }
+    std::sort(c.second.begin(), c.second.end());
+    out.push_back(c);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+}  // namespace
+
+bool same_tetrahedra(const d3::TetMeshF& a, const d3::TetMeshF& b) {
+  return a.tets.size() == b.tets.size() && canonical(a) == canonical(b);
+}
+
+}  // namespace bccmis::stuff
