@@ -14,6 +14,8 @@
 
 #include "bccmis/io/medit.h"
 #include "bccmis/io/msh.h"
+#include "bccmis/io/obj.h"
+#include "bccmis/io/off.h"
 #include "bccmis/io/pvd.h"
 #include "bccmis/io/vtu.h"
 #include "bccmis/json_writer.h"
@@ -252,8 +254,8 @@ int run(const StuffOptions& o) {
     if (ends_with(path, ".vtu")) outputs.add(path, [&](std::ostream& out) { io::write_vtu(out, mesh); });
     if (ends_with(path, ".msh")) outputs.add(path, [&](std::ostream& out) { io::write_msh(out, mesh); });
     if (ends_with(path, ".mesh")) outputs.add(path, [&](std::ostream& out) { io::write_medit(out, mesh); });
-    if (ends_with(path, ".off")) outputs.add(path, [&](std::ostream& out) { stuff::write_off(out, mesh, m.boundary); });
-    if (ends_with(path, ".obj")) outputs.add(path, [&](std::ostream& out) { stuff::write_obj(out, mesh, m.boundary); });
+    if (ends_with(path, ".off")) outputs.add(path, [&](std::ostream& out) { io::write_off(out, mesh, m.boundary); });
+    if (ends_with(path, ".obj")) outputs.add(path, [&](std::ostream& out) { io::write_obj(out, mesh, m.boundary); });
   }
   seconds.emplace_back("write", seconds_since(t));
   if (o.stats) outputs.add("-", stats_text(shape->describe(), m, seconds, o.json));

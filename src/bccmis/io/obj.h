@@ -1,11 +1,16 @@
-// bccmis::io: Wavefront OBJ: the writer of the triangle mesh of a height
-// field (spec/apps.md, "Output formats") and the reader of surfaces.
+// bccmis::io: Wavefront OBJ: the writers of the triangle mesh of a height
+// field (spec/apps.md, "Output formats") and of the boundary of a stuffed
+// mesh (spec/stuffing.md S11), and the reader of surfaces.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <iosfwd>
 #include <string>
 #include <string_view>
+#include <vector>
 
+#include "bccmis/d3/tet_mesh.h"
 #include "bccmis/io/triangle_soup.h"
 #include "bccmis/triangle_mesh.h"
 
@@ -24,5 +29,10 @@ std::string format_obj(const TriangleMesh& m, std::string_view comment);
 /// ReadError (`file:line:column: message`) on a bad number, an index out of
 /// range or a face of fewer than 3 vertices.
 TriangleSoup read_obj(const std::string& file, const std::string& data);
+
+/// The triangles `tris` of `mesh` as a surface: the vertices they use, in
+/// order of first use, each coordinate the shortest decimal that reads back
+/// to the same double (io/surface_write.cpp).
+void write_obj(std::ostream& out, const d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& tris);
 
 }  // namespace bccmis::io

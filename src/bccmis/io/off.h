@@ -1,8 +1,14 @@
-// bccmis::io: reading OFF (Object File Format) surfaces.
+// bccmis::io: OFF (Object File Format) surfaces: reading them, and writing
+// the boundary of a stuffed mesh (spec/stuffing.md S11).
 #pragma once
 
+#include <array>
+#include <cstdint>
+#include <iosfwd>
 #include <string>
+#include <vector>
 
+#include "bccmis/d3/tet_mesh.h"
 #include "bccmis/io/triangle_soup.h"
 
 namespace bccmis::io {
@@ -15,5 +21,10 @@ namespace bccmis::io {
 /// (`file:line:column: message`) on anything else: a bad number, a negative
 /// count, a face of fewer than 3 vertices, an index out of range.
 TriangleSoup read_off(const std::string& file, const std::string& data);
+
+/// The triangles `tris` of `mesh` as a surface: the vertices they use, in
+/// order of first use, each coordinate the shortest decimal that reads back
+/// to the same double (io/surface_write.cpp).
+void write_off(std::ostream& out, const d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& tris);
 
 }  // namespace bccmis::io

@@ -127,8 +127,4 @@ struct StuffQuality {
 };
 StuffQuality quality(const d3::TetMeshF& mesh);
 
-/// The boundary surface as OFF or OBJ (S11): the vertices it uses, the triangles.
-void write_off(std::ostream& out, const d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& tris);
-void write_obj(std::ostream& out, const d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& tris);
-
 }  // namespace bccmis::stuff

@@ -199,7 +199,8 @@ class Stencils {
     double m = 180;
     for (std::size_t i = from; i < tets_out_.size(); ++i) {
       const auto& t = tets_out_[i];
-      for (const double a : d3::dihedral_angles(std::array<Vec3, 4>{s.pos(t[0]), s.pos(t[1]), s.pos(t[2]), s.pos(t[3])}))
+      for (const double a :
+           d3::dihedral_angles(std::array<Vec3, 4>{s.pos(t[0]), s.pos(t[1]), s.pos(t[2]), s.pos(t[3])}))
         m = std::min(m, a);
     }
     return m;

@@ -43,9 +43,7 @@ struct Cut {
 };
 
 using Clock = std::chrono::steady_clock;
-inline double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
+inline double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 /// Times consecutive phases into a PhaseTimes, when one is given.
 class PhaseClock {

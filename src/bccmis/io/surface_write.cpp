@@ -1,13 +1,15 @@
-// The boundary surface of a stuffed mesh as OFF or OBJ (spec/stuffing.md S11).
+// A surface made of some triangles of a tetrahedral mesh (the boundary of a
+// stuffed mesh, spec/stuffing.md S11) as OFF (off.h) or OBJ (obj.h).
 #include <charconv>
 #include <cstdint>
 #include <ostream>
 #include <utility>
 #include <vector>
 
-#include "bccmis/stuff/stuff.h"
+#include "bccmis/io/obj.h"
+#include "bccmis/io/off.h"
 
-namespace bccmis::stuff {
+namespace bccmis::io {
 
 namespace {
 
@@ -27,7 +29,7 @@ std::pair<std::vector<std::uint32_t>, std::vector<std::array<std::uint32_t, 3>>>
   return {used, out};
 }
 
-void write_coordinates(std::ostream& out, const Vec3& p) {
+void write_coordinates(std::ostream& out, const d3::Vec3& p) {
   char buf[96];
   char* it = buf;
   for (std::size_t i = 0; i < 3; ++i) {
@@ -55,4 +57,4 @@ void write_obj(std::ostream& out, const d3::TetMeshF& mesh, const std::vector<st
   for (const auto& f : faces) out << "f " << f[0] + 1 << ' ' << f[1] + 1 << ' ' << f[2] + 1 << '\n';
 }
 
-}  // namespace bccmis::stuff
+}  // namespace bccmis::io
