@@ -106,7 +106,7 @@ target_link_libraries(d3_render_tests PRIVATE bccmis::oracle bccmis::d3 GTest::g
 target_compile_definitions(d3_render_tests PRIVATE BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples")
 gtest_discover_tests(d3_render_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
 
-# The 3D cascade (spec/lattice3d.md §8, apps/balance3.h): hand cases, and
+# The 3D cascade (spec/lattice3d.md §8, bccmis/balance.h): hand cases, and
 # random target sets in random orders against the geometric closure of
 # tests/d3/cascade_model.h, in edge and corner mode, every state checked.
 add_executable(d3_balance_tests d3/balance_test.cpp)

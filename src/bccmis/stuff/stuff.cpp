@@ -17,7 +17,7 @@
 #include <tuple>
 #include <utility>
 
-#include "bccmis/apps/balance3.h"
+#include "bccmis/balance.h"
 #include "bccmis/d3/lattice.h"
 #include "bccmis/d3/point.h"
 #include "bccmis/fast/mesh3.h"
