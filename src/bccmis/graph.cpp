@@ -4,6 +4,8 @@
 
 namespace bccmis {
 
+template struct BasicGraph<Point, LatticeSize>;
+
 // Built by appending: g++ 12 at -O3 gives a false -Wrestrict (GCC bug 105651)
 // on `"literal" + std::string` once inlined.
 std::string to_string(const Point& p) {
@@ -33,16 +35,6 @@ void validate_lattice_size(const LatticeSize& size) {
                        " makes the domain side H*2^(L+1) exceed 2^62");
 }
 
-std::int64_t level0_side(const LatticeSize& size) { return std::int64_t{1} << (size.L + 1); }
-
-std::int64_t cell_side(const LatticeSize& size, int level) { return std::int64_t{1} << (size.L + 1 - level); }
-
-const PointSet& Graph::nbr(const Point& v) const {
-  static const PointSet kEmpty;
-  auto it = neighbors.find(v);
-  return it == neighbors.end() ? kEmpty : it->second;
-}
-
 Graph make_lattice(const LatticeSize& size) {
   validate_lattice_size(size);
   const std::int64_t S = level0_side(size);
@@ -63,7 +55,5 @@ Graph make_lattice(const LatticeSize& size) {
     }
   return g;
 }
-
-Graph::Graph(const LatticeSize& initial) : Graph(make_lattice(initial)) {}
 
 }  // namespace bccmis

@@ -25,6 +25,7 @@ namespace bccmis {
 
 /// A lattice position in integer coordinates (spec/formats.md, "Coordinates").
 struct Point {
+  static constexpr int dimension = 2;
   std::int64_t x = 0;
   std::int64_t y = 0;
   friend auto operator<=>(const Point&, const Point&) = default;
@@ -58,43 +59,68 @@ inline constexpr std::int64_t kMaxDomainSide = std::int64_t{1} << 62;
 /// Throws LatticeError unless `size` is a valid lattice.
 void validate_lattice_size(const LatticeSize& size);
 
-/// Side of a level-0 cell: S = 2^(L+1).
-std::int64_t level0_side(const LatticeSize& size);
+/// Side of a level-0 cell of any dimension: S = 2^(L+1). A braced size,
+/// level0_side({W, H, L}), is a 2D LatticeSize.
+template <class Size = LatticeSize>
+requires requires(const Size& s) { s.L; }
+std::int64_t level0_side(const Size& size) { return std::int64_t{1} << (size.L + 1); }
 
-/// Side of a level-`level` cell: 2^(L+1-level).
-std::int64_t cell_side(const LatticeSize& size, int level);
+/// Side of a level-`level` cell of any dimension: 2^(L+1-level).
+template <class Size = LatticeSize>
+requires requires(const Size& s) { s.L; }
+std::int64_t cell_side(const Size& size, int level) { return std::int64_t{1} << (size.L + 1 - level); }
 
-/// The graph of §2: N, C, 𝒩(·) and the level of every center.
+/// The graph of §2 on the lattice of point type P and size type Size (one
+/// source for every dimension: Graph in 2D, d3::Graph3 in 3D): N, C, 𝒩(·)
+/// and the level of every center.
 ///
 /// Invariants the operations maintain are checked by invariants/ (never
 /// assumed here): see spec/invariants.md.
-struct Graph {
-  using point_type = Point;
-  using size_type = LatticeSize;
-  static constexpr int dimension = 2;
+template <class P, class Size>
+struct BasicGraph {
+  using point_type = P;
+  using size_type = Size;
+  static constexpr int dimension = P::dimension;
 
-  Graph() = default;
+  BasicGraph() = default;
   /// The initial lattice, make_lattice(size).
-  explicit Graph(const LatticeSize& size);
+  explicit BasicGraph(const Size& size);
 
-  LatticeSize size;
-  PointSet N;                           ///< node vertices
-  PointSet C;                           ///< cell-center vertices
-  std::map<Point, PointSet> neighbors;  ///< 𝒩(v) for every v in N ∪ C
-  std::map<Point, int> level;           ///< refinement level of every c in C
+  Size size;
+  std::set<P> N;                       ///< node vertices
+  std::set<P> C;                       ///< cell-center vertices
+  std::map<P, std::set<P>> neighbors;  ///< 𝒩(v) for every v in N ∪ C
+  std::map<P, int> level;              ///< refinement level of every c in C
 
   /// 𝒩(v); the empty set for a vertex not in the graph.
-  const PointSet& nbr(const Point& v) const;
-  bool is_node(const Point& v) const { return N.count(v) != 0; }
-  bool is_center(const Point& v) const { return C.count(v) != 0; }
+  const std::set<P>& nbr(const P& v) const;
+  bool is_node(const P& v) const { return N.count(v) != 0; }
+  bool is_center(const P& v) const { return C.count(v) != 0; }
   /// Level of center c; throws std::out_of_range if c is not a center.
-  int level_of(const Point& c) const { return level.at(c); }
+  int level_of(const P& c) const { return level.at(c); }
 
-  friend bool operator==(const Graph&, const Graph&) = default;
+  friend bool operator==(const BasicGraph&, const BasicGraph&) = default;
 };
+
+// make_lattice(size) is found by argument-dependent lookup in the size's
+// namespace: the layout of the initial lattice is per dimension.
+template <class P, class Size>
+BasicGraph<P, Size>::BasicGraph(const Size& initial) : BasicGraph(make_lattice(initial)) {}
+
+template <class P, class Size>
+const std::set<P>& BasicGraph<P, Size>::nbr(const P& v) const {
+  static const std::set<P> kEmpty;
+  auto it = neighbors.find(v);
+  return it == neighbors.end() ? kEmpty : it->second;
+}
+
+/// The 2D graph of §2.
+using Graph = BasicGraph<Point, LatticeSize>;
 
 /// The initial lattice: W x H level-0 cells; nodes at the grid points, each
 /// center joined to its 4 corners. Throws LatticeError on an invalid size.
 Graph make_lattice(const LatticeSize& size);
+
+extern template struct BasicGraph<Point, LatticeSize>;
 
 }  // namespace bccmis

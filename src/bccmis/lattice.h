@@ -108,18 +108,45 @@ std::string canonical_text(const L& g) {
   return std::move(out).str();
 }
 
-// ---- The reference Graph models the concept ---------------------------------
+// ---- The reference graph models the concept, in every dimension ------------
 
-inline const LatticeSize& size_of(const Graph& g) { return g.size; }
-inline bool is_center(const Graph& g, const Point& v) { return g.is_center(v); }
-inline bool is_node(const Graph& g, const Point& v) { return g.is_node(v); }
+template <class P, class Size>
+const Size& size_of(const BasicGraph<P, Size>& g) {
+  return g.size;
+}
+template <class P, class Size>
+bool is_center(const BasicGraph<P, Size>& g, const P& v) {
+  return g.is_center(v);
+}
+template <class P, class Size>
+bool is_node(const BasicGraph<P, Size>& g, const P& v) {
+  return g.is_node(v);
+}
 /// Throws std::out_of_range if c is not a center.
-inline int level_of(const Graph& g, const Point& c) { return g.level_of(c); }
-inline const PointSet& neighbors(const Graph& g, const Point& v) { return g.nbr(v); }
-inline const PointSet& cells(const Graph& g) { return g.C; }
-inline const PointSet& nodes(const Graph& g) { return g.N; }
-inline std::size_t cell_count(const Graph& g) { return g.C.size(); }
-inline std::size_t node_count(const Graph& g) { return g.N.size(); }
+template <class P, class Size>
+int level_of(const BasicGraph<P, Size>& g, const P& c) {
+  return g.level_of(c);
+}
+template <class P, class Size>
+const std::set<P>& neighbors(const BasicGraph<P, Size>& g, const P& v) {
+  return g.nbr(v);
+}
+template <class P, class Size>
+const std::set<P>& cells(const BasicGraph<P, Size>& g) {
+  return g.C;
+}
+template <class P, class Size>
+const std::set<P>& nodes(const BasicGraph<P, Size>& g) {
+  return g.N;
+}
+template <class P, class Size>
+std::size_t cell_count(const BasicGraph<P, Size>& g) {
+  return g.C.size();
+}
+template <class P, class Size>
+std::size_t node_count(const BasicGraph<P, Size>& g) {
+  return g.N.size();
+}
 /// canonical_state(g) written to `out` (spec/formats.md).
 void write_canonical_state(std::ostream& out, const Graph& g);
 

@@ -1,4 +1,4 @@
-// The 3D cascade (spec/lattice3d.md §8, apps/balance3.h): hand cases, then
+// The 3D cascade (spec/lattice3d.md §8, bccmis/balance.h): hand cases, then
 // random target sets on random lattices, each applied in several random
 // orders. Every order must reach the same canonical state, that state's
 // leaves must be the geometric closure of tests/d3/cascade_model.h (edge
@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "bccmis/apps/balance3.h"
+#include "bccmis/balance.h"
 #include "bccmis/d3/lattice.h"
 #include "bccmis/invariants/d3/invariants3.h"
 #include "d3/cascade_model.h"

@@ -21,8 +21,9 @@
 #include <utility>
 #include <vector>
 
-#include "bccmis/apps/balance3.h"
+#include "bccmis/balance.h"
 #include "bccmis/d3/graph.h"
+#include "bccmis/d3/lattice.h"
 
 namespace bccmis::d3::cascade_model {
 

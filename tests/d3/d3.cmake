@@ -79,7 +79,7 @@ bccmis_cli_test(explore3_too_many_numbers 2 ARGS explore 1 1 1 1 1 STDERR_REGEX 
 # a slice cuts, by hand and as a tiling of every plane; hand counts.
 bccmis_add_gtest(d3_render_tests SOURCES render_test.cpp LIBS bccmis::oracle bccmis::d3 DEFINITIONS BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples" LABELS unit)
 
-# The 3D cascade (spec/lattice3d.md §8, apps/balance3.h): hand cases, and
+# The 3D cascade (spec/lattice3d.md §8, bccmis/balance.h): hand cases, and
 # random target sets in random orders against the geometric closure of
 # tests/d3/cascade_model.h, in edge and corner mode, every state checked.
 bccmis_add_gtest(d3_balance_tests SOURCES balance_test.cpp LIBS bccmis::apps bccmis::invariants3 bccmis::d3

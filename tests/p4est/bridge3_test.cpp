@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <random>
 
-#include "bccmis/apps/balance3.h"
+#include "bccmis/balance.h"
 #include "bccmis/d3/lattice.h"
 #include "bccmis/invariants/d3/invariants3.h"
 #include "p4est/p8est_test_util.h"

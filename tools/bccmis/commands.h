@@ -23,8 +23,9 @@ class Lattice;
 class Lattice3;
 }  // namespace bccmis::fast
 namespace bccmis::d3 {
-struct Graph3;
 struct Point3;
+struct LatticeSize3;
+using Graph3 = BasicGraph<Point3, LatticeSize3>;
 template <class P>
 struct BasicTetMesh;
 using TetMesh = BasicTetMesh<Point3>;

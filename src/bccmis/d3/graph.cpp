@@ -4,12 +4,6 @@
 
 namespace bccmis::d3 {
 
-const PointSet3& Graph3::nbr(const Point3& v) const {
-  static const PointSet3 kEmpty;
-  auto it = neighbors.find(v);
-  return it == neighbors.end() ? kEmpty : it->second;
-}
-
 Graph3 make_lattice(const LatticeSize3& size) {
   validate_lattice_size(size);
   const std::int64_t S = level0_side(size);
@@ -35,6 +29,8 @@ Graph3 make_lattice(const LatticeSize3& size) {
   return g;
 }
 
-Graph3::Graph3(const LatticeSize3& initial) : Graph3(make_lattice(initial)) {}
-
 }  // namespace bccmis::d3
+
+namespace bccmis {
+template struct BasicGraph<d3::Point3, d3::LatticeSize3>;
+}  // namespace bccmis

@@ -36,8 +36,4 @@ void validate_lattice_size(const LatticeSize3& size) {
                          "*2^(L+1) exceed 2^62");
 }
 
-std::int64_t level0_side(const LatticeSize3& size) { return std::int64_t{1} << (size.L + 1); }
-
-std::int64_t cell_side(const LatticeSize3& size, int level) { return std::int64_t{1} << (size.L + 1 - level); }
-
 }  // namespace bccmis::d3

@@ -9,12 +9,13 @@
 #include <set>
 #include <string>
 
-#include "bccmis/graph.h"  // LatticeError, kMaxDomainSide
+#include "bccmis/graph.h"  // LatticeError, kMaxDomainSide, level0_side, cell_side
 
 namespace bccmis::d3 {
 
 /// A lattice position in integer coordinates, ordered by (x, y, z).
 struct Point3 {
+  static constexpr int dimension = 3;
   std::int64_t x = 0;
   std::int64_t y = 0;
   std::int64_t z = 0;
@@ -43,10 +44,9 @@ struct LatticeSize3 {
 /// W*S, H*S, D*S are at most 2^62. The message names the offending value.
 void validate_lattice_size(const LatticeSize3& size);
 
-/// Side of a level-0 cube: S = 2^(L+1).
-std::int64_t level0_side(const LatticeSize3& size);
-
-/// Side of a level-`level` cube: 2^(L+1-level).
-std::int64_t cell_side(const LatticeSize3& size, int level);
+// level0_side(size) and cell_side(size, level), written once for every
+// dimension (bccmis/graph.h).
+using bccmis::cell_side;
+using bccmis::level0_side;
 
 }  // namespace bccmis::d3

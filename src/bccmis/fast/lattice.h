@@ -44,6 +44,7 @@
 #include <utility>
 #include <vector>
 
+#include "bccmis/fast/small_points.h"
 #include "bccmis/format.h"
 #include "bccmis/graph.h"
 #include "bccmis/lattice.h"
@@ -78,34 +79,9 @@ template <class T>
 using Array = std::vector<T, HugePageAllocator<T>>;
 }  // namespace detail
 
-/// Up to N points, sorted by (x, y) like the reference's std::set; no heap.
+/// Up to N 2D points, sorted by (x, y) like the reference's std::set; no heap.
 template <std::size_t N>
-class SmallPoints {
- public:
-  const Point* begin() const { return items_.data(); }
-  const Point* end() const { return items_.data() + size_; }
-  std::size_t size() const { return size_; }
-  bool empty() const { return size_ == 0; }
-  const Point& operator[](std::size_t i) const { return items_[i]; }
-  bool contains(const Point& p) const {
-    for (std::size_t i = 0; i < size_; ++i)
-      if (items_[i] == p) return true;
-    return false;
-  }
-  /// Appends p; the caller keeps the order (or calls sort()).
-  void push_back(const Point& p) { items_[size_++] = p; }
-  /// Sorts by (x, y) (insertion sort: at most N elements).
-  void sort() {
-    for (std::size_t i = 1; i < size_; ++i)
-      for (std::size_t j = i; j > 0 && items_[j] < items_[j - 1]; --j) std::swap(items_[j], items_[j - 1]);
-  }
-  /// The same points as a std::set (allocates; for comparisons and adapters).
-  PointSet to_set() const { return PointSet(begin(), end()); }
-
- private:
-  std::array<Point, N> items_{};
-  std::size_t size_ = 0;
-};
+using SmallPoints = BasicSmallPoints<Point, N>;
 
 /// What Lattice::refine and Lattice::coarsen did: the reference's result
 /// types on fixed-size sets (no heap), sorted by (x, y) as the reference's.

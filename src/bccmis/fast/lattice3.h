@@ -42,6 +42,7 @@
 #include "bccmis/d3/ops.h"  // d3::RefineResult, d3::CoarsenResult (to_sets)
 #include "bccmis/d3/point.h"
 #include "bccmis/fast/lattice.h"  // kMaxReserveHint
+#include "bccmis/fast/small_points.h"
 #include "bccmis/lattice.h"
 #include "bccmis/ops.h"
 
@@ -49,32 +50,7 @@ namespace bccmis::fast {
 
 /// Up to N 3D points, sorted by (x, y, z) like the reference's std::set; no heap.
 template <std::size_t N>
-class SmallPoints3 {
- public:
-  const d3::Point3* begin() const { return items_.data(); }
-  const d3::Point3* end() const { return items_.data() + size_; }
-  std::size_t size() const { return size_; }
-  bool empty() const { return size_ == 0; }
-  const d3::Point3& operator[](std::size_t i) const { return items_[i]; }
-  bool contains(const d3::Point3& p) const {
-    for (std::size_t i = 0; i < size_; ++i)
-      if (items_[i] == p) return true;
-    return false;
-  }
-  /// Appends p; the caller keeps the order (or calls sort()).
-  void push_back(const d3::Point3& p) { items_[size_++] = p; }
-  /// Sorts by (x, y, z) (insertion sort: at most N elements).
-  void sort() {
-    for (std::size_t i = 1; i < size_; ++i)
-      for (std::size_t j = i; j > 0 && items_[j] < items_[j - 1]; --j) std::swap(items_[j], items_[j - 1]);
-  }
-  /// The same points as a std::set (allocates; for comparisons and adapters).
-  d3::PointSet3 to_set() const { return d3::PointSet3(begin(), end()); }
-
- private:
-  std::array<d3::Point3, N> items_{};
-  std::size_t size_ = 0;
-};
+using SmallPoints3 = BasicSmallPoints<d3::Point3, N>;
 
 /// What Lattice3::refine and Lattice3::coarsen did: the reference's result
 /// types on fixed-size sets (Y: 8 points, J+ / J-: at most 18), sorted.

@@ -23,18 +23,15 @@
 #include <vector>
 
 #include "bccmis/graph.h"
+#include "bccmis/invariants/violation.h"
 
 namespace bccmis {
 
-/// The first broken invariant, named precisely.
-struct Violation {
-  std::string code;          ///< stable kebab-case code, e.g. "symmetry" (spec/invariants.md)
-  std::vector<Point> where;  ///< the vertices (or, for "coverage", the uncovered cell's center) involved
-  std::string message;       ///< one line naming the positions, starting with the code
-  std::string section;       ///< paper anchor, e.g. "§2", "§2.1 ¶2"
-  int layer = 0;             ///< 1..5; 0 for the operation contracts of checked.h
-  friend bool operator==(const Violation&, const Violation&) = default;
-};
+/// The first broken invariant, named precisely. `where` holds the vertices
+/// (or, for "coverage", the uncovered cell's center) involved; `section` is
+/// the paper anchor, e.g. "§2", "§2.1 ¶2"; `layer` is 1..5, 0 for the
+/// operation contracts of checked.h.
+using Violation = BasicViolation<Point>;
 
 /// "message [paper §x]" on one line (the message already starts with the code).
 std::string to_string(const Violation& v);

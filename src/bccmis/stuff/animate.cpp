@@ -9,7 +9,7 @@
 #include <tuple>
 #include <vector>
 
-#include "bccmis/apps/balance3.h"
+#include "bccmis/balance.h"
 #include "bccmis/d3/detail/tetrahedra.h"
 #include "bccmis/d3/ops.h"
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "bccmis/apps/balance3.h"
+#include "bccmis/balance.h"
 #include "bccmis/d3/lattice.h"
 #include "bccmis/d3/point.h"
 #include "bccmis/stuff/stuff.h"

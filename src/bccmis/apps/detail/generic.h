@@ -2,7 +2,7 @@
 // moving-feature adaptation and the height-field tessellation written once
 // over the lattice type, so that the reference Graph and bccmis::fast::Lattice
 // run the same application code; the balance cascade itself, written over
-// every dimension, is apps/detail/cascade.h.
+// every dimension, is the core's bccmis/balance.h.
 //
 // balance.cpp, animate.cpp and heightfield.cpp instantiate the templates for
 // Graph and for fast::Lattice (the overloads in balance.h, animate.h and
@@ -26,8 +26,8 @@
 
 #include "bccmis/apps/animate.h"
 #include "bccmis/apps/balance.h"
-#include "bccmis/apps/detail/cascade.h"
 #include "bccmis/apps/heightfield.h"
+#include "bccmis/balance.h"
 #include "bccmis/fast/lattice.h"
 #include "bccmis/geometry.h"
 #include "bccmis/graph.h"

@@ -24,18 +24,14 @@
 #include <vector>
 
 #include "bccmis/d3/graph.h"
+#include "bccmis/invariants/violation.h"
 
 namespace bccmis::d3 {
 
-/// The first broken invariant, named precisely.
-struct Violation3 {
-  std::string code;           ///< stable kebab-case code, e.g. "symmetry" (spec/invariants.md, 3D)
-  std::vector<Point3> where;  ///< the positions involved, in the order the message names them
-  std::string message;        ///< one line naming the positions as (x, y, z), starting with the code
-  std::string section;        ///< spec anchor, e.g. "spec/lattice3d.md §3 F2"
-  int layer = 0;              ///< 1..6 (6: the CGAL layer)
-  friend bool operator==(const Violation3&, const Violation3&) = default;
-};
+/// The first broken invariant, named precisely: positions as (x, y, z),
+/// `section` a spec anchor, e.g. "spec/lattice3d.md §3 F2", `layer` 1..6
+/// (6: the CGAL layer).
+using Violation3 = BasicViolation<Point3>;
 
 /// "message [section]" on one line (the message already starts with the code).
 std::string to_string(const Violation3& v);

@@ -1,0 +1,42 @@
+// bccmis::fast: a small sorted set of points without heap, one type for every
+// dimension (SmallPoints in 2D, SmallPoints3 in 3D).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <set>
+#include <utility>
+
+namespace bccmis::fast {
+
+/// Up to N points of type P, sorted by position like the reference's
+/// std::set; no heap.
+template <class P, std::size_t N>
+class BasicSmallPoints {
+ public:
+  const P* begin() const { return items_.data(); }
+  const P* end() const { return items_.data() + size_; }
+  std::size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  const P& operator[](std::size_t i) const { return items_[i]; }
+  bool contains(const P& p) const {
+    for (std::size_t i = 0; i < size_; ++i)
+      if (items_[i] == p) return true;
+    return false;
+  }
+  /// Appends p; the caller keeps the order (or calls sort()).
+  void push_back(const P& p) { items_[size_++] = p; }
+  /// Sorts by position (insertion sort: at most N elements).
+  void sort() {
+    for (std::size_t i = 1; i < size_; ++i)
+      for (std::size_t j = i; j > 0 && items_[j] < items_[j - 1]; --j) std::swap(items_[j], items_[j - 1]);
+  }
+  /// The same points as a std::set (allocates; for comparisons and adapters).
+  std::set<P> to_set() const { return std::set<P>(begin(), end()); }
+
+ private:
+  std::array<P, N> items_{};
+  std::size_t size_ = 0;
+};
+
+}  // namespace bccmis::fast
