@@ -147,7 +147,7 @@ TessellateReport tessellate(Graph& g, const HeightSampler& s, const TessellateSe
 
 /// The same tessellation on the fast implementation (src/bccmis/fast): the same
 /// cells measured, refined and merged in the same order, so the final state
-/// and the report equal the reference's (tests/apps_heightfield_test.cpp).
+/// and the report equal the reference's (tests/apps/heightfield_test.cpp).
 using FastSweepObserver = std::function<void(int sweep, const fast::Lattice& g, std::size_t operations)>;
 TessellateReport tessellate(fast::Lattice& g, const HeightSampler& s, const TessellateSettings& t,
                             const FastSweepObserver& observer = {});

@@ -26,7 +26,7 @@
 //
 // The preconditions and refusal codes are those of the reference
 // (spec/errata.toml E3, E4, E7, E10; spec/formats.md), and the canonical state is
-// byte-identical: tests/fast_*_test.cpp replay every trace and random
+// byte-identical: tests/fast/*_test.cpp replay every trace and random
 // operation sequences through both and compare every decision and state.
 #pragma once
 

@@ -24,7 +24,7 @@
 //
 // The preconditions and refusal codes are those of the reference (bccmis/ops.h),
 // Y and J+ / J- are returned sorted by position, and the canonical state is
-// byte-identical to d3::canonical_state: tests/fast3_differential_test.cpp and
+// byte-identical to d3::canonical_state: tests/fast/differential3_test.cpp and
 // fuzz/fuzz_differential_3d.cpp run both on the same operations.
 #pragma once
 

@@ -10,7 +10,7 @@
 // bccmis/lattice.h and the geometry of bccmis/geometry.h: the same queries
 // and operations, with the same (x, y)-sorted neighbor order, so both
 // instantiations make the same decisions in the same order
-// (tests/apps_fast_test.cpp and RunAnimate.FastImplMakesTheSameFramesAndState
+// (tests/apps/fast_test.cpp and RunAnimate.FastImplMakesTheSameFramesAndState
 // compare states and reports).
 #pragma once
 
