@@ -138,11 +138,6 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
   settings.path = parse_path(o.path, *shape);
   settings.compare = o.compare;
   settings.check = o.check;
-  try {
-    stuff::fit_moving(*shape, settings.path, so);
-  } catch (const stuff::ShapeError& e) {
-    throw InputError(e.what());
-  }
   const std::string pvd = o.outputs.empty() ? "" : o.outputs[0];
   const std::string stem = pvd.substr(0, pvd.size() - 4);
   const std::string base = stem.substr(stem.find_last_of('/') + 1);
@@ -190,6 +185,8 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
   stuff::AnimationSummary summary;
   try {
     summary = stuff::animate_shape(shape, settings, on_frame);
+  } catch (const stuff::ShapeError& e) {  // S2, S14, S16: refused before any frame is made
+    throw InputError(e.what());
   } catch (const stuff::CheckError& e) {
     throw CheckFailure(e.what());
   }

@@ -1,16 +1,16 @@
 // `bccmis stuff --animate` as a library call (animate_shape.h; spec/stuffing.md S14-S16).
 #include "bccmis/stuff/animate_shape.h"
 
-#include <chrono>
 #include <string>
 
+#include "bccmis/stuff/detail/stuffer.h"
 #include "bccmis/stuff/mesh_shape.h"
 
 namespace bccmis::stuff {
 
 namespace {
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+using detail::Clock;
+using detail::seconds_since;
 }  // namespace
 
 Vec3 default_path(const Shape& shape) {

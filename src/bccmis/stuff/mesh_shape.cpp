@@ -1,11 +1,10 @@
 // The stuffing library's entry point (mesh_shape.h): S2-S13 in one call.
 #include "bccmis/stuff/mesh_shape.h"
 
-#include <chrono>
-#include <cstdio>
-
 #include "bccmis/fast/lattice3.h"
 #include "bccmis/invariants/d3/stuffed_mesh.h"
+#include "bccmis/json_writer.h"
+#include "bccmis/stuff/detail/stuffer.h"
 #if BCCMIS_HAVE_STUFF_SURFACE
 #include "bccmis/stuff/surface.h"
 #endif
@@ -13,16 +12,9 @@
 namespace bccmis::stuff {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
-std::string number(double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", x);
-  return buf;
-}
-
+using detail::Clock;
+using detail::seconds_since;
+std::string number(double x) { return JsonWriter::number(x); }
 }  // namespace
 
 std::unique_ptr<Shape> load_mesh_file(const std::string& path) {
