@@ -1,0 +1,56 @@
+// bccmis::soup: the solid of a triangle soup by its generalized winding
+// number (spec/stuffing.md, "The solid of a triangle soup"; Jacobson, Kavan,
+// Sorkine-Hornung 2013), evaluated by a hierarchy with a far-field
+// approximation and an exact near field (Barill et al. 2018), with a
+// rigorous error bound so that no inside/outside decision depends on the
+// approximation.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace bccmis::soup {
+
+using Vec3 = std::array<double, 3>;
+using Triangle = std::array<std::uint32_t, 3>;
+
+/// w(q) = (1 / 4 pi) * sum over the triangles of their signed solid angle at
+/// q (positive when q sees the triangle's back, i.e. on the side its
+/// counter-clockwise normal points away from). A closed, outward oriented
+/// surface gives 1 inside and 0 outside; any soup gives a harmonic function
+/// off the triangles that jumps by 1 across each triangle.
+class WindingNumber {
+ public:
+  /// Builds the hierarchy over the soup (indices must be in range; the
+  /// caller checks). The vertices and triangles are copied.
+  WindingNumber(std::vector<Vec3> vertices, std::vector<Triangle> triangles);
+  ~WindingNumber();
+  WindingNumber(WindingNumber&&) noexcept;
+  WindingNumber& operator=(WindingNumber&&) noexcept;
+
+  /// An approximate w with a bound on its error: |w(q) - value| <= error.
+  struct Estimate {
+    double value = 0;
+    double error = 0;
+  };
+  Estimate estimate(const Vec3& q) const;
+
+  /// w(q) summed over every triangle (no approximation; the O(n) oracle).
+  double direct(const Vec3& q) const;
+
+  /// Inside (-1) when w(q) >= 1/2, outside (+1) when w(q) < 1/2, decided
+  /// exactly when the estimate is too close to 1/2 to decide. A point that
+  /// lies exactly on a triangle (exact predicates) gives 0 when the two
+  /// sides of that triangle are one inside and one outside (q is on the
+  /// solid's surface), else the side both of them are on.
+  int side(const Vec3& q) const;
+
+  std::size_t size() const;
+
+ private:
+  struct Impl;
+  Impl* impl_;
+};
+
+}  // namespace bccmis::soup
