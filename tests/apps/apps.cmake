@@ -36,16 +36,18 @@ bccmis_cli_test(heightfield.every_output 0 LABEL apps
   STDOUT_REGEX "^{.*\"operations\": .*\"nodes\": .*\"cells\": .*\"max_error\": .*\"rms_error\": .*\"within_tolerance\": true.*\"tessellate_seconds\": "
   STDERR_REGEX "^bccmis heightfield: ")
 bccmis_cli_test(heightfield.every_output_state_valid 0 LABEL apps ARGS check ${_apps_work}/heightfield.every_output/t.state)
-set_tests_properties(cli.heightfield.every_output_state_valid PROPERTIES DEPENDS cli.heightfield.every_output)
+set_tests_properties(cli.heightfield.every_output PROPERTIES FIXTURES_SETUP heightfield_every_output)
+set_tests_properties(cli.heightfield.every_output_state_valid PROPERTIES FIXTURES_REQUIRED heightfield_every_output)
 foreach(impl reference fast)
   bccmis_cli_test(heightfield.${impl} 0 LABEL apps
     ARGS heightfield ${_samples}/terrain128.pgm --impl ${impl} --tolerance 0.01 --measure samples --state h.state --obj h.obj --check
     STDOUT_REGEX "impl ${impl}\n")
+  set_tests_properties(cli.heightfield.${impl} PROPERTIES FIXTURES_SETUP heightfield_impls)
 endforeach()
 foreach(ext state obj)
   add_test(NAME cli.heightfield.fast_same_${ext}
            COMMAND ${CMAKE_COMMAND} -E compare_files ${_apps_work}/heightfield.reference/h.${ext} ${_apps_work}/heightfield.fast/h.${ext})
-  set_tests_properties(cli.heightfield.fast_same_${ext} PROPERTIES DEPENDS "cli.heightfield.reference;cli.heightfield.fast" LABELS "cli;apps")
+  set_tests_properties(cli.heightfield.fast_same_${ext} PROPERTIES FIXTURES_REQUIRED heightfield_impls LABELS "cli;apps")
 endforeach()
 bccmis_cli_test(heightfield.no_input 2 LABEL apps ARGS heightfield STDERR_REGEX "input")
 bccmis_cli_test(heightfield.two_stdouts 2 LABEL apps ARGS heightfield ${_samples}/terrain128.pgm --obj -

@@ -70,7 +70,8 @@ bccmis_cli_test(output_files 0 ARGS replay --quiet --log out.log --state out.sta
 add_test(NAME cli.output_files_content
          COMMAND ${CMAKE_COMMAND} -E compare_files ${CMAKE_CURRENT_BINARY_DIR}/cli_work/output_files/out.log
                  ${_cli}/fig2.log)
-set_tests_properties(cli.output_files_content PROPERTIES DEPENDS cli.output_files LABELS cli)
+set_tests_properties(cli.output_files PROPERTIES FIXTURES_SETUP cli_output_files)
+set_tests_properties(cli.output_files_content PROPERTIES FIXTURES_REQUIRED cli_output_files LABELS cli)
 
 # Conformance harness: the reference against itself agrees; each deliberately
 # wrong implementation (tests/conformance/*.sh) is caught and shrunk to <= 5
@@ -122,8 +123,9 @@ add_test(NAME cli.conformance.d3_view_trace
          COMMAND ${CMAKE_COMMAND} "-DCMD=$<TARGET_FILE:bccmis>|replay|--quiet|--log|d3.log|../conformance.d3_coarsen_keeps_face_center/d3.trace"
                  -DEXPECT_EXIT=0 -DEXPECT_STDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_work/conformance.d3_coarsen_keeps_face_center/d3.reference.state
                  -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/cli_work/d3_view_trace -P ${_run})
+set_tests_properties(cli.conformance.d3_coarsen_keeps_face_center PROPERTIES FIXTURES_SETUP cli_d3_disagreement)
 set_tests_properties(cli.conformance.d3_view_files cli.conformance.d3_view_trace PROPERTIES
-                     DEPENDS cli.conformance.d3_coarsen_keeps_face_center LABELS cli)
+                     FIXTURES_REQUIRED cli_d3_disagreement LABELS cli)
 bccmis_cli_test(conformance.bad_dim 2 ARGS conformance --impl true --dim 4 STDERR_REGEX "--dim")
 bccmis_cli_test(view_3d_trace 2 ARGS view ${_examples}/d3/face.trace -o face.html
                 STDERR_REGEX "face.trace:7:1: a 3D trace \\('lattice W H D L'\\): the viewer draws 2D lattices only")
@@ -141,7 +143,8 @@ bccmis_cli_test(stats_fig2 0 ARGS stats --from-trace ${_examples}/fig2.trace
 bccmis_cli_test(render_fig2 0 ARGS render --from-trace ${_examples}/fig2.trace -o fig2.svg)
 add_test(NAME cli.render_fig2_content
          COMMAND ${CMAKE_COMMAND} -DFILE=${CMAKE_CURRENT_BINARY_DIR}/cli_work/render_fig2/fig2.svg -P ${_cli}/check_svg.cmake)
-set_tests_properties(cli.render_fig2_content PROPERTIES DEPENDS cli.render_fig2 LABELS cli)
+set_tests_properties(cli.render_fig2 PROPERTIES FIXTURES_SETUP cli_render_fig2)
+set_tests_properties(cli.render_fig2_content PROPERTIES FIXTURES_REQUIRED cli_render_fig2 LABELS cli)
 
 # explore: the counts are known independently (tests/model: 1 + 2^4 = 17 for
 # one cell two levels deep, 2^4 = 16 for four cells one level deep).
