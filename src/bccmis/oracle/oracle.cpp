@@ -3,13 +3,16 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <map>
 #include <set>
+#include <span>
 #include <string_view>
 #include <utility>
 
 #include "bccmis/d3/mesh.h"
 #include "bccmis/geometry.h"
 #include "bccmis/io/svg.h"
+#include "bccmis/json_writer.h"
 
 namespace bccmis {
 
@@ -94,6 +97,25 @@ std::vector<std::string> diff_states_as(const G& a, const G& b) {
   return out;
 }
 
+// `bccmis stats` in both dimensions: a head (JSON members already begun in
+// `head`, or text lines), the cells, the cells per level, then named counts;
+// text lines "name value", or one line of JSON.
+using Count = std::pair<const char*, std::size_t>;
+std::string format_counts(bool json, JsonWriter head, const std::string& head_text, std::size_t cells,
+                          const std::map<int, std::size_t>& cells_per_level, std::span<const Count> counts) {
+  if (json) {
+    head.member("cells", cells).key("cells_per_level").begin_object();
+    for (const auto& [l, n] : cells_per_level) head.member(std::to_string(l), n);
+    head.end_object();
+    for (const auto& [name, n] : counts) head.member(name, n);
+    return head.end_object().str() + "\n";
+  }
+  std::string out = head_text + "cells " + std::to_string(cells) + "\n";
+  for (const auto& [l, n] : cells_per_level) out += "cells_level_" + std::to_string(l) + " " + std::to_string(n) + "\n";
+  for (const auto& [name, n] : counts) out += std::string(name) + " " + std::to_string(n) + "\n";
+  return out;
+}
+
 }  // namespace
 
 std::vector<std::string> diff_states(const Graph& a, const Graph& b) { return diff_states_as(a, b); }
@@ -129,30 +151,12 @@ Stats stats(const Graph& g) {
 }
 
 std::string format_stats(const Stats& s, bool json) {
-  std::string out;
-  if (json) {
-    out = "{\"cells\": " + std::to_string(s.cells) + ", \"cells_per_level\": {";
-    bool first = true;
-    for (const auto& [l, n] : s.cells_per_level) {
-      out += (first ? "" : ", ") + std::string("\"") + std::to_string(l) + "\": " + std::to_string(n);
-      first = false;
-    }
-    out += "}, \"nodes\": " + std::to_string(s.nodes) + ", \"junctions\": " + std::to_string(s.junctions) +
-           ", \"graph_edges\": " + std::to_string(s.graph_edges) + ", \"hull_edges\": " + std::to_string(s.hull_edges) +
-           ", \"triangles\": " + std::to_string(s.triangles) +
-           ", \"reference_bytes_estimate\": " + std::to_string(s.reference_bytes) + "}\n";
-    return out;
-  }
-  out += "cells " + std::to_string(s.cells) + "\n";
-  for (const auto& [l, n] : s.cells_per_level)
-    out += "cells_level_" + std::to_string(l) + " " + std::to_string(n) + "\n";
-  out += "nodes " + std::to_string(s.nodes) + "\n";
-  out += "junctions " + std::to_string(s.junctions) + "\n";
-  out += "graph_edges " + std::to_string(s.graph_edges) + "\n";
-  out += "hull_edges " + std::to_string(s.hull_edges) + "\n";
-  out += "triangles " + std::to_string(s.triangles) + "\n";
-  out += "reference_bytes_estimate " + std::to_string(s.reference_bytes) + "\n";
-  return out;
+  const Count counts[] = {
+      {"nodes", s.nodes},           {"junctions", s.junctions}, {"graph_edges", s.graph_edges},
+      {"hull_edges", s.hull_edges}, {"triangles", s.triangles}, {"reference_bytes_estimate", s.reference_bytes}};
+  JsonWriter head;
+  head.begin_object();
+  return format_counts(json, std::move(head), "", s.cells, s.cells_per_level, counts);
 }
 
 std::set<std::pair<d3::Point3, d3::Point3>> green_edges(const d3::Graph3& g) {
@@ -207,33 +211,19 @@ Stats3 stats(const d3::Graph3& g) {
 }
 
 std::string format_stats(const Stats3& s, bool json) {
-  const std::pair<const char*, std::size_t> counts[] = {{"nodes", s.nodes},
-                                                        {"junctions", s.junctions},
-                                                        {"graph_edges", s.graph_edges},
-                                                        {"green_edges", s.green_edges},
-                                                        {"tetrahedra", s.tetrahedra},
-                                                        {"hull_vertices", s.hull_vertices},
-                                                        {"reference_bytes_estimate", s.reference_bytes}};
-  std::string out;
-  if (json) {
-    out = "{\"dimension\": 3, \"lattice\": [" + std::to_string(s.size.W) + ", " + std::to_string(s.size.H) + ", " +
-          std::to_string(s.size.D) + ", " + std::to_string(s.size.L) + "], \"cells\": " + std::to_string(s.cells) +
-          ", \"cells_per_level\": {";
-    bool first = true;
-    for (const auto& [l, n] : s.cells_per_level) {
-      out += (first ? "" : ", ") + std::string("\"") + std::to_string(l) + "\": " + std::to_string(n);
-      first = false;
-    }
-    out += "}";
-    for (const auto& [name, n] : counts) out += std::string(", \"") + name + "\": " + std::to_string(n);
-    return out + "}\n";
-  }
-  out += "lattice " + lattice_text(s.size) + "\n";
-  out += "cells " + std::to_string(s.cells) + "\n";
-  for (const auto& [l, n] : s.cells_per_level)
-    out += "cells_level_" + std::to_string(l) + " " + std::to_string(n) + "\n";
-  for (const auto& [name, n] : counts) out += std::string(name) + " " + std::to_string(n) + "\n";
-  return out;
+  const Count counts[] = {{"nodes", s.nodes},
+                          {"junctions", s.junctions},
+                          {"graph_edges", s.graph_edges},
+                          {"green_edges", s.green_edges},
+                          {"tetrahedra", s.tetrahedra},
+                          {"hull_vertices", s.hull_vertices},
+                          {"reference_bytes_estimate", s.reference_bytes}};
+  JsonWriter head;
+  head.begin_object().member("dimension", 3).key("lattice").begin_array();
+  for (const std::int64_t n : {s.size.W, s.size.H, s.size.D, static_cast<std::int64_t>(s.size.L)}) head.value(n);
+  head.end_array();
+  return format_counts(json, std::move(head), "lattice " + lattice_text(s.size) + "\n", s.cells, s.cells_per_level,
+                       counts);
 }
 
 std::string render_svg(const Graph& g, const std::string& title) {
