@@ -97,6 +97,18 @@ std::vector<std::string> diff_states_as(const G& a, const G& b) {
   return out;
 }
 
+// The reference graph's memory, estimated: libstdc++ red-black tree nodes
+// are 32 bytes of header plus the value, rounded to 8 (a point is 16 bytes
+// in 2D, 24 in 3D); a std::set header is 48 bytes. `entries`: the total size
+// of the neighbor sets.
+template <class G>
+std::size_t reference_bytes(const G& g, std::size_t entries) {
+  constexpr std::size_t point = sizeof(typename decltype(g.C)::value_type);
+  const std::size_t set_node = 32 + point, nbr_map_node = 32 + point + 48, level_node = 32 + point + 8;
+  return set_node * (g.N.size() + g.C.size()) + nbr_map_node * g.neighbors.size() + set_node * entries +
+         level_node * g.level.size();
+}
+
 // `bccmis stats` in both dimensions: a head (JSON members already begun in
 // `head`, or text lines), the cells, the cells per level, then named counts;
 // text lines "name value", or one line of JSON.
@@ -142,11 +154,7 @@ Stats stats(const Graph& g) {
     }
   }
   s.hull_edges = hull.size();
-  // libstdc++ red-black tree nodes: 32 bytes of header plus the value, rounded
-  // to 8. Point = 16 bytes; a std::set header = 48 bytes.
-  const std::size_t set_node = 32 + 16, nbr_map_node = 32 + 16 + 48, level_node = 32 + 16 + 8;
-  s.reference_bytes = set_node * (g.N.size() + g.C.size()) + nbr_map_node * g.neighbors.size() + set_node * entries +
-                      level_node * g.level.size();
+  s.reference_bytes = reference_bytes(g, entries);
   return s;
 }
 
@@ -202,11 +210,7 @@ Stats3 stats(const d3::Graph3& g) {
     for (const Point3& v : t)
       if (!g.is_node(v) && !g.is_center(v)) hull.insert(v);
   s.hull_vertices = hull.size();
-  // libstdc++ red-black tree nodes: 32 bytes of header plus the value, rounded
-  // to 8. Point3 = 24 bytes; a std::set header = 48 bytes.
-  const std::size_t set_node = 32 + 24, nbr_map_node = 32 + 24 + 48, level_node = 32 + 24 + 8;
-  s.reference_bytes = set_node * (g.N.size() + g.C.size()) + nbr_map_node * g.neighbors.size() + set_node * entries +
-                      level_node * g.level.size();
+  s.reference_bytes = reference_bytes(g, entries);
   return s;
 }
 
