@@ -98,6 +98,7 @@ struct Node {
   double area = 0;                   // sum of the triangles' areas (an upper bound)
   double area_abs = 0;               // sum of |b - a| |c - a| / 2 (for the rounding allowance)
   double mabs = 0;                   // sum of area_i |p_i - c| >= |M| (p_i the centroids)
+  double i2 = 0;                     // >= the sum of the integrals of |x - c|^2 over the triangles (<= area r^2)
   Vec3 n{};                          // N = sum of area_i n_i (the dipole)
   std::array<double, 9> m{};         // M = sum of area_i n_i (p_i - c)^T, row-major
   std::uint32_t begin = 0, end = 0;  // the triangles, positions in tree order
@@ -180,7 +181,7 @@ void WindingNumber::Impl::finish(Node& node) const {
   node.r = r * (1 + 8 * kU);
   node.n = {};
   node.m = {};
-  node.area = node.area_abs = node.mabs = 0;
+  node.area = node.area_abs = node.mabs = node.i2 = 0;
   if (node.right == 0) {
     for (std::uint32_t i = node.begin; i < node.end; ++i) {
       const Points& t = points[i];
@@ -199,6 +200,10 @@ void WindingNumber::Impl::finish(Node& node) const {
       node.area += area;
       node.area_abs += alpha;
       node.mabs += area * norm(pc);
+      // The integral of |x - c|^2 over a triangle: area (|p - c|^2 + sum |v - p|^2 / 12).
+      double spread = 0;
+      for (const Vec3& v : t) spread += dot(sub(v, p), sub(v, p));
+      node.i2 += area * (dot(pc, pc) + spread / 12);
     }
   } else {
     const Node* children[2] = {&node + 1, &nodes[node.right]};
@@ -211,11 +216,16 @@ void WindingNumber::Impl::finish(Node& node) const {
       node.area += child->area;
       node.area_abs += child->area_abs;
       node.mabs += child->mabs + child->area * norm(shift);
+      // |x - c| <= |x - c_k| + s, and the integral of |x - c_k| is at most
+      // sqrt(area_k i2_k) (Cauchy-Schwarz).
+      const double sk = norm(shift);
+      node.i2 += child->i2 + 2 * sk * std::sqrt(child->area * child->i2) + sk * sk * child->area;
     }
   }
   // The sums were rounded: round the bounds up (depth <= 60 additions).
   node.area *= 1 + 128 * kU;
   node.mabs *= 1 + 128 * kU;
+  node.i2 = std::min(node.i2 * (1 + 128 * kU), node.area * node.r * node.r);
 }
 
 WindingNumber::WindingNumber(std::vector<Vec3> vertices, std::vector<Triangle> triangles) : impl_(new Impl) {
@@ -260,7 +270,8 @@ WindingNumber& WindingNumber::operator=(WindingNumber&& other) noexcept {
 std::size_t WindingNumber::size() const { return impl_ ? impl_->triangles.size() : 0; }
 
 // spec/stuffing.md S18: the far field of a node with |q - c| > beta r, to
-// first order, and its bound 3 A r^2 / (d - r)^4 / (4 pi); the near field
+// first order, and its bound 3 I2 / (d - r)^4 / (4 pi) (I2 the second moment,
+// at most A r^2); the near field
 // exactly (S17). The sum's own rounding: n u sum|terms| (n the terms).
 WindingNumber::Estimate WindingNumber::Impl::run(const Vec3& q, double beta,
                                                  std::span<const std::uint32_t> excluded) const {
@@ -289,7 +300,7 @@ WindingNumber::Estimate WindingNumber::Impl::run(const Vec3& q, double beta,
       const double value = (dot(node.n, dx) * inv3 + (trace - 3 * umu) * inv3) / k4Pi;
       const double gap = d_lo - node.r;
       const double gap2 = gap * gap;
-      const double taylor = 3 * node.area * node.r * node.r / (gap2 * gap2) / k4Pi;
+      const double taylor = 3 * node.i2 / (gap2 * gap2) / k4Pi;
       const double inv_lo = 1 / d_lo;
       const double allowance =
           512 * kU *
