@@ -36,6 +36,18 @@ class WindingNumber {
   };
   Estimate estimate(const Vec3& q) const;
 
+  /// The far-field opening parameter of estimate(q): a node of the hierarchy
+  /// is replaced by its expansion when |q - c| > beta r (spec/stuffing.md
+  /// S18). estimate(q) uses kBeta; side() tightens with kBeta * 2.
+  static constexpr double kBeta = 4;
+  /// estimate(q) with another beta (> 1; smaller is faster and looser). The
+  /// bound holds for every beta > 1, which the tests use to plant estimates
+  /// that are on the wrong side of 1/2.
+  Estimate estimate(const Vec3& q, double beta) const;
+
+  /// direct(q) with a bound on its rounding error (S18).
+  Estimate direct_bounded(const Vec3& q) const;
+
   /// w(q) summed over every triangle (no approximation; the O(n) oracle).
   double direct(const Vec3& q) const;
 
