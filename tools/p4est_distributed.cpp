@@ -17,12 +17,6 @@
 // bccmis reaches by refine_balanced on the same targets (edge balance; corner
 // balance for the second forest). Exit status 0 when every check passed, 1
 // otherwise; a 2D run on one rank is allowed but says so.
-#ifndef BCCMIS_P4_TO_P8
-#include <p4est_extended.h>
-#else
-#include <p8est_extended.h>
-#endif
-
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -30,53 +24,33 @@
 #include <vector>
 
 #include "bccmis/balance.h"
-#ifndef BCCMIS_P4_TO_P8
-#include "bccmis/p4est/bridge.h"
-#else
 #include "bccmis/d3/lattice.h"
-#include "bccmis/p4est/bridge3.h"
-#endif
+#include "bccmis/p4est/bridge.h"
 
 namespace {
 
 using namespace bccmis;
 
-// The names that differ between the dimensions; everything below is written once.
+// The names that differ between the dimensions (bridge.h's traits P4<Dim>);
+// everything below is written once.
 #ifndef BCCMIS_P4_TO_P8
-using Lattice = Graph;
-using Size = LatticeSize;
-using Pt = Point;
-using Brick = p4est_bridge::Brick;
-using Leaf = p4est_bridge::Leaf;
-using Quadrant = p4est_bridge::Quadrant;
-using ForestPtr = p4est_bridge::ForestPtr;
-using forest_t = p4est_t;
-using quadrant_t = p4est_quadrant_t;
-using connect_t = p4est_connect_type_t;
-constexpr connect_t kConnectEdge = P4EST_CONNECT_FACE;
-constexpr connect_t kConnectFull = P4EST_CONNECT_FULL;
-#define BCCMIS_P4EST_NEW_EXT p4est_new_ext
-#define BCCMIS_P4EST_REFINE_EXT p4est_refine_ext
-#define BCCMIS_P4EST_PARTITION p4est_partition
-#define BCCMIS_P4EST_BALANCE p4est_balance
+constexpr int kDim = 2;
 #else
-using Lattice = d3::Graph3;
-using Size = d3::LatticeSize3;
-using Pt = d3::Point3;
-using Brick = p4est_bridge::Brick3;
-using Leaf = p4est_bridge::Leaf3;
-using Quadrant = p4est_bridge::Quadrant3;
-using ForestPtr = p4est_bridge::Forest3Ptr;
-using forest_t = p8est_t;
-using quadrant_t = p8est_quadrant_t;
-using connect_t = p8est_connect_type_t;
-constexpr connect_t kConnectEdge = P8EST_CONNECT_EDGE;
-constexpr connect_t kConnectFull = P8EST_CONNECT_FULL;
-#define BCCMIS_P4EST_NEW_EXT p8est_new_ext
-#define BCCMIS_P4EST_REFINE_EXT p8est_refine_ext
-#define BCCMIS_P4EST_PARTITION p8est_partition
-#define BCCMIS_P4EST_BALANCE p8est_balance
+constexpr int kDim = 3;
 #endif
+using P4 = p4est_bridge::P4<kDim>;
+using Lattice = P4::Graph;
+using Size = P4::LatticeSize;
+using Pt = P4::Point;
+using Brick = p4est_bridge::BrickOf<kDim>;
+using Leaf = p4est_bridge::LeafOf<kDim>;
+using Quadrant = p4est_bridge::QuadrantOf<kDim>;
+using ForestPtr = p4est_bridge::ForestPtrOf<kDim>;
+using forest_t = P4::forest_t;
+using quadrant_t = P4::quadrant_t;
+using connect_t = P4::connect_type_t;
+constexpr connect_t kConnectEdge = P4::kConnectCore;
+constexpr connect_t kConnectFull = P4::kConnectFull;
 
 struct Targets {
   const Brick* brick;
@@ -126,11 +100,11 @@ Lattice reference(const Size& size, const std::vector<Pt>& points, Balance b) {
 
 bool run(const Brick& brick, const std::vector<Pt>& points, connect_t connect, int rank, int ranks) {
   Targets targets{&brick, points};
-  ForestPtr forest(BCCMIS_P4EST_NEW_EXT(sc_MPI_COMM_WORLD, brick.connectivity(), 0, 0, 1, 0, nullptr, &targets));
-  BCCMIS_P4EST_REFINE_EXT(forest.get(), 1, brick.size().L, refine_at_targets, nullptr, nullptr);
-  BCCMIS_P4EST_PARTITION(forest.get(), 0, nullptr);
-  BCCMIS_P4EST_BALANCE(forest.get(), connect, nullptr);
-  BCCMIS_P4EST_PARTITION(forest.get(), 0, nullptr);
+  ForestPtr forest(P4::new_ext(sc_MPI_COMM_WORLD, brick.connectivity(), 0, 0, 1, 0, nullptr, &targets));
+  P4::refine_ext(forest.get(), 1, brick.size().L, refine_at_targets, nullptr, nullptr);
+  P4::partition(forest.get(), 0, nullptr);
+  P4::balance(forest.get(), connect, nullptr);
+  P4::partition(forest.get(), 0, nullptr);
   const Balance b = connect == kConnectEdge ? Balance::Edge : Balance::Corner;
   const long local = static_cast<long>(forest->local_num_quadrants);
   std::vector<long> counts(static_cast<std::size_t>(ranks));

@@ -1,4 +1,4 @@
-// The p8est bridge (bridge3.h): the coordinate mapping against p8est's own
+// The p8est bridge (bridge.h, Dim = 3): the coordinate mapping against p8est's own
 // geometry, exact round trips in both directions, and the import's refusals.
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include "bccmis/balance.h"
 #include "bccmis/d3/lattice.h"
 #include "bccmis/invariants/d3/invariants3.h"
-#include "p4est/p8est_test_util.h"
+#include "p4est/p4est_test_util.h"
 
 namespace bccmis::p4est_bridge {
 namespace {
@@ -16,6 +16,7 @@ namespace {
 using d3::Graph3;
 using d3::LatticeSize3;
 using d3::Point3;
+using testing::import_error;
 
 const LatticeSize3 kSizes[] = {{1, 1, 1, 3}, {3, 2, 2, 2}, {2, 3, 4, 1}, {4, 4, 2, 2}, {1, 2, 5, 3}};
 
@@ -112,13 +113,7 @@ TEST(RoundTrip3, FromBccmisIsExact) {
     ASSERT_EQ(d3::find_violation(g), std::nullopt);
     const Brick3 brick(size);
     const Forest3Ptr forest = export_forest(brick, g, sc_MPI_COMM_WORLD);
-    EXPECT_EQ(p8est_is_balanced(forest.get(), P8EST_CONNECT_EDGE), 1);
-    std::vector<Quadrant3> expected;
-    for (const Leaf3& leaf : leaves(g)) expected.push_back(brick.to_quadrant(leaf));
-    std::vector<Quadrant3> got = local_quadrants(forest.get());
-    std::sort(expected.begin(), expected.end());
-    std::sort(got.begin(), got.end());
-    EXPECT_EQ(got, expected);
+    testing::expect_quadrants_of(brick, g, forest.get());
     const Graph3 back = import_forest(brick, forest.get());
     EXPECT_EQ(canonical_text(back), canonical_text(g));
   }
@@ -138,21 +133,8 @@ TEST(RoundTrip3, FromP8estIsExact) {
                  d3::cascade_model::describe(size, targets));
     const Brick3 brick(size);
     const Forest3Ptr forest = testing::p8est_targets(brick, targets, P8EST_CONNECT_EDGE);
-    const Graph3 g = import_forest(brick, forest.get());
-    EXPECT_EQ(d3::find_violation(g), std::nullopt);
-    EXPECT_EQ(static_cast<std::int64_t>(g.C.size()), static_cast<std::int64_t>(forest->global_num_quadrants));
-    const Forest3Ptr again = export_forest(brick, g, sc_MPI_COMM_WORLD);
-    EXPECT_EQ(local_quadrants(again.get()), local_quadrants(forest.get()));
+    testing::expect_round_trip(brick, forest.get());
   }
-}
-
-std::string import_error(const Brick3& brick, const std::vector<Quadrant3>& qs) {
-  try {
-    import_quadrants(brick, qs);
-  } catch (const ImportError& e) {
-    return e.what();
-  }
-  return "accepted";
 }
 
 // spec/lattice3d.md §2, "Face balance alone is not enough": lattice 2 2 1 2
@@ -235,8 +217,4 @@ TEST(Import3, EdgeBalanceIsNotCornerBalance) {
 }  // namespace
 }  // namespace bccmis::p4est_bridge
 
-int main(int argc, char** argv) {
-  ::testing::InitGoogleTest(&argc, argv);
-  ::testing::AddGlobalTestEnvironment(new bccmis::p4est_bridge::testing::SessionEnvironment);
-  return RUN_ALL_TESTS();
-}
+int main(int argc, char** argv) { return bccmis::p4est_bridge::testing::run_tests(argc, argv); }

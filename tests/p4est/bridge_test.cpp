@@ -12,6 +12,7 @@
 namespace bccmis::p4est_bridge {
 namespace {
 
+using testing::import_error;
 using testing::p4est_targets;
 using testing::random_targets;
 using testing::refine_targets;
@@ -100,13 +101,7 @@ TEST(RoundTrip, FromBccmisIsExact) {
     ASSERT_EQ(find_violation(g), std::nullopt);
     const Brick brick(size);
     const ForestPtr forest = export_forest(brick, g, sc_MPI_COMM_WORLD);
-    EXPECT_EQ(p4est_is_balanced(forest.get(), P4EST_CONNECT_FACE), 1);
-    std::vector<Quadrant> expected;
-    for (const Leaf& leaf : leaves(g)) expected.push_back(brick.to_quadrant(leaf));
-    std::vector<Quadrant> got = local_quadrants(forest.get());
-    std::sort(expected.begin(), expected.end());
-    std::sort(got.begin(), got.end());
-    EXPECT_EQ(got, expected);
+    testing::expect_quadrants_of(brick, g, forest.get());
     const Graph back = import_forest(brick, forest.get());
     EXPECT_EQ(canonical_state(back), canonical_state(g));
   }
@@ -124,21 +119,8 @@ TEST(RoundTrip, FromP4estIsExact) {
     SCOPED_TRACE("trial " + std::to_string(trial) + ": " + testing::describe(size, targets));
     const Brick brick(size);
     const ForestPtr forest = p4est_targets(brick, targets, P4EST_CONNECT_FACE);
-    const Graph g = import_forest(brick, forest.get());
-    EXPECT_EQ(find_violation(g), std::nullopt);
-    EXPECT_EQ(static_cast<std::int64_t>(g.C.size()), static_cast<std::int64_t>(forest->global_num_quadrants));
-    const ForestPtr again = export_forest(brick, g, sc_MPI_COMM_WORLD);
-    EXPECT_EQ(local_quadrants(again.get()), local_quadrants(forest.get()));
+    testing::expect_round_trip(brick, forest.get());
   }
-}
-
-std::string import_error(const Brick& brick, const std::vector<Quadrant>& qs) {
-  try {
-    import_quadrants(brick, qs);
-  } catch (const ImportError& e) {
-    return e.what();
-  }
-  return "accepted";
 }
 
 TEST(Import, RefusesAForestThatIsNotFaceBalanced) {
@@ -218,8 +200,4 @@ TEST(Import, FaceBalanceIsEdgeBalance) {
 }  // namespace
 }  // namespace bccmis::p4est_bridge
 
-int main(int argc, char** argv) {
-  ::testing::InitGoogleTest(&argc, argv);
-  ::testing::AddGlobalTestEnvironment(new bccmis::p4est_bridge::testing::SessionEnvironment);
-  return RUN_ALL_TESTS();
-}
+int main(int argc, char** argv) { return bccmis::p4est_bridge::testing::run_tests(argc, argv); }

@@ -1,12 +1,14 @@
+// The p4est and p8est bridges, written once over the dimension (bridge.h)
+// and instantiated for Dim = 2 (p4est) and Dim = 3 (p8est) at the end.
 #include "bccmis/p4est/bridge.h"
-
-#include <p4est_extended.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
 
+#include "bccmis/d3/ops.h"
+#include "bccmis/invariants/d3/invariants3.h"
 #include "bccmis/invariants/invariants.h"
 #include "bccmis/ops.h"
 #include "bccmis/p4est/detail/gather.h"
@@ -15,26 +17,59 @@ namespace bccmis::p4est_bridge {
 
 namespace {
 
-std::string at(const Point& p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; }
-
-std::string describe(const Leaf& leaf) {
-  return "the level-" + std::to_string(leaf.level) + " cell centered at " + at(leaf.center);
+// "(x, y)" or "(x, y, z)", how the cores' messages name a position.
+template <std::size_t N>
+std::string join(const std::array<std::int64_t, N>& v, const char* separator) {
+  std::string t;
+  for (std::size_t a = 0; a < N; ++a) t += (a == 0 ? "" : separator) + std::to_string(v[a]);
+  return t;
 }
 
-std::string describe(const Quadrant& q) {
-  return "quadrant (tree " + std::to_string(q.tree) + ", x " + std::to_string(q.x) + ", y " + std::to_string(q.y) +
-         ", level " + std::to_string(q.level) + ")";
+template <int Dim>
+std::string describe(const LeafOf<Dim>& leaf) {
+  return "the level-" + std::to_string(leaf.level) + " " + P4<Dim>::kCell + " centered at (" +
+         join(P4<Dim>::axes(leaf.center), ", ") + ")";
+}
+
+template <int Dim>
+std::array<std::int32_t, Dim> coordinates(const QuadrantOf<Dim>& q) {
+  if constexpr (Dim == 2)
+    return {q.x, q.y};
+  else
+    return {q.x, q.y, q.z};
+}
+
+template <int Dim>
+QuadrantOf<Dim> quadrant(std::int32_t tree, const std::array<std::int32_t, Dim>& x, std::int32_t level) {
+  if constexpr (Dim == 2)
+    return {tree, x[0], x[1], level};
+  else
+    return {tree, x[0], x[1], x[2], level};
+}
+
+template <int Dim>
+std::string describe(const QuadrantOf<Dim>& q) {
+  std::string t = std::string(P4<Dim>::kQuadrant) + " (tree " + std::to_string(q.tree);
+  const std::array<std::int32_t, Dim> x = coordinates(q);
+  for (std::size_t a = 0; a < Dim; ++a) t += std::string(", ") + "xyz"[a] + " " + std::to_string(x[a]);
+  return t + ", level " + std::to_string(q.level) + ")";
 }
 
 // The level-k ancestor of a leaf (k <= leaf.level): the cell of side s_k
 // containing the leaf's center.
-Leaf ancestor(const LatticeSize& size, const Leaf& leaf, int k) {
+template <int Dim>
+LeafOf<Dim> ancestor(const typename P4<Dim>::LatticeSize& size, const LeafOf<Dim>& leaf, int k) {
   const std::int64_t s = cell_side(size, k);
-  return {{(leaf.center.x / s) * s + s / 2, (leaf.center.y / s) * s + s / 2}, k};
+  std::array<std::int64_t, Dim> c = P4<Dim>::axes(leaf.center);
+  for (std::int64_t& v : c) v = (v / s) * s + s / 2;
+  return {P4<Dim>::point(c), k};
 }
 
 // Coarsest first, then by position: the order in which import refines.
-bool level_first(const Leaf& a, const Leaf& b) { return a.level != b.level ? a.level < b.level : a.center < b.center; }
+template <int Dim>
+bool level_first(const LeafOf<Dim>& a, const LeafOf<Dim>& b) {
+  return a.level != b.level ? a.level < b.level : a.center < b.center;
+}
 
 int g_sessions = 0;
 bool g_owns_mpi = false;
@@ -69,84 +104,114 @@ Session::~Session() {
   g_owns_mpi = false;
 }
 
-void ConnectivityDeleter::operator()(p4est_connectivity_t* c) const noexcept { p4est_connectivity_destroy(c); }
-void ForestDeleter::operator()(p4est_t* p) const noexcept { p4est_destroy(p); }
-
 // ---- Brick ---------------------------------------------------------------------------------
 
-Brick::Brick(const LatticeSize& size) : size_(size) {
+template <int Dim>
+BrickOf<Dim>::BrickOf(const LatticeSize& size) : size_(size) {
   validate_lattice_size(size);
-  if (size.L > P4EST_QMAXLEVEL)
-    throw std::invalid_argument("bccmis::p4est_bridge: L = " + std::to_string(size.L) +
-                                " exceeds P4EST_QMAXLEVEL = " + std::to_string(P4EST_QMAXLEVEL));
-  if (size.W > std::numeric_limits<std::int32_t>::max() / size.H)
-    throw std::invalid_argument("bccmis::p4est_bridge: W x H = " + std::to_string(size.W) + " x " +
-                                std::to_string(size.H) + " trees exceed p4est's tree index");
-  shift_ = P4EST_QMAXLEVEL - size.L;
-  conn_.reset(p4est_connectivity_new_brick(static_cast<int>(size.W), static_cast<int>(size.H), 0, 0));
-  const auto trees = static_cast<std::size_t>(size.W * size.H);
-  if (static_cast<std::size_t>(conn_->num_trees) != trees)
+  if (size.L > Traits::kQMaxLevel)
+    throw std::invalid_argument("bccmis::p4est_bridge: L = " + std::to_string(size.L) + " exceeds " + Traits::kMaxName +
+                                "_QMAXLEVEL = " + std::to_string(Traits::kQMaxLevel));
+  const Cell n = Traits::cells(size);
+  std::int64_t trees = 1;
+  for (const std::int64_t m : n) {
+    if (trees > std::numeric_limits<std::int32_t>::max() / m)
+      throw std::invalid_argument("bccmis::p4est_bridge: " + std::string(Traits::kGrid) + " = " + join(n, " x ") +
+                                  " trees exceed " + Traits::kP4est + "'s tree index");
+    trees *= m;
+  }
+  shift_ = Traits::kQMaxLevel - size.L;
+  std::array<int, Dim> brick{};
+  for (std::size_t a = 0; a < Dim; ++a) brick[a] = static_cast<int>(n[a]);
+  conn_.reset(Traits::new_brick(brick));
+  if (conn_->num_trees != trees)
     throw std::logic_error("bccmis::p4est_bridge: the brick has " + std::to_string(conn_->num_trees) +
                            " trees, expected " + std::to_string(trees));
   // The brick's tree numbering, read from its vertex coordinates: tree t's
-  // corners are tree_to_vertex[4t + k], k = 0..3 in p4est's z-order
-  // (x fastest), at (i, j), (i+1, j), (i, j+1), (i+1, j+1).
-  tree_of_cell_.assign(trees, -1);
-  cell_of_tree_.assign(trees, -1);
-  for (std::size_t t = 0; t < trees; ++t) {
-    std::int64_t corner[4][2];
-    for (int k = 0; k < 4; ++k) {
-      const p4est_topidx_t v = conn_->tree_to_vertex[4 * t + static_cast<std::size_t>(k)];
-      corner[k][0] = std::llround(conn_->vertices[3 * v]);
-      corner[k][1] = std::llround(conn_->vertices[3 * v + 1]);
+  // corners are tree_to_vertex[2^Dim t + v], v = 0..2^Dim - 1 in p4est's
+  // z-order (x fastest, then y, then z), so corner v must lie at
+  // (i, j, k) + (v & 1, v >> 1 & 1, v >> 2).
+  constexpr std::size_t kCorners = std::size_t{1} << Dim;
+  tree_of_cell_.assign(static_cast<std::size_t>(trees), -1);
+  cell_of_tree_.assign(static_cast<std::size_t>(trees), -1);
+  for (std::size_t t = 0; t < static_cast<std::size_t>(trees); ++t) {
+    std::array<Cell, kCorners> corner{};
+    for (std::size_t v = 0; v < kCorners; ++v) {
+      const p4est_topidx_t id = conn_->tree_to_vertex[kCorners * t + v];
+      for (std::size_t a = 0; a < Dim; ++a)
+        corner[v][a] = std::llround(conn_->vertices[3 * static_cast<std::size_t>(id) + a]);
     }
-    const std::int64_t i = corner[0][0], j = corner[0][1];
-    const bool z_order = corner[1][0] == i + 1 && corner[1][1] == j && corner[2][0] == i && corner[2][1] == j + 1 &&
-                         corner[3][0] == i + 1 && corner[3][1] == j + 1;
-    if (!z_order || i < 0 || j < 0 || i >= size.W || j >= size.H ||
-        tree_of_cell_[static_cast<std::size_t>(j * size.W + i)] != -1)
-      throw std::logic_error("bccmis::p4est_bridge: brick tree " + std::to_string(t) +
-                             " is not a unit square of the W x H grid in z-order corners");
-    tree_of_cell_[static_cast<std::size_t>(j * size.W + i)] = static_cast<std::int32_t>(t);
-    cell_of_tree_[t] = j * size.W + i;
+    const Cell low = corner[0];
+    bool unit = true, inside = true;
+    for (std::size_t v = 0; v < kCorners; ++v)
+      for (std::size_t a = 0; a < Dim; ++a)
+        unit = unit && corner[v][a] == low[a] + static_cast<std::int64_t>((v >> a) & 1);
+    for (std::size_t a = 0; a < Dim; ++a) inside = inside && low[a] >= 0 && low[a] < n[a];
+    if (!unit || !inside || tree_of_cell_[static_cast<std::size_t>(index(low))] != -1)
+      throw std::logic_error("bccmis::p4est_bridge: brick tree " + std::to_string(t) + " is not a unit " +
+                             Traits::kSquare + " of the " + Traits::kGrid + " grid in z-order corners");
+    tree_of_cell_[static_cast<std::size_t>(index(low))] = static_cast<std::int32_t>(t);
+    cell_of_tree_[t] = index(low);
   }
 }
 
-std::int32_t Brick::tree(std::int64_t i, std::int64_t j) const {
-  return tree_of_cell_.at(static_cast<std::size_t>(j * size_.W + i));
+template <int Dim>
+std::int64_t BrickOf<Dim>::index(const Cell& cell) const {
+  const Cell n = Traits::cells(size_);
+  std::int64_t out = 0;
+  for (std::size_t a = Dim; a-- > 0;) out = out * n[a] + cell[a];
+  return out;
 }
 
-Quadrant Brick::to_quadrant(const Leaf& leaf) const {
+template <int Dim>
+std::int32_t BrickOf<Dim>::tree_at(const Cell& cell) const {
+  return tree_of_cell_.at(static_cast<std::size_t>(index(cell)));
+}
+
+template <int Dim>
+QuadrantOf<Dim> BrickOf<Dim>::to_quadrant(const Leaf& leaf) const {
   const std::int64_t S = level0_side(size_);
   const std::int64_t half = cell_side(size_, leaf.level) / 2;
-  const std::int64_t x0 = leaf.center.x - half, y0 = leaf.center.y - half;  // lower-left corner
-  const std::int64_t i = x0 / S, j = y0 / S;
-  return {tree(i, j), static_cast<std::int32_t>((x0 - i * S) << shift_),
-          static_cast<std::int32_t>((y0 - j * S) << shift_), leaf.level};
+  const Cell c = Traits::axes(leaf.center);
+  Cell cell{};
+  std::array<std::int32_t, Dim> offset{};
+  for (std::size_t a = 0; a < Dim; ++a) {
+    cell[a] = (c[a] - half) / S;  // of the lower-left corner
+    offset[a] = static_cast<std::int32_t>((c[a] - half - cell[a] * S) << shift_);
+  }
+  return quadrant<Dim>(tree_at(cell), offset, leaf.level);
 }
 
-Leaf Brick::to_leaf(const Quadrant& q) const {
+template <int Dim>
+LeafOf<Dim> BrickOf<Dim>::to_leaf(const Quadrant& q) const {
+  const Cell n = Traits::cells(size_);
   if (q.tree < 0 || static_cast<std::size_t>(q.tree) >= cell_of_tree_.size())
-    throw ImportError("bccmis::p4est_bridge: " + describe(q) + ": no such tree in the " + std::to_string(size_.W) +
-                      " x " + std::to_string(size_.H) + " brick");
+    throw ImportError("bccmis::p4est_bridge: " + describe(q) + ": no such tree in the " + join(n, " x ") + " brick");
   if (q.level < 0 || q.level > size_.L)
     throw ImportError("bccmis::p4est_bridge: " + describe(q) + ": level " + std::to_string(q.level) +
                       (q.level < 0 ? " is negative" : " is deeper than the lattice's L = " + std::to_string(size_.L)));
-  const std::int64_t len = std::int64_t{1} << (P4EST_MAXLEVEL - q.level);
-  if (q.x < 0 || q.y < 0 || q.x >= P4EST_ROOT_LEN || q.y >= P4EST_ROOT_LEN || q.x % len != 0 || q.y % len != 0)
-    throw ImportError("bccmis::p4est_bridge: " + describe(q) + ": not a level-" + std::to_string(q.level) +
-                      " quadrant inside its tree");
+  const std::int64_t len = std::int64_t{1} << (Traits::kMaxLevel - q.level);
+  const std::array<std::int32_t, Dim> x = coordinates(q);
+  for (const std::int32_t v : x)
+    if (v < 0 || v >= Traits::kRootLen || v % len != 0)
+      throw ImportError("bccmis::p4est_bridge: " + describe(q) + ": not a level-" + std::to_string(q.level) + " " +
+                        Traits::kQuadrant + " inside its tree");
   const std::int64_t S = level0_side(size_);
-  const std::int64_t cell = cell_of_tree_[static_cast<std::size_t>(q.tree)];
-  const std::int64_t i = cell % size_.W, j = cell / size_.W;
+  std::int64_t rest = cell_of_tree_[static_cast<std::size_t>(q.tree)];
   const std::int64_t half = cell_side(size_, q.level) / 2;
-  return {{i * S + (std::int64_t{q.x} >> shift_) + half, j * S + (std::int64_t{q.y} >> shift_) + half}, q.level};
+  Cell c{};
+  for (std::size_t a = 0; a < Dim; ++a) {
+    c[a] = (rest % n[a]) * S + (std::int64_t{x[a]} >> shift_) + half;
+    rest /= n[a];
+  }
+  return {Traits::point(c), q.level};
 }
 
 // ---- Export ----------------------------------------------------------------------------------
 
-std::vector<Leaf> leaves(const Graph& g) {
-  std::vector<Leaf> out;
+template <class G>
+requires(dim_of<G> != 0) std::vector<LeafOf<dim_of<G>>> leaves(const G& g) {
+  std::vector<LeafOf<dim_of<G>>> out;
   out.reserve(g.C.size());
   for (const auto& [c, l] : g.level) out.push_back({c, l});
   return out;  // std::map order: sorted by center
@@ -154,15 +219,18 @@ std::vector<Leaf> leaves(const Graph& g) {
 
 namespace {
 
+template <int Dim>
 struct RefineContext {
-  const Brick* brick;
-  std::vector<Leaf> sorted;  // by operator<
+  const BrickOf<Dim>* brick;
+  std::vector<LeafOf<Dim>> sorted;  // by operator<
 };
 
-int refine_to_leaves(p4est_t* forest, p4est_topidx_t tree, p4est_quadrant_t* q) {
-  const auto* ctx = static_cast<const RefineContext*>(forest->user_pointer);
+// Split a quadrant unless it is one of the requested leaves.
+template <int Dim>
+int refine_to_leaves(typename P4<Dim>::forest_t* forest, p4est_topidx_t tree, typename P4<Dim>::quadrant_t* q) {
+  const auto* ctx = static_cast<const RefineContext<Dim>*>(forest->user_pointer);
   try {
-    const Leaf leaf = ctx->brick->to_leaf({tree, q->x, q->y, q->level});
+    const LeafOf<Dim> leaf = ctx->brick->to_leaf(P4<Dim>::quadrant(tree, *q));
     return std::binary_search(ctx->sorted.begin(), ctx->sorted.end(), leaf) ? 0 : 1;
   } catch (...) {
     return 0;  // cannot happen below maxlevel L; make_forest then reports the mismatch
@@ -171,126 +239,166 @@ int refine_to_leaves(p4est_t* forest, p4est_topidx_t tree, p4est_quadrant_t* q) 
 
 }  // namespace
 
-ForestPtr make_forest(const Brick& brick, std::span<const Leaf> leaves, sc_MPI_Comm comm) {
-  RefineContext ctx{&brick, std::vector<Leaf>(leaves.begin(), leaves.end())};
+template <int Dim>
+ForestPtrOf<Dim> make_forest(const BrickOf<Dim>& brick, std::type_identity_t<std::span<const LeafOf<Dim>>> leaves,
+                             sc_MPI_Comm comm) {
+  using T = P4<Dim>;
+  RefineContext<Dim> ctx{&brick, std::vector<LeafOf<Dim>>(leaves.begin(), leaves.end())};
   std::sort(ctx.sorted.begin(), ctx.sorted.end());
   ctx.sorted.erase(std::unique(ctx.sorted.begin(), ctx.sorted.end()), ctx.sorted.end());
-  ForestPtr forest(p4est_new_ext(comm, brick.connectivity(), 0, 0, 1, 0, nullptr, &ctx));
-  p4est_refine_ext(forest.get(), 1, brick.size().L, refine_to_leaves, nullptr, nullptr);
+  ForestPtrOf<Dim> forest(T::new_ext(comm, brick.connectivity(), 0, 0, 1, 0, nullptr, &ctx));
+  T::refine_ext(forest.get(), 1, brick.size().L, refine_to_leaves<Dim>, nullptr, nullptr);
   forest->user_pointer = nullptr;
   // Every forest leaf is a requested leaf, and there are as many: the leaves
   // tile the lattice. Decided collectively, so every rank throws or none.
   long local_bad = 0;
-  for (const Quadrant& q : local_quadrants(forest.get()))
+  for (const QuadrantOf<Dim>& q : local_quadrants(forest.get()))
     if (!std::binary_search(ctx.sorted.begin(), ctx.sorted.end(), brick.to_leaf(q))) ++local_bad;
   long bad = 0;
   MPI_Allreduce(&local_bad, &bad, 1, MPI_LONG, MPI_SUM, comm);
   if (bad != 0 || static_cast<std::size_t>(forest->global_num_quadrants) != ctx.sorted.size())
-    throw ImportError("bccmis::p4est_bridge: the " + std::to_string(ctx.sorted.size()) +
-                      " leaves do not tile the lattice (the forest refined to them has " +
+    throw ImportError("bccmis::p4est_bridge: the " + std::to_string(ctx.sorted.size()) + " leaves do not tile the " +
+                      T::kWhich + "lattice (the forest refined to them has " +
                       std::to_string(forest->global_num_quadrants) + " leaves, " + std::to_string(bad) +
                       " of them not requested)");
   return forest;
 }
 
-ForestPtr export_forest(const Brick& brick, const Graph& g, sc_MPI_Comm comm) {
+template <int Dim>
+ForestPtrOf<Dim> export_forest(const BrickOf<Dim>& brick, const typename P4<Dim>::Graph& g, sc_MPI_Comm comm) {
   if (!(g.size == brick.size()))
-    throw std::invalid_argument("bccmis::p4est_bridge: the graph and the brick differ in size");
-  const std::vector<Leaf> all = leaves(g);
+    throw std::invalid_argument(std::string("bccmis::p4est_bridge: the ") + P4<Dim>::kWhich +
+                                "graph and the brick differ in size");
+  const std::vector<LeafOf<Dim>> all = leaves(g);
   return make_forest(brick, all, comm);
 }
 
-std::vector<Quadrant> local_quadrants(const p4est_t* forest) {
-  std::vector<Quadrant> out;
+template <class Forest>
+requires(dim_of<Forest> != 0) std::vector<QuadrantOf<dim_of<Forest>>> local_quadrants(const Forest* forest) {
+  constexpr int Dim = dim_of<Forest>;
+  using T = P4<Dim>;
+  std::vector<QuadrantOf<Dim>> out;
   out.reserve(static_cast<std::size_t>(forest->local_num_quadrants));
   if (forest->first_local_tree < 0) return out;  // this rank holds no quadrant
   for (p4est_topidx_t t = forest->first_local_tree; t <= forest->last_local_tree; ++t) {
-    const p4est_tree_t* tree = p4est_tree_array_index(forest->trees, t);
-    const sc_array_t* qs = &tree->quadrants;
+    sc_array_t* qs = &T::tree_at(forest->trees, t)->quadrants;
     for (std::size_t k = 0; k < qs->elem_count; ++k) {
-      const p4est_quadrant_t* q = p4est_quadrant_array_index(const_cast<sc_array_t*>(qs), k);
-      out.push_back({t, q->x, q->y, q->level});
+      const typename T::quadrant_t* q = T::quadrant_at(qs, k);
+      out.push_back(T::quadrant(t, *q));
     }
   }
   return out;
 }
 
-std::vector<Quadrant> gather_quadrants(const p4est_t* forest, int root) {
-  static_assert(sizeof(Quadrant) == 4 * sizeof(std::int32_t));
+template <class Forest>
+requires(dim_of<Forest> != 0) std::vector<QuadrantOf<dim_of<Forest>>> gather_quadrants(const Forest* forest, int root) {
+  static_assert(sizeof(QuadrantOf<dim_of<Forest>>) == (dim_of<Forest> + 2) * sizeof(std::int32_t));
   return detail::gather(local_quadrants(forest), forest->mpicomm, root);
 }
 
 // ---- Import ----------------------------------------------------------------------------------
 
-Graph import_leaves(const LatticeSize& size, std::span<const Leaf> input) {
+template <class Size>
+requires(dim_of<Size> != 0) typename P4<dim_of<Size>>::Graph
+    import_leaves(const Size& size, std::type_identity_t<std::span<const LeafOf<dim_of<Size>>>> input) {
+  constexpr int Dim = dim_of<Size>;
+  using T = P4<Dim>;
+  using LeafT = LeafOf<Dim>;
+  const std::string lattice = std::string(T::kWhich) + "lattice";
   validate_lattice_size(size);
-  std::vector<Leaf> sorted(input.begin(), input.end());
+  std::vector<LeafT> sorted(input.begin(), input.end());
   std::sort(sorted.begin(), sorted.end());
   for (std::size_t k = 1; k < sorted.size(); ++k)
     if (sorted[k] == sorted[k - 1])
       throw ImportError("bccmis::p4est_bridge: " + describe(sorted[k]) + " is listed twice");
   // Every proper ancestor of a leaf is a refined cell of the lattice.
-  std::vector<Leaf> refined;
-  const std::int64_t width = size.W * level0_side(size), height = size.H * level0_side(size);
-  for (const Leaf& leaf : sorted) {
+  std::vector<LeafT> refined;
+  std::array<std::int64_t, Dim> extent = T::cells(size);
+  for (std::int64_t& e : extent) e *= level0_side(size);
+  for (const LeafT& leaf : sorted) {
     if (leaf.level < 0 || leaf.level > size.L)
       throw ImportError("bccmis::p4est_bridge: " + describe(leaf) + ": level outside 0.." + std::to_string(size.L));
     const std::int64_t s = cell_side(size, leaf.level);
-    const Point& c = leaf.center;
-    if (c.x <= 0 || c.y <= 0 || c.x >= width || c.y >= height || (c.x - s / 2) % s != 0 || (c.y - s / 2) % s != 0)
-      throw ImportError("bccmis::p4est_bridge: " + describe(leaf) + " is not a cell of the lattice");
-    for (int k = 0; k < leaf.level; ++k) refined.push_back(ancestor(size, leaf, k));
+    const std::array<std::int64_t, Dim> c = T::axes(leaf.center);
+    for (std::size_t a = 0; a < Dim; ++a)
+      if (c[a] <= 0 || c[a] >= extent[a] || (c[a] - s / 2) % s != 0)
+        throw ImportError("bccmis::p4est_bridge: " + describe(leaf) + " is not a " + T::kCell + " of the " + lattice);
+    for (int k = 0; k < leaf.level; ++k) refined.push_back(ancestor<Dim>(size, leaf, k));
   }
   std::sort(refined.begin(), refined.end());
   refined.erase(std::unique(refined.begin(), refined.end()), refined.end());
-  for (const Leaf& leaf : sorted)
+  for (const LeafT& leaf : sorted)
     if (std::binary_search(refined.begin(), refined.end(), leaf))
       throw ImportError("bccmis::p4est_bridge: leaves overlap: " + describe(leaf) +
                         " is a leaf and contains other leaves");
   // Refine coarsest first. Before level k, every refined cell coarser than k
   // is refined, so a cell coarser than k is a leaf of the input. refine(c)
-  // (eq. 3, erratum E4) refuses exactly when an edge-neighbor of c is such
-  // a leaf, i.e. when a leaf of level >= k+1 inside c and a leaf of level
-  // < k across c's side differ by 2 or more: the input is not face balanced.
-  std::sort(refined.begin(), refined.end(), level_first);
-  Graph g = make_lattice(size);
-  for (const Leaf& c : refined) {
-    const RefineResult r = refine(g, c.center);
+  // (2D: eq. 3, erratum E4) refuses exactly when a neighbor of c across an
+  // edge (3D: a face or an edge) is such a leaf, i.e. when a leaf of level
+  // >= k+1 inside c and a leaf of level < k across c's boundary differ by 2
+  // or more: the input is not face (3D: edge) balanced.
+  std::sort(refined.begin(), refined.end(), level_first<Dim>);
+  typename T::Graph g = make_lattice(size);
+  for (const LeafT& c : refined) {
+    const auto r = refine(g, c.center);
     if (r.refused == RefineRefusal::CoarserNeighbor)
-      throw ImportError("bccmis::p4est_bridge: the forest is not face balanced (2:1 across faces): " + describe(c) +
-                        " holds leaves of level " + std::to_string(c.level + 1) +
-                        " or finer, but an edge-neighbor is a leaf coarser than level " + std::to_string(c.level));
+      throw ImportError("bccmis::p4est_bridge: the forest is not " + std::string(T::kBalanced) + ": " + describe(c) +
+                        " holds leaves of level " + std::to_string(c.level + 1) + " or finer, but " + T::kNeighbor +
+                        " is a leaf coarser than level " + std::to_string(c.level));
     if (!r.applied())
       throw ImportError("bccmis::p4est_bridge: " + describe(c) +
                         " cannot be refined: " + std::string(code(*r.refused)));
   }
   if (g.C.size() != sorted.size()) {
     for (const auto& [c, l] : g.level)
-      if (!std::binary_search(sorted.begin(), sorted.end(), Leaf{c, l}))
-        throw ImportError("bccmis::p4est_bridge: the leaves do not cover the lattice: nothing covers " +
-                          describe(Leaf{c, l}));
+      if (!std::binary_search(sorted.begin(), sorted.end(), LeafT{c, l}))
+        throw ImportError("bccmis::p4est_bridge: the leaves do not cover the " + lattice + ": nothing covers " +
+                          describe(LeafT{c, l}));
   }
-  if (const std::optional<Violation> v = find_violation(g))
-    throw ImportError("bccmis::p4est_bridge: the imported lattice fails the checker: " + to_string(*v));
+  if (const auto v = find_violation(g))
+    throw ImportError("bccmis::p4est_bridge: the imported " + lattice + " fails the checker: " + to_string(*v));
   return g;
 }
 
-Graph import_quadrants(const Brick& brick, std::span<const Quadrant> quadrants) {
-  std::vector<Leaf> input;
+template <int Dim>
+typename P4<Dim>::Graph import_quadrants(const BrickOf<Dim>& brick,
+                                         std::type_identity_t<std::span<const QuadrantOf<Dim>>> quadrants) {
+  std::vector<LeafOf<Dim>> input;
   input.reserve(quadrants.size());
-  for (const Quadrant& q : quadrants) input.push_back(brick.to_leaf(q));
+  for (const QuadrantOf<Dim>& q : quadrants) input.push_back(brick.to_leaf(q));
   return import_leaves(brick.size(), input);
 }
 
-Graph import_forest(const Brick& brick, const p4est_t* forest) {
+template <int Dim>
+typename P4<Dim>::Graph import_forest(const BrickOf<Dim>& brick, const typename P4<Dim>::forest_t* forest) {
+  using T = P4<Dim>;
   if (forest->global_num_quadrants != forest->local_num_quadrants)
-    throw ImportError("bccmis::p4est_bridge: import_forest needs the whole forest on this rank (" +
-                      std::to_string(forest->local_num_quadrants) + " of " +
-                      std::to_string(forest->global_num_quadrants) + " quadrants); use gather_quadrants");
+    throw ImportError("bccmis::p4est_bridge: import_forest needs the whole " + std::string(T::kWhich) +
+                      "forest on this rank (" + std::to_string(forest->local_num_quadrants) + " of " +
+                      std::to_string(forest->global_num_quadrants) + " " + T::kQuadrant + "s); use gather_quadrants");
   if (forest->connectivity->num_trees != brick.connectivity()->num_trees)
-    throw ImportError("bccmis::p4est_bridge: the forest's connectivity is not the brick's");
-  const std::vector<Quadrant> qs = local_quadrants(forest);
+    throw ImportError(std::string("bccmis::p4est_bridge: the forest's connectivity is not the ") + T::kWhich +
+                      "brick's");
+  const std::vector<QuadrantOf<Dim>> qs = local_quadrants(forest);
   return import_quadrants(brick, qs);
 }
+
+// ---- The instantiations: p4est (2D) and p8est (3D) -------------------------------------------
+
+#define BCCMIS_P4EST_INSTANTIATE(Dim)                                                                    \
+  template class BrickOf<Dim>;                                                                           \
+  template std::vector<LeafOf<Dim>> leaves(const P4<Dim>::Graph&);                                       \
+  template ForestPtrOf<Dim> make_forest(const BrickOf<Dim>&, std::span<const LeafOf<Dim>>, sc_MPI_Comm); \
+  template ForestPtrOf<Dim> export_forest(const BrickOf<Dim>&, const P4<Dim>::Graph&, sc_MPI_Comm);      \
+  template std::vector<QuadrantOf<Dim>> local_quadrants(const P4<Dim>::forest_t*);                       \
+  template std::vector<QuadrantOf<Dim>> gather_quadrants(const P4<Dim>::forest_t*, int);                 \
+  template P4<Dim>::Graph import_quadrants(const BrickOf<Dim>&, std::span<const QuadrantOf<Dim>>);       \
+  template P4<Dim>::Graph import_leaves(const P4<Dim>::LatticeSize&, std::span<const LeafOf<Dim>>);      \
+  template P4<Dim>::Graph import_forest(const BrickOf<Dim>&, const P4<Dim>::forest_t*);
+
+BCCMIS_P4EST_INSTANTIATE(2)
+BCCMIS_P4EST_INSTANTIATE(3)
+
+#undef BCCMIS_P4EST_INSTANTIATE
 
 }  // namespace bccmis::p4est_bridge
