@@ -1,0 +1,210 @@
+// A moving sphere on a 3D lattice (bench_p8est): every leaf meeting the ball
+// has level L, the rest is the coarsest edge-balanced mesh around it. The
+// ball crosses the box along x and back (a triangle wave), `speed` level-L
+// cube sides a frame.
+//
+//   - batch build, level by level: refine the level-l cells meeting the ball
+//     (with the balance cascade where a coarser face- or edge-neighbor is in
+//     the way), l = 0 .. L-1, enumerating only the cells that meet the ball,
+//     row by row;
+//   - a frame visits the changed shells only: for coarsening, the level-l
+//     cells within R + 2 s_l of the old ball that do not meet the new ball
+//     (finest level first); for refinement, the level-L cells meeting the new
+//     ball but not the old one.
+//
+// Why R + 2 s_l: a refined level-l cell of the balanced mesh meets the ball
+// (l < L) or touches a refined level-(l+1) cell, so its distance D_l to the
+// ball is at most D_(l+1) + sqrt(3) s_(l+1), D_(L-1) = 0, and the s_k halve:
+// D_l < sqrt(3) s_l. Cells beyond R + 2 s_l of the old ball were not refined.
+//
+// bench_p8est --bccmis_verify compares the leaf sets with p8est's refine +
+// coarsen + balance(P8EST_CONNECT_EDGE) after every frame.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <utility>
+
+#include "bccmis/d3/point.h"
+#include "bccmis/lattice.h"
+#include "bccmis/ops.h"
+
+namespace bccmis::d3::bench {
+
+/// The ball's path and the predicate both sides share.
+struct Ball {
+  double x = 0, y = 0, z = 0;
+};
+
+/// The ball center at `frame` for a box of the given size: y and z at the
+/// box center, x a triangle wave between a quarter and three quarters of the
+/// box's width, `speed` level-L cell sides a frame.
+inline Ball ball_position(const d3::LatticeSize& size, int frame, int speed) {
+  const double S = static_cast<double>(d3::level0_side(size));
+  const double x0 = 0.25 * static_cast<double>(size.W) * S, x1 = 0.75 * static_cast<double>(size.W) * S;
+  const double step = static_cast<double>(d3::cell_side(size, size.L)) * speed;
+  const auto frames = static_cast<std::int64_t>(std::llround((x1 - x0) / step));  // one pass
+  const std::int64_t t = frame % (2 * frames);
+  const std::int64_t u = t <= frames ? t : 2 * frames - t;
+  return {x0 + static_cast<double>(u) * step, static_cast<double>(size.H) * S / 2, static_cast<double>(size.D) * S / 2};
+}
+
+/// Whether the cube centered at c with half side h meets the ball (b, r):
+/// its closest point is within r of b.
+inline bool cube_meets(const d3::Point& c, double h, const Ball& b, double r) {
+  const double dx = std::max(0.0, std::abs(static_cast<double>(c.x) - b.x) - h);
+  const double dy = std::max(0.0, std::abs(static_cast<double>(c.y) - b.y) - h);
+  const double dz = std::max(0.0, std::abs(static_cast<double>(c.z) - b.z) - h);
+  return dx * dx + dy * dy + dz * dz <= r * r;
+}
+
+template <AdaptiveLattice L>
+class LocalFeature {
+ public:
+  /// `reserve_cells` > 0: room for that many cells before the build.
+  LocalFeature(const d3::LatticeSize& size, double radius, int speed, std::size_t reserve_cells = 0)
+      : size_(size), g_(size), radius_(radius), speed_(speed) {
+    if constexpr (requires(L & s) { s.reserve(reserve_cells); })
+      if (reserve_cells > 0) g_.reserve(reserve_cells);
+    ball_ = ball_position(size_, 0, speed_);
+    for (int l = 0; l < size_.L; ++l)
+      for_cells(l, ball_, radius_, nullptr, 0, [&](const d3::Point& c) {
+        if (is_center(g_, c) && level_of(g_, c) == l) refine_balanced(c, l);
+      });
+  }
+
+  /// Moves the ball one frame on and adapts; returns the operations applied.
+  std::size_t frame() {
+    ops_ = 0;
+    const Ball old = ball_;
+    ball_ = ball_position(size_, ++frame_, speed_);
+    for (int l = size_.L - 1; l >= 0; --l) {
+      const double margin = radius_ + 2.0 * static_cast<double>(d3::cell_side(size_, l));
+      for_cells(l, old, margin, &ball_, radius_, [&](const d3::Point& n) {
+        if (!can_coarsen(g_, n)) ops_ += coarsen(g_, n).applied();
+      });
+    }
+    for_cells(size_.L, ball_, radius_, &old, radius_, [&](const d3::Point& p) { refine_to(p, size_.L); });
+    return ops_;
+  }
+
+  const L& state() const { return g_; }
+  const Ball& ball() const { return ball_; }
+  int frame_number() const { return frame_; }
+
+ private:
+  // The column range [i0, i1] of the level cells (side s) in row (j, k) that
+  // meet the ball (b, r); empty when i0 > i1.
+  std::pair<std::int64_t, std::int64_t> row_range(std::int64_t j, std::int64_t k, std::int64_t s, const Ball& b,
+                                                  double r) const {
+    const double h = static_cast<double>(s) / 2;
+    const double dy = std::max(0.0, std::abs(static_cast<double>(j * s) + h - b.y) - h);
+    const double dz = std::max(0.0, std::abs(static_cast<double>(k * s) + h - b.z) - h);
+    const double rest = r * r - dy * dy - dz * dz;
+    if (rest < 0) return {1, 0};
+    const double w = std::sqrt(rest);
+    auto i0 = static_cast<std::int64_t>(std::ceil((b.x - w) / static_cast<double>(s) - 1));
+    auto i1 = static_cast<std::int64_t>(std::floor((b.x + w) / static_cast<double>(s)));
+    // Guard the floating-point ends with the exact predicate.
+    const auto meets = [&](std::int64_t i) {
+      return cube_meets(d3::Point{i * s + s / 2, j * s + s / 2, k * s + s / 2}, h, b, r);
+    };
+    while (i0 <= i1 && !meets(i0)) ++i0;
+    while (meets(i0 - 1)) --i0;
+    while (i1 >= i0 && !meets(i1)) --i1;
+    while (i1 >= i0 && meets(i1 + 1)) ++i1;
+    return {i0, i1};
+  }
+
+  // Calls f(center) for the level-l cells inside the domain that meet ball
+  // (b, r) and, when `minus` is given, do not meet ball (*minus, minus_r).
+  template <class F>
+  void for_cells(int l, const Ball& b, double r, const Ball* minus, double minus_r, F&& f) const {
+    const std::int64_t s = d3::cell_side(size_, l);
+    const double sd = static_cast<double>(s);
+    const std::int64_t columns = size_.W << l, rows = size_.H << l, layers = size_.D << l;
+    const auto lo = [&](double v) {
+      return std::max<std::int64_t>(0, static_cast<std::int64_t>(std::floor(v / sd)) - 1);
+    };
+    const auto hi = [&](double v, std::int64_t n) {
+      return std::min<std::int64_t>(n - 1, static_cast<std::int64_t>(std::floor(v / sd)) + 1);
+    };
+    const std::int64_t k0 = lo(b.z - r), k1 = hi(b.z + r, layers);
+    const std::int64_t j0 = lo(b.y - r), j1 = hi(b.y + r, rows);
+    for (std::int64_t k = k0; k <= k1; ++k)
+      for (std::int64_t j = j0; j <= j1; ++j) {
+        auto [a0, a1] = row_range(j, k, s, b, r);
+        a0 = std::max<std::int64_t>(a0, 0);
+        a1 = std::min<std::int64_t>(a1, columns - 1);
+        std::pair<std::int64_t, std::int64_t> m{1, 0};
+        if (minus) m = row_range(j, k, s, *minus, minus_r);
+        for (std::int64_t i = a0; i <= a1; ++i) {
+          if (m.first <= m.second && i >= m.first && i <= m.second) {
+            i = m.second;  // skip the cells meeting `minus`
+            continue;
+          }
+          f(d3::Point{i * s + s / 2, j * s + s / 2, k * s + s / 2});
+        }
+      }
+  }
+
+  // The leaf cell containing p (strictly inside a level-L cell), searching
+  // from level L up: the leaves a frame visits are fine.
+  d3::Point locate(const d3::Point& p, int& level) const {
+    for (int l = size_.L;; --l) {
+      const std::int64_t s = d3::cell_side(size_, l);
+      const d3::Point c{(p.x / s) * s + s / 2, (p.y / s) * s + s / 2, (p.z / s) * s + s / 2};
+      if (l == 0 || is_center(g_, c)) {
+        level = l;
+        return c;
+      }
+    }
+  }
+
+  // Refines the leaves containing p until the one there has level `target`.
+  void refine_to(const d3::Point& p, int target) {
+    for (;;) {
+      int level = 0;
+      const d3::Point c = locate(p, level);
+      if (level >= target || !refine_balanced(c, level)) return;
+    }
+  }
+
+  // Refines c, first refining every coarser face- or edge-neighbor
+  // (recursively): the leaves just outside c's 6 faces and 12 edges.
+  bool refine_balanced(const d3::Point& c, int level) {
+    const auto why = can_refine(g_, c);
+    if (why == RefineRefusal::CoarserNeighbor) {
+      const std::int64_t h = d3::cell_side(size_, level) / 2 + 1;
+      const std::int64_t S = d3::level0_side(size_);
+      const std::int64_t X = size_.W * S, Y = size_.H * S, Z = size_.D * S;
+      for (int dx = -1; dx <= 1; ++dx)
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dz = -1; dz <= 1; ++dz) {
+            const int nonzero = (dx != 0) + (dy != 0) + (dz != 0);
+            if (nonzero == 0 || nonzero == 3) continue;  // c itself, a corner
+            const d3::Point q{c.x + dx * h, c.y + dy * h, c.z + dz * h};
+            if (q.x < 0 || q.y < 0 || q.z < 0 || q.x >= X || q.y >= Y || q.z >= Z) continue;
+            int nl = 0;
+            const d3::Point x = locate(q, nl);
+            if (nl < level) refine_balanced(x, nl);
+          }
+    } else if (why) {
+      return false;
+    }
+    const bool ok = refine(g_, c).applied();
+    ops_ += ok;
+    return ok;
+  }
+
+  d3::LatticeSize size_;
+  L g_;
+  double radius_;
+  int speed_;
+  int frame_ = 0;
+  Ball ball_;
+  std::size_t ops_ = 0;
+};
+
+}  // namespace bccmis::d3::bench
