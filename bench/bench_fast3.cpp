@@ -2,8 +2,8 @@
 // W x H x D lattice refined, level by level, up to level L, then every
 // refined cell coarsened again, level by level from the finest, back to the
 // initial lattice; the time per operation of each level and of the whole
-// sweep, for the reference (d3::Graph3) and the fast lattice
-// (fast::Lattice3). Within a level the operations run in position order
+// sweep, for the reference (d3::Graph) and the fast lattice
+// (d3::fast::Lattice). Within a level the operations run in position order
 // (sweep) or, with --random, in a shuffled order (fixed seed): on a uniform
 // level every order is allowed. A plain program (one run; the CPU time of
 // the thread, CLOCK_THREAD_CPUTIME_ID, so that other processes' time slices
@@ -29,7 +29,7 @@
 
 #include "bccmis/d3/format.h"
 #include "bccmis/d3/lattice.h"
-#include "bccmis/fast/lattice3.h"
+#include "bccmis/fast/d3/lattice.h"
 
 namespace {
 
@@ -54,15 +54,15 @@ struct Totals {
 template <class L, class State>
 Totals sweep(const char* name, L& g, bool random, bool verify, const State& state) {
   std::mt19937_64 rng(19);
-  std::vector<std::vector<d3::Point3>> refined(static_cast<std::size_t>(size_of(g).L));
+  std::vector<std::vector<d3::Point>> refined(static_cast<std::size_t>(size_of(g).L));
   std::size_t refines = 0, coarsens = 0;
   Totals t;
   for (int level = 0; level < size_of(g).L; ++level) {
-    std::vector<d3::Point3>& todo = refined[static_cast<std::size_t>(level)];
-    for (const d3::Point3& c : cells(g)) todo.push_back(c);
+    std::vector<d3::Point>& todo = refined[static_cast<std::size_t>(level)];
+    for (const d3::Point& c : cells(g)) todo.push_back(c);
     if (random) std::shuffle(todo.begin(), todo.end(), rng);
     const double start = thread_ns();
-    for (const d3::Point3& c : todo)
+    for (const d3::Point& c : todo)
       if (!refine(g, c).applied()) {
         std::fprintf(stderr, "bench_fast3: %s refused refine %s\n", name, d3::to_string(c).c_str());
         std::exit(1);
@@ -75,11 +75,11 @@ Totals sweep(const char* name, L& g, bool random, bool verify, const State& stat
   }
   if (verify) t.refined_state = state(g);
   for (int level = size_of(g).L - 1; level >= 0; --level) {
-    std::vector<d3::Point3>& todo = refined[static_cast<std::size_t>(level)];
+    std::vector<d3::Point>& todo = refined[static_cast<std::size_t>(level)];
     if (random) std::shuffle(todo.begin(), todo.end(), rng);
     const std::size_t before = cell_count(g);
     const double start = thread_ns();
-    for (const d3::Point3& n : todo)
+    for (const d3::Point& n : todo)
       if (!coarsen(g, n).applied()) {
         std::fprintf(stderr, "bench_fast3: %s refused coarsen %s\n", name, d3::to_string(n).c_str());
         std::exit(1);
@@ -105,7 +105,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: bench_fast3 W H D L [reference|fast|both] [--random] [--verify]\n");
     return 2;
   }
-  const d3::LatticeSize3 size{std::atoll(argv[1]), std::atoll(argv[2]), std::atoll(argv[3]), std::atoi(argv[4])};
+  const d3::LatticeSize size{std::atoll(argv[1]), std::atoll(argv[2]), std::atoll(argv[3]), std::atoi(argv[4])};
   std::string which = "both";
   bool verify = false, random = false;
   for (int i = 5; i < argc; ++i) {
@@ -118,18 +118,18 @@ int main(int argc, char** argv) {
   }
   Totals reference, fast;
   if (which != "fast") {
-    d3::Graph3 g(size);
-    reference = sweep("reference", g, random, verify, [](const d3::Graph3& x) { return d3::canonical_state(x); });
+    d3::Graph g(size);
+    reference = sweep("reference", g, random, verify, [](const d3::Graph& x) { return d3::canonical_state(x); });
   }
   if (which != "reference") {
-    fast::Lattice3 g(size);
-    fast = sweep("fast", g, random, verify, [](const fast::Lattice3& x) { return fast::canonical_state(x); });
+    d3::fast::Lattice g(size);
+    fast = sweep("fast", g, random, verify, [](const d3::fast::Lattice& x) { return d3::fast::canonical_state(x); });
   }
   if (which == "both" && fast.refine_ns > 0 && fast.coarsen_ns > 0)
     std::printf("ratio reference / fast: refine %.1f, coarsen %.1f\n", reference.refine_ns / fast.refine_ns,
                 reference.coarsen_ns / fast.coarsen_ns);
   if (verify) {
-    const std::string initial = d3::canonical_state(d3::Graph3(size));
+    const std::string initial = d3::canonical_state(d3::Graph(size));
     const Totals& t = which == "reference" ? reference : fast;
     if (which == "both" && reference.refined_state != fast.refined_state) {
       std::fprintf(stderr, "bench_fast3: the canonical states after the refines differ\n");

@@ -1,15 +1,15 @@
-// Memory of the 3D lattices: bytes per cell of the reference (d3::Graph3 on
-// std::set / std::map), of the fast lattice (fast::Lattice3) and of a CGAL
+// Memory of the 3D lattices: bytes per cell of the reference (d3::Graph on
+// std::set / std::map), of the fast lattice (d3::fast::Lattice) and of a CGAL
 // Triangulation_3 holding the same tetrahedra (the tet-soup loader of the 3D
 // checker's layer 6, exact kernel Epeck: invariants/cgal/
-// tetrahedralization_check3.h, the only CGAL translation unit involved).
+// tetrahedralization_check.h, the only CGAL translation unit involved).
 //
 //   reference  what operator new hands out (malloc_usable_size of every live
 //              block; the global operator new of this program counts:
 //              tests/testing/counting_allocator.h) for
-//              the Graph3 of the state (fast::Lattice3::to_graph(): the same
-//              containers a Graph3 refined step by step holds);
-//   fast       fast::Lattice3::memory_bytes() (pools and position table,
+//              the d3::Graph of the state (d3::fast::Lattice::to_graph(): the same
+//              containers a d3::Graph refined step by step holds);
+//   fast       d3::fast::Lattice::memory_bytes() (pools and position table,
 //              capacity), and the counted heap of a copy of the lattice
 //              (a copy's pools have no spare capacity);
 //   cgal       the counted heap of the loaded triangulation while it is
@@ -17,7 +17,7 @@
 //              or not counted).
 //
 // States: a uniform W x H x D lattice refined level by level to level L
-// (every cell), and the ball of bench_p8est (bench/local_feature3.h; graded).
+// (every cell), and the ball of bench_p8est (bench/d3/local_feature.h; graded).
 // A plain program, one run. Exit 1 when the triangulation does not load with
 // one cell per tet, or a count is empty (checked on every state).
 //
@@ -34,9 +34,9 @@
 
 #include "bccmis/d3/lattice.h"
 #include "bccmis/d3/mesh.h"
-#include "bccmis/fast/lattice3.h"
-#include "bccmis/invariants/cgal/tetrahedralization_check3.h"
-#include "local_feature3.h"
+#include "bccmis/fast/d3/lattice.h"
+#include "bccmis/invariants/cgal/d3/tetrahedralization_check.h"
+#include "d3/local_feature.h"
 #include "testing/counting_allocator.h"
 
 namespace {
@@ -46,18 +46,18 @@ using namespace bccmis;
 std::size_t live_bytes() { return bccmis::testing::alloc::live_bytes.load(); }
 
 // Measures one state; returns false on a failed check.
-bool measure(const std::string& name, const fast::Lattice3& g) {
+bool measure(const std::string& name, const d3::fast::Lattice& g) {
   const double cells = static_cast<double>(g.cell_count());
   // The fast lattice's own heap: a copy made while counting.
   std::size_t fast_heap = 0;
   {
     const std::size_t before = live_bytes();
-    const fast::Lattice3 copy(g);
+    const d3::fast::Lattice copy(g);
     fast_heap = live_bytes() - before;
   }
   std::size_t reference_bytes = 0;
   const std::size_t before_graph = live_bytes();
-  const d3::Graph3 graph = g.to_graph();
+  const d3::Graph graph = g.to_graph();
   reference_bytes = live_bytes() - before_graph;
   const std::vector<d3::Tet> tets = d3::tetrahedra(graph);
   std::size_t cgal_bytes = 0;
@@ -87,10 +87,10 @@ bool measure(const std::string& name, const fast::Lattice3& g) {
   return true;
 }
 
-fast::Lattice3 uniform(const d3::LatticeSize3& size) {
-  fast::Lattice3 g(size);
+d3::fast::Lattice uniform(const d3::LatticeSize& size) {
+  d3::fast::Lattice g(size);
   for (int l = 0; l < size.L; ++l)
-    for (const d3::Point3& c : g.cells()) g.refine(c);
+    for (const d3::Point& c : g.cells()) g.refine(c);
   return g;
 }
 
@@ -98,9 +98,9 @@ fast::Lattice3 uniform(const d3::LatticeSize3& size) {
 
 int main(int argc, char** argv) {
   const bool smoke = argc > 1 && std::strcmp(argv[1], "--smoke") == 0;
-  std::vector<d3::LatticeSize3> uniforms = {{2, 1, 1, 3}, {2, 2, 2, 3}, {4, 4, 2, 3}, {2, 2, 1, 5}};
+  std::vector<d3::LatticeSize> uniforms = {{2, 1, 1, 3}, {2, 2, 2, 3}, {4, 4, 2, 3}, {2, 2, 1, 5}};
   struct Ball {
-    d3::LatticeSize3 size;
+    d3::LatticeSize size;
     double radius;
   };
   std::vector<Ball> balls = {{{4, 2, 2, 8}, 22.0}, {{4, 2, 2, 8}, 50.0}};
@@ -109,12 +109,12 @@ int main(int argc, char** argv) {
     balls = {{{2, 1, 1, 4}, 5.0}};
   }
   bool ok = true;
-  for (const d3::LatticeSize3& s : uniforms)
+  for (const d3::LatticeSize& s : uniforms)
     ok &= measure("uniform " + std::to_string(s.W) + "x" + std::to_string(s.H) + "x" + std::to_string(s.D) + " L" +
                       std::to_string(s.L),
                   uniform(s));
   for (const Ball& b : balls) {
-    const bench::LocalFeature3<fast::Lattice3> ball(b.size, b.radius, 1);
+    const d3::bench::LocalFeature<d3::fast::Lattice> ball(b.size, b.radius, 1);
     ok &= measure("ball r=" + std::to_string(static_cast<int>(b.radius)), ball.state());
   }
   return ok ? 0 : 1;

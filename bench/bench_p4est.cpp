@@ -18,11 +18,11 @@
 // 4 x 2 x 2 brick); every leaf meeting the ball has level L, and the rest is
 // the coarsest edge-balanced mesh around it (p8est: P8EST_CONNECT_EDGE). The
 // ball radius sets the leaf count. The feature: the ball crosses the box
-// along x and back, one level-L cell side a frame (bench/local_feature3.h,
+// along x and back, one level-L cell side a frame (bench/d3/local_feature.h,
 // whose geometry ForestFeature below shares).
 //
 //   Batch/bccmis_fast/leaves:N   LocalFeature<fast::Lattice>'s (3D:
-//     LocalFeature3<fast::Lattice3>'s) constructor: for each level-L cell
+//     d3::bench::LocalFeature<d3::fast::Lattice>'s) constructor: for each level-L cell
 //     meeting the feature (3D: level by level), refine it down to level L
 //     with the balancing cascade (local operations only).
 //   Batch/bccmis_fast_reserved/leaves:N  the same after reserve(N) (the leaf
@@ -79,8 +79,8 @@
 #else
 #include <p8est_bits.h>
 
-#include "bccmis/fast/lattice3.h"
-#include "local_feature3.h"
+#include "bccmis/fast/d3/lattice.h"
+#include "d3/local_feature.h"
 #endif
 
 namespace bccmis::bench {
@@ -159,8 +159,8 @@ constexpr std::array<VerifyRun, 2> kVerifyRuns{{{kFramesPerTurn, 60, 20}, {120, 
 std::string motion_name(int frames) { return std::to_string(frames) + " frames a turn"; }
 #else
 constexpr int kDim = 3;
-using Size = d3::LatticeSize3;
-using Ours = LocalFeature3<fast::Lattice3>;
+using Size = d3::LatticeSize;
+using Ours = d3::bench::LocalFeature<d3::fast::Lattice>;
 using Scan = Ours;  // none in 3D
 constexpr bool kScan = false;
 constexpr auto quadrant_parent = &p8est_quadrant_parent;
@@ -174,14 +174,14 @@ std::vector<Workload> workloads() {
   return {{10'000, {4, 2, 2, 8}, 22.0}, {100'000, {4, 2, 2, 8}, 50.0}, {1'000'000, {4, 2, 2, 8}, 110.0}};
 }
 
-using Shape = Ball3;
-Shape shape_at(const Size& s, int frame, int speed) { return ball_position(s, frame, speed); }
-bool meets(const d3::Point3& c, double h, const Shape& ball, double radius) { return cube_meets(c, h, ball, radius); }
+using Shape = d3::bench::Ball;
+Shape shape_at(const Size& s, int frame, int speed) { return d3::bench::ball_position(s, frame, speed); }
+bool meets(const d3::Point& c, double h, const Shape& ball, double radius) { return cube_meets(c, h, ball, radius); }
 
-std::vector<p4est_bridge::Leaf3> leaves_of(const fast::Lattice3& g) {
+std::vector<p4est_bridge::Leaf3> leaves_of(const d3::fast::Lattice& g) {
   std::vector<p4est_bridge::Leaf3> out;
   out.reserve(g.cell_count());
-  for (const d3::Point3& c : g.cells()) out.push_back({c, g.level_of(c)});
+  for (const d3::Point& c : g.cells()) out.push_back({c, g.level_of(c)});
   std::sort(out.begin(), out.end());
   return out;
 }

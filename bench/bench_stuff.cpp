@@ -1,5 +1,5 @@
 // Isosurface stuffing (spec/stuffing.md), phase by phase: the fast path
-// (fast::Lattice3, flat arrays) against the reference (d3::Graph3, ordered
+// (d3::fast::Lattice, flat arrays) against the reference (d3::Graph, ordered
 // maps) on the built-in sphere and torus. A plain program: one run per shape,
 // level and implementation; the reference only while its previous level
 // suggests it finishes within the budget. bench/RESULTS.md section 15.

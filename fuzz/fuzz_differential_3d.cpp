@@ -1,5 +1,5 @@
-// fuzz_differential_3d: the 3D reference (bccmis::d3::Graph3) and
-// bccmis::fast::Lattice3 driven by the same operations; every observable must
+// fuzz_differential_3d: the 3D reference (bccmis::d3::Graph) and
+// bccmis::d3::fast::Lattice driven by the same operations; every observable must
 // agree (issue "3D at scale").
 //
 // Input layout (every byte string is a valid program; past the end every
@@ -14,7 +14,7 @@
 //     s & 0x40        afterwards, the fast side goes on with a copy of itself
 //   At most kMaxOps operations are decoded.
 //
-// After every operation (tests/testing/twin3.h): can_refine and can_coarsen
+// After every operation (tests/testing/d3/twin.h): can_refine and can_coarsen
 // at the position, the decision, Y and J+/J-, the counts, the canonical state
 // byte for byte, and the fast lattice's own audit. At the end: every query at
 // every vertex and around it. Any difference aborts with the equivalent text
@@ -32,17 +32,16 @@
 #include "bccmis/d3/ops.h"
 #include "bccmis/format.h"
 #include "testing/byte_program.h"
-#include "testing/twin3.h"
+#include "testing/d3/twin.h"
 
 namespace {
 
 using namespace bccmis;
-using d3::Point3;
 
 constexpr std::size_t kMaxOps = 96;
 constexpr std::string_view kTarget = "fuzz_differential_3d";
 
-[[noreturn]] void fail(const std::string& what, const Trace3& trace) {
+[[noreturn]] void fail(const std::string& what, const d3::Trace& trace) {
   const std::string text = "# " + std::string(kTarget) + ": " + what + "\n" + format_trace(trace);
   std::fprintf(stderr, "\n==== %s failure: %s\n", std::string(kTarget).c_str(), what.c_str());
   std::fprintf(stderr, "==== equivalent trace (bccmis replay FILE):\n%s==== end of trace\n", text.c_str());
@@ -55,7 +54,7 @@ constexpr std::string_view kTarget = "fuzz_differential_3d";
 }
 
 template <class Set>
-Point3 nth(const Set& set, std::size_t k) {
+d3::Point nth(const Set& set, std::size_t k) {
   auto it = set.begin();
   std::advance(it, static_cast<std::ptrdiff_t>(k));
   return *it;
@@ -66,25 +65,25 @@ Point3 nth(const Set& set, std::size_t k) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 4) return 0;
   testing::Bytes in(data, size);
-  d3::LatticeSize3 lattice;
+  d3::LatticeSize lattice;
   lattice.W = 1 + in.next() % 3;
   lattice.H = 1 + in.next() % 3;
   lattice.D = 1 + in.next() % 3;
   lattice.L = in.next() % 5;
-  testing::Twin3 twin(lattice, fail);
+  d3::testing::Twin twin(lattice, fail);
   const std::int64_t S = d3::level0_side(lattice);
   auto raw = [&](std::int64_t extent) { return static_cast<std::int64_t>(in.next()) % (extent + 3) - 1; };
   for (std::size_t op = 0; op < kMaxOps && !in.empty(); ++op) {
     const std::uint8_t s = in.next();
-    const d3::Graph3& g = twin.graph();
+    const d3::Graph& g = twin.graph();
     switch (s & 7) {
       case 0:
       case 1:
       case 2: twin.run(CommandKind::Refine, nth(g.C, in.index(g.C.size()))); break;
       case 3:
       case 4: {
-        std::vector<Point3> refined;
-        for (const Point3& n : g.N)
+        std::vector<d3::Point> refined;
+        for (const d3::Point& n : g.N)
           if (d3::refined_center_level(lattice, n)) refined.push_back(n);
         if (refined.empty()) break;
         twin.run(CommandKind::Coarsen, refined[in.index(refined.size())]);

@@ -16,7 +16,7 @@
 namespace bccmis::fuzz {
 
 /// Prints `what` and, if given, the equivalent text trace (readable by
-/// `bccmis replay`; a Trace or a Trace3) to stderr, then aborts so that the
+/// `bccmis replay`; a Trace or a d3::Trace) to stderr, then aborts so that the
 /// fuzzing engine records a crash. With BCCMIS_FUZZ_TRACE=path in the
 /// environment the trace is also written to that file.
 template <class T = Trace>

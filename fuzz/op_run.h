@@ -40,7 +40,7 @@ struct InvariantFailure : std::runtime_error {
 };
 
 /// The checked operations of the 2D Graph (invariants/checked.h); the 3D ones
-/// are Checked3 (checked3.h).
+/// are d3::Checked (d3/checked.h).
 struct Checked2 {
   RefineResult refine(Graph& g, const Point& c) const { return checked_refine(g, c); }
   CoarsenResult coarsen(Graph& g, const Point& n) const { return checked_coarsen(g, n); }

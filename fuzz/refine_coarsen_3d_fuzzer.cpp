@@ -2,7 +2,7 @@
 // (spec/lattice3d.md), the 3D counterpart of fuzz_refine_coarsen.
 //
 // Input layout (every byte string is a valid program; the byte program of
-// tests/testing/byte_program.h, decoded against d3::Graph3):
+// tests/testing/byte_program.h, decoded against d3::Graph):
 //   byte 0..3   W = 1 + b0 % 3, H = 1 + b1 % 3, D = 1 + b2 % 3, L = b3 % 5
 //   then ops    selector byte s, then operands:
 //     s & 7 == 0,1,2  refine the k-th live center            (k: 1 byte, 2 if |C| > 256)
@@ -17,7 +17,7 @@
 //   At most kMaxOps operations are decoded; a refine that could take the
 //   lattice past kMaxCells cells is skipped.
 //
-// Every decoded operation runs through Checked3 (fuzz/checked3.h): the 3D
+// Every decoded operation runs through d3::Checked (fuzz/d3/checked.h): the 3D
 // checker's layers 1-4 after every applied operation, the mesh layer
 // (check_mesh on tetrahedra(g)) after every applied operation on lattices of
 // at most 16 cells and every 64th applied operation beyond, the exact changes of C and N, and a refusal
@@ -33,7 +33,7 @@
 #include <string_view>
 
 #include "bccmis/d3/lattice.h"
-#include "checked3.h"
+#include "d3/checked.h"
 #include "op_run.h"
 #include "testing/byte_program.h"
 
@@ -50,8 +50,8 @@ constexpr std::size_t kMaxCells = 400;
 constexpr std::size_t kMeshCells = 16;
 constexpr std::size_t kMeshEvery = 64;
 
-fuzz::Checked3 checked() {
-  fuzz::Checked3 c;
+d3::fuzz::Checked checked() {
+  d3::fuzz::Checked c;
   c.mesh_cells = kMeshCells;
   c.mesh_every = kMeshEvery;
   return c;
@@ -63,13 +63,13 @@ constexpr std::string_view kTarget = "fuzz_refine_coarsen_3d";
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 4) return 0;
   testing::Bytes in(data, size);
-  fuzz::OpRun<d3::Graph3, fuzz::Checked3> run(kTarget, testing::decode_lattice<d3::LatticeSize3>(in, 3, 5), checked(),
-                                              kMaxCells);
+  fuzz::OpRun<d3::Graph, d3::fuzz::Checked> run(kTarget, testing::decode_lattice<d3::LatticeSize>(in, 3, 5), checked(),
+                                                kMaxCells);
   testing::run_program(
-      in, kMaxOps, run.graph(), [&](const d3::Point3& c, std::uint8_t s) { run.refine_at(c, (s & 0x80) != 0); },
-      [&](const d3::Point3& n, std::uint8_t s) { run.coarsen_at(n, (s & 0x80) != 0); }, [](std::uint8_t) {});
-  run.check([&](const d3::Graph3& g) {
-    if (auto p = fuzz::problem3(g, true)) run.fail("at the end of the program: " + *p);
+      in, kMaxOps, run.graph(), [&](const d3::Point& c, std::uint8_t s) { run.refine_at(c, (s & 0x80) != 0); },
+      [&](const d3::Point& n, std::uint8_t s) { run.coarsen_at(n, (s & 0x80) != 0); }, [](std::uint8_t) {});
+  run.check([&](const d3::Graph& g) {
+    if (auto p = d3::fuzz::problem(g, true)) run.fail("at the end of the program: " + *p);
   });
   run.coarsen_everything();
   return 0;

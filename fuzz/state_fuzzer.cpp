@@ -12,7 +12,7 @@
 //   result is unspecified there) but must not crash.
 // - On a state the checker accepts (in 3D also the mesh layer,
 //   check_mesh(g, tetrahedra(g))), one refine and one coarsen chosen by the
-//   input run through the checked operations (Checked2, Checked3), each
+//   input run through the checked operations (Checked2, d3::Checked), each
 //   immediately inverted; the state must come back byte-identically.
 //   Failures abort with the state text on stderr (`bccmis check FILE` reads
 //   it).
@@ -30,7 +30,7 @@
 #include "bccmis/geometry.h"
 #include "bccmis/invariants/invariants.h"
 #include "bccmis/lattice.h"
-#include "checked3.h"
+#include "d3/checked.h"
 #include "fuzz_util.h"
 #include "op_run.h"
 
@@ -58,11 +58,11 @@ void check_violation_text(const V& v, std::string_view state) {
 
 // The mesh layer on a 3D state layers 1-4 accept; nothing more in 2D.
 std::optional<std::string> mesh_problem(const Graph&) { return std::nullopt; }
-std::optional<std::string> mesh_problem(const d3::Graph3& g) { return fuzz::problem3(g, true); }
+std::optional<std::string> mesh_problem(const d3::Graph& g) { return d3::fuzz::problem(g, true); }
 
 // The checked operations of each dimension.
 fuzz::Checked2 checked_ops(const Graph&) { return {}; }
-fuzz::Checked3 checked_ops(const d3::Graph3&) { return {}; }
+d3::fuzz::Checked checked_ops(const d3::Graph&) { return {}; }
 
 // Applies `op` (refine or coarsen at v, through the checked operations) and,
 // if applied, `inverse`; the state must come back byte-identically.
@@ -98,7 +98,7 @@ void run(const L& g, std::string_view text) {
     fail_with_state(std::string("find_violation threw: ") + e.what(), text);
   }
   // A single layer on a graph a lower layer rejects has an unspecified result
-  // (invariants.h, invariants3.h): an exception is allowed, a crash or
+  // (invariants.h, invariants.h): an exception is allowed, a crash or
   // undefined behaviour (which the sanitizers report) is not.
   for (int layer = 1; layer <= 4; ++layer) {
     try {

@@ -7,7 +7,7 @@
 // - What parses must print back (format_trace) to a text that parses to the
 //   same trace, of the same dimension.
 // - The first kMaxCommands commands are replayed with the one replay of
-//   bccmis/trace.h: replay<Graph> for a 2D trace, replay<d3::Graph3> for a
+//   bccmis/trace.h: replay<Graph> for a 2D trace, replay<d3::Graph> for a
 //   3D one (`lattice W H D L`). After every command the checker of that
 //   dimension must find nothing: find_violation (2D); find_violation(g, 4)
 //   and, while the lattice has at most kMeshCells cells and after the last
@@ -27,7 +27,7 @@
 #include "bccmis/format.h"
 #include "bccmis/invariants/invariants.h"
 #include "bccmis/trace.h"
-#include "checked3.h"
+#include "d3/checked.h"
 #include "fuzz_util.h"
 
 namespace {
@@ -58,8 +58,8 @@ std::optional<std::string> problem(const Graph& g, bool) {
   if (auto v = find_violation(g)) return to_string(*v);
   return std::nullopt;
 }
-std::optional<std::string> problem(const d3::Graph3& g, bool last) {
-  return fuzz::problem3(g, last || g.C.size() <= kMeshCells);
+std::optional<std::string> problem(const d3::Graph& g, bool last) {
+  return d3::fuzz::problem(g, last || g.C.size() <= kMeshCells);
 }
 
 template <AdaptiveLattice L>
@@ -111,6 +111,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (auto* t2 = std::get_if<Trace>(&trace))
     run<Graph>(*t2);
   else
-    run<d3::Graph3>(std::get<Trace3>(trace));
+    run<d3::Graph>(std::get<d3::Trace>(trace));
   return 0;
 }

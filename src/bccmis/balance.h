@@ -1,7 +1,7 @@
 // bccmis: balanced refinement, the core's third verb beside refine and
 // coarsen (spec/apps.md "Balanced refinement", spec/lattice3d.md §8), written
 // once over every lattice of every dimension: the reference Graph and
-// fast::Lattice in 2D, d3::Graph3 and fast::Lattice3 in 3D.
+// fast::Lattice in 2D, d3::Graph and d3::fast::Lattice in 3D.
 //
 // The paper (§2.1 ¶1) refuses to refine a cell that has a coarser edge-
 // neighbor and leaves the cascade to the user; refine_balanced is that
@@ -67,7 +67,7 @@ using BalancedRefineResult = BasicBalancedRefineResult<Point>;
 
 namespace d3 {
 /// What refine_balanced(g, c) did on the 3D lattice.
-using BalancedRefineResult3 = BasicBalancedRefineResult<Point3>;
+using BalancedRefineResult = BasicBalancedRefineResult<Point>;
 }  // namespace d3
 
 namespace detail {

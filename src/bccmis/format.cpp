@@ -68,7 +68,7 @@ std::int64_t initial_vertex_count(const LatticeSize& size) {
   return (size.W + 1) * (size.H + 1) + size.W * size.H;
 }
 
-std::int64_t initial_vertex_count(const d3::LatticeSize3& size) {
+std::int64_t initial_vertex_count(const d3::LatticeSize& size) {
   if (size.W <= 0 || size.H <= 0 || size.D <= 0) return 0;
   // (W+1)(H+1)(D+1) + WHD <= 9 WHD for W, H, D >= 1; saturate when 9 WHD could overflow.
   const std::int64_t big = INT64_MAX / 9;
@@ -80,7 +80,7 @@ namespace {
 
 // "5 x 3 cells" or "5 x 3 x 2 cubes", for messages.
 std::string extent_text(const LatticeSize& s) { return std::to_string(s.W) + " x " + std::to_string(s.H) + " cells"; }
-std::string extent_text(const d3::LatticeSize3& s) {
+std::string extent_text(const d3::LatticeSize& s) {
   return std::to_string(s.W) + " x " + std::to_string(s.H) + " x " + std::to_string(s.D) + " cubes";
 }
 
@@ -113,10 +113,10 @@ FirstCommand first_command(std::string_view text, std::string_view file) {
   return {};
 }
 
-// The parser of spec/formats.md, "Trace", for T = Trace (2D) or Trace3 (3D).
+// The parser of spec/formats.md, "Trace", for T = Trace (2D) or d3::Trace (3D).
 template <class T>
 T parse_trace_as(std::string_view text, std::string_view file, const TraceLimits& limits) {
-  constexpr bool k3 = std::is_same_v<T, Trace3>;
+  constexpr bool k3 = std::is_same_v<T, d3::Trace>;
   using Command = typename T::command_type;
   const char* const lattice_usage = k3 ? "lattice W H D L" : "lattice W H L";
   T trace;
@@ -205,15 +205,15 @@ Trace parse_trace(std::string_view text, std::string_view file, const TraceLimit
   return parse_trace_as<Trace>(text, file, limits);
 }
 
-Trace3 parse_trace3(std::string_view text, std::string_view file, const TraceLimits& limits) {
+d3::Trace d3::parse_trace(std::string_view text, std::string_view file, const TraceLimits& limits) {
   if (const FirstCommand first = first_command(text, file); first.lattice && first.numbers == 3)
     throw ParseError(std::string(file), first.line, first.column,
                      "a 2D trace ('lattice W H L'), where a 3D trace ('lattice W H D L') is expected");
-  return parse_trace_as<Trace3>(text, file, limits);
+  return parse_trace_as<d3::Trace>(text, file, limits);
 }
 
 AnyTrace parse_any_trace(std::string_view text, std::string_view file, const TraceLimits& limits) {
-  if (first_command(text, file).is_3d()) return parse_trace_as<Trace3>(text, file, limits);
+  if (first_command(text, file).is_3d()) return parse_trace_as<d3::Trace>(text, file, limits);
   return parse_trace_as<Trace>(text, file, limits);
 }
 
@@ -222,12 +222,12 @@ namespace {
 void append_size(std::string& out, const LatticeSize& s) {
   out += std::to_string(s.W) + " " + std::to_string(s.H) + " " + std::to_string(s.L);
 }
-void append_size(std::string& out, const d3::LatticeSize3& s) {
+void append_size(std::string& out, const d3::LatticeSize& s) {
   out += std::to_string(s.W) + " " + std::to_string(s.H) + " " + std::to_string(s.D) + " " + std::to_string(s.L);
 }
 
 char* write_point(char* buf, const Point& p) { return TextWriter::write_point(buf, p.x, p.y); }
-char* write_point(char* buf, const d3::Point3& p) { return TextWriter::write_point(buf, p.x, p.y, p.z); }
+char* write_point(char* buf, const d3::Point& p) { return TextWriter::write_point(buf, p.x, p.y, p.z); }
 
 template <class T>
 std::string format_trace_as(const T& trace) {
@@ -269,15 +269,15 @@ void append_decision_line_as(std::string& out, const Command& cmd, std::string_v
 }  // namespace
 
 std::string format_trace(const Trace& trace) { return format_trace_as(trace); }
-std::string format_trace(const Trace3& trace) { return format_trace_as(trace); }
+std::string format_trace(const d3::Trace& trace) { return format_trace_as(trace); }
 
 void append_command_text(std::string& out, const TraceCommand& cmd) { append_command_text_as(out, cmd); }
-void append_command_text(std::string& out, const TraceCommand3& cmd) { append_command_text_as(out, cmd); }
+void append_command_text(std::string& out, const d3::TraceCommand& cmd) { append_command_text_as(out, cmd); }
 
 void append_decision_line(std::string& out, const TraceCommand& cmd, std::string_view refusal_code) {
   append_decision_line_as(out, cmd, refusal_code);
 }
-void append_decision_line(std::string& out, const TraceCommand3& cmd, std::string_view refusal_code) {
+void append_decision_line(std::string& out, const d3::TraceCommand& cmd, std::string_view refusal_code) {
   append_decision_line_as(out, cmd, refusal_code);
 }
 
@@ -286,7 +286,7 @@ std::string command_text(const TraceCommand& cmd) {
   append_command_text(out, cmd);
   return out;
 }
-std::string command_text(const TraceCommand3& cmd) {
+std::string command_text(const d3::TraceCommand& cmd) {
   std::string out;
   append_command_text(out, cmd);
   return out;
@@ -297,7 +297,7 @@ std::string decision_line(const TraceCommand& cmd, std::string_view refusal_code
   append_decision_line(out, cmd, refusal_code);
   return out;
 }
-std::string decision_line(const TraceCommand3& cmd, std::string_view refusal_code) {
+std::string decision_line(const d3::TraceCommand& cmd, std::string_view refusal_code) {
   std::string out;
   append_decision_line(out, cmd, refusal_code);
   return out;

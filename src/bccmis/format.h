@@ -33,7 +33,7 @@ Graph parse_state(std::string_view text, std::string_view file = "<state>");
 enum class CommandKind { Refine, Coarsen, Check };
 
 /// One trace command on a lattice whose positions are P (Point in 2D,
-/// d3::Point3 in 3D).
+/// d3::Point in 3D).
 template <class P>
 struct BasicTraceCommand {
   using Kind = CommandKind;
@@ -54,10 +54,12 @@ struct BasicTrace {
 
 using TraceCommand = BasicTraceCommand<Point>;
 using Trace = BasicTrace<Point, LatticeSize>;
-using TraceCommand3 = BasicTraceCommand<d3::Point3>;
-using Trace3 = BasicTrace<d3::Point3, d3::LatticeSize3>;
+namespace d3 {
+using TraceCommand = BasicTraceCommand<Point>;
+using Trace = BasicTrace<Point, LatticeSize>;
+}  // namespace d3
 /// A trace of either dimension, as its `lattice` line says (3 or 4 numbers).
-using AnyTrace = std::variant<Trace, Trace3>;
+using AnyTrace = std::variant<Trace, d3::Trace>;
 
 /// Limits that keep a hostile trace from exhausting memory (about 250 bytes
 /// per vertex in the reference, so the default bounds a replay near 250 MB).
@@ -68,37 +70,39 @@ struct TraceLimits {
 /// The number of vertices |N| + |C| of the initial lattice, saturated at
 /// INT64_MAX: (W+1)(H+1) + WH in 2D, (W+1)(H+1)(D+1) + WHD in 3D.
 std::int64_t initial_vertex_count(const LatticeSize& size);
-std::int64_t initial_vertex_count(const d3::LatticeSize3& size);
+std::int64_t initial_vertex_count(const d3::LatticeSize& size);
 
 /// Parses a 2D trace; throws ParseError on the first malformed line (a 3D
 /// trace is one: this reader takes 2D traces only).
 Trace parse_trace(std::string_view text, std::string_view file = "<trace>", const TraceLimits& limits = {});
 /// Parses a 3D trace (`lattice W H D L`); a 2D trace is a ParseError.
-Trace3 parse_trace3(std::string_view text, std::string_view file = "<trace>", const TraceLimits& limits = {});
+namespace d3 {
+Trace parse_trace(std::string_view text, std::string_view file = "<trace>", const TraceLimits& limits = {});
+}  // namespace d3
 /// Parses a trace of either dimension: four numbers on its `lattice` line
 /// make it 3D, three 2D.
 AnyTrace parse_any_trace(std::string_view text, std::string_view file = "<trace>", const TraceLimits& limits = {});
 
 /// Prints a trace in the format the parsers read (used to print reproducers).
 std::string format_trace(const Trace& trace);
-std::string format_trace(const Trace3& trace);
+std::string format_trace(const d3::Trace& trace);
 
 // ---- Decision log (spec/formats.md, "Decision log") ------------------------
 
 /// A command as trace text without the newline: `refine 4 4`, `check`.
 std::string command_text(const TraceCommand& cmd);
-std::string command_text(const TraceCommand3& cmd);
+std::string command_text(const d3::TraceCommand& cmd);
 /// command_text(cmd) appended to `out`.
 void append_command_text(std::string& out, const TraceCommand& cmd);
-void append_command_text(std::string& out, const TraceCommand3& cmd);
+void append_command_text(std::string& out, const d3::TraceCommand& cmd);
 
 /// One decision-log line without the newline, e.g. `refine 4 4 ok` or
 /// `coarsen 8 8 refused not-a-refined-center` (`refine 2 2 2 ok` in 3D).
 std::string decision_line(const TraceCommand& cmd, std::string_view refusal_code);
-std::string decision_line(const TraceCommand3& cmd, std::string_view refusal_code);
+std::string decision_line(const d3::TraceCommand& cmd, std::string_view refusal_code);
 /// decision_line(cmd, refusal_code) appended to `out`.
 void append_decision_line(std::string& out, const TraceCommand& cmd, std::string_view refusal_code);
-void append_decision_line(std::string& out, const TraceCommand3& cmd, std::string_view refusal_code);
+void append_decision_line(std::string& out, const d3::TraceCommand& cmd, std::string_view refusal_code);
 
 /// `text` as a JSON string literal (RFC 8259), quotes included: `"`, `\`,
 /// newline, tab and carriage return get their short escapes, other control

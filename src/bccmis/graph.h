@@ -71,7 +71,7 @@ requires requires(const Size& s) { s.L; }
 std::int64_t cell_side(const Size& size, int level) { return std::int64_t{1} << (size.L + 1 - level); }
 
 /// The graph of §2 on the lattice of point type P and size type Size (one
-/// source for every dimension: Graph in 2D, d3::Graph3 in 3D): N, C, 𝒩(·)
+/// source for every dimension: Graph in 2D, d3::Graph in 3D): N, C, 𝒩(·)
 /// and the level of every center.
 ///
 /// Invariants the operations maintain are checked by invariants/ (never

@@ -22,7 +22,7 @@
 namespace bccmis {
 
 /// The trace and command types of lattice L's dimension (Trace and
-/// TraceCommand in 2D, Trace3 and TraceCommand3 in 3D).
+/// TraceCommand in 2D, d3::Trace and d3::TraceCommand in 3D).
 template <AdaptiveLattice L>
 using trace_t = BasicTrace<point_type_t<L>, typename L::size_type>;
 template <AdaptiveLattice L>

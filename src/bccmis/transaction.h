@@ -10,7 +10,7 @@
 //
 // The class is written once for every graph of the same shape (members N, C,
 // neighbors, level and nbr(v), point type G::point_type): the 2D Graph and
-// the 3D d3::Graph3.
+// the 3D d3::Graph.
 #pragma once
 
 #include <map>

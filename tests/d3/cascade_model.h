@@ -29,11 +29,11 @@ namespace bccmis::d3::cascade_model {
 
 /// A target: the leaf containing `point` must reach at least `level`.
 struct Target {
-  Point3 point;  ///< strictly inside a level-L cube: odd coordinates
+  Point point;  ///< strictly inside a level-L cube: odd coordinates
   int level = 0;
 };
 
-inline std::string describe(const LatticeSize3& size, const std::vector<Target>& targets) {
+inline std::string describe(const LatticeSize& size, const std::vector<Target>& targets) {
   std::string s = "lattice " + std::to_string(size.W) + " " + std::to_string(size.H) + " " + std::to_string(size.D) +
                   " " + std::to_string(size.L) + "; targets (x y z level):";
   for (const Target& t : targets)
@@ -42,7 +42,7 @@ inline std::string describe(const LatticeSize3& size, const std::vector<Target>&
   return s;
 }
 
-inline std::vector<Target> random_targets(const LatticeSize3& size, std::mt19937_64& rng, int count) {
+inline std::vector<Target> random_targets(const LatticeSize& size, std::mt19937_64& rng, int count) {
   const std::int64_t S = level0_side(size);
   auto odd = [&](std::int64_t n) { return 2 * std::uniform_int_distribution<std::int64_t>(0, n * S / 2 - 1)(rng) + 1; };
   std::vector<Target> out;
@@ -54,7 +54,7 @@ inline std::vector<Target> random_targets(const LatticeSize3& size, std::mt19937
 }
 
 /// The center of the level-l cube containing p (p strictly inside a level-L cube).
-inline Point3 cube_at(const LatticeSize3& size, const Point3& p, int l) {
+inline Point cube_at(const LatticeSize& size, const Point& p, int l) {
   const std::int64_t s = cell_side(size, l);
   return {(p.x / s) * s + s / 2, (p.y / s) * s + s / 2, (p.z / s) * s + s / 2};
 }
@@ -62,14 +62,14 @@ inline Point3 cube_at(const LatticeSize3& size, const Point3& p, int l) {
 /// bccmis: refine_balanced the leaf containing each target until it reaches
 /// the target level, targets in the given order. Adds the number of cells the
 /// cascades refined besides the requested ones to `*extra` when given.
-inline Graph3 refine_targets(const LatticeSize3& size, const std::vector<Target>& targets, Balance b,
-                             std::size_t* extra = nullptr) {
-  Graph3 g(size);
+inline Graph refine_targets(const LatticeSize& size, const std::vector<Target>& targets, Balance b,
+                            std::size_t* extra = nullptr) {
+  Graph g(size);
   for (const Target& t : targets)
     for (int l = 0; l < t.level; ++l) {
-      const Point3 c = cube_at(size, t.point, l);
+      const Point c = cube_at(size, t.point, l);
       if (!g.is_center(c)) continue;
-      const BalancedRefineResult3 r = refine_balanced(g, c, b);
+      const BalancedRefineResult r = refine_balanced(g, c, b);
       if (!r.applied()) throw std::logic_error("refine_balanced refused " + to_string(c));
       if (extra) *extra += r.refined.size() - 1;
     }
@@ -77,8 +77,8 @@ inline Graph3 refine_targets(const LatticeSize3& size, const std::vector<Target>
 }
 
 /// The leaves (center -> level) the closure of the targets reaches.
-inline std::map<Point3, int> closure_leaves(const LatticeSize3& size, const std::vector<Target>& targets, Balance b) {
-  using Cube = std::pair<int, Point3>;  // level, center
+inline std::map<Point, int> closure_leaves(const LatticeSize& size, const std::vector<Target>& targets, Balance b) {
+  using Cube = std::pair<int, Point>;  // level, center
   const std::int64_t S = level0_side(size);
   const std::int64_t extent[3] = {size.W * S, size.H * S, size.D * S};
   std::set<Cube> split;
@@ -99,13 +99,13 @@ inline std::map<Point3, int> closure_leaves(const LatticeSize3& size, const std:
         for (int dz = -1; dz <= 1; ++dz) {
           const int moved = (dx != 0) + (dy != 0) + (dz != 0);
           if (moved == 0 || (moved == 3 && b == Balance::Edge)) continue;
-          const Point3 n{c.x + dx * s, c.y + dy * s, c.z + dz * s};
+          const Point n{c.x + dx * s, c.y + dy * s, c.z + dz * s};
           if (n.x <= 0 || n.y <= 0 || n.z <= 0 || n.x >= extent[0] || n.y >= extent[1] || n.z >= extent[2]) continue;
           add({k - 1, cube_at(size, n, k - 1)});
         }
   }
-  std::map<Point3, int> leaves;
-  auto emit = [&](const Point3& c, int l) {
+  std::map<Point, int> leaves;
+  auto emit = [&](const Point& c, int l) {
     if (!split.count({l, c})) leaves[c] = l;
   };
   for (std::int64_t i = 0; i < size.W; ++i)

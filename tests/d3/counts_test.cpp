@@ -8,34 +8,34 @@
 #include <deque>
 #include <set>
 
-#include "check3.h"
-#include "util3.h"
+#include "check.h"
+#include "util.h"
 
 namespace bccmis::d3 {
 namespace {
 
-std::set<model::Leaves> reachable(const LatticeSize3& size) {
+std::set<model::Leaves> reachable(const LatticeSize& size) {
   std::set<std::string> seen;
   std::set<model::Leaves> out;
-  std::deque<Graph3> queue{Graph3(size)};
+  std::deque<Graph> queue{Graph(size)};
   seen.insert(canonical_state(queue.front()));
   while (!queue.empty()) {
-    const Graph3 g = std::move(queue.front());
+    const Graph g = std::move(queue.front());
     queue.pop_front();
     EXPECT_EQ(test::state_problem(g), "");
     out.insert(test::leaves_of(g));
-    auto visit = [&](Graph3&& h) {
+    auto visit = [&](Graph&& h) {
       if (seen.insert(canonical_state(h)).second) queue.push_back(std::move(h));
     };
-    for (const Point3& c : g.C)
+    for (const Point& c : g.C)
       if (!can_refine(g, c)) {
-        Graph3 h = g;
+        Graph h = g;
         refine(h, c);
         visit(std::move(h));
       }
-    for (const Point3& n : g.N)
+    for (const Point& n : g.N)
       if (!can_coarsen(g, n)) {
-        Graph3 h = g;
+        Graph h = g;
         coarsen(h, n);
         visit(std::move(h));
       }
@@ -44,7 +44,7 @@ std::set<model::Leaves> reachable(const LatticeSize3& size) {
   return out;
 }
 
-std::set<model::Leaves> enumerated(const LatticeSize3& size) {
+std::set<model::Leaves> enumerated(const LatticeSize& size) {
   std::set<model::Leaves> out;
   for (const model::Leaves& leaves : model::all_leaf_sets(size)) {
     EXPECT_EQ(model::tiling_problem(size, leaves), "");
@@ -55,7 +55,7 @@ std::set<model::Leaves> enumerated(const LatticeSize3& size) {
 
 TEST(D3Counts, Lattice1111HasTwoStates) {
   //= bccmis3d#fact-counts type=test
-  const LatticeSize3 size{1, 1, 1, 1};
+  const LatticeSize size{1, 1, 1, 1};
   const auto bfs = reachable(size);
   EXPECT_EQ(bfs.size(), 2u);
   EXPECT_EQ(bfs, enumerated(size));
@@ -64,7 +64,7 @@ TEST(D3Counts, Lattice1111HasTwoStates) {
 TEST(D3Counts, Lattice1112Has257States) {
   //= bccmis3d#fact-counts type=test
   // The root, or its 8 children with any subset of them refined: 1 + 2^8.
-  const LatticeSize3 size{1, 1, 1, 2};
+  const LatticeSize size{1, 1, 1, 2};
   const auto bfs = reachable(size);
   EXPECT_EQ(bfs.size(), 257u);
   EXPECT_EQ(bfs, enumerated(size));
@@ -73,7 +73,7 @@ TEST(D3Counts, Lattice1112Has257States) {
 TEST(D3Counts, Lattice2211HasSixteenStates) {
   //= bccmis3d#fact-counts type=test
   // Four level-0 cubes, each refined or not: levels 0 and 1 are always balanced.
-  const LatticeSize3 size{2, 2, 1, 1};
+  const LatticeSize size{2, 2, 1, 1};
   const auto bfs = reachable(size);
   EXPECT_EQ(bfs.size(), 16u);
   EXPECT_EQ(bfs, enumerated(size));
@@ -85,13 +85,13 @@ TEST(D3Counts, BalanceFiltersTheEnumeration) {
   // face or its edges. Counted here only by enumeration against BFS on the
   // smaller 1 1 1 2 above; this checks that the enumeration's balance filter
   // rejects something (it must be able to fail).
-  const LatticeSize3 size{2, 1, 1, 2};
+  const LatticeSize size{2, 1, 1, 2};
   model::Leaves unbalanced{{{12, 4, 4}, 0}};
-  for (const Point3 c : {Point3{2, 2, 2}, Point3{2, 2, 6}, Point3{2, 6, 2}, Point3{2, 6, 6}, Point3{6, 2, 6},
-                         Point3{6, 6, 2}, Point3{6, 6, 6}})
+  for (const Point c :
+       {Point{2, 2, 2}, Point{2, 2, 6}, Point{2, 6, 2}, Point{2, 6, 6}, Point{6, 2, 6}, Point{6, 6, 2}, Point{6, 6, 6}})
     unbalanced[c] = 1;
-  for (const Point3 c : {Point3{5, 1, 1}, Point3{5, 1, 3}, Point3{5, 3, 1}, Point3{5, 3, 3}, Point3{7, 1, 1},
-                         Point3{7, 1, 3}, Point3{7, 3, 1}, Point3{7, 3, 3}})
+  for (const Point c : {Point{5, 1, 1}, Point{5, 1, 3}, Point{5, 3, 1}, Point{5, 3, 3}, Point{7, 1, 1}, Point{7, 1, 3},
+                        Point{7, 3, 1}, Point{7, 3, 3}})
     unbalanced[c] = 2;
   EXPECT_EQ(model::tiling_problem(size, unbalanced), "");
   EXPECT_NE(model::balance_problem(size, unbalanced, model::geometric_graph(size, unbalanced)), "");

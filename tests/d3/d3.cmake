@@ -14,7 +14,7 @@ bccmis_add_gtest(d3_property_tests SOURCES facts_test.cpp counts_test.cpp LIBS b
 # each case checks every state against the geometric model).
 find_package(rapidcheck REQUIRED CONFIG)
 bccmis_add_gtest(d3_rapidcheck_tests SOURCES properties_test.cpp model_test.cpp
-  LIBS bccmis::d3 bccmis::invariants3 rapidcheck_gtest DEFINITIONS BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples"
+  LIBS bccmis::d3 bccmis::invariants_d3 rapidcheck_gtest DEFINITIONS BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples"
   LABELS property ENVIRONMENT "RC_PARAMS=seed=20090303 max_success=60")
 
 # Strong exception guarantee under injected allocation failures (replaces the
@@ -38,12 +38,12 @@ set_tests_properties(d3.mesh_readers PROPERTIES LABELS unit)
 # The independent 3D checker (src/bccmis/invariants/d3/): every code planted,
 # random states valid, random mutations caught, the mesh layer on hand-built
 # tetrahedra.
-bccmis_add_gtest(d3_invariants_tests SOURCES invariants_test.cpp LIBS bccmis::invariants3 bccmis::d3
+bccmis_add_gtest(d3_invariants_tests SOURCES invariants_test.cpp LIBS bccmis::invariants_d3 bccmis::d3
   DEFINITIONS BCCMIS_SOURCE_DIR="${PROJECT_SOURCE_DIR}" BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples"
   LABELS unit)
 
 # Layer 6 of the 3D checker: CGAL as a second referee of the mesh
-# (src/bccmis/invariants/cgal/tetrahedralization_check3.cpp); built when CGAL
+# (src/bccmis/invariants/cgal/d3/tetrahedralization_check.cpp); built when CGAL
 # was found.
 if(TARGET bccmis::tetrahedralization_check)
   bccmis_add_gtest(d3_cgal_tests SOURCES tetrahedralization_check_test.cpp
@@ -75,12 +75,12 @@ bccmis_cli_test(explore3_partial 0 ARGS explore 1 1 1 3 --max-states 3 --no-prog
 bccmis_cli_test(explore3_bad_lattice 2 ARGS explore 1 0 1 1 STDERR_REGEX "explore: .*H")
 bccmis_cli_test(explore3_too_many_numbers 2 ARGS explore 1 1 1 1 1 STDERR_REGEX "lattice")
 
-# The 3D picture of bccmis render (src/bccmis/oracle render_svg3): the leaves
+# The 3D picture of bccmis render (src/bccmis/oracle d3::render_svg): the leaves
 # a slice cuts, by hand and as a tiling of every plane; hand counts.
 bccmis_add_gtest(d3_render_tests SOURCES render_test.cpp LIBS bccmis::oracle bccmis::d3 DEFINITIONS BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples" LABELS unit)
 
 # The 3D cascade (spec/lattice3d.md §8, bccmis/balance.h): hand cases, and
 # random target sets in random orders against the geometric closure of
 # tests/d3/cascade_model.h, in edge and corner mode, every state checked.
-bccmis_add_gtest(d3_balance_tests SOURCES balance_test.cpp LIBS bccmis::apps bccmis::invariants3 bccmis::d3
+bccmis_add_gtest(d3_balance_tests SOURCES balance_test.cpp LIBS bccmis::apps bccmis::invariants_d3 bccmis::d3
   DEFINITIONS BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples" LABELS property)

@@ -4,14 +4,14 @@
 // refine of d3/face.trace.
 #include <gtest/gtest.h>
 
-#include "util3.h"
+#include "util.h"
 
 namespace bccmis::d3 {
 namespace {
 
 void expect_example(const std::string& name) {
   std::string log;
-  const Graph3 g = test::replay(test::example(name + ".trace"), &log);
+  const Graph g = test::replay(test::example(name + ".trace"), &log);
   EXPECT_EQ(log + canonical_state(g), test::example(name + ".expected")) << name;
 }
 
@@ -30,7 +30,7 @@ TEST(D3Examples, EveryRefusalCode) { expect_example("d3/refusals"); }
 
 TEST(D3Examples, CanonicalStateOfOneCube) {
   // The example of spec/formats.md, "3D extension".
-  EXPECT_EQ(canonical_state(Graph3(LatticeSize3{1, 1, 1, 0})),
+  EXPECT_EQ(canonical_state(Graph(LatticeSize{1, 1, 1, 0})),
             "bccmis-state 1\nlattice 1 1 1 0\n"
             "C 1 1 1 0 : 0 0 0 0 0 2 0 2 0 0 2 2 2 0 0 2 0 2 2 2 0 2 2 2\n"
             "N 0 0 0 : 1 1 1\nN 0 0 2 : 1 1 1\nN 0 2 0 : 1 1 1\nN 0 2 2 : 1 1 1\n"

@@ -7,7 +7,7 @@
 
 #include "testing/fault_injection.h"
 
-#include "util3.h"
+#include "util.h"
 
 namespace bccmis::d3 {
 namespace {
@@ -15,26 +15,26 @@ namespace {
 using bccmis::testing::exercise;
 
 TEST(D3ExceptionSafety, RefineWithOldJunctionsIsAllOrNothing) {
-  const Graph3 g = test::build("lattice 2 1 1 2\nrefine 4 4 4\n");
-  const long points = exercise(g, [](Graph3& h) { ASSERT_TRUE(refine(h, {12, 4, 4}).applied()); });
+  const Graph g = test::build("lattice 2 1 1 2\nrefine 4 4 4\n");
+  const long points = exercise(g, [](Graph& h) { ASSERT_TRUE(refine(h, {12, 4, 4}).applied()); });
   EXPECT_GT(points, 100);  // the operation allocates: faults were really injected
 }
 
 TEST(D3ExceptionSafety, CoarsenKeepingJunctionsIsAllOrNothing) {
-  const Graph3 g = test::build("lattice 2 1 1 2\nrefine 4 4 4\nrefine 12 4 4\n");
-  const long points = exercise(g, [](Graph3& h) { ASSERT_TRUE(coarsen(h, {4, 4, 4}).applied()); });
+  const Graph g = test::build("lattice 2 1 1 2\nrefine 4 4 4\nrefine 12 4 4\n");
+  const long points = exercise(g, [](Graph& h) { ASSERT_TRUE(coarsen(h, {4, 4, 4}).applied()); });
   EXPECT_GT(points, 100);
 }
 
 TEST(D3ExceptionSafety, CellsBesideFinerAndSameLevelNeighbours) {
   // lattice 2 2 2 1 with (6,2,2) refined: (2,2,2) has old junctions on its
   // face x = 4, (2,6,2) meets the refined cube along an edge only.
-  const Graph3 g = test::build("lattice 2 2 2 1\nrefine 6 2 2\n");
-  for (const Point3 c : {Point3{2, 2, 2}, Point3{2, 6, 2}}) {
-    Graph3 probe = g;
+  const Graph g = test::build("lattice 2 2 2 1\nrefine 6 2 2\n");
+  for (const Point c : {Point{2, 2, 2}, Point{2, 6, 2}}) {
+    Graph probe = g;
     ASSERT_TRUE(refine(probe, c).applied());
-    exercise(g, [&](Graph3& h) { refine(h, c); });
-    exercise(probe, [&](Graph3& h) { coarsen(h, c); });
+    exercise(g, [&](Graph& h) { refine(h, c); });
+    exercise(probe, [&](Graph& h) { coarsen(h, c); });
   }
 }
 

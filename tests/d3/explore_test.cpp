@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "bccmis/explore/explore3.h"
+#include "bccmis/explore/d3/explore.h"
 #include "leaf_model.h"
 
 namespace bccmis::d3 {
@@ -37,9 +37,9 @@ struct Counts {
 /// The balanced leaf sets and the refine edges out of them, by enumeration.
 /// Leaves are compared pairwise; a leaf's children can only break the rule
 /// with the leaves its own cube touches along an edge or a face.
-Counts enumerate(const LatticeSize3& size) {
+Counts enumerate(const LatticeSize& size) {
   Counts out;
-  std::vector<std::pair<Point3, int>> leaves;
+  std::vector<std::pair<Point, int>> leaves;
   std::vector<std::vector<std::size_t>> touching;
   model::for_each_leaf_set(size, [&](const model::Leaves& set) {
     leaves.assign(set.begin(), set.end());
@@ -59,7 +59,7 @@ Counts enumerate(const LatticeSize3& size) {
       const auto& [c, l] = leaves[i];
       if (l >= size.L) continue;
       bool balanced = true;
-      for (const Point3& child : model::children(size, c, l))
+      for (const Point& child : model::children(size, c, l))
         for (const std::size_t j : touching[i])
           balanced = balanced && !model::unbalanced_pair(size, child, l + 1, leaves[j].first, leaves[j].second);
       out.refine_edges += balanced;
@@ -69,7 +69,7 @@ Counts enumerate(const LatticeSize3& size) {
 }
 
 struct Expected {
-  LatticeSize3 size;
+  LatticeSize size;
   std::int64_t states;
   std::int64_t refine_edges;
 };
@@ -80,7 +80,7 @@ void PrintTo(const Expected& e, std::ostream* os) {
 }
 
 std::string name_of(const testing::TestParamInfo<Expected>& info) {
-  const LatticeSize3& s = info.param.size;
+  const LatticeSize& s = info.param.size;
   return "W" + std::to_string(s.W) + "_H" + std::to_string(s.H) + "_D" + std::to_string(s.D) + "_L" +
          std::to_string(s.L);
 }
@@ -90,7 +90,7 @@ void expect_counts(const Expected& e) {
   EXPECT_EQ(independent.states, e.states) << "enumeration";
   EXPECT_EQ(independent.refine_edges, e.refine_edges) << "enumeration";
 
-  const ExploreResult3 r = explore(e.size);
+  const ExploreResult r = explore(e.size);
   testing::Test::RecordProperty("seconds", std::to_string(r.seconds));
   ASSERT_FALSE(r.first_failure.has_value()) << r.first_failure->message << "\nreproducer trace:\n"
                                             << r.first_failure->trace;
@@ -153,41 +153,41 @@ INSTANTIATE_TEST_SUITE_P(Lattices, EnumerationExhaustive3,
 // ---- The 3D explorer itself ---------------------------------------------------
 
 TEST(ExploreKey3, RoundTripsValidAndBrokenGraphs) {
-  Graph3 g(LatticeSize3{2, 1, 1, 2});
-  ASSERT_TRUE(refine(g, Point3{4, 4, 4}).applied());
-  ASSERT_TRUE(refine(g, Point3{2, 2, 2}).applied());
+  Graph g(LatticeSize{2, 1, 1, 2});
+  ASSERT_TRUE(refine(g, Point{4, 4, 4}).applied());
+  ASSERT_TRUE(refine(g, Point{2, 2, 2}).applied());
   EXPECT_EQ(decode_state_key(encode_state_key(g), g.size), g);
   EXPECT_EQ(encode_state_key(g)[0], '\0');  // the compact encoding
 
-  Graph3 outside = g;
-  outside.N.insert(Point3{-3, 100, 2});
-  Graph3 no_level = g;
-  no_level.level.erase(Point3{12, 4, 4});
-  for (const Graph3* h : {&outside, &no_level}) {
+  Graph outside = g;
+  outside.N.insert(Point{-3, 100, 2});
+  Graph no_level = g;
+  no_level.level.erase(Point{12, 4, 4});
+  for (const Graph* h : {&outside, &no_level}) {
     const std::string key = encode_state_key(*h);
     EXPECT_EQ(key[0], '\1');
     EXPECT_EQ(decode_state_key(key, h->size), *h);
     EXPECT_NE(key, encode_state_key(g));
   }
-  Graph3 fewer = g;
-  fewer.neighbors[Point3{4, 4, 4}].erase(*g.nbr(Point3{4, 4, 4}).begin());  // one neighbour less, still compact
+  Graph fewer = g;
+  fewer.neighbors[Point{4, 4, 4}].erase(*g.nbr(Point{4, 4, 4}).begin());  // one neighbour less, still compact
   EXPECT_NE(encode_state_key(fewer), encode_state_key(g));
   EXPECT_EQ(decode_state_key(encode_state_key(fewer), g.size), fewer);
 }
 
 TEST(Explore3, SummaryAndJsonNameTheFourNumbers) {
-  const ExploreResult3 r = explore(LatticeSize3{1, 1, 1, 1});
+  const ExploreResult r = explore(LatticeSize{1, 1, 1, 1});
   EXPECT_EQ(summary(r).rfind("explore 1 1 1 1: 2 states, 1 refine edges, 1 coarsen edges, ", 0), 0u) << summary(r);
   EXPECT_NE(to_json(r).find("{\"W\": 1, \"H\": 1, \"D\": 1, \"L\": 1, \"states\": 2, "), std::string::npos);
   EXPECT_TRUE(r.ok());
 }
 
 TEST(Explore3, ResultDoesNotDependOnTheNumberOfThreads) {
-  ExploreOptions3 one, two;
+  ExploreOptions one, two;
   one.threads = 1;
   two.threads = 2;
-  const ExploreResult3 a = explore(LatticeSize3{2, 2, 1, 1}, one);
-  const ExploreResult3 b = explore(LatticeSize3{2, 2, 1, 1}, two);
+  const ExploreResult a = explore(LatticeSize{2, 2, 1, 1}, one);
+  const ExploreResult b = explore(LatticeSize{2, 2, 1, 1}, two);
   EXPECT_EQ(a.states, b.states);
   EXPECT_EQ(a.refine_edges, b.refine_edges);
   EXPECT_EQ(a.ops_tried, b.ops_tried);
@@ -198,13 +198,13 @@ TEST(Explore3, ResultDoesNotDependOnTheNumberOfThreads) {
 // the inverse; a refine that changes the graph when it refuses is caught with
 // the refused call named; a state the checker rejects stops the search.
 TEST(Explore3, ReportsABrokenInverse) {
-  ExploreOptions3 options;
-  options.coarsen = [](Graph3& g, const Point3& n) {
+  ExploreOptions options;
+  options.coarsen = [](Graph& g, const Point& n) {
     CoarsenResult r;
     r.refused = g.is_node(n) ? CoarsenRefusal::FinerNeighbor : CoarsenRefusal::NoSuchNode;
     return r;
   };
-  const ExploreResult3 r = explore(LatticeSize3{1, 1, 1, 1}, options);
+  const ExploreResult r = explore(LatticeSize{1, 1, 1, 1}, options);
   ASSERT_TRUE(r.first_failure.has_value());
   EXPECT_NE(r.first_failure->message.find("refine (2, 2, 2) then coarsen (2, 2, 2): the coarsen was refused"),
             std::string::npos)
@@ -214,31 +214,31 @@ TEST(Explore3, ReportsABrokenInverse) {
 }
 
 TEST(Explore3, ReportsARefusalThatChangesTheState) {
-  ExploreOptions3 options;
-  options.refine = [](Graph3& g, const Point3& c) {
+  ExploreOptions options;
+  options.refine = [](Graph& g, const Point& c) {
     RefineResult r = refine(g, c);
-    if (r.refused && g.is_node(c)) g.neighbors[c].insert(Point3{0, 0, 0});
+    if (r.refused && g.is_node(c)) g.neighbors[c].insert(Point{0, 0, 0});
     return r;
   };
-  const ExploreResult3 r = explore(LatticeSize3{1, 1, 1, 1}, options);
+  const ExploreResult r = explore(LatticeSize{1, 1, 1, 1}, options);
   ASSERT_TRUE(r.first_failure.has_value());
   EXPECT_NE(r.first_failure->message.find("was refused (no-such-cell) but changed the state"), std::string::npos)
       << r.first_failure->message;
 }
 
 TEST(Explore3, ReportsAnInvalidState) {
-  ExploreOptions3 options;
-  options.refine = [](Graph3& g, const Point3& c) {
+  ExploreOptions options;
+  options.refine = [](Graph& g, const Point& c) {
     RefineResult r = refine(g, c);
     if (r.applied()) g.level[*r.Y.begin()] = 0;  // a child that claims level 0
     return r;
   };
-  options.coarsen = [](Graph3& g, const Point3& n) {
+  options.coarsen = [](Graph& g, const Point& n) {
     if (!g.is_node(n) || g.nbr(n).size() != 8) return coarsen(g, n);
-    for (const Point3& y : g.nbr(n)) g.level[y] = 1;  // undo the planted level before coarsening
+    for (const Point& y : g.nbr(n)) g.level[y] = 1;  // undo the planted level before coarsening
     return coarsen(g, n);
   };
-  const ExploreResult3 r = explore(LatticeSize3{1, 1, 1, 1}, options);
+  const ExploreResult r = explore(LatticeSize{1, 1, 1, 1}, options);
   ASSERT_TRUE(r.first_failure.has_value());
   EXPECT_EQ(r.first_failure->message.rfind("invalid state: ", 0), 0u) << r.first_failure->message;
 }

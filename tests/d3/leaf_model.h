@@ -1,7 +1,7 @@
 // An independent model of the 3D lattice for the tests: a set of octree
 // leaves (center -> level) and the graph spec/lattice3d.md §1 derives from
 // it by geometry alone. Nothing here calls refine or coarsen or shares their
-// code; it uses only the data types Point3 and LatticeSize3.
+// code; it uses only the data types Point and LatticeSize.
 //
 //   N     = every corner of every leaf cube
 //   N(n)  = the leaves whose closed cube contains n: for each level and each
@@ -24,22 +24,22 @@
 
 namespace bccmis::d3::model {
 
-using Leaves = std::map<Point3, int>;  // center -> level
+using Leaves = std::map<Point, int>;  // center -> level
 
 struct Box {
   std::int64_t lo[3], hi[3];
 };
 
-inline std::int64_t side(const LatticeSize3& size, int level) { return std::int64_t{1} << (size.L + 1 - level); }
+inline std::int64_t side(const LatticeSize& size, int level) { return std::int64_t{1} << (size.L + 1 - level); }
 
-inline Box cube(const LatticeSize3& size, const Point3& c, int level) {
+inline Box cube(const LatticeSize& size, const Point& c, int level) {
   const std::int64_t h = side(size, level) / 2;
   return {{c.x - h, c.y - h, c.z - h}, {c.x + h, c.y + h, c.z + h}};
 }
 
-inline std::int64_t coord(const Point3& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
+inline std::int64_t coord(const Point& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
 
-inline std::int64_t extent(const LatticeSize3& size, int axis) {
+inline std::int64_t extent(const LatticeSize& size, int axis) {
   const std::int64_t S = side(size, 0);
   return (axis == 0 ? size.W : axis == 1 ? size.H : size.D) * S;
 }
@@ -57,33 +57,33 @@ inline int contact_dimension(const Box& a, const Box& b) {
   return dim;
 }
 
-inline bool is_corner(const Box& b, const Point3& p) {
+inline bool is_corner(const Box& b, const Point& p) {
   for (int k = 0; k < 3; ++k)
     if (coord(p, k) != b.lo[k] && coord(p, k) != b.hi[k]) return false;
   return true;
 }
 
 /// How many coordinates of p lie strictly inside the domain.
-inline int interior_coordinates(const LatticeSize3& size, const Point3& p) {
+inline int interior_coordinates(const LatticeSize& size, const Point& p) {
   int k = 0;
   for (int a = 0; a < 3; ++a) k += coord(p, a) > 0 && coord(p, a) < extent(size, a);
   return k;
 }
 
 struct GeometricGraph {
-  std::set<Point3> N;
-  std::map<Point3, std::set<Point3>> nbr;
+  std::set<Point> N;
+  std::map<Point, std::set<Point>> nbr;
 };
 
 /// The graph of spec/lattice3d.md §1 recomputed from the leaves.
-inline GeometricGraph geometric_graph(const LatticeSize3& size, const Leaves& leaves) {
+inline GeometricGraph geometric_graph(const LatticeSize& size, const Leaves& leaves) {
   GeometricGraph g;
   for (const auto& [c, l] : leaves) {
     const Box b = cube(size, c, l);
     for (int i = 0; i < 8; ++i)
       g.N.insert({(i & 4) ? b.hi[0] : b.lo[0], (i & 2) ? b.hi[1] : b.lo[1], (i & 1) ? b.hi[2] : b.lo[2]});
   }
-  for (const Point3& n : g.N) {
+  for (const Point& n : g.N) {
     for (int l = 0; l <= size.L; ++l) {
       const std::int64_t s = side(size, l);
       for (int d = 0; d < 8; ++d) {
@@ -98,7 +98,7 @@ inline GeometricGraph geometric_graph(const LatticeSize3& size, const Leaves& le
           center[k] = index * s + s / 2;
         }
         if (!inside) continue;
-        const Point3 c{center[0], center[1], center[2]};
+        const Point c{center[0], center[1], center[2]};
         auto it = leaves.find(c);
         if (it != leaves.end() && it->second == l) {
           g.nbr[n].insert(c);
@@ -111,7 +111,7 @@ inline GeometricGraph geometric_graph(const LatticeSize3& size, const Leaves& le
 }
 
 /// Empty if the leaves tile the domain as octree leaves; else why not.
-inline std::string tiling_problem(const LatticeSize3& size, const Leaves& leaves) {
+inline std::string tiling_problem(const LatticeSize& size, const Leaves& leaves) {
   std::uint64_t volume = 0;  // in level-L cubes
   for (const auto& [c, l] : leaves) {
     if (l < 0 || l > size.L) return "leaf " + to_string(c) + " has level " + std::to_string(l);
@@ -123,7 +123,7 @@ inline std::string tiling_problem(const LatticeSize3& size, const Leaves& leaves
     }
     for (int a = 0; a < l; ++a) {  // no ancestor is a leaf too
       const std::int64_t t = side(size, a);
-      const Point3 up{c.x / t * t + t / 2, c.y / t * t + t / 2, c.z / t * t + t / 2};
+      const Point up{c.x / t * t + t / 2, c.y / t * t + t / 2, c.z / t * t + t / 2};
       auto it = leaves.find(up);
       if (it != leaves.end() && it->second == a) return "leaf " + to_string(c) + " lies inside leaf " + to_string(up);
     }
@@ -136,11 +136,11 @@ inline std::string tiling_problem(const LatticeSize3& size, const Leaves& leaves
 }
 
 /// Empty if face-or-edge neighbours differ by at most one level; else the pair.
-inline std::string balance_problem(const LatticeSize3& size, const Leaves& leaves, const GeometricGraph& g) {
-  for (const Point3& n : g.N) {
+inline std::string balance_problem(const LatticeSize& size, const Leaves& leaves, const GeometricGraph& g) {
+  for (const Point& n : g.N) {
     const auto& cells = g.nbr.at(n);
-    for (const Point3& a : cells)
-      for (const Point3& b : cells) {
+    for (const Point& a : cells)
+      for (const Point& b : cells) {
         const int la = leaves.at(a), lb = leaves.at(b);
         if (la - lb <= 1) continue;
         if (contact_dimension(cube(size, a, la), cube(size, b, lb)) >= 1)
@@ -152,9 +152,9 @@ inline std::string balance_problem(const LatticeSize3& size, const Leaves& leave
 }
 
 /// The 8 children (level l + 1) of the level-l cube centred at c.
-inline std::array<Point3, 8> children(const LatticeSize3& size, const Point3& c, int l) {
+inline std::array<Point, 8> children(const LatticeSize& size, const Point& c, int l) {
   const std::int64_t q = side(size, l) / 4;
-  std::array<Point3, 8> out;
+  std::array<Point, 8> out;
   for (int i = 0; i < 8; ++i)
     out[static_cast<std::size_t>(i)] = {c.x + ((i & 4) ? q : -q), c.y + ((i & 2) ? q : -q), c.z + ((i & 1) ? q : -q)};
   return out;
@@ -162,11 +162,11 @@ inline std::array<Point3, 8> children(const LatticeSize3& size, const Point3& c,
 
 /// Every leaf set of the level-l cube centred at c: the cube itself, or
 /// (below level L) the union of its 8 children's leaf sets.
-inline std::vector<Leaves> cube_leaf_sets(const LatticeSize3& size, const Point3& c, int l) {
+inline std::vector<Leaves> cube_leaf_sets(const LatticeSize& size, const Point& c, int l) {
   std::vector<Leaves> out{Leaves{{c, l}}};
   if (l == size.L) return out;
   std::vector<Leaves> refined{Leaves{}};
-  for (const Point3& child : children(size, c, l)) {
+  for (const Point& child : children(size, c, l)) {
     std::vector<Leaves> next;
     for (const Leaves& partial : refined)
       for (const Leaves& sub : cube_leaf_sets(size, child, l + 1)) {
@@ -182,7 +182,7 @@ inline std::vector<Leaves> cube_leaf_sets(const LatticeSize3& size, const Point3
 
 /// Calls fn on every octree leaf set of the lattice (balanced or not), one at
 /// a time: every combination of one leaf set per level-0 cube.
-inline void for_each_leaf_set(const LatticeSize3& size, const std::function<void(const Leaves&)>& fn) {
+inline void for_each_leaf_set(const LatticeSize& size, const std::function<void(const Leaves&)>& fn) {
   const std::int64_t S = side(size, 0);
   std::vector<std::vector<Leaves>> roots;
   for (std::int64_t i = 0; i < size.W; ++i)
@@ -202,7 +202,7 @@ inline void for_each_leaf_set(const LatticeSize3& size, const std::function<void
 }
 
 /// Every octree leaf set of the lattice (balanced or not).
-inline std::vector<Leaves> all_leaf_sets(const LatticeSize3& size) {
+inline std::vector<Leaves> all_leaf_sets(const LatticeSize& size) {
   std::vector<Leaves> sets;
   for_each_leaf_set(size, [&sets](const Leaves& leaves) { sets.push_back(leaves); });
   return sets;
@@ -210,7 +210,7 @@ inline std::vector<Leaves> all_leaf_sets(const LatticeSize3& size) {
 
 /// Two leaves that break the 2:1 rule: levels two or more apart and in
 /// contact along an edge segment or a face patch.
-inline bool unbalanced_pair(const LatticeSize3& size, const Point3& a, int la, const Point3& b, int lb) {
+inline bool unbalanced_pair(const LatticeSize& size, const Point& a, int la, const Point& b, int lb) {
   return (la - lb > 1 || lb - la > 1) && contact_dimension(cube(size, a, la), cube(size, b, lb)) >= 1;
 }
 
@@ -223,19 +223,19 @@ inline bool unbalanced_pair(const LatticeSize3& size, const Point3& a, int la, c
 // §4 and §5.
 
 /// "ok" or the refusal code of refine(p).
-inline std::string refine_decision(const LatticeSize3& size, const Leaves& leaves, const Point3& p) {
+inline std::string refine_decision(const LatticeSize& size, const Leaves& leaves, const Point& p) {
   const auto it = leaves.find(p);
   if (it == leaves.end()) return "no-such-cell";
   const int l = it->second;
   if (l >= size.L) return "max-level";
-  for (const Point3& child : children(size, p, l))
+  for (const Point& child : children(size, p, l))
     for (const auto& [o, lo] : leaves)
       if (o != p && unbalanced_pair(size, child, l + 1, o, lo)) return "coarser-neighbor";
   return "ok";
 }
 
 /// The level l < L of the cube centred at p, if p is the center of one.
-inline std::optional<int> cube_level_at(const LatticeSize3& size, const Point3& p) {
+inline std::optional<int> cube_level_at(const LatticeSize& size, const Point& p) {
   for (int l = 0; l < size.L; ++l) {
     const std::int64_t s = side(size, l);
     bool center = true;
@@ -249,14 +249,14 @@ inline std::optional<int> cube_level_at(const LatticeSize3& size, const Point3& 
 }
 
 /// "ok" or the refusal code of coarsen(p).
-inline std::string coarsen_decision(const LatticeSize3& size, const Leaves& leaves, const Point3& p) {
+inline std::string coarsen_decision(const LatticeSize& size, const Leaves& leaves, const Point& p) {
   bool corner = false;
   for (const auto& [c, l] : leaves) corner = corner || is_corner(cube(size, c, l), p);
   if (!corner) return "no-such-node";
   const std::optional<int> l = cube_level_at(size, p);
   if (!l) return "not-a-refined-center";
-  const std::array<Point3, 8> kids = children(size, p, *l);
-  for (const Point3& k : kids) {
+  const std::array<Point, 8> kids = children(size, p, *l);
+  for (const Point& k : kids) {
     const auto it = leaves.find(k);
     if (it == leaves.end() || it->second != *l + 1) return "children-refined";
   }
@@ -267,16 +267,16 @@ inline std::string coarsen_decision(const LatticeSize3& size, const Leaves& leav
 }
 
 /// Applies refine(p), which refine_decision accepts.
-inline void apply_refine(const LatticeSize3& size, Leaves& leaves, const Point3& p) {
+inline void apply_refine(const LatticeSize& size, Leaves& leaves, const Point& p) {
   const int l = leaves.at(p);
   leaves.erase(p);
-  for (const Point3& child : children(size, p, l)) leaves[child] = l + 1;
+  for (const Point& child : children(size, p, l)) leaves[child] = l + 1;
 }
 
 /// Applies coarsen(p), which coarsen_decision accepts.
-inline void apply_coarsen(const LatticeSize3& size, Leaves& leaves, const Point3& p) {
+inline void apply_coarsen(const LatticeSize& size, Leaves& leaves, const Point& p) {
   const int l = *cube_level_at(size, p);
-  for (const Point3& child : children(size, p, l)) leaves.erase(child);
+  for (const Point& child : children(size, p, l)) leaves.erase(child);
   leaves[p] = l;
 }
 

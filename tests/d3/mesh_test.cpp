@@ -22,16 +22,16 @@
 #include "bccmis/io/medit.h"
 #include "bccmis/io/msh.h"
 #include "bccmis/io/vtu.h"
-#include "util3.h"
+#include "util.h"
 
 namespace bccmis::d3 {
 namespace {
 
 using Tets = std::vector<Tet>;
 
-std::int64_t coord(const Point3& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
+std::int64_t coord(const Point& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
 
-std::int64_t extent(const LatticeSize3& size, int axis) {
+std::int64_t extent(const LatticeSize& size, int axis) {
   return (axis == 0 ? size.W : axis == 1 ? size.H : size.D) * (std::int64_t{1} << (size.L + 1));
 }
 
@@ -50,12 +50,12 @@ std::int64_t total_det6(const Tets& tets) {
   return sum;
 }
 
-std::int64_t box_det6(const LatticeSize3& size) { return 6 * extent(size, 0) * extent(size, 1) * extent(size, 2); }
+std::int64_t box_det6(const LatticeSize& size) { return 6 * extent(size, 0) * extent(size, 1) * extent(size, 2); }
 
 // The 6 dihedral angles of t in degrees, sorted, in long double.
 std::vector<long double> test_dihedral_angles(const Tet& t) {
   using V = std::array<long double, 3>;
-  auto sub = [](const Point3& p, const Point3& q) {
+  auto sub = [](const Point& p, const Point& q) {
     return V{static_cast<long double>(p.x - q.x), static_cast<long double>(p.y - q.y),
              static_cast<long double>(p.z - q.z)};
   };
@@ -101,7 +101,7 @@ struct Shape {
 };
 
 std::vector<Shape> shapes() {
-  const Point3 o{0, 0, 0};
+  const Point o{0, 0, 0};
   return {
       {"equal, whole edge", {o, {0, 0, -2}, {-1, -1, -1}, {1, -1, -1}}, 4, degrees({60, 60, 60, 60, 90, 90})},
       {"equal, half edge", {o, {0, 0, -2}, {-1, -1, -1}, {0, -1, -1}}, 2, degrees({45, 60, 60, 90, 90, 90})},
@@ -111,13 +111,13 @@ std::vector<Shape> shapes() {
   };
 }
 
-bool is_hull_vertex(const Graph3& g, const Point3& p) { return !g.is_node(p) && !g.is_center(p); }
+bool is_hull_vertex(const Graph& g, const Point& p) { return !g.is_node(p) && !g.is_center(p); }
 
 // Which rule of spec/mesh3d.md made t: M5 equal, M6 coarse side, M7 fine
 // side, M8 hull; judged from the apex t[1] and the leaf t[0].
 enum class Case { equal, coarse, fine, hull };
 
-Case case_of(const Graph3& g, const Tet& t) {
+Case case_of(const Graph& g, const Tet& t) {
   if (g.is_center(t[1])) return Case::equal;
   if (is_hull_vertex(g, t[1])) return Case::hull;
   const std::int64_t h = cell_side(g.size, g.level_of(t[0])) / 2;
@@ -126,27 +126,27 @@ Case case_of(const Graph3& g, const Tet& t) {
   return corner ? Case::fine : Case::coarse;
 }
 
-std::map<Case, std::size_t> case_counts(const Graph3& g, const Tets& tets) {
+std::map<Case, std::size_t> case_counts(const Graph& g, const Tets& tets) {
   std::map<Case, std::size_t> out;
   for (const Tet& t : tets) ++out[case_of(g, t)];
   return out;
 }
 
-using Edge = std::pair<Point3, Point3>;
-Edge edge(const Point3& a, const Point3& b) { return a < b ? Edge{a, b} : Edge{b, a}; }
+using Edge = std::pair<Point, Point>;
+Edge edge(const Point& a, const Point& b) { return a < b ? Edge{a, b} : Edge{b, a}; }
 
 // The green edges and split-face diagonals of spec/mesh3d.md M12, computed
 // from the leaf cubes and the node set (a cube edge holds its two corners and,
 // when it is a node, its midpoint: lattice3d.md F3).
-std::set<Edge> expected_node_node_edges(const Graph3& g) {
+std::set<Edge> expected_node_node_edges(const Graph& g) {
   std::set<Edge> out;
-  for (const Point3& u : g.C) {
+  for (const Point& u : g.C) {
     const std::int64_t h = cell_side(g.size, g.level_of(u)) / 2;
     for (int i = 0; i < 8; ++i)
       for (int axis = 0; axis < 3; ++axis) {
         if ((i >> axis) & 1) continue;  // each edge once, from its lower corner
-        const Point3 a{u.x + ((i & 1) ? h : -h), u.y + ((i & 2) ? h : -h), u.z + ((i & 4) ? h : -h)};
-        Point3 b = a, m = a;
+        const Point a{u.x + ((i & 1) ? h : -h), u.y + ((i & 2) ? h : -h), u.z + ((i & 4) ? h : -h)};
+        Point b = a, m = a;
         (axis == 0 ? b.x : axis == 1 ? b.y : b.z) += 2 * h;
         (axis == 0 ? m.x : axis == 1 ? m.y : m.z) += h;
         if (g.is_node(m)) {
@@ -159,12 +159,12 @@ std::set<Edge> expected_node_node_edges(const Graph3& g) {
     // Split faces seen from the coarse side: the face center is a node.
     for (int axis = 0; axis < 3; ++axis)
       for (const std::int64_t side : {-h, h}) {
-        Point3 f = u;
+        Point f = u;
         (axis == 0 ? f.x : axis == 1 ? f.y : f.z) += side;
         if (!g.is_node(f)) continue;
         for (const std::int64_t da : {-h, h})
           for (const std::int64_t db : {-h, h}) {
-            Point3 c = f;
+            Point c = f;
             (axis == 0 ? c.y : c.x) += da;
             (axis == 2 ? c.y : c.z) += db;
             out.insert(edge(f, c));
@@ -174,7 +174,7 @@ std::set<Edge> expected_node_node_edges(const Graph3& g) {
   return out;
 }
 
-bool on_domain_boundary(const LatticeSize3& size, const std::array<Point3, 3>& tri) {
+bool on_domain_boundary(const LatticeSize& size, const std::array<Point, 3>& tri) {
   for (int axis = 0; axis < 3; ++axis)
     for (const std::int64_t v : {std::int64_t{0}, extent(size, axis)})
       if (coord(tri[0], axis) == v && coord(tri[1], axis) == v && coord(tri[2], axis) == v) return true;
@@ -183,7 +183,7 @@ bool on_domain_boundary(const LatticeSize3& size, const std::array<Point3, 3>& t
 
 // Every fact of spec/mesh3d.md §3 that a state allows checking; the first
 // problem, or "".
-std::string mesh_problem(const Graph3& g, const Tets& tets) {
+std::string mesh_problem(const Graph& g, const Tets& tets) {
   if (!std::is_sorted(tets.begin(), tets.end())) return "not sorted";
   if (std::adjacent_find(tets.begin(), tets.end()) != tets.end()) return "a tetrahedron twice";
   const auto name = [](const Tet& t) {
@@ -198,10 +198,10 @@ std::string mesh_problem(const Graph3& g, const Tets& tets) {
   if (total_det6(tets) != box_det6(g.size))
     return "6 * volume sums to " + std::to_string(total_det6(tets)) + ", not " + std::to_string(box_det6(g.size));
   // M11: conformity.
-  std::map<std::array<Point3, 3>, int> triangles;
+  std::map<std::array<Point, 3>, int> triangles;
   for (const Tet& t : tets)
     for (std::size_t skip = 0; skip < 4; ++skip) {
-      std::array<Point3, 3> tri{};
+      std::array<Point, 3> tri{};
       std::size_t k = 0;
       for (std::size_t i = 0; i < 4; ++i)
         if (i != skip) tri[k++] = t[i];
@@ -219,20 +219,20 @@ std::string mesh_problem(const Graph3& g, const Tets& tets) {
   for (const Tet& t : tets)
     for (std::size_t i = 0; i < 4; ++i)
       for (std::size_t j = i + 1; j < 4; ++j) {
-        const Point3 &a = t[i], &b = t[j];
+        const Point &a = t[i], &b = t[j];
         if (g.is_center(a) && g.is_node(b)) center_node.insert({a, b});
         if (g.is_node(a) && g.is_center(b)) center_node.insert({b, a});
         if (g.is_node(a) && g.is_node(b)) node_node.insert(edge(a, b));
         if (is_hull_vertex(g, a) || is_hull_vertex(g, b)) {
-          const Point3& hv = is_hull_vertex(g, a) ? a : b;
+          const Point& hv = is_hull_vertex(g, a) ? a : b;
           int on = 0;
           for (int axis = 0; axis < 3; ++axis) on += coord(hv, axis) == 0 || coord(hv, axis) == extent(g.size, axis);
           if (on != 1) return "vertex " + to_string(hv) + " is neither in N, C nor a domain-face point";
         }
       }
   std::set<Edge> stored;
-  for (const Point3& u : g.C)
-    for (const Point3& n : g.nbr(u)) stored.insert({u, n});
+  for (const Point& u : g.C)
+    for (const Point& n : g.nbr(u)) stored.insert({u, n});
   if (center_node != stored) return "the center-node edges are not the stored graph edges";
   if (node_node != expected_node_node_edges(g)) return "the node-node edges are not the green edges and diagonals";
   // M14: every tetrahedron is one of the five shapes; angles in [45, 120].
@@ -246,7 +246,7 @@ std::string mesh_problem(const Graph3& g, const Tets& tets) {
   return {};
 }
 
-std::string lattice_line(const LatticeSize3& s) {
+std::string lattice_line(const LatticeSize& s) {
   return "lattice " + std::to_string(s.W) + ' ' + std::to_string(s.H) + ' ' + std::to_string(s.D) + ' ' +
          std::to_string(s.L) + '\n';
 }
@@ -267,7 +267,7 @@ TEST(D3Mesh, FiveShapesAndTheirAngles) {
 
 TEST(D3Mesh, OneCube) {
   // spec/mesh3d.md M15: 6 hull faces x 4 segments.
-  const Graph3 g(LatticeSize3{1, 1, 1, 0});
+  const Graph g(LatticeSize{1, 1, 1, 0});
   const Tets tets = tetrahedra(g);
   EXPECT_EQ(tets.size(), 24u);
   EXPECT_EQ(total_det6(tets), 48);
@@ -277,7 +277,7 @@ TEST(D3Mesh, OneCube) {
 
 TEST(D3Mesh, TwoCubes) {
   // spec/mesh3d.md M16: 4 on the equal face, 10 hull faces x 4.
-  const Graph3 g(LatticeSize3{2, 1, 1, 0});
+  const Graph g(LatticeSize{2, 1, 1, 0});
   const Tets tets = tetrahedra(g);
   EXPECT_EQ(tets.size(), 44u);
   EXPECT_EQ(total_det6(tets), 96);
@@ -286,15 +286,15 @@ TEST(D3Mesh, TwoCubes) {
   // M5: the equal face's tetrahedra are whole BCC tetrahedra, emitted from (1,1,1).
   for (const Tet& t : tets)
     if (case_of(g, t) == Case::equal) {
-      EXPECT_EQ(t[0], (Point3{1, 1, 1}));
-      EXPECT_EQ(t[1], (Point3{3, 1, 1}));
+      EXPECT_EQ(t[0], (Point{1, 1, 1}));
+      EXPECT_EQ(t[1], (Point{3, 1, 1}));
       EXPECT_EQ(rounded(test_dihedral_angles(t)), degrees({60, 60, 60, 60, 90, 90}));
     }
 }
 
 TEST(D3Mesh, RefinedRoot) {
   // spec/mesh3d.md M17: 12 equal faces x 4, 24 hull faces x 4.
-  Graph3 g(LatticeSize3{1, 1, 1, 1});
+  Graph g(LatticeSize{1, 1, 1, 1});
   ASSERT_TRUE(refine(g, {2, 2, 2}).applied());
   const Tets tets = tetrahedra(g);
   EXPECT_EQ(tets.size(), 144u);
@@ -305,7 +305,7 @@ TEST(D3Mesh, RefinedRoot) {
 
 TEST(D3Mesh, SplitFace) {
   // spec/mesh3d.md M18: lattice 2 1 1 2 with (4,4,4) refined.
-  Graph3 g(LatticeSize3{2, 1, 1, 2});
+  Graph g(LatticeSize{2, 1, 1, 2});
   ASSERT_TRUE(refine(g, {4, 4, 4}).applied());
   const Tets tets = tetrahedra(g);
   EXPECT_EQ(tets.size(), 168u);
@@ -314,29 +314,29 @@ TEST(D3Mesh, SplitFace) {
             (std::map<Case, std::size_t>{{Case::equal, 48}, {Case::coarse, 8}, {Case::fine, 8}, {Case::hull, 104}}));
   // M6: the coarse side, 8 tetrahedra with apex (8,4,4), one per half edge.
   // M7: 2 per quarter face, with apex (8,4,4) a corner of the fine leaf.
-  std::map<Point3, std::size_t> fine_per_leaf;
+  std::map<Point, std::size_t> fine_per_leaf;
   std::size_t coarse = 0;
   for (const Tet& t : tets) {
     if (case_of(g, t) == Case::coarse) {
       ++coarse;
-      EXPECT_EQ(t[0], (Point3{12, 4, 4}));
-      EXPECT_EQ(t[1], (Point3{8, 4, 4}));
+      EXPECT_EQ(t[0], (Point{12, 4, 4}));
+      EXPECT_EQ(t[1], (Point{8, 4, 4}));
       EXPECT_EQ(det6(t), 64);
     }
     if (case_of(g, t) == Case::fine) {
       ++fine_per_leaf[t[0]];
-      EXPECT_EQ(t[1], (Point3{8, 4, 4}));
+      EXPECT_EQ(t[1], (Point{8, 4, 4}));
       EXPECT_EQ(det6(t), 32);
     }
   }
   EXPECT_EQ(coarse, 8u);
   EXPECT_EQ(fine_per_leaf,
-            (std::map<Point3, std::size_t>{{{6, 2, 2}, 2}, {{6, 2, 6}, 2}, {{6, 6, 2}, 2}, {{6, 6, 6}, 2}}));
+            (std::map<Point, std::size_t>{{{6, 2, 2}, 2}, {{6, 2, 6}, 2}, {{6, 6, 2}, 2}, {{6, 6, 6}, 2}}));
   // The coarse leaf's hull faces: 4 faces with 5 segments, x = 16 with 4.
-  std::map<Point3, std::size_t> per_hull_vertex;
+  std::map<Point, std::size_t> per_hull_vertex;
   for (const Tet& t : tets)
-    if (t[0] == Point3{12, 4, 4} && case_of(g, t) == Case::hull) ++per_hull_vertex[t[1]];
-  EXPECT_EQ(per_hull_vertex, (std::map<Point3, std::size_t>{
+    if (t[0] == Point{12, 4, 4} && case_of(g, t) == Case::hull) ++per_hull_vertex[t[1]];
+  EXPECT_EQ(per_hull_vertex, (std::map<Point, std::size_t>{
                                  {{12, 0, 4}, 5}, {{12, 8, 4}, 5}, {{12, 4, 0}, 5}, {{12, 4, 8}, 5}, {{16, 4, 4}, 4}}));
   EXPECT_EQ(mesh_problem(g, tets), "");
   // M14: the split face attains both ends of the angle range.
@@ -353,12 +353,12 @@ TEST(D3Mesh, SplitFace) {
 TEST(D3Mesh, BisectedEqualFace) {
   // spec/mesh3d.md M19: the equal face y = 4 between (6,2,2) and (6,6,2) has
   // the node (4,4,2) on an edge: 5 tetrahedra, 3 whole and 2 bisected.
-  Graph3 g(LatticeSize3{2, 2, 1, 1});
+  Graph g(LatticeSize{2, 2, 1, 1});
   ASSERT_TRUE(refine(g, {2, 2, 2}).applied());
   const Tets tets = tetrahedra(g);
   std::size_t whole = 0, bisected = 0;
   for (const Tet& t : tets) {
-    if (t[0] != Point3{6, 2, 2} || t[1] != Point3{6, 6, 2}) continue;
+    if (t[0] != Point{6, 2, 2} || t[1] != Point{6, 6, 2}) continue;
     const auto angles = rounded(test_dihedral_angles(t));
     whole += angles == degrees({60, 60, 60, 60, 90, 90});
     bisected += angles == degrees({45, 60, 60, 90, 90, 90});
@@ -371,9 +371,9 @@ TEST(D3Mesh, BisectedEqualFace) {
 TEST(D3Mesh, UniformLatticesHaveOnly60And90AwayFromTheHull) {
   // spec/mesh3d.md M14: without refinement (and in a uniformly refined
   // lattice) every tetrahedron without a hull vertex is a whole BCC one.
-  Graph3 refined(LatticeSize3{2, 2, 2, 1});
-  for (const Point3 c : PointSet3(refined.C)) ASSERT_TRUE(refine(refined, c).applied());
-  for (const Graph3& g : {Graph3(LatticeSize3{3, 2, 2, 0}), refined}) {
+  Graph refined(LatticeSize{2, 2, 2, 1});
+  for (const Point c : PointSet(refined.C)) ASSERT_TRUE(refine(refined, c).applied());
+  for (const Graph& g : {Graph(LatticeSize{3, 2, 2, 0}), refined}) {
     const Tets tets = tetrahedra(g);
     std::set<long long> inner, hull;
     for (const Tet& t : tets) {
@@ -390,7 +390,7 @@ TEST(D3Mesh, RandomStates) {
   // spec/mesh3d.md M3, M10-M14 in every state of random refine/coarsen
   // sequences (refusals included).
   struct Case3 {
-    LatticeSize3 size;
+    LatticeSize size;
     int steps;
   };
   const Case3 cases[] = {{{1, 1, 1, 3}, 40}, {{2, 1, 1, 2}, 40}, {{2, 2, 1, 2}, 30}, {{2, 2, 2, 1}, 20}};
@@ -398,14 +398,14 @@ TEST(D3Mesh, RandomStates) {
   for (const Case3& k : cases)
     for (const std::uint64_t seed : {20090303u, 7u}) {
       std::mt19937_64 rng(seed);
-      Graph3 g(k.size);
+      Graph g(k.size);
       std::string trace = lattice_line(k.size);
       for (int step = 0; step < k.steps; ++step) {
         const bool do_refine = std::uniform_int_distribution<int>(0, 99)(rng) < 60;
-        const PointSet3& from = do_refine ? g.C : g.N;
+        const PointSet& from = do_refine ? g.C : g.N;
         auto it = from.begin();
         std::advance(it, static_cast<long>(std::uniform_int_distribution<std::size_t>(0, from.size() - 1)(rng)));
-        const Point3 p = *it;
+        const Point p = *it;
         trace += std::string(do_refine ? "refine " : "coarsen ") + std::to_string(p.x) + ' ' + std::to_string(p.y) +
                  ' ' + std::to_string(p.z) + '\n';
         if (do_refine)
@@ -426,10 +426,10 @@ TEST(D3Mesh, RandomStates) {
 TEST(D3Mesh, AGraphWithoutTheSplitFaceCenterIsRefused) {
   // spec/mesh3d.md M4: the apex of a split face must be a node of the leaf;
   // without it the graph is no reachable state and the extraction throws.
-  Graph3 g(LatticeSize3{2, 1, 1, 2});
+  Graph g(LatticeSize{2, 1, 1, 2});
   ASSERT_TRUE(refine(g, {4, 4, 4}).applied());
   ASSERT_NO_THROW(tetrahedra(g));
-  Graph3 coarse_side = g, fine_side = g;
+  Graph coarse_side = g, fine_side = g;
   coarse_side.neighbors[{12, 4, 4}].erase({8, 4, 4});
   fine_side.neighbors[{6, 2, 2}].erase({8, 4, 4});
   EXPECT_THROW(tetrahedra(coarse_side), std::logic_error);
@@ -439,7 +439,7 @@ TEST(D3Mesh, AGraphWithoutTheSplitFaceCenterIsRefused) {
 TEST(D3Mesh, ExactOrientationNear2To62) {
   // spec/mesh3d.md M3: differences of 2^62 need more than 128 bits.
   const std::int64_t big = std::int64_t{1} << 62;
-  const Point3 o{0, 0, 0}, x{big, 0, 0}, y{0, big, 0}, z{0, 0, big};
+  const Point o{0, 0, 0}, x{big, 0, 0}, y{0, big, 0}, z{0, 0, big};
   EXPECT_EQ(orientation(o, x, y, z), 1);
   EXPECT_EQ(orientation(o, y, x, z), -1);
   EXPECT_EQ(orientation(o, x, y, {big, big, 0}), 0);
@@ -456,16 +456,16 @@ TEST(D3Mesh, LargestLatticeIsTheSmallestScaled) {
   const auto scaled = [](const Tets& tets, std::int64_t f) {
     Tets out;
     for (Tet t : tets) {
-      for (Point3& p : t) p = {p.x * f, p.y * f, p.z * f};
+      for (Point& p : t) p = {p.x * f, p.y * f, p.z * f};
       out.push_back(t);
     }
     return out;
   };
-  Graph3 big(LatticeSize3{1, 1, 1, 61});
-  EXPECT_EQ(tetrahedra(big), scaled(tetrahedra(Graph3(LatticeSize3{1, 1, 1, 0})), std::int64_t{1} << 61));
+  Graph big(LatticeSize{1, 1, 1, 61});
+  EXPECT_EQ(tetrahedra(big), scaled(tetrahedra(Graph(LatticeSize{1, 1, 1, 0})), std::int64_t{1} << 61));
   const std::int64_t half = std::int64_t{1} << 61;
   ASSERT_TRUE(refine(big, {half, half, half}).applied());
-  Graph3 small(LatticeSize3{1, 1, 1, 1});
+  Graph small(LatticeSize{1, 1, 1, 1});
   ASSERT_TRUE(refine(small, {2, 2, 2}).applied());
   EXPECT_EQ(tetrahedra(big), scaled(tetrahedra(small), std::int64_t{1} << 60));
 }
@@ -473,7 +473,7 @@ TEST(D3Mesh, LargestLatticeIsTheSmallestScaled) {
 TEST(D3Mesh, IndexMesh) {
   // spec/mesh3d.md M18: 31 nodes, 9 centers, 25 hull vertices (20 children's
   // hull faces and 5 of the coarse leaf).
-  Graph3 g(LatticeSize3{2, 1, 1, 2});
+  Graph g(LatticeSize{2, 1, 1, 2});
   ASSERT_TRUE(refine(g, {4, 4, 4}).applied());
   const Tets tets = tetrahedra(g);
   const TetMesh mesh = index_mesh(g, tets);
@@ -490,7 +490,7 @@ TEST(D3Mesh, IndexMesh) {
 
 // The writers, read back: the positions of every tetrahedron as written.
 TetMesh split_face_mesh(Tets* tets) {
-  Graph3 g(LatticeSize3{2, 1, 1, 2});
+  Graph g(LatticeSize{2, 1, 1, 2});
   refine(g, {4, 4, 4});
   *tets = tetrahedra(g);
   return index_mesh(g, *tets);
@@ -528,12 +528,12 @@ TEST(D3MeshWriters, VtuReadsBack) {
   for (std::size_t i = 0; i < 168; ++i) {
     // The cell data is the level of the leaf v0 (M20): the coarse cube
     // (12, 4, 4) has level 0, the refined cube's children level 1.
-    EXPECT_EQ(arrays[1][i], (tets[i][0] == Point3{12, 4, 4}) ? 0 : 1);
+    EXPECT_EQ(arrays[1][i], (tets[i][0] == Point{12, 4, 4}) ? 0 : 1);
     EXPECT_EQ(arrays[4][i], static_cast<std::int64_t>(4 * (i + 1)));
     EXPECT_EQ(arrays[5][i], 10);
     for (std::size_t j = 0; j < 4; ++j) {
       const auto v = static_cast<std::size_t>(arrays[3][4 * i + j]);
-      EXPECT_EQ((Point3{arrays[2][3 * v], arrays[2][3 * v + 1], arrays[2][3 * v + 2]}), tets[i][j]);
+      EXPECT_EQ((Point{arrays[2][3 * v], arrays[2][3 * v + 1], arrays[2][3 * v + 2]}), tets[i][j]);
     }
   }
   EXPECT_EQ(std::count(arrays[0].begin(), arrays[0].end(), 2), 25);
@@ -571,7 +571,7 @@ TEST(D3MeshWriters, MshReadsBack) {
     EXPECT_EQ(e[0], static_cast<std::int64_t>(i + 1));
     for (std::size_t j = 0; j < 4; ++j) {
       const auto v = static_cast<std::size_t>(e[j + 1] - 1);
-      EXPECT_EQ((Point3{xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]}), tets[i][j]);
+      EXPECT_EQ((Point{xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]}), tets[i][j]);
     }
   }
   in >> word;
@@ -598,8 +598,8 @@ TEST(D3MeshWriters, EmptyAndHandBuiltMeshes) {
             "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 0 0 0\n3 1 0 0\n$EndNodes\n"
             "$Elements\n1 0 0 0\n3 1 4 0\n$EndElements\n");
   // One cube (lattice 1 1 1 0): a tetrahedron listed from a corner first.
-  const Graph3 g(LatticeSize3{1, 1, 1, 0});
-  const Tet t{Point3{0, 0, 0}, Point3{2, 0, 0}, Point3{0, 2, 0}, Point3{0, 0, 2}};
+  const Graph g(LatticeSize{1, 1, 1, 0});
+  const Tet t{Point{0, 0, 0}, Point{2, 0, 0}, Point{0, 2, 0}, Point{0, 0, 2}};
   const TetMesh m = index_mesh(g, {t});
   ASSERT_EQ(m.level.size(), 1u);
   EXPECT_EQ(m.level[0], -1);
@@ -634,10 +634,10 @@ TEST(D3MeshWriters, MeditReadsBack) {
     // The reference is the level of the tetrahedron's leaf v0 (M22): in the
     // split state the coarse cube (12, 4, 4) has level 0, its neighbour's
     // children level 1.
-    EXPECT_EQ(e[4], (tets[i][0] == Point3{12, 4, 4}) ? 0 : 1);
+    EXPECT_EQ(e[4], (tets[i][0] == Point{12, 4, 4}) ? 0 : 1);
     for (std::size_t j = 0; j < 4; ++j) {
       const auto k = static_cast<std::size_t>(e[j] - 1);
-      EXPECT_EQ((Point3{v[4 * k], v[4 * k + 1], v[4 * k + 2]}), tets[i][j]);
+      EXPECT_EQ((Point{v[4 * k], v[4 * k + 1], v[4 * k + 2]}), tets[i][j]);
       EXPECT_EQ(v[4 * k + 3], static_cast<std::int64_t>(mesh.kind[k]));
     }
   }

@@ -17,7 +17,7 @@ namespace {
 
 using namespace bccmis::d3;
 
-bool write_all(const std::string& stem, const Graph3& g) {
+bool write_all(const std::string& stem, const Graph& g) {
   const TetMesh mesh = index_mesh(g, tetrahedra(g));
   std::ofstream vtu(stem + ".vtu"), msh(stem + ".msh"), medit(stem + ".mesh");
   bccmis::io::write_vtu(vtu, mesh);
@@ -34,10 +34,10 @@ int main(int argc, char** argv) {
     return 2;
   }
   const std::string dir = argv[1];
-  Graph3 split(LatticeSize3{2, 1, 1, 2});
-  Graph3 graded(LatticeSize3{2, 2, 1, 2});
+  Graph split(LatticeSize{2, 1, 1, 2});
+  Graph graded(LatticeSize{2, 2, 1, 2});
   bool ok = refine(split, {4, 4, 4}).applied();
-  for (const Point3 c : {Point3{4, 4, 4}, Point3{12, 4, 4}, Point3{2, 2, 2}, Point3{10, 2, 2}})
+  for (const Point c : {Point{4, 4, 4}, Point{12, 4, 4}, Point{2, 2, 2}, Point{10, 2, 2}})
     ok = ok && refine(graded, c).applied();
   if (!ok) {
     std::cerr << "d3_mesh_write: a refinement was refused\n";

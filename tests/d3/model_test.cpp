@@ -26,38 +26,37 @@
 #include <vector>
 
 #include "bccmis/d3/mesh.h"
-#include "bccmis/invariants/d3/invariants3.h"
-#include "check3.h"
-#include "util3.h"
+#include "bccmis/invariants/d3/invariants.h"
+#include "check.h"
+#include "util.h"
 
 namespace bccmis::d3 {
 namespace {
 
-std::string lattice_text(const LatticeSize3& s) {
+std::string lattice_text(const LatticeSize& s) {
   return std::to_string(s.W) + " " + std::to_string(s.H) + " " + std::to_string(s.D) + " " + std::to_string(s.L);
 }
 
-std::string point_text(const Point3& p) {
+std::string point_text(const Point& p) {
   return std::to_string(p.x) + ' ' + std::to_string(p.y) + ' ' + std::to_string(p.z);
 }
 
 template <class Range>
-Point3 pick(const Range& r) {
+Point pick(const Range& r) {
   auto it = r.begin();
   std::advance(it, static_cast<long>(*rc::gen::inRange<std::size_t>(0, r.size())));
   return *it;
 }
 
 /// A point of the lattice's integer box, vertex or not.
-Point3 any_point(const LatticeSize3& size) {
+Point any_point(const LatticeSize& size) {
   const std::int64_t S = model::side(size, 0);
-  return Point3{*rc::gen::inRange<std::int64_t>(-1, size.W * S + 2),
-                *rc::gen::inRange<std::int64_t>(-1, size.H * S + 2),
-                *rc::gen::inRange<std::int64_t>(-1, size.D * S + 2)};
+  return Point{*rc::gen::inRange<std::int64_t>(-1, size.W * S + 2), *rc::gen::inRange<std::int64_t>(-1, size.H * S + 2),
+               *rc::gen::inRange<std::int64_t>(-1, size.D * S + 2)};
 }
 
 /// The first problem of g by the whole checker: layers 1-4, then the mesh.
-std::string checker_problem(const Graph3& g) {
+std::string checker_problem(const Graph& g) {
   if (const auto v = find_violation(g, 4)) return to_string(*v);
   std::vector<Tet> tets;
   try {
@@ -72,20 +71,20 @@ std::string checker_problem(const Graph3& g) {
 // ---- rc::state: the graph against the leaf model ---------------------------------
 
 struct Model {
-  LatticeSize3 size;
+  LatticeSize size;
   model::Leaves leaves;
 };
 
 struct Sut {
-  explicit Sut(const LatticeSize3& size) : g(size) { trace = "lattice " + lattice_text(size) + "\n"; }
-  Graph3 g;
+  explicit Sut(const LatticeSize& size) : g(size) { trace = "lattice " + lattice_text(size) + "\n"; }
+  Graph g;
   std::string trace;  // the commands so far, as a 3D trace
 };
 
 using Cmd = rc::state::Command<Model, Sut>;
 
 /// Runs the operation on the graph and compares the decision and the state.
-void run_and_compare(bool is_refine, const Point3& at, const Model& before, Sut& sut) {
+void run_and_compare(bool is_refine, const Point& at, const Model& before, Sut& sut) {
   const std::string what = std::string(is_refine ? "refine " : "coarsen ") + point_text(at);
   sut.trace += what + "\n";
   auto fail = [&](const std::string& msg) { RC_FAIL(msg + "\nreproducer trace:\n" + sut.trace); };
@@ -119,18 +118,18 @@ void run_and_compare(bool is_refine, const Point3& at, const Model& before, Sut&
 }
 
 struct Refine : Cmd {
-  Point3 at;
+  Point at;
   explicit Refine(const Model& m) {
     // Mostly leaves, sometimes nodes (no-such-cell) or any point.
-    std::vector<Point3> centers;
+    std::vector<Point> centers;
     for (const auto& [c, l] : m.leaves) centers.push_back(c);
     const int kind = *rc::gen::weightedElement<int>({{6, 0}, {1, 1}, {1, 2}});
     if (kind == 0) {
       at = pick(centers);
     } else if (kind == 1) {
-      const Point3 c = pick(centers);
+      const Point c = pick(centers);
       const model::Box b = model::cube(m.size, c, m.leaves.at(c));
-      at = Point3{b.lo[0], b.hi[1], b.lo[2]};  // a corner of a leaf: a node
+      at = Point{b.lo[0], b.hi[1], b.lo[2]};  // a corner of a leaf: a node
     } else {
       at = any_point(m.size);
     }
@@ -143,24 +142,24 @@ struct Refine : Cmd {
 };
 
 struct Coarsen : Cmd {
-  Point3 at;
+  Point at;
   explicit Coarsen(const Model& m) {
     // Mostly the centers of refined cubes (the parents of present leaves),
     // sometimes a leaf's corner or any point.
-    std::vector<Point3> parents, centers;
+    std::vector<Point> parents, centers;
     for (const auto& [c, l] : m.leaves) {
       centers.push_back(c);
       if (l == 0) continue;
       const std::int64_t s = model::side(m.size, l - 1);
-      parents.push_back(Point3{c.x / s * s + s / 2, c.y / s * s + s / 2, c.z / s * s + s / 2});
+      parents.push_back(Point{c.x / s * s + s / 2, c.y / s * s + s / 2, c.z / s * s + s / 2});
     }
     const int kind = *rc::gen::weightedElement<int>({{parents.empty() ? 0 : 6, 0}, {1, 1}, {1, 2}});
     if (kind == 0) {
       at = pick(parents);
     } else if (kind == 1) {
-      const Point3 c = pick(centers);
+      const Point c = pick(centers);
       const model::Box b = model::cube(m.size, c, m.leaves.at(c));
-      at = Point3{b.hi[0], b.lo[1], b.hi[2]};
+      at = Point{b.hi[0], b.lo[1], b.hi[2]};
     } else {
       at = any_point(m.size);
     }
@@ -174,13 +173,13 @@ struct Coarsen : Cmd {
 
 RC_GTEST_PROP(D3ModelBased, GraphAgreesWithTheLeafModelOnEveryCommand, ()) {
   //= bccmis3d#claim-inverse type=test
-  LatticeSize3 size;
+  LatticeSize size;
   size.W = *rc::gen::element<std::int64_t>(1, 2);
   size.H = *rc::gen::element<std::int64_t>(1, 2);
   size.D = *rc::gen::element<std::int64_t>(1, 2);
   size.L = *rc::gen::element(1, 2, 3);
   RC_TAG("lattice " + lattice_text(size));
-  Model initial{size, test::leaves_of(Graph3(size))};
+  Model initial{size, test::leaves_of(Graph(size))};
   Sut sut(size);
   rc::state::check(initial, sut, rc::state::gen::execOneOfWithArgs<Refine, Refine, Coarsen>());
 }
@@ -188,8 +187,8 @@ RC_GTEST_PROP(D3ModelBased, GraphAgreesWithTheLeafModelOnEveryCommand, ()) {
 // The model's decisions are not the graph's by construction: a balanced state
 // where the model refuses (coarser-neighbor), and where it accepts.
 TEST(D3LeafModel, DecidesFromTheLeaves) {
-  const LatticeSize3 size{2, 1, 1, 2};
-  model::Leaves leaves = test::leaves_of(Graph3(size));
+  const LatticeSize size{2, 1, 1, 2};
+  model::Leaves leaves = test::leaves_of(Graph(size));
   ASSERT_EQ(model::refine_decision(size, leaves, {4, 4, 4}), "ok");
   model::apply_refine(size, leaves, {4, 4, 4});
   EXPECT_EQ(model::refine_decision(size, leaves, {6, 2, 2}), "coarser-neighbor");  // touches the level-0 cube
@@ -209,10 +208,10 @@ TEST(D3LeafModel, RefusesACoarsenNextToALevelTwoFinerLeaf) {
   // 1 1 1 3: the level-2 cube (6, 6, 6) at the middle is refined once its
   // face-or-edge neighbours are at level 2; then coarsening (12, 4, 4) would
   // put a level-1 cube against its level-3 leaves.
-  const LatticeSize3 size{1, 1, 1, 3};
-  model::Leaves leaves = test::leaves_of(Graph3(size));
-  Graph3 g(size);
-  auto refine_both = [&](const Point3& c) {
+  const LatticeSize size{1, 1, 1, 3};
+  model::Leaves leaves = test::leaves_of(Graph(size));
+  Graph g(size);
+  auto refine_both = [&](const Point& c) {
     const std::string expected = model::refine_decision(size, leaves, c);
     const RefineResult r = refine(g, c);
     EXPECT_EQ(r.refused ? std::string(code(*r.refused)) : "ok", expected) << to_string(c);
@@ -222,8 +221,8 @@ TEST(D3LeafModel, RefusesACoarsenNextToALevelTwoFinerLeaf) {
   EXPECT_EQ(refine_both({8, 8, 8}), "ok");
   EXPECT_EQ(refine_both({4, 4, 4}), "ok");
   EXPECT_EQ(refine_both({6, 6, 6}), "coarser-neighbor");
-  for (const Point3 c :
-       {Point3{12, 4, 4}, Point3{4, 12, 4}, Point3{4, 4, 12}, Point3{12, 12, 4}, Point3{12, 4, 12}, Point3{4, 12, 12}})
+  for (const Point c :
+       {Point{12, 4, 4}, Point{4, 12, 4}, Point{4, 4, 12}, Point{12, 12, 4}, Point{12, 4, 12}, Point{4, 12, 12}})
     EXPECT_EQ(refine_both(c), "ok");
   EXPECT_EQ(refine_both({6, 6, 6}), "ok");
   EXPECT_EQ(model::coarsen_decision(size, leaves, {12, 4, 4}), "finer-neighbor");
@@ -240,14 +239,14 @@ TEST(D3LeafModel, RefusesACoarsenNextToALevelTwoFinerLeaf) {
 // ---- Identities and refusals -----------------------------------------------------
 
 /// A random reachable state: n operations at random vertices.
-Graph3 random_state(const LatticeSize3& size, int n) {
-  Graph3 g(size);
+Graph random_state(const LatticeSize& size, int n) {
+  Graph g(size);
   for (int i = 0; i < n; ++i) {
     if (*rc::gen::weightedElement<int>({{3, 0}, {2, 1}}) == 0) {
       refine(g, pick(g.C));
     } else {
-      std::vector<Point3> centers;
-      for (const Point3& v : g.N)
+      std::vector<Point> centers;
+      for (const Point& v : g.N)
         if (refined_center_level(g.size, v)) centers.push_back(v);
       if (!centers.empty()) coarsen(g, pick(centers));
     }
@@ -255,22 +254,20 @@ Graph3 random_state(const LatticeSize3& size, int n) {
   return g;
 }
 
-const LatticeSize3 kSizes[] = {{1, 1, 1, 2}, {2, 1, 1, 2}, {1, 2, 2, 2}, {1, 1, 1, 3}, {2, 2, 2, 1}};
+const LatticeSize kSizes[] = {{1, 1, 1, 2}, {2, 1, 1, 2}, {1, 2, 2, 2}, {1, 1, 1, 3}, {2, 2, 2, 1}};
 
-LatticeSize3 some_size() {
-  return *rc::gen::elementOf(std::vector<LatticeSize3>(std::begin(kSizes), std::end(kSizes)));
-}
+LatticeSize some_size() { return *rc::gen::elementOf(std::vector<LatticeSize>(std::begin(kSizes), std::end(kSizes))); }
 
 RC_GTEST_PROP(D3Properties, CoarsenThenRefineIsTheIdentity, ()) {
   //= bccmis3d#claim-inverse type=test
-  const Graph3 g = random_state(some_size(), *rc::gen::inRange(0, 30));
-  std::vector<Point3> coarsenable;
-  for (const Point3& n : g.N)
+  const Graph g = random_state(some_size(), *rc::gen::inRange(0, 30));
+  std::vector<Point> coarsenable;
+  for (const Point& n : g.N)
     if (!can_coarsen(g, n)) coarsenable.push_back(n);
   RC_PRE(!coarsenable.empty());
-  const Point3 n = pick(coarsenable);
+  const Point n = pick(coarsenable);
   RC_LOG() << "lattice " << lattice_text(g.size) << ", coarsen then refine " << point_text(n) << "\n";
-  Graph3 h = g;
+  Graph h = g;
   RC_ASSERT(coarsen(h, n).applied());
   RC_ASSERT(refine(h, n).applied());
   RC_ASSERT(canonical_state(h) == canonical_state(g));
@@ -278,22 +275,22 @@ RC_GTEST_PROP(D3Properties, CoarsenThenRefineIsTheIdentity, ()) {
 }
 
 RC_GTEST_PROP(D3Properties, RefusedCallsChangeNothing, ()) {
-  const Graph3 g = random_state(some_size(), *rc::gen::inRange(0, 30));
+  const Graph g = random_state(some_size(), *rc::gen::inRange(0, 30));
   const std::string before = canonical_state(g);
   // Any point of the box, a vertex or not, and every vertex of the state.
-  std::vector<Point3> targets{any_point(g.size), any_point(g.size)};
+  std::vector<Point> targets{any_point(g.size), any_point(g.size)};
   targets.insert(targets.end(), g.C.begin(), g.C.end());
   targets.insert(targets.end(), g.N.begin(), g.N.end());
   int refused = 0;
-  for (const Point3& p : targets) {
-    Graph3 h = g;
+  for (const Point& p : targets) {
+    Graph h = g;
     const RefineResult r = refine(h, p);
     if (r.refused) {
       ++refused;
       RC_ASSERT(canonical_state(h) == before);
       RC_ASSERT(can_refine(g, p) == r.refused);
     }
-    Graph3 k = g;
+    Graph k = g;
     const CoarsenResult c = coarsen(k, p);
     if (c.refused) {
       ++refused;
@@ -307,22 +304,22 @@ RC_GTEST_PROP(D3Properties, RefusedCallsChangeNothing, ()) {
 // ---- The checker after every step ----------------------------------------------
 
 RC_GTEST_PROP(D3Properties, CheckerAndMeshHoldAfterEveryStep, ()) {
-  LatticeSize3 size;
+  LatticeSize size;
   size.W = *rc::gen::element<std::int64_t>(1, 2, 3);
   size.H = *rc::gen::element<std::int64_t>(1, 2, 3);
   size.D = *rc::gen::element<std::int64_t>(1, 2, 3);
   size.L = *rc::gen::element(0, 1, 2, 3, 4);
   RC_TAG("lattice " + lattice_text(size));
-  Graph3 g(size);
+  Graph g(size);
   std::string trace = "lattice " + lattice_text(size) + "\n";
   RC_ASSERT(checker_problem(g) == std::string());
   const int steps = *rc::gen::inRange(1, 12);
   for (int i = 0; i < steps; ++i) {
-    std::vector<Point3> parents;
-    for (const Point3& v : g.N)
+    std::vector<Point> parents;
+    for (const Point& v : g.N)
       if (refined_center_level(g.size, v)) parents.push_back(v);
     const bool refining = parents.empty() || *rc::gen::weightedElement<int>({{3, 0}, {1, 1}}) == 0;
-    const Point3 at = refining ? pick(g.C) : pick(parents);
+    const Point at = refining ? pick(g.C) : pick(parents);
     trace += std::string(refining ? "refine " : "coarsen ") + point_text(at) + "\n";
     if (refining)
       refine(g, at);
@@ -337,19 +334,19 @@ RC_GTEST_PROP(D3Properties, CheckerAndMeshHoldAfterEveryStep, ()) {
 // ---- Everything refined, then everything coarsened --------------------------------
 
 RC_GTEST_PROP(D3Properties, RefiningEverythingThenCoarseningEverythingGivesBackTheLattice, ()) {
-  LatticeSize3 size;
+  LatticeSize size;
   size.W = *rc::gen::element<std::int64_t>(1, 2);
   size.H = *rc::gen::element<std::int64_t>(1, 2);
   size.D = *rc::gen::element<std::int64_t>(1, 2);
   size.L = size.W * size.H * size.D == 1 ? *rc::gen::element(1, 2, 3) : *rc::gen::element(1, 2);
   RC_TAG("lattice " + lattice_text(size));
-  const Graph3 initial(size);
-  Graph3 g = initial;
+  const Graph initial(size);
+  Graph g = initial;
   // Level by level, the cells of each level in a random order: all accepted.
   for (int l = 0; l < size.L; ++l) {
-    std::vector<Point3> cells(g.C.begin(), g.C.end());
+    std::vector<Point> cells(g.C.begin(), g.C.end());
     std::shuffle(cells.begin(), cells.end(), std::mt19937(*rc::gen::arbitrary<std::uint32_t>()));
-    for (const Point3& c : cells) {
+    for (const Point& c : cells) {
       RC_ASSERT(g.level_of(c) == l);
       const RefineResult r = refine(g, c);
       if (!r.applied()) RC_FAIL("refine " + point_text(c) + " refused: " + std::string(code(*r.refused)));
@@ -360,12 +357,12 @@ RC_GTEST_PROP(D3Properties, RefiningEverythingThenCoarseningEverythingGivesBackT
   RC_ASSERT(test::state_problem(g) == std::string());
   // Then from the finest parents up, in a random order within a level.
   for (int l = size.L - 1; l >= 0; --l) {
-    std::vector<Point3> parents;
-    for (const Point3& v : g.N)
+    std::vector<Point> parents;
+    for (const Point& v : g.N)
       if (refined_center_level(g.size, v) == l) parents.push_back(v);
     RC_ASSERT(parents.size() == (roots << (3 * l)));
     std::shuffle(parents.begin(), parents.end(), std::mt19937(*rc::gen::arbitrary<std::uint32_t>()));
-    for (const Point3& n : parents) {
+    for (const Point& n : parents) {
       const CoarsenResult r = coarsen(g, n);
       if (!r.applied()) RC_FAIL("coarsen " + point_text(n) + " refused: " + std::string(code(*r.refused)));
     }

@@ -1,6 +1,6 @@
 // RapidCheck properties of the 3D lattice: any sequence of refine and coarsen
 // (refusals included) keeps the graph equal to the geometric graph of its
-// leaves, balanced, with the cardinality facts (tests/d3/check3.h); a refusal
+// leaves, balanced, with the cardinality facts (tests/d3/check.h); a refusal
 // changes nothing; refine then coarsen is the identity. The seed and budget
 // are fixed in tests/d3/d3.cmake; a failure prints the shrunk operation list
 // as a 3D trace and the reproduce string.
@@ -14,13 +14,13 @@
 #include <utility>
 #include <vector>
 
-#include "check3.h"
-#include "util3.h"
+#include "check.h"
+#include "util.h"
 
 namespace bccmis::d3 {
 namespace {
 
-const LatticeSize3 kSizes[] = {{1, 1, 1, 2}, {2, 1, 1, 2}, {2, 2, 1, 2}, {1, 1, 1, 3}, {2, 2, 2, 1}};
+const LatticeSize kSizes[] = {{1, 1, 1, 2}, {2, 1, 1, 2}, {2, 2, 1, 2}, {1, 1, 1, 3}, {2, 2, 2, 1}};
 
 // One operation: refine the k-th cell or coarsen the k-th node (k modulo the
 // current count), so every generated sequence is meaningful in every state.
@@ -30,13 +30,13 @@ struct Op {
 };
 
 template <class Set>
-Point3 nth(const Set& s, std::size_t k) {
+Point nth(const Set& s, std::size_t k) {
   auto it = s.begin();
   std::advance(it, static_cast<long>(k % s.size()));
   return *it;
 }
 
-std::string point_text(const Point3& p) {
+std::string point_text(const Point& p) {
   return std::to_string(p.x) + ' ' + std::to_string(p.y) + ' ' + std::to_string(p.z);
 }
 
@@ -49,24 +49,24 @@ RC_GTEST_PROP(D3Properties, EveryStateIsTheGeometricGraphOfItsLeaves, ()) {
   //= bccmis3d#fact-F1 type=test
   //= bccmis3d#fact-F2 type=test
   //= bccmis3d#fact-F3 type=test
-  const LatticeSize3 size = *rc::gen::elementOf(std::vector<LatticeSize3>(std::begin(kSizes), std::end(kSizes)));
+  const LatticeSize size = *rc::gen::elementOf(std::vector<LatticeSize>(std::begin(kSizes), std::end(kSizes)));
   const std::vector<Op> sequence = *rc::gen::resize(40, ops());
-  Graph3 g(size);
+  Graph g(size);
   RC_LOG() << "lattice " << size.W << ' ' << size.H << ' ' << size.D << ' ' << size.L << '\n';
   for (const Op& op : sequence) {
     const std::string before = canonical_state(g);
     bool applied = false;
     if (op.refine) {
-      const Point3 c = nth(g.C, op.k);
+      const Point c = nth(g.C, op.k);
       RC_LOG() << "refine " << point_text(c) << '\n';
       applied = refine(g, c).applied();
     } else {
       // Coarsen targets are drawn from the refined-center positions when there
       // are any, so that coarsening happens.
-      std::vector<Point3> centers;
-      for (const Point3& v : g.N)
+      std::vector<Point> centers;
+      for (const Point& v : g.N)
         if (refined_center_level(g.size, v)) centers.push_back(v);
-      const Point3 n = centers.empty() ? nth(g.N, op.k) : nth(centers, op.k);
+      const Point n = centers.empty() ? nth(g.N, op.k) : nth(centers, op.k);
       RC_LOG() << "coarsen " << point_text(n) << '\n';
       applied = coarsen(g, n).applied();
     }
@@ -77,18 +77,18 @@ RC_GTEST_PROP(D3Properties, EveryStateIsTheGeometricGraphOfItsLeaves, ()) {
 
 RC_GTEST_PROP(D3Properties, RefineThenCoarsenIsTheIdentity, ()) {
   //= bccmis3d#claim-inverse type=test
-  const LatticeSize3 size = *rc::gen::elementOf(std::vector<LatticeSize3>(std::begin(kSizes), std::end(kSizes)));
+  const LatticeSize size = *rc::gen::elementOf(std::vector<LatticeSize>(std::begin(kSizes), std::end(kSizes)));
   const std::vector<Op> sequence = *rc::gen::resize(25, ops());
-  Graph3 g(size);
+  Graph g(size);
   for (const Op& op : sequence) {
-    const Point3 v = op.refine ? nth(g.C, op.k) : nth(g.N, op.k);
+    const Point v = op.refine ? nth(g.C, op.k) : nth(g.N, op.k);
     if (op.refine)
       refine(g, v);
     else
       coarsen(g, v);
   }
-  const Point3 c = nth(g.C, *rc::gen::inRange<std::size_t>(0, 4096));
-  Graph3 h = g;
+  const Point c = nth(g.C, *rc::gen::inRange<std::size_t>(0, 4096));
+  Graph h = g;
   RC_PRE(refine(h, c).applied());
   RC_ASSERT(coarsen(h, c).applied());
   RC_ASSERT(h == g);

@@ -2,13 +2,13 @@
 // reason is plain, with the state byte-identical after the refusal.
 #include <gtest/gtest.h>
 
-#include "util3.h"
+#include "util.h"
 
 namespace bccmis::d3 {
 namespace {
 
-void expect_refine_refused(const std::string& trace, const Point3& c, RefineRefusal why) {
-  Graph3 g = test::build(trace);
+void expect_refine_refused(const std::string& trace, const Point& c, RefineRefusal why) {
+  Graph g = test::build(trace);
   const std::string before = canonical_state(g);
   EXPECT_EQ(can_refine(g, c), why) << to_string(c);
   const RefineResult r = refine(g, c);
@@ -18,8 +18,8 @@ void expect_refine_refused(const std::string& trace, const Point3& c, RefineRefu
   EXPECT_EQ(canonical_state(g), before) << "refine " << to_string(c) << " changed the state";
 }
 
-void expect_coarsen_refused(const std::string& trace, const Point3& n, CoarsenRefusal why) {
-  Graph3 g = test::build(trace);
+void expect_coarsen_refused(const std::string& trace, const Point& n, CoarsenRefusal why) {
+  Graph g = test::build(trace);
   const std::string before = canonical_state(g);
   EXPECT_EQ(can_coarsen(g, n), why) << to_string(n);
   const CoarsenResult r = coarsen(g, n);
@@ -65,7 +65,7 @@ TEST(D3Refusals, CornerOnlyCoarserCellDoesNotBlock) {
   //= bccmis3d#pre-refine-level type=test
   // lattice 2 2 2 2: all cubes but (4,4,4) refined; the level-1 cube
   // (10,10,10) meets (4,4,4) only at the corner (8,8,8): accepted.
-  Graph3 g = test::build(
+  Graph g = test::build(
       "lattice 2 2 2 2\nrefine 12 4 4\nrefine 4 12 4\nrefine 4 4 12\nrefine 12 12 4\nrefine 12 4 12\n"
       "refine 4 12 12\nrefine 12 12 12\n");
   EXPECT_EQ(can_refine(g, {10, 10, 10}), std::nullopt);

@@ -1,4 +1,4 @@
-// The 3D picture of `bccmis render` (oracle.h render_svg3): the leaves a
+// The 3D picture of `bccmis render` (oracle.h render_svg): the leaves a
 // slice cuts, by hand on d3/face_refined.state and as a tiling of every
 // plane of a graded state; the slice's bounds; the drawn element counts.
 #include <gtest/gtest.h>
@@ -10,12 +10,12 @@
 
 #include "bccmis/d3/format.h"
 #include "bccmis/oracle/oracle.h"
-#include "util3.h"
+#include "util.h"
 
 namespace bccmis::d3 {
 namespace {
 
-Graph3 face_refined() { return parse_state3(test::example("d3/face_refined.state"), "face_refined.state"); }
+Graph face_refined() { return parse_state(test::example("d3/face_refined.state"), "face_refined.state"); }
 
 std::size_t count(const std::string& text, const std::string& what) {
   std::size_t n = 0;
@@ -26,8 +26,8 @@ std::size_t count(const std::string& text, const std::string& what) {
 // face_refined (S = 8, box 16 x 8 x 8): the children of (4,4,4) have side 4,
 // the coarse leaf (12,4,4) side 8.
 TEST(Render3, SlicedLeavesByHand) {
-  const Graph3 g = face_refined();
-  using V = std::vector<Point3>;
+  const Graph g = face_refined();
+  using V = std::vector<Point>;
   // z = 2 passes through the centers of the 4 lower children and cuts the coarse leaf.
   EXPECT_EQ(sliced_leaves(g, {2, 2}), (V{{2, 2, 2}, {2, 6, 2}, {6, 2, 2}, {6, 6, 2}, {12, 4, 4}}));
   // z = 4, the children's face plane: the 4 above it (half-open) and the coarse leaf.
@@ -43,7 +43,7 @@ TEST(Render3, SlicedLeavesByHand) {
 // In every plane x, y or z = v of the box, the cut leaves tile the plane: their
 // squares' areas sum to the plane's area (no leaf twice, none missing).
 TEST(Render3, SlicesTileEveryPlane) {
-  const Graph3 g = test::build(
+  const Graph g = test::build(
       "lattice 3 2 2 2\nrefine 4 4 12\nrefine 12 4 12\nrefine 4 12 12\nrefine 4 4 4\nrefine 2 2 14\n"
       "refine 6 2 14\nrefine 2 6 14\nrefine 10 2 14\nrefine 2 2 10\n");
   const std::int64_t S = level0_side(g.size);
@@ -51,7 +51,7 @@ TEST(Render3, SlicesTileEveryPlane) {
   for (int axis = 0; axis < 3; ++axis)
     for (std::int64_t v = 0; v <= ext[axis]; ++v) {
       std::int64_t area = 0;
-      for (const Point3& c : sliced_leaves(g, {axis, v})) {
+      for (const Point& c : sliced_leaves(g, {axis, v})) {
         const std::int64_t side = cell_side(g.size, g.level_of(c));
         area += side * side;
       }
@@ -60,19 +60,19 @@ TEST(Render3, SlicesTileEveryPlane) {
 }
 
 TEST(Render3, SliceOutsideTheBoxIsRefused) {
-  const Graph3 g = face_refined();
-  EXPECT_THROW(render_svg3(g, "t", {2, 9}), std::invalid_argument);
-  EXPECT_THROW(render_svg3(g, "t", {0, -1}), std::invalid_argument);
-  EXPECT_THROW(render_svg3(g, "t", {3, 0}), std::invalid_argument);
-  EXPECT_NO_THROW(render_svg3(g, "t", {0, 16}));
+  const Graph g = face_refined();
+  EXPECT_THROW(render_svg(g, "t", {2, 9}), std::invalid_argument);
+  EXPECT_THROW(render_svg(g, "t", {0, -1}), std::invalid_argument);
+  EXPECT_THROW(render_svg(g, "t", {3, 0}), std::invalid_argument);
+  EXPECT_NO_THROW(render_svg(g, "t", {0, 16}));
 }
 
 // The counts of tests/cli/cli.cmake (cli.d3_render_face_default), and the title escaped.
 TEST(Render3, FaceRefinedCounts) {
-  const Graph3 g = face_refined();
+  const Graph g = face_refined();
   EXPECT_EQ(middle_slice(g.size).axis, 2);
   EXPECT_EQ(middle_slice(g.size).value, 4);
-  const std::string svg = render_svg3(g, "a<b&c", middle_slice(g.size));
+  const std::string svg = render_svg(g, "a<b&c", middle_slice(g.size));
   EXPECT_EQ(count(svg, "class=\"tri\""), 46u);
   EXPECT_EQ(count(svg, "class=\"green\""), 29u);
   EXPECT_EQ(count(svg, "class=\"leaf\""), 5u);

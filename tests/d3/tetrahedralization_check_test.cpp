@@ -1,5 +1,5 @@
 // Layer 6 of the 3D checker: CGAL as a second referee of the graded BCC
-// tetrahedral mesh (src/bccmis/invariants/cgal/tetrahedralization_check3.cpp,
+// tetrahedral mesh (src/bccmis/invariants/cgal/d3/tetrahedralization_check.cpp,
 // spec/invariants.md "3D layer 6"): uniform and graded meshes pass, and the
 // planted errors CGAL can see are caught with their codes.
 #include <gtest/gtest.h>
@@ -15,24 +15,24 @@
 #include "bccmis/d3/graph.h"
 #include "bccmis/d3/mesh.h"
 #include "bccmis/d3/ops.h"
-#include "bccmis/invariants/cgal/tetrahedralization_check3.h"
-#include "bccmis/invariants/d3/invariants3.h"
-#include "util3.h"  // PrintTo(Point3)
+#include "bccmis/invariants/cgal/d3/tetrahedralization_check.h"
+#include "bccmis/invariants/d3/invariants.h"
+#include "util.h"  // PrintTo(Point)
 
 namespace bccmis::d3 {
 namespace {
 
-Graph3 refined(const LatticeSize3& size, const std::vector<Point3>& cells) {
-  Graph3 g(size);
-  for (const Point3& c : cells) EXPECT_TRUE(refine(g, c).applied()) << "refine " << to_string(c);
+Graph refined(const LatticeSize& size, const std::vector<Point>& cells) {
+  Graph g(size);
+  for (const Point& c : cells) EXPECT_TRUE(refine(g, c).applied()) << "refine " << to_string(c);
   return g;
 }
 
-std::optional<Violation3> layer6(const Graph3& g, const std::vector<Tet>& tets) {
+std::optional<Violation> layer6(const Graph& g, const std::vector<Tet>& tets) {
   return find_tetrahedralization_violation(g, tets);
 }
 
-void expect_code(const std::optional<Violation3>& v, const std::string& code) {
+void expect_code(const std::optional<Violation>& v, const std::string& code) {
   ASSERT_TRUE(v.has_value()) << "expected " << code;
   EXPECT_EQ(v->code, code) << to_string(*v);
   EXPECT_EQ(v->layer, 6);
@@ -41,19 +41,19 @@ void expect_code(const std::optional<Violation3>& v, const std::string& code) {
   EXPECT_EQ(to_string(*v), v->message + " [" + v->section + "]");
 }
 
-bool has_hull_vertex(const Graph3& g, const Tet& t) {
-  return std::any_of(t.begin(), t.end(), [&](const Point3& p) { return !g.N.count(p) && !g.C.count(p); });
+bool has_hull_vertex(const Graph& g, const Tet& t) {
+  return std::any_of(t.begin(), t.end(), [&](const Point& p) { return !g.N.count(p) && !g.C.count(p); });
 }
 
 // The uniform lattices of the issue, and the largest extent (2^62).
 TEST(D3Layer6, UniformLatticesPass) {
   const std::int64_t h = std::int64_t{1} << 61;
-  const Graph3 graphs[] = {Graph3({1, 1, 1, 0}), Graph3({2, 2, 2, 0}),  refined({1, 1, 1, 1}, {{2, 2, 2}}),
-                           Graph3({3, 2, 1, 1}), Graph3({1, 1, 1, 61}), refined({1, 1, 1, 61}, {{h, h, h}})};
-  for (const Graph3& g : graphs) {
+  const Graph graphs[] = {Graph({1, 1, 1, 0}), Graph({2, 2, 2, 0}),  refined({1, 1, 1, 1}, {{2, 2, 2}}),
+                          Graph({3, 2, 1, 1}), Graph({1, 1, 1, 61}), refined({1, 1, 1, 61}, {{h, h, h}})};
+  for (const Graph& g : graphs) {
     const std::vector<Tet> tets = tetrahedra(g);
     ASSERT_EQ(check_mesh(g, tets), std::nullopt);
-    const std::optional<Violation3> v = layer6(g, tets);
+    const std::optional<Violation> v = layer6(g, tets);
     EXPECT_EQ(v, std::nullopt) << g.size.W << ' ' << g.size.H << ' ' << g.size.D << ' ' << g.size.L << ": "
                                << to_string(*v);
   }
@@ -64,23 +64,23 @@ TEST(D3Layer6, UniformLatticesPass) {
 TEST(D3Layer6, GradedRandomStatesPass) {
   constexpr std::uint64_t seed = 20090303;
   std::mt19937_64 rng(seed);
-  const LatticeSize3 sizes[] = {{1, 1, 1, 2}, {2, 1, 1, 2}, {2, 2, 1, 1}, {1, 2, 2, 2}};
+  const LatticeSize sizes[] = {{1, 1, 1, 2}, {2, 1, 1, 2}, {2, 2, 1, 1}, {1, 2, 2, 2}};
   int graded = 0;
-  for (const LatticeSize3& size : sizes) {
-    Graph3 g(size);
+  for (const LatticeSize& size : sizes) {
+    Graph g(size);
     std::string trace;
     for (int step = 0; step < 12; ++step) {
-      auto pick = [&](const PointSet3& s) {
+      auto pick = [&](const PointSet& s) {
         auto it = s.begin();
         std::advance(it, static_cast<long>(std::uniform_int_distribution<std::size_t>(0, s.size() - 1)(rng)));
         return *it;
       };
       if (std::uniform_int_distribution<int>(0, 2)(rng) < 2) {
-        const Point3 c = pick(g.C);
+        const Point c = pick(g.C);
         trace += "refine " + to_string(c) + "\n";
         refine(g, c);
       } else {
-        const Point3 n = pick(g.N);
+        const Point n = pick(g.N);
         trace += "coarsen " + to_string(n) + "\n";
         coarsen(g, n);
       }
@@ -89,7 +89,7 @@ TEST(D3Layer6, GradedRandomStatesPass) {
                                 std::to_string(size.H) + ' ' + std::to_string(size.D) + ' ' + std::to_string(size.L) +
                                 ":\n" + trace;
       ASSERT_EQ(check_mesh(g, tets), std::nullopt) << where;
-      const std::optional<Violation3> v = layer6(g, tets);
+      const std::optional<Violation> v = layer6(g, tets);
       ASSERT_EQ(v, std::nullopt) << where << to_string(*v);
       int lo = size.L, hi = 0;
       for (const auto& [c, l] : g.level) lo = std::min(lo, l), hi = std::max(hi, l);
@@ -100,12 +100,12 @@ TEST(D3Layer6, GradedRandomStatesPass) {
 }
 
 TEST(D3Layer6, InvertedTetIsCgalOrientation) {
-  const Graph3 g = refined({1, 1, 1, 1}, {{2, 2, 2}});
+  const Graph g = refined({1, 1, 1, 1}, {{2, 2, 2}});
   std::vector<Tet> tets = tetrahedra(g);
   std::swap(tets[17][2], tets[17][3]);
-  const std::optional<Violation3> v = layer6(g, tets);
+  const std::optional<Violation> v = layer6(g, tets);
   expect_code(v, "cgal-orientation");
-  EXPECT_EQ(v->where, std::vector<Point3>(tets[17].begin(), tets[17].end()));
+  EXPECT_EQ(v->where, std::vector<Point>(tets[17].begin(), tets[17].end()));
   EXPECT_NE(v->message.find("tet #17"), std::string::npos) << v->message;
   // A flat tet too.
   tets = tetrahedra(g);
@@ -119,23 +119,23 @@ TEST(D3Layer6, InvertedTetIsCgalOrientation) {
 // valid mesh of the box, but its tets are not Delaunay: the circumsphere of
 // (1,1,1) and three corners of the face holds (3,1,1) inside.
 TEST(D3Layer6, NonDelaunayTetsOnAUniformLattice) {
-  const Graph3 g({2, 1, 1, 0});
+  const Graph g({2, 1, 1, 0});
   std::vector<Tet> tets = tetrahedra(g);
-  const Point3 u{1, 1, 1}, w{3, 1, 1};
+  const Point u{1, 1, 1}, w{3, 1, 1};
   const auto around_face = [&](const Tet& t) {
     return std::count(t.begin(), t.end(), u) == 1 && std::count(t.begin(), t.end(), w) == 1;
   };
   ASSERT_EQ(std::count_if(tets.begin(), tets.end(), around_face), 4);
   tets.erase(std::remove_if(tets.begin(), tets.end(), around_face), tets.end());
-  const Point3 a{2, 0, 0}, b{2, 2, 0}, c{2, 2, 2}, d{2, 0, 2};
-  for (const Point3& apex : {u, w})
-    for (const Point3& side : {b, d}) {
+  const Point a{2, 0, 0}, b{2, 2, 0}, c{2, 2, 2}, d{2, 0, 2};
+  for (const Point& apex : {u, w})
+    for (const Point& side : {b, d}) {
       Tet t{apex, a, c, side};
       if (orientation(t[0], t[1], t[2], t[3]) < 0) std::swap(t[2], t[3]);
       tets.push_back(t);
     }
   std::sort(tets.begin(), tets.end());
-  const std::optional<Violation3> v = layer6(g, tets);
+  const std::optional<Violation> v = layer6(g, tets);
   expect_code(v, "cgal-delaunay");
   ASSERT_EQ(v->where.size(), 4u);
   EXPECT_TRUE(std::count(v->where.begin(), v->where.end(), a) && std::count(v->where.begin(), v->where.end(), c))
@@ -145,10 +145,10 @@ TEST(D3Layer6, NonDelaunayTetsOnAUniformLattice) {
 // A tet listed twice: three tets share each of its triangles, and CGAL's
 // loader refuses the soup.
 TEST(D3Layer6, DuplicatedTetIsCgalInvalid) {
-  const Graph3 g = refined({1, 1, 1, 1}, {{2, 2, 2}});
+  const Graph g = refined({1, 1, 1, 1}, {{2, 2, 2}});
   std::vector<Tet> tets = tetrahedra(g);
   tets.push_back(tets[40]);
-  const std::optional<Violation3> v = layer6(g, tets);
+  const std::optional<Violation> v = layer6(g, tets);
   expect_code(v, "cgal-invalid");
   EXPECT_TRUE(v->where.empty());
   EXPECT_NE(v->message.find("the loader refused them"), std::string::npos) << v->message;
@@ -158,12 +158,12 @@ TEST(D3Layer6, DuplicatedTetIsCgalInvalid) {
 // has an edge on the domain boundary, so an infinite cell closing the cavity
 // shares a triangle with those closing the box and the loader refuses the soup.
 TEST(D3Layer6, RemovedInteriorTetIsCgalInvalid) {
-  const Graph3 g = refined({1, 1, 1, 1}, {{2, 2, 2}});
+  const Graph g = refined({1, 1, 1, 1}, {{2, 2, 2}});
   std::vector<Tet> tets = tetrahedra(g);
   const auto interior = std::find_if(tets.begin(), tets.end(), [&](const Tet& t) { return !has_hull_vertex(g, t); });
   ASSERT_NE(interior, tets.end());
   tets.erase(interior);
-  const std::optional<Violation3> v = layer6(g, tets);
+  const std::optional<Violation> v = layer6(g, tets);
   expect_code(v, "cgal-invalid");
   EXPECT_NE(v->message.find("the loader refused them"), std::string::npos) << v->message;
 }
@@ -173,7 +173,7 @@ TEST(D3Layer6, RemovedInteriorTetIsCgalInvalid) {
 // loader closes with infinite cells and CGAL reports valid. Layer 5 catches it
 // (mesh-volume).
 TEST(D3Layer6, RemovedBoundaryTetIsLeftToLayer5) {
-  const Graph3 g({2, 1, 1, 0});
+  const Graph g({2, 1, 1, 0});
   std::vector<Tet> tets = tetrahedra(g);
   const auto boundary = std::find_if(tets.begin(), tets.end(), [&](const Tet& t) { return has_hull_vertex(g, t); });
   ASSERT_NE(boundary, tets.end());
@@ -188,14 +188,14 @@ TEST(D3Layer6, RemovedBoundaryTetIsLeftToLayer5) {
 // the loader accepts the soup and Triangulation_data_structure_3::is_valid
 // rejects it.
 TEST(D3Layer6, RemovedDeepTetIsCgalInvalid) {
-  const Graph3 g({3, 3, 3, 0});
+  const Graph g({3, 3, 3, 0});
   std::vector<Tet> tets = tetrahedra(g);
-  const auto inside = [](const Point3& p) { return p.x > 0 && p.x < 6 && p.y > 0 && p.y < 6 && p.z > 0 && p.z < 6; };
+  const auto inside = [](const Point& p) { return p.x > 0 && p.x < 6 && p.y > 0 && p.y < 6 && p.z > 0 && p.z < 6; };
   const auto deep =
       std::find_if(tets.begin(), tets.end(), [&](const Tet& t) { return std::all_of(t.begin(), t.end(), inside); });
   ASSERT_NE(deep, tets.end());
   tets.erase(deep);
-  const std::optional<Violation3> v = layer6(g, tets);
+  const std::optional<Violation> v = layer6(g, tets);
   expect_code(v, "cgal-invalid");
   EXPECT_NE(v->message.find("Triangulation_data_structure_3::is_valid fails"), std::string::npos) << v->message;
 }
@@ -205,22 +205,22 @@ TEST(D3Layer6, RemovedDeepTetIsCgalInvalid) {
 // (1,1,1), (1,1,3) and the segment (2,0,2)-(2,2,2) of their equal face in
 // lattice 3 3 3 0.
 TEST(D3Layer6, RemovedTetTouchingTheBoundaryAtAVertex) {
-  const Graph3 g({3, 3, 3, 0});
+  const Graph g({3, 3, 3, 0});
   std::vector<Tet> tets = tetrahedra(g);
-  const std::vector<Point3> want{{1, 1, 1}, {1, 1, 3}, {2, 0, 2}, {2, 2, 2}};
+  const std::vector<Point> want{{1, 1, 1}, {1, 1, 3}, {2, 0, 2}, {2, 2, 2}};
   const auto it = std::find_if(tets.begin(), tets.end(), [&](const Tet& t) {
-    std::vector<Point3> sorted(t.begin(), t.end());
+    std::vector<Point> sorted(t.begin(), t.end());
     std::sort(sorted.begin(), sorted.end());
     return sorted == want;
   });
   ASSERT_NE(it, tets.end());
   tets.erase(it);
-  const std::optional<Violation3> v = layer6(g, tets);
+  const std::optional<Violation> v = layer6(g, tets);
   expect_code(v, "cgal-invalid");
   EXPECT_NE(v->message.find("Triangulation_data_structure_3::is_valid fails"), std::string::npos) << v->message;
 }
 
-TEST(D3Layer6, NoTetsIsCgalInvalid) { expect_code(layer6(Graph3({1, 1, 1, 0}), {}), "cgal-invalid"); }
+TEST(D3Layer6, NoTetsIsCgalInvalid) { expect_code(layer6(Graph({1, 1, 1, 0}), {}), "cgal-invalid"); }
 
 }  // namespace
 }  // namespace bccmis::d3

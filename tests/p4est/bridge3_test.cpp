@@ -7,23 +7,20 @@
 
 #include "bccmis/balance.h"
 #include "bccmis/d3/lattice.h"
-#include "bccmis/invariants/d3/invariants3.h"
+#include "bccmis/invariants/d3/invariants.h"
 #include "p4est/p4est_test_util.h"
 
 namespace bccmis::p4est_bridge {
 namespace {
 
-using d3::Graph3;
-using d3::LatticeSize3;
-using d3::Point3;
 using testing::import_error;
 
-const LatticeSize3 kSizes[] = {{1, 1, 1, 3}, {3, 2, 2, 2}, {2, 3, 4, 1}, {4, 4, 2, 2}, {1, 2, 5, 3}};
+const d3::LatticeSize kSizes[] = {{1, 1, 1, 3}, {3, 2, 2, 2}, {2, 3, 4, 1}, {4, 4, 2, 2}, {1, 2, 5, 3}};
 
 // Tree (i, j, k) is the unit cube at (i, j, k) in the brick's vertex
 // coordinates, as p8est itself maps octant coordinates.
 TEST(Brick3, TreeNumberingFollowsTheBrickGeometry) {
-  for (const LatticeSize3& size : kSizes) {
+  for (const d3::LatticeSize& size : kSizes) {
     const Brick3 brick(size);
     std::vector<bool> seen(static_cast<std::size_t>(size.W * size.H * size.D));
     for (std::int64_t k = 0; k < size.D; ++k)
@@ -46,7 +43,7 @@ TEST(Brick3, TreeNumberingFollowsTheBrickGeometry) {
 // Every cube of levels 0-3: its octant's center, mapped by p8est to brick
 // coordinates and scaled by S, is the cube's center; and back.
 TEST(Brick3, LeafAndOctantAgreeWithP8estGeometry) {
-  for (const LatticeSize3& size : kSizes) {
+  for (const d3::LatticeSize& size : kSizes) {
     const Brick3 brick(size);
     const std::int64_t S = d3::level0_side(size);
     for (int l = 0; l <= std::min(size.L, 3); ++l) {
@@ -100,21 +97,21 @@ TEST(RoundTrip3, FromBccmisIsExact) {
   std::mt19937_64 rng(seed);
   for (int trial = 0; trial < 30; ++trial) {
     const int L = std::uniform_int_distribution<int>(0, 3)(rng);
-    const LatticeSize3 size{std::uniform_int_distribution<std::int64_t>(1, 3)(rng),
-                            std::uniform_int_distribution<std::int64_t>(1, 2)(rng), L == 3 ? 1 : 2, L};
+    const d3::LatticeSize size{std::uniform_int_distribution<std::int64_t>(1, 3)(rng),
+                               std::uniform_int_distribution<std::int64_t>(1, 2)(rng), L == 3 ? 1 : 2, L};
     const auto targets =
         L == 0 ? std::vector<testing::Target3>{} : d3::cascade_model::random_targets(size, rng, 1 + trial % 4);
     SCOPED_TRACE("seed " + std::to_string(seed) + " trial " + std::to_string(trial) + ": " +
                  d3::cascade_model::describe(size, targets));
-    Graph3 g = d3::cascade_model::refine_targets(size, targets, Balance::Edge);
+    d3::Graph g = d3::cascade_model::refine_targets(size, targets, Balance::Edge);
     // Some coarsening too, so that the states are not only refine closures.
-    for (const Point3& n : d3::PointSet3(g.N))
+    for (const d3::Point& n : d3::PointSet(g.N))
       if ((n.x + n.y + n.z) % 3 == 0 && !d3::can_coarsen(g, n)) d3::coarsen(g, n);
     ASSERT_EQ(d3::find_violation(g), std::nullopt);
     const Brick3 brick(size);
     const Forest3Ptr forest = export_forest(brick, g, sc_MPI_COMM_WORLD);
     testing::expect_quadrants_of(brick, g, forest.get());
-    const Graph3 back = import_forest(brick, forest.get());
+    const d3::Graph back = import_forest(brick, forest.get());
     EXPECT_EQ(canonical_text(back), canonical_text(g));
   }
 }
@@ -126,8 +123,8 @@ TEST(RoundTrip3, FromP8estIsExact) {
   std::mt19937_64 rng(seed);
   for (int trial = 0; trial < 30; ++trial) {
     const int L = std::uniform_int_distribution<int>(1, 4)(rng);
-    const LatticeSize3 size{std::uniform_int_distribution<std::int64_t>(1, 3)(rng),
-                            std::uniform_int_distribution<std::int64_t>(1, 2)(rng), L >= 3 ? 1 : 2, L};
+    const d3::LatticeSize size{std::uniform_int_distribution<std::int64_t>(1, 3)(rng),
+                               std::uniform_int_distribution<std::int64_t>(1, 2)(rng), L >= 3 ? 1 : 2, L};
     const auto targets = d3::cascade_model::random_targets(size, rng, 1 + trial % 5);
     SCOPED_TRACE("seed " + std::to_string(seed) + " trial " + std::to_string(trial) + ": " +
                  d3::cascade_model::describe(size, targets));
@@ -142,12 +139,12 @@ TEST(RoundTrip3, FromP8estIsExact) {
 // (1,1,0) at the corner (8,8,0) refined again. p8est calls it face balanced
 // and not edge balanced; the import refuses it, naming edge balance.
 TEST(Import3, RefusesAFaceBalancedForestThatIsNotEdgeBalanced) {
-  const LatticeSize3 size{2, 2, 1, 2};
+  const d3::LatticeSize size{2, 2, 1, 2};
   std::vector<Leaf3> ls{{{4, 4, 4}, 0}};
-  for (const Point3 c : {Point3{12, 4, 4}, Point3{4, 12, 4}, Point3{12, 12, 4}})
+  for (const d3::Point c : {d3::Point{12, 4, 4}, d3::Point{4, 12, 4}, d3::Point{12, 12, 4}})
     for (int v = 0; v < 8; ++v) {
-      const Point3 child{c.x + ((v & 1) ? 2 : -2), c.y + ((v & 2) ? 2 : -2), c.z + ((v & 4) ? 2 : -2)};
-      if (child == Point3{10, 10, 2})
+      const d3::Point child{c.x + ((v & 1) ? 2 : -2), c.y + ((v & 2) ? 2 : -2), c.z + ((v & 4) ? 2 : -2)};
+      if (child == d3::Point{10, 10, 2})
         for (int w = 0; w < 8; ++w)
           ls.push_back({{child.x + ((w & 1) ? 1 : -1), child.y + ((w & 2) ? 1 : -1), child.z + ((w & 4) ? 1 : -1)}, 2});
       else
@@ -173,7 +170,7 @@ TEST(Import3, RefusesLeavesDeeperThanL) {
 }
 
 TEST(Import3, RefusesOverlapsGapsAndDuplicates) {
-  const LatticeSize3 size{2, 1, 2, 2};
+  const d3::LatticeSize size{2, 1, 2, 2};
   const Brick3 brick(size);
   const Forest3Ptr forest = testing::p8est_targets(brick, {{{5, 3, 9}, 2}, {{13, 7, 15}, 2}}, P8EST_CONNECT_EDGE);
   const std::vector<Quadrant3> qs = local_quadrants(forest.get());
@@ -204,7 +201,7 @@ TEST(Import3, RefusesOverlapsGapsAndDuplicates) {
 // fully balanced imports, and find_corner_imbalance sees the corner pair
 // that P8EST_CONNECT_FULL removes.
 TEST(Import3, EdgeBalanceIsNotCornerBalance) {
-  const LatticeSize3 size{2, 2, 2, 2};
+  const d3::LatticeSize size{2, 2, 2, 2};
   const Brick3 brick(size);
   const std::vector<testing::Target3> targets{{{7, 7, 7}, 2}};
   const Forest3Ptr edge = testing::p8est_targets(brick, targets, P8EST_CONNECT_EDGE);

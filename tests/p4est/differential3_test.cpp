@@ -8,7 +8,7 @@
 
 #include <random>
 
-#include "bccmis/invariants/d3/invariants3.h"
+#include "bccmis/invariants/d3/invariants.h"
 #include "p4est/p4est_test_util.h"
 
 namespace bccmis::p4est_bridge {
@@ -16,7 +16,7 @@ namespace {
 
 constexpr std::uint64_t kSeed = 20091003;
 
-d3::LatticeSize3 random_size(std::mt19937_64& rng) {
+d3::LatticeSize random_size(std::mt19937_64& rng) {
   const int L = std::uniform_int_distribution<int>(1, 4)(rng);
   auto side = [&] { return std::uniform_int_distribution<std::int64_t>(1, L >= 3 ? 2 : 3)(rng); };
   return {side(), side(), side(), L};
@@ -26,11 +26,11 @@ void differential(Balance mode, p8est_connect_type_t connect, int trials) {
   std::mt19937_64 rng(kSeed + (mode == Balance::Edge ? 0 : 1));
   std::size_t leaves_seen = 0, cascaded = 0;
   for (int trial = 0; trial < trials; ++trial) {
-    const d3::LatticeSize3 size = random_size(rng);
+    const d3::LatticeSize size = random_size(rng);
     const auto targets = d3::cascade_model::random_targets(size, rng, std::uniform_int_distribution<int>(1, 4)(rng));
     SCOPED_TRACE("seed " + std::to_string(kSeed) + " trial " + std::to_string(trial) + ", balance " +
                  std::string(name(mode)) + ": " + d3::cascade_model::describe(size, targets));
-    const d3::Graph3 g = d3::cascade_model::refine_targets(size, targets, mode, &cascaded);
+    const d3::Graph g = d3::cascade_model::refine_targets(size, targets, mode, &cascaded);
     ASSERT_EQ(d3::find_violation(g), std::nullopt);
     const Brick3 brick(size);
     const Forest3Ptr forest = testing::p8est_targets(brick, targets, connect);
@@ -53,7 +53,7 @@ TEST(Differential3, FaceEdgeAndFullBalanceDiffer) {
   std::mt19937_64 rng(kSeed + 2);
   int face_differs = 0, full_differs = 0;
   for (int trial = 0; trial < 30; ++trial) {
-    const d3::LatticeSize3 size = random_size(rng);
+    const d3::LatticeSize size = random_size(rng);
     const auto targets = d3::cascade_model::random_targets(size, rng, 3);
     const Brick3 brick(size);
     const auto count = [&](p8est_connect_type_t c) {

@@ -10,7 +10,7 @@ endif()
 set(_bccmis_p4est_env "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1")
 foreach(name bridge_test differential_test bridge3_test differential3_test)
   bccmis_add_gtest(p4est_${name} SOURCES ${name}.cpp OWN_MAIN
-    LIBS bccmis::p4est bccmis::apps bccmis::invariants bccmis::invariants3 bccmis::core
+    LIBS bccmis::p4est bccmis::apps bccmis::invariants bccmis::invariants_d3 bccmis::core
     PREFIX p4est. LABELS p4est ENVIRONMENT "${_bccmis_p4est_env}")
 endforeach()
 

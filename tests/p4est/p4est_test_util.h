@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "bccmis/apps/balance.h"
-#include "bccmis/invariants/d3/invariants3.h"
+#include "bccmis/invariants/d3/invariants.h"
 #include "bccmis/invariants/invariants.h"
 #include "bccmis/p4est/bridge.h"
 #include "d3/cascade_model.h"

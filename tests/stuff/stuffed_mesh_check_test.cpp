@@ -29,7 +29,7 @@ StuffedMeshClaims on_surface() {
   return c;
 }
 
-std::string code(const std::optional<Violation3>& v) { return v ? v->code : "none"; }
+std::string code(const std::optional<Violation>& v) { return v ? v->code : "none"; }
 
 TEST(StuffedMeshCheck, ValidMeshesPass) {
   EXPECT_EQ(code(check_stuffed_mesh(kCorner, std::vector<T>{{0, 1, 2, 3}}, on_surface())), "none");

@@ -4,7 +4,7 @@
 # interior triangle in two tetrahedra, positive orientation, angle bounds.
 # The checker's stuffed-mesh layer on hand-built meshes shares the executable.
 bccmis_add_gtest(stuffing_tests SOURCES stuffing_test.cpp stuffed_mesh_check_test.cpp
-                 LIBS bccmis::stuff bccmis::d3 bccmis::invariants3 LABELS unit)
+                 LIBS bccmis::stuff bccmis::d3 bccmis::invariants_d3 LABELS unit)
 
 # The CLI's files read by meshio and gmsh, with the boundary's topology and
 # enclosed volume checked independently (tests/stuff/stuff_cli_readers.py).

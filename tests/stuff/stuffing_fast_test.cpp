@@ -14,7 +14,7 @@
 
 #include "bccmis/d3/format.h"
 #include "bccmis/d3/mesh.h"
-#include "bccmis/fast/mesh3.h"
+#include "bccmis/fast/d3/mesh.h"
 #include "bccmis/stuff/stuff.h"
 
 namespace bccmis::stuff {
@@ -59,10 +59,10 @@ void expect_same(const Case& c) {
   o.max_level = c.level;
   o.cells = c.cells;
   const Fit fit = fit_lattice(c.shape->bounds(), o);
-  const d3::Graph3 g = background(*c.shape, fit, o);
-  const fast::Lattice3 f = background_fast(*c.shape, fit, o);
-  ASSERT_EQ(fast::canonical_state(f), d3::canonical_state(g));  // S3
-  ASSERT_EQ(fast::tetrahedra(f), d3::tetrahedra(g));            // spec/mesh3d.md M1-M3
+  const d3::Graph g = background(*c.shape, fit, o);
+  const d3::fast::Lattice f = background_fast(*c.shape, fit, o);
+  ASSERT_EQ(d3::fast::canonical_state(f), d3::canonical_state(g));  // S3
+  ASSERT_EQ(d3::fast::tetrahedra(f), d3::tetrahedra(g));            // spec/mesh3d.md M1-M3
   const Stuffed reference = stuff(*c.shape, fit, g, o);
   const Stuffed flat = stuff(*c.shape, fit, f, o);
   EXPECT_GT(reference.mesh.tets.size(), 0U);

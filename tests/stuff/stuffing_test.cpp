@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "bccmis/d3/mesh.h"
-#include "bccmis/fast/lattice3.h"
+#include "bccmis/fast/d3/lattice.h"
 #include "bccmis/invariants/d3/stuffed_mesh.h"
 #include "bccmis/stuff/animate.h"
 #include "bccmis/stuff/stuff.h"
@@ -78,7 +78,7 @@ TEST(StuffOrientation, AgreesWithTheIntegerPredicate) {
   std::mt19937_64 rng(7);
   std::uniform_int_distribution<int> u(-4, 4);
   for (int i = 0; i < 20000; ++i) {
-    d3::Point3 p[4];
+    d3::Point p[4];
     Vec3 q[4];
     for (int k = 0; k < 4; ++k) {
       p[k] = {u(rng), u(rng), u(rng)};
@@ -172,7 +172,7 @@ TEST(StuffShapes, MeshesAreConformingOnTheSurfaceAndWithinTheBounds) {
     o.max_level = c.level;
     const Fit fit = fit_lattice(c.shape->bounds(), o);
     // The fast path (its equality with the reference: stuffing_fast_test.cpp).
-    const fast::Lattice3 g = background_fast(*c.shape, fit, o);
+    const d3::fast::Lattice g = background_fast(*c.shape, fit, o);
     const Stuffed s = stuff(*c.shape, fit, g, o);
     const StuffQuality q = check_mesh(*c.shape, fit, s);
     const double exact = c.shape->volume();
@@ -190,9 +190,9 @@ TEST(StuffShapes, BackgroundIsFinestWithinTheBand) {
   StuffOptions o;
   o.max_level = 3;
   const Fit fit = fit_lattice(sphere->bounds(), o);
-  const fast::Lattice3 g = background_fast(*sphere, fit, o);
+  const d3::fast::Lattice g = background_fast(*sphere, fit, o);
   std::size_t coarse = 0;
-  for (const d3::Point3& c : g.cells()) {
+  for (const d3::Point& c : g.cells()) {
     const int l = g.level_of(c);
     const double r = 0.5 * static_cast<double>(d3::cell_side(fit.size, l)) * fit.scale;
     const Vec3 p = fit.to_space(c);
@@ -235,7 +235,7 @@ TEST(StuffAnimate, LocalStepsReachTheLatticeBuiltFromScratch) {
     const Vec3 offset{path[0] * frame / 4, path[1] * frame / 4, path[2] * frame / 4};
     const FrameReport r = moving.step(offset);
     const auto moved = translated(ball, offset);
-    const d3::Graph3 scratch = background(*moved, fit, o);
+    const d3::Graph scratch = background(*moved, fit, o);
     EXPECT_TRUE(moving.lattice().to_graph() == scratch);
     EXPECT_EQ(r.leaves, scratch.C.size());
     EXPECT_GT(r.refines, 0U);
@@ -296,7 +296,7 @@ TEST(StuffAnimate, SameTetrahedraIgnoresNumberingOnly) {
 
 TEST(StuffAnimate, LocalStuffingEqualsTheReferenceStuffingOfEachFrame) {
   // S16: the mesh kept up to date by stuffing only the active leaves equals
-  // the reference stuffing (std::map path, Graph3 lattice) of the moved
+  // the reference stuffing (std::map path, d3::Graph lattice) of the moved
   // shape built from scratch, tetrahedron for tetrahedron; for small steps,
   // sign flips by a step longer than the band (the second path), and a step
   // back to the start.

@@ -4,7 +4,7 @@
 // each operation is a selector byte and its operands, decoded against the
 // current reference state, so that most operations name live vertices and
 // deep states are reached fast. Written once for every lattice
-// (bccmis/lattice.h): the 2D Graph and the 3D d3::Graph3 decode alike, a raw
+// (bccmis/lattice.h): the 2D Graph and the 3D d3::Graph decode alike, a raw
 // position reading one byte per coordinate.
 #pragma once
 
@@ -39,7 +39,7 @@ class Bytes {
 };
 
 /// A lattice from three bytes: W = 1 + b0 % max_side, H = 1 + b1 % max_side,
-/// L = b2 % levels; a size with a depth (d3::LatticeSize3) reads four:
+/// L = b2 % levels; a size with a depth (d3::LatticeSize) reads four:
 /// W, H, D = 1 + b2 % max_side, then L = b3 % levels.
 template <class Size = LatticeSize>
 Size decode_lattice(Bytes& in, int max_side, int levels) {

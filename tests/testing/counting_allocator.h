@@ -11,7 +11,7 @@
 // translation unit of an executable, and give that executable to this purpose
 // alone (every allocation of the process goes through it). A second
 // inclusion in the same executable fails to link (multiple definition).
-// Users: tests/fast/alloc_test.cpp, tests/fast/alloc3_test.cpp,
+// Users: tests/fast/alloc_test.cpp, tests/fast/d3/alloc_test.cpp,
 // tests/robustness_alloc_test.cpp, tests/testing/fault_injection.h (the
 // exception-safety tests), bench/bench_memory.cpp, bench/bench_memory3.cpp.
 #pragma once

@@ -5,13 +5,13 @@
 #include <map>
 
 #include "bccmis/d3/mesh.h"
+#include "bccmis/fast/d3/lattice.h"
 #include "bccmis/fast/lattice.h"
-#include "bccmis/fast/lattice3.h"
-#include "bccmis/invariants/d3/invariants3.h"
+#include "bccmis/invariants/d3/invariants.h"
 #include "commands.h"
 #include "io.h"
 #if BCCMIS_HAVE_TRIANGULATION_CHECK
-#include "bccmis/invariants/cgal/tetrahedralization_check3.h"
+#include "bccmis/invariants/cgal/d3/tetrahedralization_check.h"
 #include "bccmis/invariants/cgal/triangulation_check.h"
 #endif
 
@@ -55,7 +55,7 @@ std::optional<std::string> check_message(const fast::Lattice& g, int depth) {
   return check_message(as_graph(g, copy), depth);
 }
 
-std::optional<std::string> check_message(const d3::Graph3& g, int depth) {
+std::optional<std::string> check_message(const d3::Graph& g, int depth) {
   if (auto v = d3::find_violation(g, depth < 5 ? depth : 4)) return to_string(*v);
   if (depth < 5) return std::nullopt;
   const std::vector<d3::Tet> tets = d3::tetrahedra(g);
@@ -66,7 +66,7 @@ std::optional<std::string> check_message(const d3::Graph3& g, int depth) {
   return std::nullopt;
 }
 
-std::optional<std::string> check_message(const fast::Lattice3& g, int depth) {
+std::optional<std::string> check_message(const d3::fast::Lattice& g, int depth) {
   return check_message(g.to_graph(), depth);
 }
 
@@ -82,10 +82,10 @@ std::string levels_summary(const G& g) {
 }  // namespace
 
 std::string summary(const Graph& g) { return levels_summary(g); }
-std::string summary(const d3::Graph3& g) { return levels_summary(g); }
-std::string summary(const fast::Lattice3& g) {
+std::string summary(const d3::Graph& g) { return levels_summary(g); }
+std::string summary(const d3::fast::Lattice& g) {
   std::map<int, std::size_t> per_level;
-  for (const d3::Point3& c : g.cells()) ++per_level[g.level_of(c)];
+  for (const d3::Point& c : g.cells()) ++per_level[g.level_of(c)];
   return summary(per_level, g.node_count());
 }
 std::string summary(const fast::Lattice& g) {

@@ -122,7 +122,7 @@ CLI::App* add_stuff(CLI::App& app, StuffOptions& o) {
                   "--animate: the whole motion DX,DY,DZ (default: 1.5 times the shape's x extent along x)");
   cmd->add_flag("--compare", o.compare, "--animate: also build every frame from scratch and report both times");
   cmd->add_option("--impl", o.impl,
-                  "The lattice: fast (fast::Lattice3, default) or reference (d3::Graph3); the same mesh")
+                  "The lattice: fast (d3::fast::Lattice, default) or reference (d3::Graph); the same mesh")
       ->check(CLI::IsMember({"fast", "reference"}));
   cmd->add_flag("--stats", o.stats,
                 "Print counts, volume and its error, Hausdorff distance, dihedral angles and seconds per phase");

@@ -20,15 +20,17 @@
 
 namespace bccmis::fast {
 class Lattice;
-class Lattice3;
 }  // namespace bccmis::fast
 namespace bccmis::d3 {
-struct Point3;
-struct LatticeSize3;
-using Graph3 = BasicGraph<Point3, LatticeSize3>;
+struct Point;
+struct LatticeSize;
+using Graph = BasicGraph<Point, LatticeSize>;
+namespace fast {
+class Lattice;
+}  // namespace fast
 template <class P>
 struct BasicTetMesh;
-using TetMesh = BasicTetMesh<Point3>;
+using TetMesh = BasicTetMesh<Point>;
 }  // namespace bccmis::d3
 
 namespace bccmis::cli {
@@ -58,15 +60,15 @@ std::optional<Violation> check_graph(const Graph& g, int depth);
 /// (layers 5 and 6 of spec/invariants.md, "3D").
 std::optional<std::string> check_message(const Graph& g, int depth);
 std::optional<std::string> check_message(const fast::Lattice& g, int depth);
-std::optional<std::string> check_message(const d3::Graph3& g, int depth);
-/// The 3D checker on the fast 3D lattice, converted to a Graph3.
-std::optional<std::string> check_message(const fast::Lattice3& g, int depth);
+std::optional<std::string> check_message(const d3::Graph& g, int depth);
+/// The 3D checker on the fast 3D lattice, converted to a d3::Graph.
+std::optional<std::string> check_message(const d3::fast::Lattice& g, int depth);
 /// "9 cells (level 0: 1, level 1: 8), 17 nodes", from the cells per level.
 std::string summary(const std::map<int, std::size_t>& cells_per_level, std::size_t nodes);
 std::string summary(const Graph& g);
 std::string summary(const fast::Lattice& g);
-std::string summary(const d3::Graph3& g);
-std::string summary(const fast::Lattice3& g);
+std::string summary(const d3::Graph& g);
+std::string summary(const d3::fast::Lattice& g);
 
 /// A mesh output path: '.vtu', '.msh' or '.mesh'; throws InputError otherwise.
 void check_mesh_path(const std::string& path);
@@ -130,7 +132,7 @@ struct StuffOptions {
   int animate = 0;            ///< > 0: frames of the shape moving along `path`
   std::string path;           ///< "DX,DY,DZ": the whole motion (default: 1.5 times the shape's x extent along x)
   bool compare = false;       ///< --animate: also build every frame from scratch and time it
-  std::string impl = "fast";  ///< fast (fast::Lattice3) or reference (d3::Graph3)
+  std::string impl = "fast";  ///< fast (d3::fast::Lattice) or reference (d3::Graph)
   bool stats = false;
   bool json = false;
   bool check = false;

@@ -18,8 +18,8 @@
 
 #include <unistd.h>
 
+#include "bccmis/explore/d3/explore.h"
 #include "bccmis/explore/explore.h"
-#include "bccmis/explore/explore3.h"
 #include "commands.h"
 #include "io.h"
 
@@ -105,7 +105,7 @@ int level_argument(std::int64_t L) {
 int run(const ExploreCommandOptions& o) {
   const std::vector<std::int64_t>& v = o.lattice;
   if (v.size() == 4) {
-    const d3::LatticeSize3 size{v[0], v[1], v[2], level_argument(v[3])};
+    const d3::LatticeSize size{v[0], v[1], v[2], level_argument(v[3])};
     try {
       d3::validate_lattice_size(size);
     } catch (const LatticeError& e) {
@@ -113,7 +113,7 @@ int run(const ExploreCommandOptions& o) {
     }
     check_reach(o, state_bounds(static_cast<double>(size.W) * static_cast<double>(size.H) * static_cast<double>(size.D),
                                 8, size.L));
-    return explore_and_report<d3::Graph3>(o, size);
+    return explore_and_report<d3::Graph>(o, size);
   }
   if (v.size() != 3) throw InputError("explore: give W H L (2D) or W H D L (3D)");
   const LatticeSize size{v[0], v[1], level_argument(v[2])};

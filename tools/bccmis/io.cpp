@@ -122,8 +122,8 @@ AnyState read_any_state_or_trace(const std::string& path, bool from_trace) {
   std::string log;
   return std::visit(
       [&]<class T>(const T& trace) -> AnyState {
-        if constexpr (std::is_same_v<T, Trace3>)
-          return replay<d3::Graph3>(trace, log);
+        if constexpr (std::is_same_v<T, d3::Trace>)
+          return replay<d3::Graph>(trace, log);
         else
           return replay<Graph>(trace, log);
       },

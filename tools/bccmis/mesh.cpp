@@ -78,10 +78,10 @@ int run(const MeshOptions& o) {
   const AnyState state = text.starts_with("bccmis-state ") ? parse_any_state(text, name) : [&]() -> AnyState {
     std::string log;
     const AnyTrace trace = parse_any_trace(text, name);
-    if (const auto* t3 = std::get_if<Trace3>(&trace)) return replay<d3::Graph3>(*t3, log);
+    if (const auto* t3 = std::get_if<d3::Trace>(&trace)) return replay<d3::Graph>(*t3, log);
     return replay<Graph>(std::get<Trace>(trace), log);
   }();
-  const auto* g = std::get_if<d3::Graph3>(&state);
+  const auto* g = std::get_if<d3::Graph>(&state);
   if (!g)
     throw InputError(
         name + ": a 2D lattice; bccmis mesh writes the tetrahedra of 3D lattices (2D: bccmis render, heightfield)");

@@ -24,7 +24,7 @@ namespace bccmis::cli {
 namespace {
 
 // "--slice AXIS=VALUE" for a 3D lattice of `size`; the middle z plane when empty.
-SlicePlane parse_slice(const std::string& text, const d3::LatticeSize3& size) {
+SlicePlane parse_slice(const std::string& text, const d3::LatticeSize& size) {
   if (text.empty()) return middle_slice(size);
   const std::string axes = "xyz";
   const auto bad = [&](const std::string& why) { return InputError("--slice '" + text + "': " + why); };
@@ -96,8 +96,8 @@ int run(const RenderOptions& o) {
   const AnyState state = read_any_state_or_trace(o.state, o.from_trace);
   const std::string svg = std::visit(
       [&](const auto& g) {
-        if constexpr (std::is_same_v<std::decay_t<decltype(g)>, d3::Graph3>) {
-          return render_svg3(g, display_name(o.state), parse_slice(o.slice, g.size));
+        if constexpr (std::is_same_v<std::decay_t<decltype(g)>, d3::Graph>) {
+          return d3::render_svg(g, display_name(o.state), parse_slice(o.slice, g.size));
         } else {
           if (!o.slice.empty())
             throw InputError(display_name(o.state) + ": a 2D lattice; --slice applies to 3D states");

@@ -1,8 +1,8 @@
 // bccmis replay TRACE: replays a trace on the implementation of --impl, with
 // the checker when --check asks; prints (or writes) the decision log and the
 // canonical state. A 3D trace (`lattice W H D L`) runs on the 3D reference
-// (d3::Graph3) or the fast 3D lattice (fast::Lattice3), with the 3D checker.
-// The fast implementations are converted to a Graph (Graph3) only for the
+// (d3::Graph) or the fast 3D lattice (d3::fast::Lattice), with the 3D checker.
+// The fast implementations are converted to a Graph (d3::Graph) only for the
 // checker and the mesh: with --check=none their log and state are written
 // from the lattice itself.
 #include <iostream>
@@ -11,8 +11,8 @@
 
 #include "bccmis/d3/lattice.h"
 #include "bccmis/d3/mesh.h"
+#include "bccmis/fast/d3/lattice.h"
 #include "bccmis/fast/lattice.h"
-#include "bccmis/fast/lattice3.h"
 #include "bccmis/json_writer.h"
 #include "bccmis/trace.h"
 #include "commands.h"
@@ -70,14 +70,14 @@ int replay_with(const ReplayOptions& o, const trace_t<L>& trace) {
   }
   const Writer state = [&](std::ostream& out) { write_canonical_state(out, g); };
   OutputSet outputs;
-  if constexpr (std::is_same_v<L, d3::Graph3>) {
+  if constexpr (std::is_same_v<L, d3::Graph>) {
     if (!o.mesh_files.empty()) {
       const d3::TetMesh mesh = d3::index_mesh(g, d3::tetrahedra(g));
       for (const std::string& path : o.mesh_files) add_mesh_output(outputs, path, mesh);
     }
-  } else if constexpr (std::is_same_v<L, fast::Lattice3>) {
+  } else if constexpr (std::is_same_v<L, d3::fast::Lattice>) {
     if (!o.mesh_files.empty()) {
-      const d3::Graph3 graph = g.to_graph();
+      const d3::Graph graph = g.to_graph();
       const d3::TetMesh mesh = d3::index_mesh(graph, d3::tetrahedra(graph));
       for (const std::string& path : o.mesh_files) add_mesh_output(outputs, path, mesh);
     }
@@ -124,14 +124,14 @@ int run(const ReplayOptions& o) {
   TraceLimits limits;
   limits.max_vertices = o.max_vertices;
   const AnyTrace any = read_any_trace(o.trace, limits);
-  if (const auto* trace3 = std::get_if<Trace3>(&any)) {
+  if (const auto* trace3 = std::get_if<d3::Trace>(&any)) {
     // implementation() names the 2D lattice of --impl; the 3D one is its counterpart.
     return std::visit(
         [&]<class L>(std::type_identity<L>) {
           if constexpr (std::is_same_v<L, Graph>)
-            return replay_with<d3::Graph3>(o, *trace3);
+            return replay_with<d3::Graph>(o, *trace3);
           else
-            return replay_with<fast::Lattice3>(o, *trace3);
+            return replay_with<d3::fast::Lattice>(o, *trace3);
         },
         implementation(o.impl));
   }

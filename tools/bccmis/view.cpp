@@ -57,7 +57,7 @@ int run(const ViewCommandOptions& v) {
     limits.max_vertices = v.max_vertices;
     o.max_vertices = v.max_vertices;
     const AnyTrace any = read_any_trace(v.trace, limits, "give canonical states with --states");
-    if (const auto* t3 = std::get_if<Trace3>(&any))
+    if (const auto* t3 = std::get_if<d3::Trace>(&any))
       throw InputError(name + ":" + std::to_string(t3->lattice_line) +
                        ":1: a 3D trace ('lattice W H D L'): the viewer draws 2D lattices only (replay it with "
                        "'bccmis replay', mesh it with 'bccmis mesh')");

@@ -38,7 +38,7 @@
 
 namespace bccmis::d3 {
 
-std::optional<int> refined_center_level(const LatticeSize3& size, const Point3& p) {
+std::optional<int> refined_center_level(const LatticeSize& size, const Point& p) {
   const std::int64_t S = level0_side(size);
   // Strictly inside the domain; the extents are at most 2^62, so no overflow.
   if (p.x <= 0 || p.y <= 0 || p.z <= 0 || p.x >= size.W * S || p.y >= size.H * S || p.z >= size.D * S)
@@ -53,7 +53,7 @@ std::optional<int> refined_center_level(const LatticeSize3& size, const Point3& 
   return l;
 }
 
-std::optional<CoarsenRefusal> can_coarsen(const Graph3& g, const Point3& n) {
+std::optional<CoarsenRefusal> can_coarsen(const Graph& g, const Point& n) {
   //= bccmis3d#pre-coarsen-node
   //# n in N
   if (!g.is_node(n)) return CoarsenRefusal::NoSuchNode;
@@ -70,40 +70,40 @@ std::optional<CoarsenRefusal> can_coarsen(const Graph3& g, const Point3& n) {
   if (g.nbr(n).size() != 8) return CoarsenRefusal::NotARefinedCenter;
   //= bccmis3d#pre-coarsen-children-leaves
   //# for all y in N(n): level(y) = l + 1
-  for (const Point3& y : g.nbr(n))
+  for (const Point& y : g.nbr(n))
     if (!g.is_center(y) || g.level_of(y) != *l + 1) return CoarsenRefusal::ChildrenRefined;
   //= bccmis3d#pre-coarsen-balance
   //# for all y in N(n): |N(y)| = 8
-  for (const Point3& y : g.nbr(n))
+  for (const Point& y : g.nbr(n))
     if (g.nbr(y).size() != 8) return CoarsenRefusal::FinerNeighbor;
   return std::nullopt;
 }
 
-CoarsenResult coarsen(Graph3& g, const Point3& n) {
+CoarsenResult coarsen(Graph& g, const Point& n) {
   CoarsenResult result;
   result.refused = can_coarsen(g, n);
   if (result.refused) return result;
 
   // Every change is staged in tx and applied at the end, all or nothing.
-  BasicTransaction<Graph3> tx(g);
-  auto nb = [&tx](const Point3& v) -> PointSet3& { return tx.nb(v); };
+  BasicTransaction<Graph> tx(g);
+  auto nb = [&tx](const Point& v) -> PointSet& { return tx.nb(v); };
   const int l = *refined_center_level(g.size, n);
 
   // 1. The children and the boundary of the coarse cube: K1a-K1c.
   //= bccmis3d#eq-K1a
   //# Y = N(n)
-  const PointSet3 Y = nb(n);
+  const PointSet Y = nb(n);
   //= bccmis3d#eq-K1b
   //# B = ( union over y_i in Y of N(y_i) ) \ {n}
-  PointSet3 B;
-  for (const Point3& y_i : Y) B = unite(B, nb(y_i));
-  B = minus(B, PointSet3{n});
+  PointSet B;
+  for (const Point& y_i : Y) B = unite(B, nb(y_i));
+  B = minus(B, PointSet{n});
   //= bccmis3d#eq-K1c
   //= type=choice
   //= reason=V4: a corner of the coarse cube is in 1 child, an edge midpoint in 2, a face center in 4
   //# M = { b in B : |N(b) ∩ Y| in {2, 4} }
-  PointSet3 M;
-  for (const Point3& b : B) {
+  PointSet M;
+  for (const Point& b : B) {
     const std::size_t k = intersect(nb(b), Y).size();
     if (k == 2 || k == 4) M.insert(b);
   }
@@ -115,10 +115,10 @@ CoarsenResult coarsen(Graph3& g, const Point3& n) {
   // 2. Unhook and delete the children: K2a-K2f.
   //= bccmis3d#eq-K2a
   //# N(b) = N(b) \ Y  for all b in B
-  for (const Point3& b : B) nb(b) = minus(nb(b), Y);
+  for (const Point& b : B) nb(b) = minus(nb(b), Y);
   //= bccmis3d#eq-K2b
   //# N(y_i) = ∅  for all y_i in Y
-  for (const Point3& y_i : Y) nb(y_i).clear();
+  for (const Point& y_i : Y) nb(y_i).clear();
   //= bccmis3d#eq-K2c
   //# N(n) = ∅
   nb(n).clear();
@@ -132,7 +132,7 @@ CoarsenResult coarsen(Graph3& g, const Point3& n) {
   tx.add_center(n, l);
   //= bccmis3d#eq-K2f
   //# C = C \ Y
-  for (const Point3& y_i : Y) {
+  for (const Point& y_i : Y) {
     tx.remove_center(y_i);
     tx.remove_vertex(y_i);  // the Y vertices are deleted
   }
@@ -144,10 +144,10 @@ CoarsenResult coarsen(Graph3& g, const Point3& n) {
   //= type=choice
   //= reason=V3: no threshold on |N(b)| works in 3D; delete b when no remaining cell has it as a corner
   //# J- = { b in M : level(x) <= l for all x in N(b) }
-  PointSet3 J_minus;
-  for (const Point3& b : M) {
+  PointSet J_minus;
+  for (const Point& b : M) {
     bool corner_of_a_cell = false;
-    for (const Point3& x : nb(b)) corner_of_a_cell = corner_of_a_cell || g.level_of(x) > l;
+    for (const Point& x : nb(b)) corner_of_a_cell = corner_of_a_cell || g.level_of(x) > l;
     if (!corner_of_a_cell) J_minus.insert(b);
   }
   //= bccmis3d#eq-K3b
@@ -155,11 +155,11 @@ CoarsenResult coarsen(Graph3& g, const Point3& n) {
   B = minus(B, J_minus);
   //= bccmis3d#eq-K3c
   //# N = N \ J-
-  for (const Point3& j : J_minus) tx.remove_node(j);
-  for (const Point3& j : J_minus) {
+  for (const Point& j : J_minus) tx.remove_node(j);
+  for (const Point& j : J_minus) {
     //= bccmis3d#eq-K3d
     //# N(x) = N(x) \ {j}  for all x in N(j), j in J-
-    for (const Point3& x : nb(j)) nb(x) = minus(nb(x), PointSet3{j});
+    for (const Point& x : nb(j)) nb(x) = minus(nb(x), PointSet{j});
     //= bccmis3d#eq-K3e
     //# N(j) = ∅  for all j in J-
     nb(j).clear();
@@ -172,7 +172,7 @@ CoarsenResult coarsen(Graph3& g, const Point3& n) {
   nb(n) = B;
   //= bccmis3d#eq-K4b
   //# N(b) = N(b) ∪ {n}  for all b in B
-  for (const Point3& b : B) nb(b) = unite(nb(b), PointSet3{n});
+  for (const Point& b : B) nb(b) = unite(nb(b), PointSet{n});
 
   result.Y = Y;
   result.J_minus = J_minus;

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "bccmis/d3/lattice.h"  // static_assert(AdaptiveLattice<Graph3>)
+#include "bccmis/d3/lattice.h"  // static_assert(AdaptiveLattice<Graph>)
 #include "bccmis/detail/parse.h"
 #include "bccmis/detail/state_writer.h"
 #include "bccmis/format.h"
@@ -10,11 +10,11 @@
 
 namespace bccmis::d3 {
 
-void write_canonical_state(std::ostream& out, const Graph3& g) { detail::write_state_as(out, g); }
+void write_canonical_state(std::ostream& out, const Graph& g) { detail::write_state_as(out, g); }
 
-std::string canonical_state(const Graph3& g) { return canonical_text(g); }
+std::string canonical_state(const Graph& g) { return canonical_text(g); }
 
-Graph3 parse_state3(std::string_view text, std::string_view file) { return detail::parse_state_as<Graph3>(text, file); }
+Graph parse_state(std::string_view text, std::string_view file) { return detail::parse_state_as<Graph>(text, file); }
 
 }  // namespace bccmis::d3
 
@@ -33,7 +33,7 @@ AnyState parse_any_state(std::string_view text, std::string_view file) {
       if (ch != ' ' && !in_field) ++fields;
       in_field = ch != ' ';
     }
-    if (line.starts_with("lattice ") && fields == 5) return d3::parse_state3(text, file);
+    if (line.starts_with("lattice ") && fields == 5) return d3::parse_state(text, file);
   }
   return parse_state(text, file);
 }

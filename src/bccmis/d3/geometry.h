@@ -12,7 +12,7 @@ namespace bccmis::d3 {
 
 /// The midpoint of a and b. Callers only pass points whose coordinate
 /// differences are even; written to avoid overflow near 2^62.
-inline Point3 midpoint(const Point3& a, const Point3& b) {
+inline Point midpoint(const Point& a, const Point& b) {
   return {a.x + (b.x - a.x) / 2, a.y + (b.y - a.y) / 2, a.z + (b.z - a.z) / 2};
 }
 
@@ -30,7 +30,7 @@ struct CubeFace {
 /// The 12 edges of the cube whose 8 corners are `p` (sorted by position), in
 /// the order of their corners. Q2: two corners span an edge iff they differ
 /// in exactly one coordinate.
-inline std::array<CubeEdge, 12> cube_edges(const std::array<Point3, 8>& p) {
+inline std::array<CubeEdge, 12> cube_edges(const std::array<Point, 8>& p) {
   std::array<CubeEdge, 12> edges{};
   std::size_t k = 0;
   for (std::size_t i = 0; i < 8; ++i)
@@ -44,9 +44,9 @@ inline std::array<CubeEdge, 12> cube_edges(const std::array<Point3, 8>& p) {
 /// The 6 faces of the cube whose 8 corners are `p` (sorted by position), Q2:
 /// four corners span a face iff they share one coordinate, the lowest or the
 /// highest of the cube's.
-inline std::array<CubeFace, 6> cube_faces(const std::array<Point3, 8>& p) {
+inline std::array<CubeFace, 6> cube_faces(const std::array<Point, 8>& p) {
   std::array<CubeFace, 6> faces{};
-  auto coordinate = [](const Point3& q, int axis) { return axis == 0 ? q.x : axis == 1 ? q.y : q.z; };
+  auto coordinate = [](const Point& q, int axis) { return axis == 0 ? q.x : axis == 1 ? q.y : q.z; };
   std::size_t k = 0;
   for (int axis = 0; axis < 3; ++axis)
     for (const std::int64_t value : {coordinate(p[0], axis), coordinate(p[7], axis)}) {

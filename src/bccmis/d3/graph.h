@@ -16,14 +16,14 @@ namespace bccmis::d3 {
 
 /// The graph of spec/lattice3d.md §1: N, C, N(·) and the level of every
 /// center; the 2D graph's data (bccmis/graph.h) on 3D points.
-using Graph3 = BasicGraph<Point3, LatticeSize3>;
+using Graph = BasicGraph<Point, LatticeSize>;
 
 /// The initial lattice: W x H x D level-0 cubes; nodes at the grid points,
 /// each center joined to its 8 corners. Throws LatticeError on an invalid size.
-Graph3 make_lattice(const LatticeSize3& size);
+Graph make_lattice(const LatticeSize& size);
 
 }  // namespace bccmis::d3
 
 namespace bccmis {
-extern template struct BasicGraph<d3::Point3, d3::LatticeSize3>;
+extern template struct BasicGraph<d3::Point, d3::LatticeSize>;
 }  // namespace bccmis

@@ -1,5 +1,5 @@
 // bccmis::d3: the 3D lattice in the vocabulary every lattice speaks
-// (bccmis/lattice.h). Graph3 models AdaptiveLattice with Point3 as its point
+// (bccmis/lattice.h). Graph models AdaptiveLattice with Point as its point
 // type and dimension 3: the accessors are the graph's, written once for every
 // dimension in bccmis/lattice.h; the operations (d3/ops.h) and the canonical
 // state (d3/format.h) are found by argument-dependent lookup, so the stepper
@@ -13,7 +13,7 @@
 
 namespace bccmis::d3 {
 
-static_assert(AdaptiveLattice<Graph3>);
-static_assert(Graph3::dimension == 3);
+static_assert(AdaptiveLattice<Graph>);
+static_assert(Graph::dimension == 3);
 
 }  // namespace bccmis::d3

@@ -22,8 +22,7 @@ bool fits_41_bits(std::int64_t v) { return v > -(std::int64_t{1} << 41) && v < (
 
 // The three difference vectors b - a, c - a, d - a (each component fits:
 // coordinates lie in [0, 2^62]).
-std::array<std::array<std::int64_t, 3>, 3> differences(const Point3& a, const Point3& b, const Point3& c,
-                                                       const Point3& d) {
+std::array<std::array<std::int64_t, 3>, 3> differences(const Point& a, const Point& b, const Point& c, const Point& d) {
   return {{{b.x - a.x, b.y - a.y, b.z - a.z}, {c.x - a.x, c.y - a.y, c.z - a.z}, {d.x - a.x, d.y - a.y, d.z - a.z}}};
 }
 
@@ -56,7 +55,7 @@ bool small(const std::array<std::array<std::int64_t, 3>, 3>& m) {
 
 }  // namespace
 
-int orientation(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+int orientation(const Point& a, const Point& b, const Point& c, const Point& d) {
   const auto m = differences(a, b, c, d);
   if (small(m)) {
     const Int128 v = det3<Int128>(m);  // each product < 2^123, the sum < 2^126
@@ -72,15 +71,15 @@ Int128 six_volume(const Tet& t) {
 }
 
 // spec/mesh3d.md M1-M4 (the rule in d3/detail/tetrahedra.h)
-std::vector<Tet> tetrahedra(const Graph3& g) { return detail::tetrahedra_of(g); }
+std::vector<Tet> tetrahedra(const Graph& g) { return detail::tetrahedra_of(g); }
 
-TetMesh index_mesh(const Graph3& g, const std::vector<Tet>& tets) {
+TetMesh index_mesh(const Graph& g, const std::vector<Tet>& tets) {
   TetMesh mesh;
   for (const Tet& t : tets) mesh.vertices.insert(mesh.vertices.end(), t.begin(), t.end());
   std::sort(mesh.vertices.begin(), mesh.vertices.end());
   mesh.vertices.erase(std::unique(mesh.vertices.begin(), mesh.vertices.end()), mesh.vertices.end());
   mesh.kind.reserve(mesh.vertices.size());
-  for (const Point3& v : mesh.vertices)
+  for (const Point& v : mesh.vertices)
     mesh.kind.push_back(static_cast<std::uint8_t>(g.is_node(v)     ? VertexKind::node
                                                   : g.is_center(v) ? VertexKind::center
                                                                    : VertexKind::hull));
@@ -100,7 +99,7 @@ TetMesh index_mesh(const Graph3& g, const std::vector<Tet>& tets) {
 namespace {
 
 // The angles, once for lattice points and once for points in space.
-long double coordinate(const Point3& p, int i) { return static_cast<long double>(i == 0 ? p.x : i == 1 ? p.y : p.z); }
+long double coordinate(const Point& p, int i) { return static_cast<long double>(i == 0 ? p.x : i == 1 ? p.y : p.z); }
 long double coordinate(const Vec3& p, int i) { return p[static_cast<std::size_t>(i)]; }
 
 template <class P>
@@ -137,13 +136,13 @@ std::array<double, 6> dihedral_angles(const std::array<Vec3, 4>& t) { return dih
 MeshQuality mesh_quality(const std::vector<Tet>& tets) {
   MeshQuality q;
   q.tetrahedra = tets.size();
-  std::vector<Point3> vertices;
-  std::map<std::array<Point3, 3>, int> triangles;
+  std::vector<Point> vertices;
+  std::map<std::array<Point, 3>, int> triangles;
   q.min_dihedral = tets.empty() ? 0 : 180;
   for (const Tet& t : tets) {
     vertices.insert(vertices.end(), t.begin(), t.end());
     for (int skip = 0; skip < 4; ++skip) {
-      std::array<Point3, 3> f{};
+      std::array<Point, 3> f{};
       for (int i = 0, n = 0; i < 4; ++i)
         if (i != skip) f[n++] = t[i];
       std::sort(f.begin(), f.end());

@@ -15,21 +15,21 @@ namespace bccmis::d3 {
 
 /// One tetrahedron by its 4 vertex positions, positively oriented:
 /// det[v1-v0, v2-v0, v3-v0] > 0.  v[0] is the leaf center u, v[1] the apex.
-using Tet = std::array<Point3, 4>;
+using Tet = std::array<Point, 4>;
 
 /// Every tetrahedron of the graded BCC mesh of g (spec/mesh3d.md), each once,
 /// positively oriented, sorted (std::sort on Tet). Hull vertices (centers of
 /// domain-boundary faces) appear as vertices that are in neither g.N nor g.C.
 /// Throws std::logic_error if g is not a reachable state (an apex the graph
 /// does not have, or a degenerate tetrahedron).
-std::vector<Tet> tetrahedra(const Graph3& g);
+std::vector<Tet> tetrahedra(const Graph& g);
 
 /// A signed 128-bit integer (a GNU extension that g++ and clang++ provide).
 __extension__ typedef __int128 Int128;
 
 /// det[b - a, c - a, d - a] computed exactly: its sign (-1, 0 or 1), for
 /// coordinates up to 2^62 (spec/mesh3d.md M3).
-int orientation(const Point3& a, const Point3& b, const Point3& c, const Point3& d);
+int orientation(const Point& a, const Point& b, const Point& c, const Point& d);
 
 /// det[t1 - t0, t2 - t0, t3 - t0] = 6 times the signed volume, exactly, when
 /// it fits in a signed 128-bit integer (every coordinate difference below 2^41);
@@ -38,7 +38,7 @@ Int128 six_volume(const Tet& t);
 
 /// The vertices of `tets` (sorted, each once, with their kind in g) and the
 /// tetrahedra as indices into them, in the order of `tets`.
-TetMesh index_mesh(const Graph3& g, const std::vector<Tet>& tets);
+TetMesh index_mesh(const Graph& g, const std::vector<Tet>& tets);
 
 /// The 6 dihedral angles of t in degrees (long double arithmetic, so within
 /// about 1e-12 degrees of the exact values), in the order of the edges

@@ -4,7 +4,7 @@
 
 namespace bccmis::d3 {
 
-std::string to_string(const Point3& p) {
+std::string to_string(const Point& p) {
   std::string t = "(";
   t += std::to_string(p.x);
   t += ", ";
@@ -15,7 +15,7 @@ std::string to_string(const Point3& p) {
   return t;
 }
 
-void validate_lattice_size(const LatticeSize3& size) {
+void validate_lattice_size(const LatticeSize& size) {
   if (size.W < 1) throw LatticeError("lattice width W must be >= 1, got " + std::to_string(size.W));
   if (size.H < 1) throw LatticeError("lattice height H must be >= 1, got " + std::to_string(size.H));
   if (size.D < 1) throw LatticeError("lattice depth D must be >= 1, got " + std::to_string(size.D));

@@ -14,35 +14,35 @@
 namespace bccmis::d3 {
 
 /// A lattice position in integer coordinates, ordered by (x, y, z).
-struct Point3 {
+struct Point {
   static constexpr int dimension = 3;
   std::int64_t x = 0;
   std::int64_t y = 0;
   std::int64_t z = 0;
-  friend auto operator<=>(const Point3&, const Point3&) = default;
-  friend bool operator==(const Point3&, const Point3&) = default;
+  friend auto operator<=>(const Point&, const Point&) = default;
+  friend bool operator==(const Point&, const Point&) = default;
 };
 
-using PointSet3 = std::set<Point3>;
+using PointSet = std::set<Point>;
 
 /// "(x, y, z)": how messages name a position.
-std::string to_string(const Point3& p);
+std::string to_string(const Point& p);
 
 /// The size of a 3D lattice: W x H x D level-0 cubes, at most L refinements
 /// deep. Level-0 cubes have side S = 2^(L+1); a level-l cube has side
 /// 2^(L+1-l), so every center, corner, edge midpoint and face center down to
 /// level L is an integer point.
-struct LatticeSize3 {
+struct LatticeSize {
   std::int64_t W = 1;
   std::int64_t H = 1;
   std::int64_t D = 1;
   int L = 0;
-  friend bool operator==(const LatticeSize3&, const LatticeSize3&) = default;
+  friend bool operator==(const LatticeSize&, const LatticeSize&) = default;
 };
 
 /// Throws bccmis::LatticeError unless W, H, D >= 1, L >= 0 and the extents
 /// W*S, H*S, D*S are at most 2^62. The message names the offending value.
-void validate_lattice_size(const LatticeSize3& size);
+void validate_lattice_size(const LatticeSize& size);
 
 // level0_side(size) and cell_side(size, level), written once for every
 // dimension (bccmis/graph.h).

@@ -51,13 +51,13 @@ namespace {
 
 // The neighborhood sets of c computed by R1a-R1d, before anything changes.
 struct Neighborhood {
-  PointSet3 B, J, P, X;
+  PointSet B, J, P, X;
 };
 
 // A junction's cardinality (spec/lattice3d.md §3, F2): 3, 5, 6 or 7.
 bool is_junction_cardinality(std::size_t k) { return k == 3 || k == 5 || k == 6 || k == 7; }
 
-Neighborhood neighborhood(const Graph3& g, const Point3& c) {
+Neighborhood neighborhood(const Graph& g, const Point& c) {
   Neighborhood s;
   //= bccmis3d#eq-R1a
   //# B = N(c)
@@ -66,7 +66,7 @@ Neighborhood neighborhood(const Graph3& g, const Point3& c) {
   //= type=choice
   //= reason=V2: in 3D junctions have 3, 5, 6 or 7 cells and pure nodes 1, 2, 4 or 8
   //# J = { b in B : |N(b)| in {3, 5, 6, 7} }
-  for (const Point3& b : s.B)
+  for (const Point& b : s.B)
     if (is_junction_cardinality(g.nbr(b).size())) s.J.insert(b);
   //= bccmis3d#eq-R1c
   //# P = B \ J
@@ -77,13 +77,13 @@ Neighborhood neighborhood(const Graph3& g, const Point3& c) {
   //# X = ( union over b_i != b_j in B of N(b_i) ∩ N(b_j) ) \ {c}
   for (auto bi = s.B.begin(); bi != s.B.end(); ++bi)
     for (auto bj = std::next(bi); bj != s.B.end(); ++bj) s.X = unite(s.X, intersect(g.nbr(*bi), g.nbr(*bj)));
-  s.X = minus(s.X, PointSet3{c});
+  s.X = minus(s.X, PointSet{c});
   return s;
 }
 
 }  // namespace
 
-std::optional<RefineRefusal> can_refine(const Graph3& g, const Point3& c) {
+std::optional<RefineRefusal> can_refine(const Graph& g, const Point& c) {
   //= bccmis3d#pre-refine-cell
   //# c in C
   if (!g.is_center(c)) return RefineRefusal::NoSuchCell;
@@ -95,19 +95,19 @@ std::optional<RefineRefusal> can_refine(const Graph3& g, const Point3& c) {
   //= bccmis3d#pre-refine-level
   //# for all x in X: level(x) >= level(c)
   const Neighborhood s = neighborhood(g, c);
-  for (const Point3& x : s.X)
+  for (const Point& x : s.X)
     if (g.level_of(x) < g.level_of(c)) return RefineRefusal::CoarserNeighbor;
   return std::nullopt;
 }
 
-RefineResult refine(Graph3& g, const Point3& c) {
+RefineResult refine(Graph& g, const Point& c) {
   RefineResult result;
   result.refused = can_refine(g, c);
   if (result.refused) return result;
 
   // Every change is staged in tx and applied at the end, all or nothing.
-  BasicTransaction<Graph3> tx(g);
-  auto nb = [&tx](const Point3& v) -> PointSet3& { return tx.nb(v); };
+  BasicTransaction<Graph> tx(g);
+  auto nb = [&tx](const Point& v) -> PointSet& { return tx.nb(v); };
   const int l = g.level_of(c);
   const std::int64_t half = cell_side(g.size, l) / 2;
 
@@ -115,14 +115,14 @@ RefineResult refine(Graph3& g, const Point3& c) {
   const auto [B, J, P, X] = neighborhood(g, c);
   //= bccmis3d#claim-P-has-8
   //# |P| = 8: P is exactly the 8 corners of c
-  std::array<Point3, 8> p{};  // p[0..7] = p_1..p_8, sorted by position
+  std::array<Point, 8> p{};  // p[0..7] = p_1..p_8, sorted by position
   {
     std::size_t i = 0;
     for (std::int64_t dx : {-half, half})
       for (std::int64_t dy : {-half, half})
         for (std::int64_t dz : {-half, half}) p[i++] = {c.x + dx, c.y + dy, c.z + dz};
   }
-  if (P != PointSet3(p.begin(), p.end()))
+  if (P != PointSet(p.begin(), p.end()))
     throw std::logic_error(
         "refine: P is not the 8 corners of c although no face or edge neighbour is "
         "coarser; the graph is not a valid lattice");
@@ -132,19 +132,19 @@ RefineResult refine(Graph3& g, const Point3& c) {
   // all found before anything changes.
   struct Edge {
     CubeEdge e;
-    Point3 m;
-    bool old;       // m is an old junction (step 4), else a new node (step 3)
-    PointSet3 X_e;  // the cells around the edge other than c (new nodes only)
+    Point m;
+    bool old;      // m is an old junction (step 4), else a new node (step 3)
+    PointSet X_e;  // the cells around the edge other than c (new nodes only)
   };
   struct Face {
     CubeFace f;
-    Point3 m;
+    Point m;
     bool old;
-    PointSet3 X_f;  // the cell across the face, if any (new nodes only)
+    PointSet X_f;  // the cell across the face, if any (new nodes only)
   };
   std::vector<Edge> edges;
   for (const CubeEdge& e : cube_edges(p)) {
-    const Point3 m = midpoint(p[e.i], p[e.j]);
+    const Point m = midpoint(p[e.i], p[e.j]);
     if (J.count(m) != 0) {
       edges.push_back({e, m, true, {}});
       continue;
@@ -153,13 +153,13 @@ RefineResult refine(Graph3& g, const Point3& c) {
     //= type=choice
     //= reason=V7: 0 to 3 cells, none where the edge lies on the domain boundary's edge
     //# X_e = ( N(p_i) ∩ N(p_j) ) \ {c}  for each edge e = {p_i, p_j} of c with m(e) not in J
-    PointSet3 X_e = minus(intersect(g.nbr(p[e.i]), g.nbr(p[e.j])), PointSet3{c});
+    PointSet X_e = minus(intersect(g.nbr(p[e.i]), g.nbr(p[e.j])), PointSet{c});
     edges.push_back({e, m, false, std::move(X_e)});
   }
   std::vector<Face> faces;
   for (const CubeFace& f : cube_faces(p)) {
     const auto& [i, j, k, m4] = f.corners;
-    const Point3 m = midpoint(p[i], p[m4]);  // opposite corners of the face
+    const Point m = midpoint(p[i], p[m4]);  // opposite corners of the face
     if (J.count(m) != 0) {
       faces.push_back({f, m, true, {}});
       continue;
@@ -168,8 +168,8 @@ RefineResult refine(Graph3& g, const Point3& c) {
     //= type=choice
     //= reason=V7: 0 or 1 cell, none on the domain boundary
     //# X_f = ( N(p_i) ∩ N(p_j) ∩ N(p_k) ∩ N(p_m) ) \ {c}  for each face f of c with m(f) not in J
-    PointSet3 X_f =
-        minus(intersect(intersect(g.nbr(p[i]), g.nbr(p[j])), intersect(g.nbr(p[k]), g.nbr(p[m4]))), PointSet3{c});
+    PointSet X_f =
+        minus(intersect(intersect(g.nbr(p[i]), g.nbr(p[j])), intersect(g.nbr(p[k]), g.nbr(p[m4]))), PointSet{c});
     faces.push_back({f, m, false, std::move(X_f)});
   }
   //= bccmis3d#claim-J-on-edges-and-faces
@@ -184,29 +184,29 @@ RefineResult refine(Graph3& g, const Point3& c) {
 
   // 2. Subdivide c: R2a-R2h. y_i is the child whose cube has corner p_i,
   //    centred halfway between c and p_i (choice Q1, a position use).
-  std::array<Point3, 8> y{};  // y[i] pairs with p[i]
+  std::array<Point, 8> y{};  // y[i] pairs with p[i]
   for (std::size_t i = 0; i < 8; ++i) y[i] = midpoint(c, p[i]);
 
   //= bccmis3d#eq-R2a
   //= type=choice
   //= reason=Q1: y_i is named by its position, the midpoint of c and p_i
   //# Y = { y_1, ..., y_8 }
-  const PointSet3 Y(y.begin(), y.end());
+  const PointSet Y(y.begin(), y.end());
   //= bccmis3d#eq-R2b
   //# C = C ∪ Y
-  for (const Point3& y_i : Y) tx.add_center(y_i, l + 1);
+  for (const Point& y_i : Y) tx.add_center(y_i, l + 1);
   //= bccmis3d#eq-R2c
   //# N(c) = Y
   nb(c) = Y;
   //= bccmis3d#eq-R2d
   //# N(j) = N(j) \ {c}  for all j in J
-  for (const Point3& j : J) nb(j) = minus(nb(j), PointSet3{c});
+  for (const Point& j : J) nb(j) = minus(nb(j), PointSet{c});
   //= bccmis3d#eq-R2e
   //# N(p_i) = ( N(p_i) ∪ {y_i} ) \ {c}  for all p_i in P
-  for (std::size_t i = 0; i < 8; ++i) nb(p[i]) = minus(unite(nb(p[i]), PointSet3{y[i]}), PointSet3{c});
+  for (std::size_t i = 0; i < 8; ++i) nb(p[i]) = minus(unite(nb(p[i]), PointSet{y[i]}), PointSet{c});
   //= bccmis3d#eq-R2f
   //# N(y_i) = {p_i, c}  for all y_i in Y
-  for (std::size_t i = 0; i < 8; ++i) nb(y[i]) = PointSet3{p[i], c};
+  for (std::size_t i = 0; i < 8; ++i) nb(y[i]) = PointSet{p[i], c};
   //= bccmis3d#eq-R2g
   //# C = C \ {c}
   tx.remove_center(c);
@@ -219,43 +219,43 @@ RefineResult refine(Graph3& g, const Point3& c) {
   //= type=choice
   //= reason=Q2: the edges and faces of c, and whether each has its node, come from positions
   //# J+ = { m(e) : e an edge of c, m(e) not in J } ∪ { m(f) : f a face of c, m(f) not in J }
-  PointSet3 J_plus;
+  PointSet J_plus;
   for (const Edge& e : edges)
     if (!e.old) J_plus.insert(e.m);
   for (const Face& f : faces)
     if (!f.old) J_plus.insert(f.m);
   //= bccmis3d#eq-R3b
   //# N = N ∪ J+
-  for (const Point3& j : J_plus) tx.add_node(j);
+  for (const Point& j : J_plus) tx.add_node(j);
 
   for (const Edge& e : edges) {
     if (e.old) continue;
-    const Point3& j_plus = e.m;
-    const PointSet3 y_e{y[e.e.i], y[e.e.j]};
+    const Point& j_plus = e.m;
+    const PointSet y_e{y[e.e.i], y[e.e.j]};
     //= bccmis3d#eq-R3c
     //# N(x) = N(x) ∪ {j+}  for all x in X_e
-    for (const Point3& x : e.X_e) nb(x) = unite(nb(x), PointSet3{j_plus});
+    for (const Point& x : e.X_e) nb(x) = unite(nb(x), PointSet{j_plus});
     //= bccmis3d#eq-R3d
     //# N(j+) = X_e ∪ {y_i, y_j}
     nb(j_plus) = unite(e.X_e, y_e);
     //= bccmis3d#eq-R3e
     //# N(y) = N(y) ∪ {j+}  for y in {y_i, y_j}
-    for (const Point3& y_i : y_e) nb(y_i) = unite(nb(y_i), PointSet3{j_plus});
+    for (const Point& y_i : y_e) nb(y_i) = unite(nb(y_i), PointSet{j_plus});
   }
   for (const Face& f : faces) {
     if (f.old) continue;
-    const Point3& j_plus = f.m;
-    PointSet3 y_f;
+    const Point& j_plus = f.m;
+    PointSet y_f;
     for (std::size_t i : f.f.corners) y_f.insert(y[i]);
     //= bccmis3d#eq-R3f
     //# N(x) = N(x) ∪ {j+}  for all x in X_f
-    for (const Point3& x : f.X_f) nb(x) = unite(nb(x), PointSet3{j_plus});
+    for (const Point& x : f.X_f) nb(x) = unite(nb(x), PointSet{j_plus});
     //= bccmis3d#eq-R3g
     //# N(j+) = X_f ∪ {y_i, y_j, y_k, y_m}
     nb(j_plus) = unite(f.X_f, y_f);
     //= bccmis3d#eq-R3h
     //# N(y) = N(y) ∪ {j+}  for y in {y_i, y_j, y_k, y_m}
-    for (const Point3& y_i : y_f) nb(y_i) = unite(nb(y_i), PointSet3{j_plus});
+    for (const Point& y_i : y_f) nb(y_i) = unite(nb(y_i), PointSet{j_plus});
   }
 
   // 4. Old junctions join the children beside them: R4a-R4b. An old edge
@@ -264,30 +264,30 @@ RefineResult refine(Graph3& g, const Point3& c) {
   //    from the position, found in step 1).
   for (const Edge& e : edges) {
     if (!e.old) continue;
-    const Point3& j = e.m;
+    const Point& j = e.m;
     for (std::size_t i : {e.e.i, e.e.j}) {
       //= bccmis3d#eq-R4a
       //= type=choice
       //= reason=Q3: the children beside an old junction are those of its edge's corners
       //# N(j) = N(j) ∪ { y_i : p_i in e }  for all j in J, e the edge or face with m(e) = j
-      nb(j) = unite(nb(j), PointSet3{y[i]});
+      nb(j) = unite(nb(j), PointSet{y[i]});
       //= bccmis3d#eq-R4b
       //# N(y_i) = N(y_i) ∪ {j}  for all j in J and p_i in the edge or face of j
-      nb(y[i]) = unite(nb(y[i]), PointSet3{j});
+      nb(y[i]) = unite(nb(y[i]), PointSet{j});
     }
   }
   for (const Face& f : faces) {
     if (!f.old) continue;
-    const Point3& j = f.m;
+    const Point& j = f.m;
     for (std::size_t i : f.f.corners) {
       //= bccmis3d#eq-R4a
       //= type=choice
       //= reason=Q3: the children beside an old junction are those of its face's corners
       //# N(j) = N(j) ∪ { y_i : p_i in e }  for all j in J, e the edge or face with m(e) = j
-      nb(j) = unite(nb(j), PointSet3{y[i]});
+      nb(j) = unite(nb(j), PointSet{y[i]});
       //= bccmis3d#eq-R4b
       //# N(y_i) = N(y_i) ∪ {j}  for all j in J and p_i in the edge or face of j
-      nb(y[i]) = unite(nb(y[i]), PointSet3{j});
+      nb(y[i]) = unite(nb(y[i]), PointSet{j});
     }
   }
 

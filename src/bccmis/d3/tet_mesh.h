@@ -20,7 +20,7 @@ using Vec3 = std::array<double, 3>;
 
 /// An indexed mesh for writers: vertices, tets as indices into them, a small
 /// integer per vertex (written as the point data "kind") and one per
-/// tetrahedron (the cell data "level"). P is Point3 (lattice coordinates,
+/// tetrahedron (the cell data "level"). P is Point (lattice coordinates,
 /// written as integers) or Vec3 (written as the shortest decimal that reads
 /// back to the same double).
 template <class P>
@@ -33,7 +33,7 @@ struct BasicTetMesh {
 
 /// The lattice's mesh: vertices sorted by position, kind 0 node, 1 center,
 /// 2 hull, level the level of the tetrahedron's leaf v[0].
-using TetMesh = BasicTetMesh<Point3>;
+using TetMesh = BasicTetMesh<Point>;
 /// A mesh in space (spec/stuffing.md S11).
 using TetMeshF = BasicTetMesh<Vec3>;
 

@@ -107,10 +107,10 @@ class LineParser {
   }
 
   // Checks W, H, D, L of a 3D `lattice` line; `keyword` is the column of "lattice".
-  d3::LatticeSize3 lattice3(const Token& w, const Token& h, const Token& d, const Token& l, int keyword,
-                            bool strict) const {
+  d3::LatticeSize lattice3(const Token& w, const Token& h, const Token& d, const Token& l, int keyword,
+                           bool strict) const {
     const LatticeSize plane = lattice_numbers(w, h, l, strict);
-    d3::LatticeSize3 size{plane.W, plane.H, integer(d, strict, "lattice depth D"), plane.L};
+    d3::LatticeSize size{plane.W, plane.H, integer(d, strict, "lattice depth D"), plane.L};
     if (size.D < 1) fail(d.column, "lattice depth D must be >= 1, got " + std::to_string(size.D));
     try {
       d3::validate_lattice_size(size);
@@ -207,7 +207,7 @@ inline std::vector<Token> state_tokens(std::string_view line, const LineParser& 
 // ---- Canonical state, either dimension --------------------------------------
 
 /// The strict parser of spec/formats.md, "Canonical state" (and its 3D
-/// extension), for a graph type G with the members of Graph / d3::Graph3.
+/// extension), for a graph type G with the members of Graph / d3::Graph.
 template <class G>
 G parse_state_as(std::string_view text, std::string_view file) {
   using P = typename G::point_type;

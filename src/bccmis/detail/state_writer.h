@@ -1,5 +1,5 @@
 // bccmis: the canonical-state writer of spec/formats.md ("Canonical state"
-// and its 3D extension) for a graph of either dimension (Graph, d3::Graph3).
+// and its 3D extension) for a graph of either dimension (Graph, d3::Graph).
 // Internal: format.cpp and d3/format.cpp define write_canonical_state with it.
 #pragma once
 
@@ -13,14 +13,14 @@
 namespace bccmis::detail {
 
 inline void put_point(TextWriter& w, const Point& p) { w.put_point(p.x, p.y); }
-inline void put_point(TextWriter& w, const d3::Point3& p) { w.put_point(p.x, p.y, p.z); }
+inline void put_point(TextWriter& w, const d3::Point& p) { w.put_point(p.x, p.y, p.z); }
 inline void put_size(TextWriter& w, const LatticeSize& s) {
   for (const std::int64_t v : {s.W, s.H, std::int64_t{s.L}}) {
     w.put(' ');
     w.put_int(v);
   }
 }
-inline void put_size(TextWriter& w, const d3::LatticeSize3& s) {
+inline void put_size(TextWriter& w, const d3::LatticeSize& s) {
   for (const std::int64_t v : {s.W, s.H, s.D, std::int64_t{s.L}}) {
     w.put(' ');
     w.put_int(v);

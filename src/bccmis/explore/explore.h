@@ -19,8 +19,8 @@
 // that tests can run the explorer on planted-bug mutants.
 //
 // The explorer is written once over the lattice type (detail/explorer.h);
-// this header is its 2D instantiation on Graph, bccmis/explore/explore3.h the
-// 3D one on d3::Graph3.
+// this header is its 2D instantiation on Graph, bccmis/explore/d3/explore.h the
+// 3D one on d3::Graph.
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,5 @@
 // bccmis::fast: a small sorted set of points without heap, one type for every
-// dimension (SmallPoints in 2D, SmallPoints3 in 3D).
+// dimension (SmallPoints in 2D, d3::fast::SmallPoints in 3D).
 #pragma once
 
 #include <array>

@@ -7,8 +7,8 @@
 namespace bccmis {
 
 /// The first broken invariant of a lattice with point type P, named
-/// precisely: Violation in 2D (invariants.h), d3::Violation3 in 3D
-/// (d3/invariants3.h). Each checker names its codes and sections in
+/// precisely: Violation in 2D (invariants.h), d3::Violation in 3D
+/// (d3/invariants.h). Each checker names its codes and sections in
 /// spec/invariants.md.
 template <class P>
 struct BasicViolation {

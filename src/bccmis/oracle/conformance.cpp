@@ -87,8 +87,8 @@ struct reference_lattice<Trace> {
   using type = Graph;
 };
 template <>
-struct reference_lattice<Trace3> {
-  using type = d3::Graph3;
+struct reference_lattice<d3::Trace> {
+  using type = d3::Graph;
 };
 template <class T>
 using reference_lattice_t = typename reference_lattice<T>::type;
@@ -96,7 +96,7 @@ using reference_lattice_t = typename reference_lattice<T>::type;
 template <class L>
 L parse_state_of(std::string_view text, std::string_view file) {
   if constexpr (L::dimension == 3)
-    return d3::parse_state3(text, file);
+    return d3::parse_state(text, file);
   else
     return parse_state(text, file);
 }
@@ -154,7 +154,7 @@ Point random_position(const LatticeSize& size, const auto& uniform) {
   const std::int64_t S = level0_side(size);
   return {uniform(-1, size.W * S + 1), uniform(-1, size.H * S + 1)};
 }
-d3::Point3 random_position(const d3::LatticeSize3& size, const auto& uniform) {
+d3::Point random_position(const d3::LatticeSize& size, const auto& uniform) {
   const std::int64_t S = d3::level0_side(size);
   return {uniform(-1, size.W * S + 1), uniform(-1, size.H * S + 1), uniform(-1, size.D * S + 1)};
 }
@@ -316,18 +316,18 @@ ImplRun run_implementation(const std::string& command, const std::string& trace_
 }
 
 std::string reference_output(const Trace& trace) { return reference_output_of(trace); }
-std::string reference_output(const Trace3& trace) { return reference_output_of(trace); }
+std::string reference_output(const d3::Trace& trace) { return reference_output_of(trace); }
 
 std::string compare_run(const Trace& trace, const ImplRun& run) { return compare_run_of(trace, run); }
-std::string compare_run(const Trace3& trace, const ImplRun& run) { return compare_run_of(trace, run); }
+std::string compare_run(const d3::Trace& trace, const ImplRun& run) { return compare_run_of(trace, run); }
 
 Trace random_trace(std::mt19937_64& rng, int max_ops) { return random_trace_of<Trace>(rng, max_ops); }
-Trace3 random_trace3(std::mt19937_64& rng, int max_ops) { return random_trace_of<Trace3>(rng, max_ops); }
+d3::Trace d3::random_trace(std::mt19937_64& rng, int max_ops) { return random_trace_of<d3::Trace>(rng, max_ops); }
 
 Trace shrink(const Trace& trace, const std::function<bool(const Trace&)>& disagrees) {
   return shrink_of(trace, disagrees);
 }
-Trace3 shrink(const Trace3& trace, const std::function<bool(const Trace3&)>& disagrees) {
+d3::Trace shrink(const d3::Trace& trace, const std::function<bool(const d3::Trace&)>& disagrees) {
   return shrink_of(trace, disagrees);
 }
 
@@ -430,7 +430,7 @@ int run_conformance(const ConformanceOptions& o, std::ostream& out) {
     const std::string name = "random " + std::string(three ? "3D" : "2D") + " trace " + std::to_string(i + 1) +
                              " (seed " + std::to_string(o.seed) + ")";
     if (three) {
-      work.emplace_back(name, random_trace3(rng, o.max_ops));
+      work.emplace_back(name, d3::random_trace(rng, o.max_ops));
       ++random3;
     } else {
       work.emplace_back(name, random_trace(rng, o.max_ops));

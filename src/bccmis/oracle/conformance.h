@@ -63,7 +63,7 @@ ImplRun run_implementation(const std::string& command, const std::string& trace_
 /// What the reference prints for a trace (`bccmis replay`, no checks): the
 /// decision log followed by the canonical state.
 std::string reference_output(const Trace& trace);
-std::string reference_output(const Trace3& trace);
+std::string reference_output(const d3::Trace& trace);
 
 /// Compares an implementation's run with the reference output. Empty when
 /// they agree; otherwise a description of the first difference: the first
@@ -71,7 +71,7 @@ std::string reference_output(const Trace3& trace);
 /// crash / timeout / exit status. A 3D trace's states are compared with the
 /// 3D diff.
 std::string compare_run(const Trace& trace, const ImplRun& run);
-std::string compare_run(const Trace3& trace, const ImplRun& run);
+std::string compare_run(const d3::Trace& trace, const ImplRun& run);
 
 /// A random trace biased toward legal operations (seeded, deterministic):
 /// 1-3 cells per side, max level 1-3, 1..max_ops operations, most on live
@@ -79,12 +79,14 @@ std::string compare_run(const Trace3& trace, const ImplRun& run);
 Trace random_trace(std::mt19937_64& rng, int max_ops);
 /// The same in 3D, where coarsen mostly picks centers that were refined (a
 /// node picked at random is rarely one).
-Trace3 random_trace3(std::mt19937_64& rng, int max_ops);
+namespace d3 {
+Trace random_trace(std::mt19937_64& rng, int max_ops);
+}  // namespace d3
 
 /// Delta debugging: a smallest trace (no single command can be dropped) for
 /// which `disagrees` still holds. `disagrees(trace)` must hold for the input.
 Trace shrink(const Trace& trace, const std::function<bool(const Trace&)>& disagrees);
-Trace3 shrink(const Trace3& trace, const std::function<bool(const Trace3&)>& disagrees);
+d3::Trace shrink(const d3::Trace& trace, const std::function<bool(const d3::Trace&)>& disagrees);
 
 /// The viewer's side panel for an implementation whose output on `trace` was
 /// `full` (decision log, then canonical state): empty when it agrees with the

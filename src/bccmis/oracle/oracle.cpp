@@ -36,7 +36,7 @@ std::string list(const Set& s) {
 std::string lattice_text(const LatticeSize& s) {
   return std::to_string(s.W) + " " + std::to_string(s.H) + " " + std::to_string(s.L);
 }
-std::string lattice_text(const d3::LatticeSize3& s) {
+std::string lattice_text(const d3::LatticeSize& s) {
   return std::to_string(s.W) + " " + std::to_string(s.H) + " " + std::to_string(s.D) + " " + std::to_string(s.L);
 }
 
@@ -131,7 +131,7 @@ std::string format_counts(bool json, JsonWriter head, const std::string& head_te
 }  // namespace
 
 std::vector<std::string> diff_states(const Graph& a, const Graph& b) { return diff_states_as(a, b); }
-std::vector<std::string> diff_states(const d3::Graph3& a, const d3::Graph3& b) { return diff_states_as(a, b); }
+std::vector<std::string> diff_states(const d3::Graph& a, const d3::Graph& b) { return diff_states_as(a, b); }
 
 Stats stats(const Graph& g) {
   Stats s;
@@ -167,17 +167,16 @@ std::string format_stats(const Stats& s, bool json) {
   return format_counts(json, std::move(head), "", s.cells, s.cells_per_level, counts);
 }
 
-std::set<std::pair<d3::Point3, d3::Point3>> green_edges(const d3::Graph3& g) {
-  using d3::Point3;
-  std::set<std::pair<Point3, Point3>> green;
-  for (const Point3& c : g.C) {
+std::set<std::pair<d3::Point, d3::Point>> green_edges(const d3::Graph& g) {
+  std::set<std::pair<d3::Point, d3::Point>> green;
+  for (const d3::Point& c : g.C) {
     const std::int64_t h = d3::cell_side(g.size, g.level_of(c)) / 2;
     // The 12 cube edges: along axis a, the other two coordinates at c +- h.
     for (int a = 0; a < 3; ++a)
       for (const std::int64_t du : {-h, h})
         for (const std::int64_t dv : {-h, h}) {
-          std::vector<Point3> on_edge;
-          for (const Point3& n : g.nbr(c)) {
+          std::vector<d3::Point> on_edge;
+          for (const d3::Point& n : g.nbr(c)) {
             const std::array<std::int64_t, 3> d{n.x - c.x, n.y - c.y, n.z - c.z};
             if (d[(a + 1) % 3] == du && d[(a + 2) % 3] == dv) on_edge.push_back(n);
           }
@@ -188,33 +187,32 @@ std::set<std::pair<d3::Point3, d3::Point3>> green_edges(const d3::Graph3& g) {
   return green;
 }
 
-Stats3 stats(const d3::Graph3& g) {
-  using d3::Point3;
-  Stats3 s;
+d3::Stats stats(const d3::Graph& g) {
+  d3::Stats s;
   s.size = g.size;
   s.cells = g.C.size();
   s.nodes = g.N.size();
   for (const auto& [c, l] : g.level) ++s.cells_per_level[l];
-  for (const Point3& n : g.N) {
+  for (const d3::Point& n : g.N) {
     const std::size_t k = g.nbr(n).size();
     if ((k & (k - 1)) != 0) ++s.junctions;  // not a power of two: 3, 5, 6 or 7 (F1, F2)
   }
   std::size_t entries = 0;
   for (const auto& [v, nbrs] : g.neighbors) entries += nbrs.size();
-  for (const Point3& c : g.C) s.graph_edges += g.nbr(c).size();
+  for (const d3::Point& c : g.C) s.graph_edges += g.nbr(c).size();
   s.green_edges = green_edges(g).size();
   const std::vector<d3::Tet> tets = d3::tetrahedra(g);
   s.tetrahedra = tets.size();
-  std::set<Point3> hull;
+  std::set<d3::Point> hull;
   for (const d3::Tet& t : tets)
-    for (const Point3& v : t)
+    for (const d3::Point& v : t)
       if (!g.is_node(v) && !g.is_center(v)) hull.insert(v);
   s.hull_vertices = hull.size();
   s.reference_bytes = reference_bytes(g, entries);
   return s;
 }
 
-std::string format_stats(const Stats3& s, bool json) {
+std::string format_stats(const d3::Stats& s, bool json) {
   const Count counts[] = {{"nodes", s.nodes},
                           {"junctions", s.junctions},
                           {"graph_edges", s.graph_edges},

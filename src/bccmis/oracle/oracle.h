@@ -20,7 +20,7 @@ namespace bccmis {
 /// kind, different level, different neighbor sets). Empty iff A == B.
 std::vector<std::string> diff_states(const Graph& a, const Graph& b);
 /// The same for two 3D states.
-std::vector<std::string> diff_states(const d3::Graph3& a, const d3::Graph3& b);
+std::vector<std::string> diff_states(const d3::Graph& a, const d3::Graph& b);
 
 /// Counts describing a state (the `bccmis stats` output).
 struct Stats {
@@ -36,9 +36,10 @@ Stats stats(const Graph& g);
 /// Stats as text, one `name value` line each (or JSON).
 std::string format_stats(const Stats& s, bool json);
 
+namespace d3 {
 /// Counts describing a 3D state (`bccmis stats` on a 3D state or trace).
-struct Stats3 {
-  d3::LatticeSize3 size;
+struct Stats {
+  d3::LatticeSize size;
   std::map<int, std::size_t> cells_per_level;
   std::size_t cells = 0, nodes = 0;
   std::size_t junctions = 0;        ///< nodes with |N(n)| in {3, 5, 6, 7} (spec/lattice3d.md §3, F2)
@@ -48,13 +49,14 @@ struct Stats3 {
   std::size_t hull_vertices = 0;    ///< mesh vertices in neither N nor C (domain-boundary face centers)
   std::size_t reference_bytes = 0;  ///< estimate of the reference std::set/std::map storage
 };
-Stats3 stats(const d3::Graph3& g);
-std::string format_stats(const Stats3& s, bool json);
+}  // namespace d3
+d3::Stats stats(const d3::Graph& g);
+std::string format_stats(const d3::Stats& s, bool json);
 
 /// The green edges of a 3D state (spec/mesh3d.md M12): over all leaves, the
 /// segments between consecutive nodes of N(c) along each of the 12 edges of
 /// c's cube, each once, as (smaller, larger) position pairs.
-std::set<std::pair<d3::Point3, d3::Point3>> green_edges(const d3::Graph3& g);
+std::set<std::pair<d3::Point, d3::Point>> green_edges(const d3::Graph& g);
 
 /// An SVG picture: cells shaded by level, graph edges (solid), hull edges of
 /// eq. (1) (dashed), nodes (dots) and junctions (rings).
@@ -68,13 +70,13 @@ struct SlicePlane {
 };
 
 /// The default slice of `bccmis render`: z at the middle of the box.
-SlicePlane middle_slice(const d3::LatticeSize3& size);
+SlicePlane middle_slice(const d3::LatticeSize& size);
 
 /// The leaves a slice cuts: those whose cube spans `slice.value` along the
 /// axis, half-open [low, high), so that a plane through cube faces takes the
 /// leaves above it (at the box's far face, the leaves below it). Each leaf
 /// once, sorted.
-std::vector<d3::Point3> sliced_leaves(const d3::Graph3& g, const SlicePlane& slice);
+std::vector<d3::Point> sliced_leaves(const d3::Graph& g, const SlicePlane& slice);
 
 /// The 3D picture of `bccmis render` (spec/cli.md), one SVG of two panels.
 /// Left: the domain box in a cabinet projection (x right, z up, y receding
@@ -88,6 +90,8 @@ std::vector<d3::Point3> sliced_leaves(const d3::Graph3& g, const SlicePlane& sli
 /// nodes on the plane as dots (class "node") and the junctions among them
 /// (|N(n)| in {3, 5, 6, 7}) as rings (class "junction"). Throws
 /// std::invalid_argument when the slice is not within the box.
-std::string render_svg3(const d3::Graph3& g, const std::string& title, const SlicePlane& slice);
+namespace d3 {
+std::string render_svg(const Graph& g, const std::string& title, const SlicePlane& slice);
+}  // namespace d3
 
 }  // namespace bccmis

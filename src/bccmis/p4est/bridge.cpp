@@ -8,7 +8,7 @@
 #include <string>
 
 #include "bccmis/d3/ops.h"
-#include "bccmis/invariants/d3/invariants3.h"
+#include "bccmis/invariants/d3/invariants.h"
 #include "bccmis/invariants/invariants.h"
 #include "bccmis/ops.h"
 #include "bccmis/p4est/detail/gather.h"

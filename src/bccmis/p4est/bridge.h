@@ -1,6 +1,6 @@
 // bccmis::p4est_bridge: exchange leaf sets between a bccmis lattice and a
 // p4est forest of quadtrees (issue 10; spec/p4est.md), and between a 3D
-// lattice (d3::Graph3) and a p8est forest of octrees (spec/p4est.md "3D:
+// lattice (d3::Graph) and a p8est forest of octrees (spec/p4est.md "3D:
 // p8est"). One source for both dimensions (issue 26), as p4est compiles p8est
 // from the same files: the algorithms are templates over Dim = 2, 3, written
 // once against the traits P4<Dim> (p4est or p8est types, constants and
@@ -156,9 +156,9 @@ struct P4<2> {
 template <>
 struct P4<3> {
   static constexpr int kDim = 3;
-  using Point = d3::Point3;
-  using LatticeSize = d3::LatticeSize3;
-  using Graph = d3::Graph3;
+  using Point = d3::Point;
+  using LatticeSize = d3::LatticeSize;
+  using Graph = d3::Graph;
   using forest_t = p8est_t;
   using connectivity_t = p8est_connectivity_t;
   using quadrant_t = p8est_quadrant_t;
@@ -220,9 +220,9 @@ inline constexpr int dim_of<LatticeSize> = 2;
 template <>
 inline constexpr int dim_of<p4est_t> = 2;
 template <>
-inline constexpr int dim_of<d3::Graph3> = 3;
+inline constexpr int dim_of<d3::Graph> = 3;
 template <>
-inline constexpr int dim_of<d3::LatticeSize3> = 3;
+inline constexpr int dim_of<d3::LatticeSize> = 3;
 template <>
 inline constexpr int dim_of<p8est_t> = 3;
 

@@ -15,8 +15,6 @@
 
 namespace bccmis::stuff {
 
-using d3::Point3;
-
 Bounds swept_bounds(const Shape& shape, const Vec3& d) {
   Bounds b = shape.bounds();
   for (std::size_t i = 0; i < 3; ++i) {
@@ -35,24 +33,24 @@ double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 std::size_t mix(std::uint64_t h) { return static_cast<std::size_t>(h ^ (h >> 29)); }
-std::uint64_t point_hash(const Point3& p) {
+std::uint64_t point_hash(const d3::Point& p) {
   return static_cast<std::uint64_t>(p.x) * 0x9E3779B97F4A7C15ull ^
          static_cast<std::uint64_t>(p.y) * 0xC2B2AE3D27D4EB4Full ^
          static_cast<std::uint64_t>(p.z) * 0x165667B19E3779F9ull;
 }
-Point3 shifted(const Point3& c, std::int64_t dx, std::int64_t dy, std::int64_t dz) {
+d3::Point shifted(const d3::Point& c, std::int64_t dx, std::int64_t dy, std::int64_t dz) {
   return {c.x + dx, c.y + dy, c.z + dz};
 }
 /// The 8 children of the cell centred at c with side s.
-std::array<Point3, 8> children(const Point3& c, std::int64_t s) {
+std::array<d3::Point, 8> children(const d3::Point& c, std::int64_t s) {
   const std::int64_t q = s / 4;
-  std::array<Point3, 8> out{};
+  std::array<d3::Point, 8> out{};
   for (std::size_t i = 0; i < 8; ++i) out[i] = shifted(c, (i & 1) ? q : -q, (i & 2) ? q : -q, (i & 4) ? q : -q);
   return out;
 }
 }  // namespace
 
-std::size_t MovingLattice::PointHash::operator()(const Point3& p) const noexcept { return mix(point_hash(p)); }
+std::size_t MovingLattice::PointHash::operator()(const d3::Point& p) const noexcept { return mix(point_hash(p)); }
 
 void check_moving_fit(const Fit& fit) {
   const std::int64_t S = d3::level0_side(fit.size);
@@ -71,14 +69,14 @@ MovingLattice::MovingLattice(std::shared_ptr<const Shape> shape, const Fit& fit,
       reach_(1.05 * std::max(options_.alpha_long * fit_.h, options_.alpha_short * 0.5 * std::sqrt(3.0) * fit_.h)) {
   leaves_.reserve(2 * g_.cell_count());
   std::vector<Candidate> all;
-  for (const Point3& u : g_.cells()) all.push_back({u, true, -1});
+  for (const d3::Point& u : g_.cells()) all.push_back({u, true, -1});
   FrameReport ignored;
   restuff(all, ignored);
 }
 
-std::vector<Point3> MovingLattice::roots() const {
+std::vector<d3::Point> MovingLattice::roots() const {
   const std::int64_t s = side(0);
-  std::vector<Point3> out;
+  std::vector<d3::Point> out;
   for (std::int64_t i = 0; i < fit_.size.W; ++i)
     for (std::int64_t j = 0; j < fit_.size.H; ++j)
       for (std::int64_t k = 0; k < fit_.size.D; ++k) out.push_back({s / 2 + i * s, s / 2 + j * s, s / 2 + k * s});
@@ -92,7 +90,7 @@ std::vector<Point3> MovingLattice::roots() const {
 // near the surface, with the distances it computed: the level-L leaves
 // below cells that pass, the coarser leaves that fail, and, to search after
 // the coarsen pass, the failing refined cells that may hold some.
-void MovingLattice::refine_visit(const Point3& c, int level, FrameReport& report, Descent& d) {
+void MovingLattice::refine_visit(const d3::Point& c, int level, FrameReport& report, Descent& d) {
   const double s = static_cast<double>(side(level)) * fit_.scale;
   const double f = moved_->distance(fit_.to_space(c));
   const double k = 0.5 * std::sqrt(3.0);
@@ -109,17 +107,17 @@ void MovingLattice::refine_visit(const Point3& c, int level, FrameReport& report
     return;
   }
   if (g_.is_center(c)) {
-    const d3::BalancedRefineResult3 r = d3::refine_balanced(g_, c);
+    const d3::BalancedRefineResult r = d3::refine_balanced(g_, c);
     report.refines += r.refined.size();
-    for (const Point3& x : r.refined) changed_.push_back({x, *d3::refined_center_level(fit_.size, x)});
+    for (const d3::Point& x : r.refined) changed_.push_back({x, *d3::refined_center_level(fit_.size, x)});
   }
   if (level + 1 < fit_.size.L) {
-    for (const Point3& child : children(c, side(level))) refine_visit(child, level + 1, report, d);
+    for (const d3::Point& child : children(c, side(level))) refine_visit(child, level + 1, report, d);
     return;
   }
   // The children are level-L leaves.
   if (!may_hold) return;
-  for (const Point3& child : children(c, side(level))) {
+  for (const d3::Point& child : children(c, side(level))) {
     const double fc = moved_->distance(fit_.to_space(child));
     if (fc <= std::max(0.5 * s + reach_, d.moved)) d.near.push_back({child, false, fc});
   }
@@ -127,9 +125,9 @@ void MovingLattice::refine_visit(const Point3& c, int level, FrameReport& report
 
 // Coarsens the refined cell c (which fails the test, as every cell inside
 // it) from the bottom up, as far as balance allows; true if anything changed.
-bool MovingLattice::coarsen_subtree(const Point3& c, int level, FrameReport& report) {
+bool MovingLattice::coarsen_subtree(const d3::Point& c, int level, FrameReport& report) {
   bool changed = false, leaves = true;
-  for (const Point3& child : children(c, side(level)))
+  for (const d3::Point& child : children(c, side(level)))
     if (!g_.is_center(child)) {
       changed = coarsen_subtree(child, level + 1, report) || changed;
       leaves = leaves && g_.is_center(child);
@@ -146,7 +144,7 @@ bool MovingLattice::coarsen_subtree(const Point3& c, int level, FrameReport& rep
 // S16's candidates: the leaves that can be active now, |f(u)| <= s_u + 1.05 r_w,
 // or whose sign can have changed since the last frame, |f(u)| <= the
 // distance moved (the surface passed u on the way).
-void MovingLattice::near_visit(const Point3& c, int level, double moved, std::vector<Candidate>& out) const {
+void MovingLattice::near_visit(const d3::Point& c, int level, double moved, std::vector<Candidate>& out) const {
   const double s = static_cast<double>(side(level)) * fit_.scale;
   const double f = moved_->distance(fit_.to_space(c));
   if (g_.is_center(c)) {
@@ -158,12 +156,12 @@ void MovingLattice::near_visit(const Point3& c, int level, double moved, std::ve
   // max((1 - sqrt(3)/2) s / 2 + reach, moved).
   const double k = 0.5 * std::sqrt(3.0);
   if (f > k * s + std::max((1 - k) * 0.5 * s + reach_, moved)) return;
-  for (const Point3& child : children(c, side(level))) near_visit(child, level + 1, moved, out);
+  for (const d3::Point& child : children(c, side(level))) near_visit(child, level + 1, moved, out);
 }
 
 // The leaf holding the points just beside p in the direction of `octant`
 // (each component -1 or 1); false outside the domain.
-bool MovingLattice::leaf_at(const Point3& p, const std::array<int, 3>& octant, int from, Point3& out) const {
+bool MovingLattice::leaf_at(const d3::Point& p, const std::array<int, 3>& octant, int from, d3::Point& out) const {
   const std::int64_t S = d3::level0_side(fit_.size);
   const std::int64_t extent[3] = {fit_.size.W * S, fit_.size.H * S, fit_.size.D * S};
   const std::int64_t at[3] = {octant[0] > 0 ? p.x : p.x - 1, octant[1] > 0 ? p.y : p.y - 1,
@@ -175,7 +173,7 @@ bool MovingLattice::leaf_at(const Point3& p, const std::array<int, 3>& octant, i
   for (int i = 0; i <= fit_.size.L; ++i) {
     const int level = i + from <= fit_.size.L ? i + from : i + from - fit_.size.L - 1;
     const std::int64_t s = side(level);
-    const Point3 c{at[0] / s * s + s / 2, at[1] / s * s + s / 2, at[2] / s * s + s / 2};
+    const d3::Point c{at[0] / s * s + s / 2, at[1] / s * s + s / 2, at[2] / s * s + s / 2};
     if (g_.is_center(c)) {
       out = c;
       return true;
@@ -188,7 +186,7 @@ bool MovingLattice::leaf_at(const Point3& p, const std::array<int, 3>& octant, i
 // refines and coarsens: the changed cells and their children that are
 // leaves, and the leaves beside the changed cells' face centers and edge
 // midpoints found by the probes below.
-std::vector<Point3> MovingLattice::lattice_dirty() {
+std::vector<d3::Point> MovingLattice::lattice_dirty() {
   // Probes: from a face center of a changed cell, each octant pointing out
   // of it (any leaf there shares part of that face); from an edge midpoint,
   // the two octants pointing out across the edge (a leaf there shares only
@@ -196,12 +194,12 @@ std::vector<Point3> MovingLattice::lattice_dirty() {
   // is then its own edge midpoint; finer, it is its corner). `only` is that
   // level, or -1.
   struct Probe {
-    Point3 p;
+    d3::Point p;
     int octant, from, only;
     bool operator<(const Probe& o) const { return std::tie(p, octant, only) < std::tie(o.p, o.octant, o.only); }
   };
   std::vector<Probe> probes;
-  std::vector<Point3> out;
+  std::vector<d3::Point> out;
   for (const auto& [c, level] : changed_) {
     const std::int64_t h = side(level) / 2;
     for (int i = -1; i <= 1; ++i)
@@ -225,14 +223,14 @@ std::vector<Point3> MovingLattice::lattice_dirty() {
     // The changed cell and its children: the leaves among them are new or
     // lose or gain a node.
     if (g_.is_center(c)) out.push_back(c);
-    for (const Point3& child : children(c, side(level)))
+    for (const d3::Point& child : children(c, side(level)))
       if (g_.is_center(child)) out.push_back(child);
   }
   std::sort(probes.begin(), probes.end());
   probes.erase(std::unique(probes.begin(), probes.end(),
                            [](const Probe& a, const Probe& b) { return a.p == b.p && a.octant == b.octant; }),
                probes.end());
-  Point3 u;
+  d3::Point u;
   for (const Probe& q : probes)
     if (leaf_at(q.p, {(q.octant & 1) ? 1 : -1, (q.octant & 2) ? 1 : -1, (q.octant & 4) ? 1 : -1}, std::max(0, q.from),
                 u) &&
@@ -246,7 +244,7 @@ std::vector<Point3> MovingLattice::lattice_dirty() {
 namespace {
 /// A lattice point as one integer (S16's pool; checked to fit by the
 /// constructor).
-std::uint64_t pack(const Point3& p) {
+std::uint64_t pack(const d3::Point& p) {
   return static_cast<std::uint64_t>(p.x) << 42 | static_cast<std::uint64_t>(p.y) << 21 |
          static_cast<std::uint64_t>(p.z);
 }
@@ -316,7 +314,7 @@ void MovingLattice::release(Leaf& leaf) {
   leaf.inside.clear();
 }
 
-std::uint32_t MovingLattice::acquire(const Point3& p) {
+std::uint32_t MovingLattice::acquire(const d3::Point& p) {
   const std::uint32_t next = free_.empty() ? static_cast<std::uint32_t>(point_.size()) : free_.back();
   const auto [v, inserted] = index_.insert(pack(p), next);
   if (inserted) {
@@ -337,11 +335,11 @@ std::uint32_t MovingLattice::acquire(const Point3& p) {
 // lattice tetrahedra computed again where the lattice changed; then stuff
 // the active leaves and put the frame's mesh together.
 void MovingLattice::restuff(const std::vector<Candidate>& candidates, FrameReport& report) {
-  std::vector<Point3> ring;
+  std::vector<d3::Point> ring;
   std::vector<d3::Tet>& tets = tets_;
   std::vector<d3::Tet> fresh;
   tets.clear();
-  std::vector<Point3> active;
+  std::vector<d3::Point> active;
   for (const auto& [u, relattice, known] : candidates) {
     Leaf& leaf = leaves_[u];
     if (leaf.level < 0) leaf.level = g_.level_of(u);
@@ -435,12 +433,12 @@ FrameReport MovingLattice::step(const Vec3& offset) {
   changed_.clear();
   const auto t0 = std::chrono::steady_clock::now();
   // S15: refine every cell that passes S3's test (by descent, S16).
-  const std::vector<Point3> top = roots();
+  const std::vector<d3::Point> top = roots();
   // Then coarsen the refined cells that fail it, bottom up, until balance
   // lets no more go.
   Descent descent;
   descent.moved = moved * 1.01;
-  for (const Point3& c : top) refine_visit(c, 0, report, descent);
+  for (const d3::Point& c : top) refine_visit(c, 0, report, descent);
   for (bool changed = true; changed;) {
     changed = false;
     for (const auto& [c, level] : descent.failing)
@@ -452,14 +450,14 @@ FrameReport MovingLattice::step(const Vec3& offset) {
   // S16: the leaves that left go; the candidates are the leaves whose
   // lattice tetrahedra changed, the last frame's active leaves and the
   // leaves near the surface or passed by it.
-  std::vector<Point3> gone;
+  std::vector<d3::Point> gone;
   for (const auto& [c, level] : changed_) {
     gone.push_back(c);
-    for (const Point3& child : children(c, side(level))) gone.push_back(child);
+    for (const d3::Point& child : children(c, side(level))) gone.push_back(child);
   }
   std::sort(gone.begin(), gone.end());
   gone.erase(std::unique(gone.begin(), gone.end()), gone.end());
-  for (const Point3& c : gone)
+  for (const d3::Point& c : gone)
     if (!g_.is_center(c))
       if (auto it = leaves_.find(c); it != leaves_.end()) {
         release(it->second);
@@ -468,8 +466,8 @@ FrameReport MovingLattice::step(const Vec3& offset) {
   // Each candidate leaf once: its lattice changed if any entry says so, its
   // distance if any entry knows it.
   std::vector<Candidate> all = std::move(descent.near);
-  for (const Point3& u : lattice_dirty()) all.push_back({u, true, -1});
-  for (const Point3& u : active_) all.push_back({u, false, -1});
+  for (const d3::Point& u : lattice_dirty()) all.push_back({u, true, -1});
+  for (const d3::Point& u : active_) all.push_back({u, false, -1});
   for (const auto& [c, level] : descent.deferred) near_visit(c, level, descent.moved, all);
   std::sort(all.begin(), all.end(), [](const Candidate& a, const Candidate& b) { return a.u < b.u; });
   std::vector<Candidate> candidates;

@@ -11,7 +11,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "bccmis/fast/lattice3.h"
+#include "bccmis/fast/d3/lattice.h"
 #include "bccmis/stuff/stuff.h"
 
 namespace bccmis::stuff {
@@ -34,7 +34,7 @@ Bounds swept_bounds(const Shape& shape, const Vec3& d);
 void check_moving_fit(const Fit& fit);
 
 /// S15, S16: the lattice of background() and its stuffing kept up to date
-/// under a moving shape, on the fast lattice (fast::Lattice3).
+/// under a moving shape, on the fast lattice (d3::fast::Lattice).
 class MovingLattice {
  public:
   /// The lattice of background_fast(shape at offset 0, fit, options), stuffed.
@@ -43,7 +43,7 @@ class MovingLattice {
   /// the surface came near, coarsens the parents it left (S15), and stuffs
   /// again the leaves whose tetrahedra can have changed (S16).
   FrameReport step(const Vec3& offset);
-  const fast::Lattice3& lattice() const { return g_; }
+  const d3::fast::Lattice& lattice() const { return g_; }
   /// The mesh of the current frame: the same tetrahedra (vertex positions,
   /// kinds and levels) as stuff() on this lattice, in another order;
   /// lattice_tetrahedra counts those of the leaves that are not outside.
@@ -53,7 +53,7 @@ class MovingLattice {
 
  private:
   struct PointHash {
-    std::size_t operator()(const d3::Point3& p) const noexcept;
+    std::size_t operator()(const d3::Point& p) const noexcept;
   };
   /// What S16 keeps of a leaf between frames.
   struct Leaf {
@@ -67,7 +67,7 @@ class MovingLattice {
   /// A leaf S16 classifies again: whether its lattice tetrahedra changed,
   /// its distance to the surface if known (else negative).
   struct Candidate {
-    d3::Point3 u;
+    d3::Point u;
     bool relattice = false;
     double distance = -1;
   };
@@ -75,34 +75,34 @@ class MovingLattice {
   /// What the frame's descent collects (S15, S16).
   struct Descent {
     double moved = 0;  ///< the distance moved since the last frame, with a margin
-    std::vector<std::pair<d3::Point3, int>> failing, deferred;
+    std::vector<std::pair<d3::Point, int>> failing, deferred;
     std::vector<Candidate> near;
   };
 
   std::int64_t side(int level) const { return d3::cell_side(fit_.size, level); }
-  std::vector<d3::Point3> roots() const;
-  void refine_visit(const d3::Point3& c, int level, FrameReport& report, Descent& d);
-  bool coarsen_subtree(const d3::Point3& c, int level, FrameReport& report);
-  void near_visit(const d3::Point3& c, int level, double moved, std::vector<Candidate>& out) const;
-  bool leaf_at(const d3::Point3& p, const std::array<int, 3>& octant, int from, d3::Point3& out) const;
-  std::vector<d3::Point3> lattice_dirty();
+  std::vector<d3::Point> roots() const;
+  void refine_visit(const d3::Point& c, int level, FrameReport& report, Descent& d);
+  bool coarsen_subtree(const d3::Point& c, int level, FrameReport& report);
+  void near_visit(const d3::Point& c, int level, double moved, std::vector<Candidate>& out) const;
+  bool leaf_at(const d3::Point& p, const std::array<int, 3>& octant, int from, d3::Point& out) const;
+  std::vector<d3::Point> lattice_dirty();
   void restuff(const std::vector<Candidate>& candidates, FrameReport& report);
   void release(Leaf& leaf);
-  std::uint32_t acquire(const d3::Point3& p);
+  std::uint32_t acquire(const d3::Point& p);
   void assemble(const StuffedPart& part);
 
   std::shared_ptr<const Shape> shape_;
   std::shared_ptr<const Shape> moved_;
   Fit fit_;
   StuffOptions options_;
-  fast::Lattice3 g_;
+  d3::fast::Lattice g_;
   /// S16: how far from the surface a warped vertex can be.
   double reach_;
   Vec3 offset_{};
   /// The cells refined or coarsened in this step, with their levels.
-  std::vector<std::pair<d3::Point3, int>> changed_;
-  std::unordered_map<d3::Point3, Leaf, PointHash> leaves_;
-  std::vector<d3::Point3> active_;  ///< S16's active leaves of the last frame
+  std::vector<std::pair<d3::Point, int>> changed_;
+  std::unordered_map<d3::Point, Leaf, PointHash> leaves_;
+  std::vector<d3::Point> active_;  ///< S16's active leaves of the last frame
   /// Packed lattice point -> pool index: open addressing with linear
   /// probing, deletion by backward shift.
   class PackedIndex {
@@ -123,7 +123,7 @@ class MovingLattice {
   };
   // The lattice points of the inside leaves' tetrahedra, counted.
   PackedIndex index_;
-  std::vector<d3::Point3> point_;
+  std::vector<d3::Point> point_;
   std::vector<std::uint32_t> refs_;
   std::vector<std::uint32_t> free_;
   std::vector<d3::Tet> tets_;  ///< the active leaves' lattice tetrahedra (kept for its capacity)

@@ -49,7 +49,7 @@ AnimationSummary animate_shape(const std::shared_ptr<const Shape>& shape, const 
     if (settings.compare || settings.check) {
       const auto t = Clock::now();
       const auto moved = translated(shape, offset);
-      const fast::Lattice3 g = background_fast(*moved, fit, options);
+      const d3::fast::Lattice g = background_fast(*moved, fit, options);
       const Stuffed s = stuff(*moved, fit, g, options);
       frame.scratch_seconds = seconds_since(t);
       if (k > 0) scratch_total += frame.scratch_seconds;

@@ -14,8 +14,6 @@
 
 namespace bccmis::stuff {
 
-using d3::Point3;
-
 Fit fit_lattice(const Bounds& box, const StuffOptions& options) {
   Vec3 extent{};
   for (std::size_t i = 0; i < 3; ++i) {
@@ -52,7 +50,7 @@ Fit fit_lattice(const Bounds& box, const StuffOptions& options) {
     counts[i] = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(need / S - 1e-12)));
     fit.origin[i] = 0.5 * (box.lo[i] + box.hi[i]) - 0.5 * static_cast<double>(counts[i]) * S;
   }
-  fit.size = d3::LatticeSize3{counts[0], counts[1], counts[2], L};
+  fit.size = d3::LatticeSize{counts[0], counts[1], counts[2], L};
   fit.scale = std::ldexp(S, -(L + 1));
   return fit;
 }
@@ -61,18 +59,18 @@ namespace {
 
 /// S3 on either lattice: the same passes, the same refines in the same order
 /// (every pass visits the leaves of its start in sorted order), so the same
-/// leaf set on Graph3 and fast::Lattice3.
+/// leaf set on d3::Graph and d3::fast::Lattice.
 template <class G>
 void refine_near(const Shape& shape, const Fit& fit, const StuffOptions& options, G& g) {
   const int L = fit.size.L;
-  std::vector<Point3> snapshot;
+  std::vector<d3::Point> snapshot;
   for (bool changed = true; changed;) {
     changed = false;
     {
       const auto& cs = cells(g);  // sorted on both lattices
       snapshot.assign(cs.begin(), cs.end());
     }
-    for (const Point3& c : snapshot) {
+    for (const d3::Point& c : snapshot) {
       if (!is_center(g, c)) continue;  // refined by the cascade earlier in this pass
       const int l = level_of(g, c);
       if (l >= L) continue;
@@ -88,14 +86,14 @@ void refine_near(const Shape& shape, const Fit& fit, const StuffOptions& options
 
 }  // namespace
 
-d3::Graph3 background(const Shape& shape, const Fit& fit, const StuffOptions& options) {
-  d3::Graph3 g = d3::make_lattice(fit.size);
+d3::Graph background(const Shape& shape, const Fit& fit, const StuffOptions& options) {
+  d3::Graph g = d3::make_lattice(fit.size);
   refine_near(shape, fit, options, g);
   return g;
 }
 
-fast::Lattice3 background_fast(const Shape& shape, const Fit& fit, const StuffOptions& options) {
-  fast::Lattice3 g(fit.size);
+d3::fast::Lattice background_fast(const Shape& shape, const Fit& fit, const StuffOptions& options) {
+  d3::fast::Lattice g(fit.size);
   refine_near(shape, fit, options, g);
   return g;
 }

@@ -1,7 +1,7 @@
 // The flat stuffer: S5-S9 of spec/stuffing.md with the same decisions in
 // the same order as the reference stuffer (reference_stuffer.cpp), on arrays
 // indexed by the lattice vertices numbered in position order. stuff() on a
-// fast::Lattice3 and stuff_part() (S16).
+// d3::fast::Lattice and stuff_part() (S16).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -12,14 +12,12 @@
 #include <vector>
 
 #include "bccmis/d3/point.h"
-#include "bccmis/fast/mesh3.h"
+#include "bccmis/fast/d3/mesh.h"
 #include "bccmis/stuff/detail/stencils.h"
 #include "bccmis/stuff/detail/stuffer.h"
 #include "bccmis/stuff/stuff.h"
 
 namespace bccmis::stuff {
-
-using d3::Point3;
 
 namespace {
 
@@ -79,7 +77,7 @@ class EdgeTable {
   std::size_t used_ = 0;
 };
 
-/// S5-S9 on the graded mesh of a lattice G (d3::Graph3 or fast::Lattice3,
+/// S5-S9 on the graded mesh of a lattice G (d3::Graph or d3::fast::Lattice,
 /// through the vocabulary: is_center, level_of). The lattice's vertices are
 /// numbered in position order and every per-vertex datum is an array.
 template <class G>
@@ -92,7 +90,7 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey> {
 
   /// Also report, for stuff_part(), each output vertex's key as lattice
   /// points and where each lattice tetrahedron's output tetrahedra begin.
-  void record(std::vector<std::array<Point3, 2>>* keys, std::vector<std::uint32_t>* begin) {
+  void record(std::vector<std::array<d3::Point, 2>>* keys, std::vector<std::uint32_t>* begin) {
     keys_ = keys;
     begin_ = begin;
   }
@@ -132,7 +130,7 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey> {
   static VKey lattice_key(std::uint32_t i) { return (VKey{i} << 32) | i; }
   static VKey cut_key(std::uint32_t i, std::uint32_t j) { return i < j ? (VKey{i} << 32) | j : (VKey{j} << 32) | i; }
   std::int64_t length2(std::uint32_t i, std::uint32_t j) const { return detail::length2(points_[i], points_[j]); }
-  Point3 point_of(VKey k) const { return points_[first(k)]; }
+  d3::Point point_of(VKey k) const { return points_[first(k)]; }
   double value(std::uint32_t i) const { return value_[i]; }
   Vec3 pos(VKey k) const { return is_cut(k) ? cuts_[cut_index_.find(k)].pos : pos_[first(k)]; }
 
@@ -146,7 +144,7 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey> {
     std::size_t slots = 16;
     while (slots < 2 * most) slots *= 2;
     std::vector<std::uint32_t> table(slots, EdgeTable::kNone);
-    const auto hash = [&](const Point3& p) {
+    const auto hash = [&](const d3::Point& p) {
       const std::uint64_t h = static_cast<std::uint64_t>(p.x) * 0x9E3779B97F4A7C15ull ^
                               static_cast<std::uint64_t>(p.y) * 0xC2B2AE3D27D4EB4Full ^
                               static_cast<std::uint64_t>(p.z) * 0x165667B19E3779F9ull;
@@ -170,7 +168,7 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey> {
     for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
     std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return points_[a] < points_[b]; });
     std::vector<std::uint32_t> rank(points_.size());
-    std::vector<Point3> sorted(points_.size());
+    std::vector<d3::Point> sorted(points_.size());
     for (std::uint32_t r = 0; r < order.size(); ++r) rank[order[r]] = r, sorted[r] = points_[order[r]];
     points_ = std::move(sorted);
     for (Ids& ids : ids_)
@@ -316,10 +314,10 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey> {
   const StuffOptions& options_;
   std::vector<d3::Tet> owned_;
   std::span<const d3::Tet> tets_;
-  std::vector<Point3> points_;  ///< the lattice vertices of the mesh, sorted
-  std::vector<Ids> ids_;        ///< tets_ on points_
-  std::vector<double> value_;   ///< the sign of f (-1, 0, 1), 0 once warped
-  std::vector<Vec3> pos_;       ///< in space, warped or not
+  std::vector<d3::Point> points_;  ///< the lattice vertices of the mesh, sorted
+  std::vector<Ids> ids_;           ///< tets_ on points_
+  std::vector<double> value_;      ///< the sign of f (-1, 0, 1), 0 once warped
+  std::vector<Vec3> pos_;          ///< in space, warped or not
   std::vector<std::uint8_t> warped_;
   std::vector<int> level_;  ///< of the leaves, -1 until asked
   std::vector<detail::Cut> cuts_;
@@ -327,24 +325,24 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey> {
   EdgeTable cut_index_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> ends_;  ///< (v, w) for each cut edge vw, both ways
   Stuffed out_;
-  std::vector<std::array<Point3, 2>>* keys_ = nullptr;
+  std::vector<std::array<d3::Point, 2>>* keys_ = nullptr;
   std::vector<std::uint32_t>* begin_ = nullptr;
 };
 
 }  // namespace
 
-Stuffed stuff(const Shape& shape, const Fit& fit, const fast::Lattice3& g, const StuffOptions& options,
+Stuffed stuff(const Shape& shape, const Fit& fit, const d3::fast::Lattice& g, const StuffOptions& options,
               PhaseTimes* times) {
   detail::PhaseClock clock(times);
-  std::vector<d3::Tet> tets = fast::tetrahedra(g);
+  std::vector<d3::Tet> tets = d3::fast::tetrahedra(g);
   clock.lap(&PhaseTimes::mesh);
-  return Stuffer<fast::Lattice3>(shape, fit, g, options).run(std::move(tets), times);
+  return Stuffer<d3::fast::Lattice>(shape, fit, g, options).run(std::move(tets), times);
 }
 
-StuffedPart stuff_part(const Shape& shape, const Fit& fit, const fast::Lattice3& g, const StuffOptions& options,
+StuffedPart stuff_part(const Shape& shape, const Fit& fit, const d3::fast::Lattice& g, const StuffOptions& options,
                        std::span<const d3::Tet> tets) {
   StuffedPart part;
-  Stuffer<fast::Lattice3> stuffer(shape, fit, g, options);
+  Stuffer<d3::fast::Lattice> stuffer(shape, fit, g, options);
   stuffer.record(&part.keys, &part.begin);
   part.stuffed = stuffer.run(tets, nullptr);
   return part;

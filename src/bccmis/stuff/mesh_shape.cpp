@@ -1,7 +1,7 @@
 // The stuffing library's entry point (mesh_shape.h): S2-S13 in one call.
 #include "bccmis/stuff/mesh_shape.h"
 
-#include "bccmis/fast/lattice3.h"
+#include "bccmis/fast/d3/lattice.h"
 #include "bccmis/invariants/d3/stuffed_mesh.h"
 #include "bccmis/json_writer.h"
 #include "bccmis/stuff/detail/stuffer.h"
@@ -57,10 +57,10 @@ Meshed mesh_shape(const Shape& shape, const Settings& settings, const Progress& 
     return stuff(shape, r.fit, g, options, &times);
   };
   if (settings.impl == Impl::reference) {
-    const d3::Graph3 g = background(shape, r.fit, options);
+    const d3::Graph g = background(shape, r.fit, options);
     r.stuffed = stuff_on(g, g.C.size());
   } else {
-    const fast::Lattice3 g = background_fast(shape, r.fit, options);
+    const d3::fast::Lattice g = background_fast(shape, r.fit, options);
     r.stuffed = stuff_on(g, g.cell_count());
   }
   r.seconds = {{"lattice", times.lattice},

@@ -1,6 +1,6 @@
 // The reference stuffer: S5-S9 of spec/stuffing.md written on ordered maps
 // keyed by lattice points, the oracle of the flat stuffer (flat_stuffer.cpp,
-// tests/stuff/stuffing_fast_test.cpp). stuff() on a d3::Graph3.
+// tests/stuff/stuffing_fast_test.cpp). stuff() on a d3::Graph.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -16,21 +16,19 @@
 
 namespace bccmis::stuff {
 
-using d3::Point3;
-
 namespace {
 
 /// A vertex of the output (S8's key): a lattice vertex p is (p, p), the cut
 /// point on lattice edge xy is (min(x, y), max(x, y)).
 struct VKey {
-  Point3 a, b;
+  d3::Point a, b;
   bool is_cut() const { return !(a == b); }
   friend auto operator<=>(const VKey&, const VKey&) = default;
 };
 
-class ReferenceStuffer : detail::Stencils<ReferenceStuffer, Point3, VKey> {
+class ReferenceStuffer : detail::Stencils<ReferenceStuffer, d3::Point, VKey> {
  public:
-  ReferenceStuffer(const Shape& shape, const Fit& fit, const d3::Graph3& g, const StuffOptions& options)
+  ReferenceStuffer(const Shape& shape, const Fit& fit, const d3::Graph& g, const StuffOptions& options)
       : shape_(shape), fit_(fit), g_(g), options_(options) {}
 
   Stuffed run(std::vector<d3::Tet> tets, PhaseTimes* times) {
@@ -49,14 +47,14 @@ class ReferenceStuffer : detail::Stencils<ReferenceStuffer, Point3, VKey> {
   }
 
  private:
-  friend class detail::Stencils<ReferenceStuffer, Point3, VKey>;
+  friend class detail::Stencils<ReferenceStuffer, d3::Point, VKey>;
 
   // What the stencils (detail/stencils.h) ask of a stuffer.
-  static VKey lattice_key(const Point3& p) { return {p, p}; }
-  static VKey cut_key(const Point3& x, const Point3& y) { return x < y ? VKey{x, y} : VKey{y, x}; }
-  static std::int64_t length2(const Point3& p, const Point3& q) { return detail::length2(p, q); }
-  static Point3 point_of(const VKey& k) { return k.a; }
-  double value(const Point3& p) const { return value_.at(p); }
+  static VKey lattice_key(const d3::Point& p) { return {p, p}; }
+  static VKey cut_key(const d3::Point& x, const d3::Point& y) { return x < y ? VKey{x, y} : VKey{y, x}; }
+  static std::int64_t length2(const d3::Point& p, const d3::Point& q) { return detail::length2(p, q); }
+  static d3::Point point_of(const VKey& k) { return k.a; }
+  double value(const d3::Point& p) const { return value_.at(p); }
   Vec3 pos(const VKey& k) const {
     if (k.is_cut()) return cuts_.at({k.a, k.b}).pos;
     const auto it = warped_.find(k.a);
@@ -65,7 +63,7 @@ class ReferenceStuffer : detail::Stencils<ReferenceStuffer, Point3, VKey> {
 
   void evaluate() {
     for (const d3::Tet& t : tets_)
-      for (const Point3& p : t)
+      for (const d3::Point& p : t)
         if (!value_.count(p)) value_.emplace(p, shape_.signed_distance(fit_.to_space(p)));
   }
 
@@ -75,7 +73,7 @@ class ReferenceStuffer : detail::Stencils<ReferenceStuffer, Point3, VKey> {
       bool has_cut = false;
       for (std::size_t i = 0; i < 4; ++i)
         for (std::size_t j = i + 1; j < 4; ++j) {
-          Point3 x = t[i], y = t[j];
+          d3::Point x = t[i], y = t[j];
           if (y < x) std::swap(x, y);
           const double fx = value(x), fy = value(y);
           if (!((fx < 0 && fy > 0) || (fx > 0 && fy < 0))) continue;
@@ -94,15 +92,15 @@ class ReferenceStuffer : detail::Stencils<ReferenceStuffer, Point3, VKey> {
     }
   }
 
-  bool same_kind(const Point3& p, const Point3& q) const { return g_.is_center(p) == g_.is_center(q); }
+  bool same_kind(const d3::Point& p, const d3::Point& q) const { return g_.is_center(p) == g_.is_center(q); }
 
   // S6, in increasing position order.
   void warp() {
     for (auto& [v, others] : at_) {
       std::sort(others.begin(), others.end());
-      const Point3* best = nullptr;
+      const d3::Point* best = nullptr;
       double best_distance = 0;
-      for (const Point3& w : others) {
+      for (const d3::Point& w : others) {
         const auto key = v < w ? std::make_pair(v, w) : std::make_pair(w, v);
         const detail::Cut& c = cuts_.at(key);
         if (c.removed) continue;
@@ -113,10 +111,10 @@ class ReferenceStuffer : detail::Stencils<ReferenceStuffer, Point3, VKey> {
         if (!best || distance < best_distance) best = &w, best_distance = distance;
       }
       if (!best) continue;
-      const Point3 w = *best;
+      const d3::Point w = *best;
       warped_[v] = cuts_.at(v < w ? std::make_pair(v, w) : std::make_pair(w, v)).pos;
       value_[v] = 0;
-      for (const Point3& x : others) cuts_.at(v < x ? std::make_pair(v, x) : std::make_pair(x, v)).removed = true;
+      for (const d3::Point& x : others) cuts_.at(v < x ? std::make_pair(v, x) : std::make_pair(x, v)).removed = true;
     }
     out_.warped = warped_.size();
     for (const auto& [k, c] : cuts_) out_.cut_points += c.removed ? 0 : 1;
@@ -125,7 +123,7 @@ class ReferenceStuffer : detail::Stencils<ReferenceStuffer, Point3, VKey> {
   // S7
   void fill(const d3::Tet& t) {
     bool warped = false;
-    for (const Point3& p : t) warped = warped || warped_.count(p);
+    for (const d3::Point& p : t) warped = warped || warped_.count(p);
     if (warped) detail::check_regular(t, fit_.size.L);
     const int level = g_.level_of(t[0]);
     Stencils::fill(t, [level] { return level; });
@@ -154,19 +152,19 @@ class ReferenceStuffer : detail::Stencils<ReferenceStuffer, Point3, VKey> {
 
   const Shape& shape_;
   const Fit& fit_;
-  const d3::Graph3& g_;
+  const d3::Graph& g_;
   const StuffOptions& options_;
   std::vector<d3::Tet> tets_;
-  std::map<Point3, double> value_;
-  std::map<std::pair<Point3, Point3>, detail::Cut> cuts_;
-  std::map<Point3, std::vector<Point3>> at_;  ///< the other ends of the cut edges at a vertex
-  std::map<Point3, Vec3> warped_;
+  std::map<d3::Point, double> value_;
+  std::map<std::pair<d3::Point, d3::Point>, detail::Cut> cuts_;
+  std::map<d3::Point, std::vector<d3::Point>> at_;  ///< the other ends of the cut edges at a vertex
+  std::map<d3::Point, Vec3> warped_;
   Stuffed out_;
 };
 
 }  // namespace
 
-Stuffed stuff(const Shape& shape, const Fit& fit, const d3::Graph3& g, const StuffOptions& options, PhaseTimes* times) {
+Stuffed stuff(const Shape& shape, const Fit& fit, const d3::Graph& g, const StuffOptions& options, PhaseTimes* times) {
   detail::PhaseClock clock(times);
   std::vector<d3::Tet> tets = d3::tetrahedra(g);
   clock.lap(&PhaseTimes::mesh);

@@ -13,7 +13,7 @@
 
 #include "bccmis/d3/graph.h"
 #include "bccmis/d3/mesh.h"
-#include "bccmis/fast/lattice3.h"
+#include "bccmis/fast/d3/lattice.h"
 #include "bccmis/stuff/shape.h"
 
 namespace bccmis::stuff {
@@ -30,11 +30,11 @@ struct StuffOptions {
 
 /// Where the lattice sits in space (S2): lattice point p is origin + scale p.
 struct Fit {
-  d3::LatticeSize3 size;
+  d3::LatticeSize size;
   Vec3 origin{};
   double scale = 1;
   double h = 1;  ///< the side of a level-L cube, 2 scale
-  Vec3 to_space(const d3::Point3& p) const {
+  Vec3 to_space(const d3::Point& p) const {
     return {origin[0] + scale * static_cast<double>(p.x), origin[1] + scale * static_cast<double>(p.y),
             origin[2] + scale * static_cast<double>(p.z)};
   }
@@ -46,11 +46,11 @@ Fit fit_lattice(const Bounds& box, const StuffOptions& options);
 
 /// S3: the initial lattice of `fit`, refined (through the balance cascade)
 /// until no leaf passes the test.
-d3::Graph3 background(const Shape& shape, const Fit& fit, const StuffOptions& options);
+d3::Graph background(const Shape& shape, const Fit& fit, const StuffOptions& options);
 
 /// S3 on the fast lattice: the same refines in the same order, so the same
 /// state as background() (d3::canonical_state of its to_graph()).
-fast::Lattice3 background_fast(const Shape& shape, const Fit& fit, const StuffOptions& options);
+d3::fast::Lattice background_fast(const Shape& shape, const Fit& fit, const StuffOptions& options);
 
 /// The kind of an output vertex (S11's point data).
 enum class StuffVertex : std::uint8_t { lattice = 0, warped = 1, cut = 2 };
@@ -73,13 +73,13 @@ struct PhaseTimes {
 /// shape and fit). Throws std::logic_error if a tetrahedron with a cut edge or
 /// a warped vertex is not regular (S4) or an output tetrahedron is flat.
 /// `times`, when given, receives the mesh, cut, warp and stencils phases.
-Stuffed stuff(const Shape& shape, const Fit& fit, const d3::Graph3& g, const StuffOptions& options,
+Stuffed stuff(const Shape& shape, const Fit& fit, const d3::Graph& g, const StuffOptions& options,
               PhaseTimes* times = nullptr);
 
 /// The same on the fast lattice (made by background_fast()): the same mesh
-/// as stuff() on the equal Graph3, vertex for vertex and tetrahedron for
+/// as stuff() on the equal d3::Graph, vertex for vertex and tetrahedron for
 /// tetrahedron.
-Stuffed stuff(const Shape& shape, const Fit& fit, const fast::Lattice3& g, const StuffOptions& options,
+Stuffed stuff(const Shape& shape, const Fit& fit, const d3::fast::Lattice& g, const StuffOptions& options,
               PhaseTimes* times = nullptr);
 
 /// S5-S9 on some tetrahedra of the graded mesh of g (S16's incremental
@@ -90,14 +90,14 @@ Stuffed stuff(const Shape& shape, const Fit& fit, const fast::Lattice3& g, const
 /// the output tetrahedra of tets[i] begin (begin[i] .. begin[i + 1]).
 struct StuffedPart {
   Stuffed stuffed;
-  std::vector<std::array<d3::Point3, 2>> keys;
+  std::vector<std::array<d3::Point, 2>> keys;
   std::vector<std::uint32_t> begin;
 };
-StuffedPart stuff_part(const Shape& shape, const Fit& fit, const fast::Lattice3& g, const StuffOptions& options,
+StuffedPart stuff_part(const Shape& shape, const Fit& fit, const d3::fast::Lattice& g, const StuffOptions& options,
                        std::span<const d3::Tet> tets);
 
-/// Which lattice a run uses: fast::Lattice3 (the default) or the reference
-/// d3::Graph3 (--impl reference).
+/// Which lattice a run uses: d3::fast::Lattice (the default) or the reference
+/// d3::Graph (--impl reference).
 enum class Impl { fast, reference };
 
 /// S2-S9 in one call: fit_lattice, background (or background_fast) and

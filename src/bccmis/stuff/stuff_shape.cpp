@@ -10,11 +10,11 @@ Stuffed stuff_shape(const Shape& shape, const StuffOptions& options, Impl impl, 
   const Fit fit = fit_lattice(shape.bounds(), options);
   detail::PhaseClock clock(times);
   if (impl == Impl::reference) {
-    const d3::Graph3 g = background(shape, fit, options);
+    const d3::Graph g = background(shape, fit, options);
     clock.lap(&PhaseTimes::lattice);
     return stuff(shape, fit, g, options, times);
   }
-  const fast::Lattice3 g = background_fast(shape, fit, options);
+  const d3::fast::Lattice g = background_fast(shape, fit, options);
   clock.lap(&PhaseTimes::lattice);
   return stuff(shape, fit, g, options, times);
 }

@@ -1,8 +1,8 @@
 // The explorer of bccmis/explore/explore.h, written once for every lattice
-// with the data layout of the reference graphs (Graph in 2D, d3::Graph3 in
+// with the data layout of the reference graphs (Graph in 2D, d3::Graph in
 // 3D: N, C, neighbors, level, size). What differs between the dimensions is
 // given by ExploreTraits<G>, specialised beside each instantiation
-// (explore.cpp, explore3.cpp):
+// (explore.cpp, d3/explore.cpp):
 //
 //   static constexpr int dimension;
 //   static coordinates(p) -> std::array<std::int64_t, dimension>

@@ -18,8 +18,8 @@ namespace {
 using P = std::array<double, 3>;
 const std::string kSection = "spec/stuffing.md S7, S10-S12";
 
-Violation3 violation(const std::string& code, const std::string& message) {
-  Violation3 v;
+Violation violation(const std::string& code, const std::string& message) {
+  Violation v;
   v.code = code;
   v.message = code + ": " + message;
   v.section = kSection;
@@ -83,9 +83,9 @@ std::string triple(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
 
 }  // namespace
 
-std::optional<Violation3> check_stuffed_mesh(std::span<const P> vertices,
-                                             std::span<const std::array<std::uint32_t, 4>> tets,
-                                             const StuffedMeshClaims& claims) {
+std::optional<Violation> check_stuffed_mesh(std::span<const P> vertices,
+                                            std::span<const std::array<std::uint32_t, 4>> tets,
+                                            const StuffedMeshClaims& claims) {
   for (std::size_t i = 0; i < tets.size(); ++i) {
     const auto& t = tets[i];
     for (const std::uint32_t v : t)

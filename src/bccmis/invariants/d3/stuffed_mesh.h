@@ -25,7 +25,7 @@
 #include <span>
 #include <string>
 
-#include "bccmis/invariants/d3/invariants3.h"
+#include "bccmis/invariants/d3/invariants.h"
 
 namespace bccmis::d3 {
 
@@ -43,10 +43,10 @@ struct StuffedMeshClaims {
 inline constexpr std::array<double, 2> kStuffedDihedralBounds{10.7792, 164.8092};
 
 /// The first problem of the mesh (vertices, tetrahedra as indices into
-/// them), as a Violation3 of layer 7 whose message names the tetrahedron,
+/// them), as a Violation of layer 7 whose message names the tetrahedron,
 /// triangle, edge or vertex by index; empty when there is none.
-std::optional<Violation3> check_stuffed_mesh(std::span<const std::array<double, 3>> vertices,
-                                             std::span<const std::array<std::uint32_t, 4>> tets,
-                                             const StuffedMeshClaims& claims);
+std::optional<Violation> check_stuffed_mesh(std::span<const std::array<double, 3>> vertices,
+                                            std::span<const std::array<std::uint32_t, 4>> tets,
+                                            const StuffedMeshClaims& claims);
 
 }  // namespace bccmis::d3

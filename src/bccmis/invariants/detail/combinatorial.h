@@ -1,8 +1,8 @@
 // Layer 1 of the checker, combinatorial, for a graph of either dimension
-// (Graph, d3::Graph3): the sets N and C and the neighbour sets form a
+// (Graph, d3::Graph): the sets N and C and the neighbour sets form a
 // symmetric bipartite graph over existing vertices, and exactly the centers
 // carry a level. The 2D layer (combinatorial.cpp) and the 3D one
-// (d3/combinatorial3.cpp) check the lattice size themselves, then call this.
+// (d3/combinatorial.cpp) check the lattice size themselves, then call this.
 //
 // Each check finds its first offender in sorted order, by merge walks over the
 // sorted sets and one pass over the edges (O(size log size)); the first

@@ -15,11 +15,11 @@ namespace bccmis::io::detail {
 /// The VTK type of a coordinate of P.
 template <class P>
 const char* coordinate_type() {
-  return std::is_same_v<P, d3::Point3> ? "Int64" : "Float64";
+  return std::is_same_v<P, d3::Point> ? "Int64" : "Float64";
 }
 
 /// "x y z" and `end`.
-inline void write_point(std::ostream& out, const d3::Point3& p, char end = '\n') {
+inline void write_point(std::ostream& out, const d3::Point& p, char end = '\n') {
   out << p.x << ' ' << p.y << ' ' << p.z << end;
 }
 

@@ -27,7 +27,7 @@ namespace bccmis::stuff::detail {
 ///   std::int64_t length2(Vertex, Vertex): squared lattice edge length;
 ///   double value(Vertex): the sign of f, 0 once warped (S5, S6);
 ///   Vec3 pos(Key): the output vertex in space;
-///   d3::Point3 point_of(Key): the lattice point a key names first.
+///   d3::Point point_of(Key): the lattice point a key names first.
 /// The output tetrahedra, positively oriented (S12), and their levels
 /// collect in tets_out_ and levels_out_ in order of emission.
 template <class Derived, class Vertex, class Key>

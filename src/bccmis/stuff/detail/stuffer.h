@@ -13,7 +13,7 @@
 
 namespace bccmis::stuff::detail {
 
-inline std::int64_t length2(const d3::Point3& p, const d3::Point3& q) {
+inline std::int64_t length2(const d3::Point& p, const d3::Point& q) {
   const std::int64_t dx = p.x - q.x, dy = p.y - q.y, dz = p.z - q.z;
   return dx * dx + dy * dy + dz * dz;
 }

@@ -2,7 +2,7 @@
 // CGAL's exact predicates, its tet-soup loader and its 3D Delaunay
 // triangulation as a second referee of a tetrahedral mesh
 // (spec/invariants.md, "3D layer 6").
-#include "bccmis/invariants/cgal/tetrahedralization_check3.h"
+#include "bccmis/invariants/cgal/d3/tetrahedralization_check.h"
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -72,10 +72,10 @@ K::FT exact(std::int64_t v) {
   return K::FT(static_cast<double>(hi)) * K::FT(4294967296.0) + K::FT(static_cast<double>(lo));
 }
 
-K::Point_3 point(const Point3& p) { return {exact(p.x), exact(p.y), exact(p.z)}; }
+K::Point_3 point(const Point& p) { return {exact(p.x), exact(p.y), exact(p.z)}; }
 
-Violation3 violation(std::string code, std::vector<Point3> where, const std::string& text) {
-  Violation3 v;
+Violation violation(std::string code, std::vector<Point> where, const std::string& text) {
+  Violation v;
   v.code = std::move(code);
   v.where = std::move(where);
   v.message = v.code + ": " + text;
@@ -84,13 +84,13 @@ Violation3 violation(std::string code, std::vector<Point3> where, const std::str
   return v;
 }
 
-std::string names(const Tet3& t) {
+std::string names(const Tet& t) {
   return to_string(t[0]) + ", " + to_string(t[1]) + ", " + to_string(t[2]) + ", " + to_string(t[3]);
 }
 
-std::optional<Violation3> check_orientation(std::span<const Tet3> tets) {
+std::optional<Violation> check_orientation(std::span<const Tet> tets) {
   for (std::size_t i = 0; i < tets.size(); ++i) {
-    const Tet3& t = tets[i];
+    const Tet& t = tets[i];
     const CGAL::Orientation o = CGAL::orientation(point(t[0]), point(t[1]), point(t[2]), point(t[3]));
     if (o != CGAL::POSITIVE)
       return violation("cgal-orientation", {t.begin(), t.end()},
@@ -100,7 +100,7 @@ std::optional<Violation3> check_orientation(std::span<const Tet3> tets) {
   return std::nullopt;
 }
 
-std::optional<Violation3> invalid(std::size_t count, const std::string& why) {
+std::optional<Violation> invalid(std::size_t count, const std::string& why) {
   return violation("cgal-invalid", {},
                    "the " + std::to_string(count) + " tets do not load into a valid CGAL Triangulation_3: " + why);
 }
@@ -108,10 +108,10 @@ std::optional<Violation3> invalid(std::size_t count, const std::string& why) {
 // Loads the tets into tr with CGAL's tet-soup loader (every temporary of the
 // load freed on return). False when the loader refuses them; CGAL's
 // assertions may throw CGAL::Failure_exception.
-bool load(std::span<const Tet3> tets, Soup& tr) {
-  std::map<Point3, int> index;
-  for (const Tet3& t : tets)
-    for (const Point3& p : t) index.emplace(p, 0);
+bool load(std::span<const Tet> tets, Soup& tr) {
+  std::map<Point, int> index;
+  for (const Tet& t : tets)
+    for (const Point& p : t) index.emplace(p, 0);
   std::vector<K::Point_3> points;
   points.reserve(index.size());
   for (auto& [p, i] : index) {
@@ -120,7 +120,7 @@ bool load(std::span<const Tet3> tets, Soup& tr) {
   }
   std::vector<std::array<int, 5>> cells;  // 4 vertex indices and a subdomain
   cells.reserve(tets.size());
-  for (const Tet3& t : tets) cells.push_back({index.at(t[0]), index.at(t[1]), index.at(t[2]), index.at(t[3]), 1});
+  for (const Tet& t : tets) cells.push_back({index.at(t[0]), index.at(t[1]), index.at(t[2]), index.at(t[3]), 1});
   std::vector<Soup::Vertex_handle> handles;
   const std::map<std::array<int, 3>, int> no_border_facets;
   // c3t3_loader_failed = true: build only; the validity checks follow.
@@ -129,7 +129,7 @@ bool load(std::span<const Tet3> tets, Soup& tr) {
 
 // Loads the tets with CGAL's tet-soup loader and asks CGAL whether the result
 // is a valid triangulation. Assumes every tet is positively oriented.
-std::optional<Violation3> check_loaded(std::span<const Tet3> tets) {
+std::optional<Violation> check_loaded(std::span<const Tet> tets) {
   if (tets.empty()) return invalid(0, "no tets");
   Soup tr;
   // Builds with CGAL's assertions on throw where the others return false; the
@@ -157,21 +157,21 @@ std::optional<Violation3> check_loaded(std::span<const Tet3> tets) {
 
 // On a uniform lattice, every tet without a hull vertex is a cell of the
 // Delaunay triangulation of N ∪ C.
-std::optional<Violation3> check_delaunay(const Graph3& g, std::span<const Tet3> tets) {
+std::optional<Violation> check_delaunay(const Graph& g, std::span<const Tet> tets) {
   if (g.level.empty()) return std::nullopt;
   const int level = g.level.begin()->second;
   for (const auto& [c, l] : g.level)
     if (l != level) return std::nullopt;  // graded: not Delaunay, nothing required
-  std::vector<Point3> vertices(g.N.begin(), g.N.end());
+  std::vector<Point> vertices(g.N.begin(), g.N.end());
   vertices.insert(vertices.end(), g.C.begin(), g.C.end());
   std::vector<std::pair<K::Point_3, std::size_t>> input;
   input.reserve(vertices.size());
   for (std::size_t i = 0; i < vertices.size(); ++i) input.emplace_back(point(vertices[i]), i);
   Delaunay dt(input.begin(), input.end());
-  std::map<Point3, Delaunay::Vertex_handle> handle;
+  std::map<Point, Delaunay::Vertex_handle> handle;
   for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) handle[vertices[v->info()]] = v;
   for (std::size_t i = 0; i < tets.size(); ++i) {
-    const Tet3& t = tets[i];
+    const Tet& t = tets[i];
     std::array<Delaunay::Vertex_handle, 4> h;
     bool hull = false;
     for (std::size_t k = 0; k < 4; ++k) {
@@ -195,14 +195,13 @@ std::optional<Violation3> check_delaunay(const Graph3& g, std::span<const Tet3> 
 
 }  // namespace
 
-std::optional<Violation3> find_tetrahedralization_violation(const Graph3& g, std::span<const Tet3> tets) {
+std::optional<Violation> find_tetrahedralization_violation(const Graph& g, std::span<const Tet> tets) {
   if (auto v = check_orientation(tets)) return v;
   if (auto v = check_loaded(tets)) return v;
   return check_delaunay(g, tets);
 }
 
-std::optional<std::size_t> hold_triangulation(std::span<const Tet3> tets,
-                                              const std::function<void(std::size_t)>& held) {
+std::optional<std::size_t> hold_triangulation(std::span<const Tet> tets, const std::function<void(std::size_t)>& held) {
   Soup tr;
   try {
     if (!load(tets, tr)) return std::nullopt;

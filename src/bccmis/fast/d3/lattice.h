@@ -24,7 +24,7 @@
 //
 // The preconditions and refusal codes are those of the reference (bccmis/ops.h),
 // Y and J+ / J- are returned sorted by position, and the canonical state is
-// byte-identical to d3::canonical_state: tests/fast/differential3_test.cpp and
+// byte-identical to d3::canonical_state: tests/fast/d3/differential_test.cpp and
 // fuzz/fuzz_differential_3d.cpp run both on the same operations.
 #pragma once
 
@@ -46,69 +46,69 @@
 #include "bccmis/lattice.h"
 #include "bccmis/ops.h"
 
-namespace bccmis::fast {
+namespace bccmis::d3::fast {
 
 /// Up to N 3D points, sorted by (x, y, z) like the reference's std::set; no heap.
 template <std::size_t N>
-using SmallPoints3 = BasicSmallPoints<d3::Point3, N>;
+using SmallPoints = bccmis::fast::BasicSmallPoints<d3::Point, N>;
 
-/// What Lattice3::refine and Lattice3::coarsen did: the reference's result
+/// What Lattice::refine and Lattice::coarsen did: the reference's result
 /// types on fixed-size sets (Y: 8 points, J+ / J-: at most 18), sorted.
-using RefineResult3 = BasicRefineResult<SmallPoints3<18>>;
-using CoarsenResult3 = BasicCoarsenResult<SmallPoints3<18>>;
+using RefineResult = BasicRefineResult<SmallPoints<18>>;
+using CoarsenResult = BasicCoarsenResult<SmallPoints<18>>;
 
 /// The same results with std::set members (allocates; for comparisons).
-inline d3::RefineResult to_sets(const RefineResult3& r) { return {r.refused, r.Y.to_set(), r.J_plus.to_set()}; }
-inline d3::CoarsenResult to_sets(const CoarsenResult3& r) { return {r.refused, r.Y.to_set(), r.J_minus.to_set()}; }
+inline d3::RefineResult to_sets(const RefineResult& r) { return {r.refused, r.Y.to_set(), r.J_plus.to_set()}; }
+inline d3::CoarsenResult to_sets(const CoarsenResult& r) { return {r.refused, r.Y.to_set(), r.J_minus.to_set()}; }
 
 /// The adaptive 3D lattice on flat records. Copyable and movable.
-class Lattice3 {
+class Lattice {
  public:
-  using point_type = d3::Point3;
-  using size_type = d3::LatticeSize3;
+  using point_type = d3::Point;
+  using size_type = d3::LatticeSize;
   static constexpr int dimension = 3;
 
   /// The initial lattice of d3::make_lattice(size): W x H x D level-0 cubes.
   /// Throws LatticeError on an invalid size, std::length_error when the
   /// lattice would need 2^31 or more vertices of one kind.
-  explicit Lattice3(const d3::LatticeSize3& size);
+  explicit Lattice(const d3::LatticeSize& size);
 
-  const d3::LatticeSize3& size() const { return size_; }
+  const d3::LatticeSize& size() const { return size_; }
 
   // ---- The operations (same preconditions and codes as d3::refine/coarsen)
 
-  std::optional<RefineRefusal> can_refine(const d3::Point3& c) const;
-  std::optional<CoarsenRefusal> can_coarsen(const d3::Point3& n) const;
+  std::optional<RefineRefusal> can_refine(const d3::Point& c) const;
+  std::optional<CoarsenRefusal> can_coarsen(const d3::Point& n) const;
   /// spec/lattice3d.md §4: split cell c into its 8 children. A refused call
   /// changes nothing.
-  RefineResult3 refine(const d3::Point3& c);
+  RefineResult refine(const d3::Point& c);
   /// spec/lattice3d.md §5: merge the 8 cells around node n. A refused call
   /// changes nothing.
-  CoarsenResult3 coarsen(const d3::Point3& n);
+  CoarsenResult coarsen(const d3::Point& n);
 
   /// refine / coarsen of every position in order, each exactly as a single
   /// call would; returns how many were applied. Prefetches the position
   /// table slot of an operation a few ahead, so long lists on large lattices
   /// wait less for memory.
-  std::size_t refine_each(std::span<const d3::Point3> cells);
-  std::size_t coarsen_each(std::span<const d3::Point3> nodes);
+  std::size_t refine_each(std::span<const d3::Point> cells);
+  std::size_t coarsen_each(std::span<const d3::Point> nodes);
 
-  // ---- Queries (the reference's Graph3 accessors, by position) -------------
+  // ---- Queries (the reference's Graph accessors, by position) -------------
 
   std::size_t cell_count() const { return cell_count_; }  ///< |C|
   std::size_t node_count() const { return node_count_; }  ///< |N|
-  bool is_center(const d3::Point3& v) const;
-  bool is_node(const d3::Point3& v) const;
+  bool is_center(const d3::Point& v) const;
+  bool is_node(const d3::Point& v) const;
   /// Level of center c; throws std::out_of_range if c is not a center.
-  int level_of(const d3::Point3& c) const;
+  int level_of(const d3::Point& c) const;
   /// N(v), sorted; empty for a position that is not a vertex.
-  SmallPoints3<26> nbr(const d3::Point3& v) const;
+  SmallPoints<26> nbr(const d3::Point& v) const;
   /// C and N, sorted by (x, y, z) (allocates).
-  std::vector<d3::Point3> cells() const;
-  std::vector<d3::Point3> nodes() const;
+  std::vector<d3::Point> cells() const;
+  std::vector<d3::Point> nodes() const;
 
-  /// The same state as a reference Graph3 (allocates; O(size log size)).
-  d3::Graph3 to_graph() const;
+  /// The same state as a reference Graph (allocates; O(size log size)).
+  d3::Graph to_graph() const;
 
   /// Builds the lattice of a valid reference graph (one the checker accepts,
   /// e.g. parsed from a canonical state): every operation and the canonical
@@ -116,7 +116,7 @@ class Lattice3 {
   /// center has no level, or one its position does not give, or a neighbor
   /// of a center is not a node, or a vertex has more neighbors than a
   /// lattice allows (26 for a center, 8 for a node).
-  static Lattice3 from_graph(const d3::Graph3& g);
+  static Lattice from_graph(const d3::Graph& g);
 
   // ---- Memory -----------------------------------------------------------------
 
@@ -144,7 +144,7 @@ class Lattice3 {
   /// A cell center: position, level and its node ids. A free record has
   /// level -1 and nbr[0] linking the free list.
   struct Center {
-    d3::Point3 p;
+    d3::Point p;
     std::int32_t level = -1;
     std::uint32_t count = 0;
     Index nbr[26];
@@ -153,7 +153,7 @@ class Lattice3 {
   /// A node: position and its center ids. A free record has count == kFree
   /// and nbr[0] linking the free list.
   struct Node {
-    d3::Point3 p;
+    d3::Point p;
     std::uint32_t count = 0;
     Index nbr[8];
     bool live() const { return count != kFree; }
@@ -161,30 +161,30 @@ class Lattice3 {
 
   // Position table: a slot holds kNone or a reference (a center index, or
   // kNodeBit | a node index); the key is read from the record.
-  const d3::Point3& key_of(Index ref) const { return (ref & kNodeBit) ? nodes_[ref & ~kNodeBit].p : centers_[ref].p; }
-  std::size_t home(const d3::Point3& p) const;
+  const d3::Point& key_of(Index ref) const { return (ref & kNodeBit) ? nodes_[ref & ~kNodeBit].p : centers_[ref].p; }
+  std::size_t home(const d3::Point& p) const;
   /// The slot holding p, or the empty slot where p would go.
-  std::size_t slot_of(const d3::Point3& p) const;
+  std::size_t slot_of(const d3::Point& p) const;
   /// The reference at p, or kNone.
-  Index find(const d3::Point3& p) const { return table_[slot_of(p)]; }
-  Index find_center(const d3::Point3& p) const {
+  Index find(const d3::Point& p) const { return table_[slot_of(p)]; }
+  Index find_center(const d3::Point& p) const {
     const Index r = find(p);
     return r != kNone && !(r & kNodeBit) ? r : kNone;
   }
-  Index find_node(const d3::Point3& p) const {
+  Index find_node(const d3::Point& p) const {
     const Index r = find(p);
     return r != kNone && (r & kNodeBit) ? r & ~kNodeBit : kNone;
   }
   void table_insert(Index ref);  ///< its key must be absent, with room
-  void table_erase(const d3::Point3& p);
-  void table_replace(const d3::Point3& p, Index ref);
+  void table_erase(const d3::Point& p);
+  void table_replace(const d3::Point& p, Index ref);
   void rehash(std::size_t slots);
 
   /// Makes room for the vertices an operation may create, so that the update
   /// that follows cannot allocate. Table load factor at most 0.7.
   void ensure_room(std::size_t new_centers, std::size_t new_nodes);
-  Index alloc_center(const d3::Point3& p, int level);
-  Index alloc_node(const d3::Point3& p);
+  Index alloc_center(const d3::Point& p, int level);
+  Index alloc_node(const d3::Point& p);
   void free_center(Index c);
   void free_node(Index n);
 
@@ -195,14 +195,14 @@ class Lattice3 {
 
   /// The level of the refined cell centered at p, from its position alone
   /// (choice Q4 of spec/choices3d.toml), as d3::refined_center_level.
-  std::optional<int> refined_center_level(const d3::Point3& p) const;
-  std::optional<RefineRefusal> refine_refusal(const d3::Point3& c, Index& ci) const;
-  std::optional<CoarsenRefusal> coarsen_refusal(const d3::Point3& n, Index& ni, int& l) const;
+  std::optional<int> refined_center_level(const d3::Point& p) const;
+  std::optional<RefineRefusal> refine_refusal(const d3::Point& c, Index& ci) const;
+  std::optional<CoarsenRefusal> coarsen_refusal(const d3::Point& n, Index& ni, int& l) const;
 
   std::vector<Index> sorted_centers() const;
   std::vector<Index> sorted_nodes() const;
 
-  d3::LatticeSize3 size_;
+  d3::LatticeSize size_;
   std::vector<Center> centers_;
   std::vector<Node> nodes_;
   Index free_centers_ = kNone;
@@ -215,31 +215,31 @@ class Lattice3 {
   std::size_t table_used_ = 0;
 };
 
-// ---- The lattice vocabulary (bccmis/lattice.h): Lattice3 models AdaptiveLattice
+// ---- The lattice vocabulary (bccmis/lattice.h): Lattice models AdaptiveLattice
 
-inline const d3::LatticeSize3& size_of(const Lattice3& g) { return g.size(); }
-inline std::optional<RefineRefusal> can_refine(const Lattice3& g, const d3::Point3& c) { return g.can_refine(c); }
-inline std::optional<CoarsenRefusal> can_coarsen(const Lattice3& g, const d3::Point3& n) { return g.can_coarsen(n); }
-inline RefineResult3 refine(Lattice3& g, const d3::Point3& c) { return g.refine(c); }
-inline CoarsenResult3 coarsen(Lattice3& g, const d3::Point3& n) { return g.coarsen(n); }
-inline bool is_center(const Lattice3& g, const d3::Point3& v) { return g.is_center(v); }
-inline bool is_node(const Lattice3& g, const d3::Point3& v) { return g.is_node(v); }
-inline int level_of(const Lattice3& g, const d3::Point3& c) { return g.level_of(c); }
-inline SmallPoints3<26> neighbors(const Lattice3& g, const d3::Point3& v) { return g.nbr(v); }
-inline std::vector<d3::Point3> cells(const Lattice3& g) { return g.cells(); }
-inline std::vector<d3::Point3> nodes(const Lattice3& g) { return g.nodes(); }
-inline std::size_t cell_count(const Lattice3& g) { return g.cell_count(); }
-inline std::size_t node_count(const Lattice3& g) { return g.node_count(); }
+inline const d3::LatticeSize& size_of(const Lattice& g) { return g.size(); }
+inline std::optional<RefineRefusal> can_refine(const Lattice& g, const d3::Point& c) { return g.can_refine(c); }
+inline std::optional<CoarsenRefusal> can_coarsen(const Lattice& g, const d3::Point& n) { return g.can_coarsen(n); }
+inline RefineResult refine(Lattice& g, const d3::Point& c) { return g.refine(c); }
+inline CoarsenResult coarsen(Lattice& g, const d3::Point& n) { return g.coarsen(n); }
+inline bool is_center(const Lattice& g, const d3::Point& v) { return g.is_center(v); }
+inline bool is_node(const Lattice& g, const d3::Point& v) { return g.is_node(v); }
+inline int level_of(const Lattice& g, const d3::Point& c) { return g.level_of(c); }
+inline SmallPoints<26> neighbors(const Lattice& g, const d3::Point& v) { return g.nbr(v); }
+inline std::vector<d3::Point> cells(const Lattice& g) { return g.cells(); }
+inline std::vector<d3::Point> nodes(const Lattice& g) { return g.nodes(); }
+inline std::size_t cell_count(const Lattice& g) { return g.cell_count(); }
+inline std::size_t node_count(const Lattice& g) { return g.node_count(); }
 /// Optional in the vocabulary (replay calls it): room for `cells` cells, a
 /// hint, capped at kMaxReserveHint. A reservation the allocator refuses is
 /// dropped; beyond the hint the lattice grows as it goes.
-void reserve(Lattice3& g, std::size_t cells);
+void reserve(Lattice& g, std::size_t cells);
 /// The canonical text of spec/formats.md, byte-identical to
 /// d3::canonical_state(g.to_graph()), printed from the pools directly.
-inline void write_canonical_state(std::ostream& out, const Lattice3& g) { g.write_canonical_state(out); }
-std::string canonical_state(const Lattice3& g);
+inline void write_canonical_state(std::ostream& out, const Lattice& g) { g.write_canonical_state(out); }
+std::string canonical_state(const Lattice& g);
 
-}  // namespace bccmis::fast
+}  // namespace bccmis::d3::fast
 
-static_assert(bccmis::AdaptiveLattice<bccmis::fast::Lattice3>);
-static_assert(bccmis::fast::Lattice3::dimension == 3);
+static_assert(bccmis::AdaptiveLattice<bccmis::d3::fast::Lattice>);
+static_assert(bccmis::d3::fast::Lattice::dimension == 3);

@@ -12,19 +12,19 @@
 
 namespace bccmis::d3::test {
 
-inline model::Leaves leaves_of(const Graph3& g) {
+inline model::Leaves leaves_of(const Graph& g) {
   model::Leaves leaves;
-  for (const Point3& c : g.C) leaves[c] = g.level.count(c) ? g.level.at(c) : -1;
+  for (const Point& c : g.C) leaves[c] = g.level.count(c) ? g.level.at(c) : -1;
   return leaves;
 }
 
 /// F1-F3 on a graph that already matches its geometry.
-inline std::string cardinality_problem(const Graph3& g) {
+inline std::string cardinality_problem(const Graph& g) {
   const model::Leaves leaves = leaves_of(g);
-  for (const Point3& n : g.N) {
+  for (const Point& n : g.N) {
     const std::size_t k = g.nbr(n).size();
     bool pure = true;
-    for (const Point3& c : g.nbr(n)) pure = pure && model::is_corner(model::cube(g.size, c, leaves.at(c)), n);
+    for (const Point& c : g.nbr(n)) pure = pure && model::is_corner(model::cube(g.size, c, leaves.at(c)), n);
     const int inside = model::interior_coordinates(g.size, n);
     if (pure) {
       //= bccmis3d#fact-F1 type=test
@@ -37,7 +37,7 @@ inline std::string cardinality_problem(const Graph3& g) {
       if (k == 3 && inside == 3) return "junction " + to_string(n) + " with 3 cells inside the domain";
     }
   }
-  for (const Point3& c : g.C) {
+  for (const Point& c : g.C) {
     //= bccmis3d#fact-F3 type=test
     const std::size_t k = g.nbr(c).size();
     if (k < 8 || k > 26) return "cell " + to_string(c) + " has " + std::to_string(k) + " nodes";
@@ -45,9 +45,9 @@ inline std::string cardinality_problem(const Graph3& g) {
   return {};
 }
 
-inline std::string state_problem(const Graph3& g) {
+inline std::string state_problem(const Graph& g) {
   if (g.level.size() != g.C.size()) return "level map and C differ in size";
-  for (const Point3& v : g.N)
+  for (const Point& v : g.N)
     if (g.C.count(v)) return to_string(v) + " is a node and a center";
   for (const auto& [v, nbrs] : g.neighbors)
     if (!g.N.count(v) && !g.C.count(v)) return "neighbor set of the deleted vertex " + to_string(v);
@@ -55,9 +55,9 @@ inline std::string state_problem(const Graph3& g) {
   if (std::string why = model::tiling_problem(g.size, leaves); !why.empty()) return "tiling: " + why;
   const model::GeometricGraph geo = model::geometric_graph(g.size, leaves);
   if (geo.N != g.N) return "N is not the set of leaf corners";
-  for (const Point3& v : g.C)
+  for (const Point& v : g.C)
     if (g.nbr(v) != geo.nbr.at(v)) return "N(" + to_string(v) + ") is not the nodes on its closed cube";
-  for (const Point3& v : g.N)
+  for (const Point& v : g.N)
     if (g.nbr(v) != geo.nbr.at(v)) return "N(" + to_string(v) + ") is not the cells whose closed cube contains it";
   if (std::string why = model::balance_problem(g.size, leaves, geo); !why.empty()) return "balance: " + why;
   return cardinality_problem(g);

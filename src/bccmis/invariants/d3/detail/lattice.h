@@ -16,25 +16,25 @@
 #include <string>
 #include <vector>
 
-#include "bccmis/invariants/d3/invariants3.h"
+#include "bccmis/invariants/d3/invariants.h"
 
-namespace bccmis::d3::inv3 {
+namespace bccmis::d3::inv {
 
-std::optional<Violation3> check_combinatorial(const Graph3& g);  // layer 1, combinatorial3.cpp
-std::optional<Violation3> check_structural(const Graph3& g);     // layer 2, structural3.cpp
-std::optional<Violation3> check_grading(const Graph3& g);        // layer 3, grading3.cpp
-std::optional<Violation3> check_geometry(const Graph3& g);       // layer 4, geometry3.cpp
+std::optional<Violation> check_combinatorial(const Graph& g);  // layer 1, combinatorial.cpp
+std::optional<Violation> check_structural(const Graph& g);     // layer 2, structural.cpp
+std::optional<Violation> check_grading(const Graph& g);        // layer 3, grading.cpp
+std::optional<Violation> check_geometry(const Graph& g);       // layer 4, geometry.cpp
 /// lattice-size alone (part of layer 1; check_mesh runs it first).
-std::optional<Violation3> check_lattice_size(const LatticeSize3& s);
+std::optional<Violation> check_lattice_size(const LatticeSize& s);
 
 /// "(x, y, z)"
-inline std::string pos(const Point3& p) { return to_string(p); }
+inline std::string pos(const Point& p) { return to_string(p); }
 
-/// A Violation3 whose message is "<code>: <text>"; a section "§..." is one of
+/// A Violation whose message is "<code>: <text>"; a section "§..." is one of
 /// spec/lattice3d.md, any other is used as given.
-inline Violation3 violation(int layer, std::string code, std::vector<Point3> where, const std::string& text,
-                            const std::string& section) {
-  Violation3 v;
+inline Violation violation(int layer, std::string code, std::vector<Point> where, const std::string& text,
+                           const std::string& section) {
+  Violation v;
   v.message = code + ": " + text;
   v.code = std::move(code);
   v.where = std::move(where);
@@ -43,23 +43,23 @@ inline Violation3 violation(int layer, std::string code, std::vector<Point3> whe
   return v;
 }
 
-inline std::int64_t coord(const Point3& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
-inline Point3 make_point(const std::array<std::int64_t, 3>& a) { return {a[0], a[1], a[2]}; }
+inline std::int64_t coord(const Point& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
+inline Point make_point(const std::array<std::int64_t, 3>& a) { return {a[0], a[1], a[2]}; }
 
 /// The box of a valid lattice size.
-struct Box3 {
-  explicit Box3(const LatticeSize3& s) : L(s.L), S(std::int64_t{1} << (s.L + 1)), extent{s.W * S, s.H * S, s.D * S} {}
+struct Box {
+  explicit Box(const LatticeSize& s) : L(s.L), S(std::int64_t{1} << (s.L + 1)), extent{s.W * S, s.H * S, s.D * S} {}
   int L;
   std::int64_t S;
   std::array<std::int64_t, 3> extent;
 
-  bool contains(const Point3& p) const {
+  bool contains(const Point& p) const {
     for (int a = 0; a < 3; ++a)
       if (coord(p, a) < 0 || coord(p, a) > extent[a]) return false;
     return true;
   }
   /// How many coordinates of an inside point lie strictly inside the box.
-  int interior_coordinates(const Point3& p) const {
+  int interior_coordinates(const Point& p) const {
     int k = 0;
     for (int a = 0; a < 3; ++a) k += coord(p, a) > 0 && coord(p, a) < extent[a];
     return k;
@@ -72,7 +72,7 @@ struct Box3 {
   /// The level of the cube centred at p, judged from p alone: p strictly
   /// inside the box with all three coordinates odd multiples of the same
   /// 2^k, k <= L (level L - k). Empty for any other point.
-  std::optional<int> center_level(const Point3& p) const {
+  std::optional<int> center_level(const Point& p) const {
     for (int a = 0; a < 3; ++a)
       if (coord(p, a) <= 0 || coord(p, a) >= extent[a]) return std::nullopt;
     const int k = std::countr_zero(static_cast<std::uint64_t>(p.x));
@@ -86,7 +86,7 @@ struct Box3 {
 /// Where a point lies on the closed cube of center c and half-side h: the
 /// number of coordinates at c ± h (3 corner, 2 on an edge, 1 on a face, 0
 /// inside), or -1 outside.
-inline int on_cube(const Point3& c, std::int64_t h, const Point3& p) {
+inline int on_cube(const Point& c, std::int64_t h, const Point& p) {
   int at = 0;
   for (int a = 0; a < 3; ++a) {
     const std::int64_t d = coord(p, a) - coord(c, a);  // both inside the box: no overflow
@@ -101,7 +101,7 @@ enum class Role { Corner, EdgeMidpoint, FaceCenter, Other };
 
 /// Corner (3 coordinates at ±h), edge midpoint (2 at ±h, the third equal to
 /// c's), face center (1 at ±h, the other two equal to c's), or Other.
-inline Role role_on(const Point3& c, std::int64_t h, const Point3& p) {
+inline Role role_on(const Point& c, std::int64_t h, const Point& p) {
   int at = 0, mid = 0;
   for (int a = 0; a < 3; ++a) {
     const std::int64_t d = coord(p, a) - coord(c, a);
@@ -116,7 +116,7 @@ inline Role role_on(const Point3& c, std::int64_t h, const Point3& p) {
 }
 
 /// "[x0, x1] x [y0, y1] x [z0, z1]"
-inline std::string cube_text(const Point3& c, std::int64_t h) {
+inline std::string cube_text(const Point& c, std::int64_t h) {
   std::string t;
   for (int a = 0; a < 3; ++a) {
     if (a) t += " x ";
@@ -125,4 +125,4 @@ inline std::string cube_text(const Point3& c, std::int64_t h) {
   return t;
 }
 
-}  // namespace bccmis::d3::inv3
+}  // namespace bccmis::d3::inv

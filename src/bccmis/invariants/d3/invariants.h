@@ -13,7 +13,7 @@
 //                     N(n) is the set of leaves containing n (point location);
 //   5. mesh:          check_mesh, a list of tetrahedra against the graph.
 // Layer 6, CGAL as a second referee of a mesh, is the optional library
-// bccmis::tetrahedralization_check (../cgal/tetrahedralization_check3.h).
+// bccmis::tetrahedralization_check (../cgal/d3/tetrahedralization_check.h).
 // Layers 1-4 take O(size * log size * L) time.
 #pragma once
 
@@ -31,33 +31,33 @@ namespace bccmis::d3 {
 /// The first broken invariant, named precisely: positions as (x, y, z),
 /// `section` a spec anchor, e.g. "spec/lattice3d.md §3 F2", `layer` 1..6
 /// (6: the CGAL layer).
-using Violation3 = BasicViolation<Point3>;
+using Violation = BasicViolation<Point>;
 
 /// "message [section]" on one line (the message already starts with the code).
-std::string to_string(const Violation3& v);
+std::string to_string(const Violation& v);
 
 /// The first violation of layers 1..depth (depth is clamped to 0..4), each
 /// layer only after the lower ones passed. Deterministic: every layer visits
 /// vertices in sorted (x, y, z) order. Empty when the graph is valid.
-std::optional<Violation3> find_violation(const Graph3& g, int depth = 4);
+std::optional<Violation> find_violation(const Graph& g, int depth = 4);
 
 /// find_violation(g, depth) is empty.
-bool is_valid(const Graph3& g, int depth = 4);
+bool is_valid(const Graph& g, int depth = 4);
 
 /// Runs exactly one layer (1..4), assuming the lower layers passed; the
 /// result is unspecified (but safe) when that assumption fails. Throws
 /// std::invalid_argument for another layer number.
-std::optional<Violation3> check_layer(const Graph3& g, int layer);
+std::optional<Violation> check_layer(const Graph& g, int layer);
 
 /// A tetrahedron: four positions, positively oriented
 /// (det[b - a, c - a, d - a] > 0).
-using Tet3 = std::array<Point3, 4>;
+using Tet = std::array<Point, 4>;
 
 /// Layer 5: the first problem of a tetrahedral mesh of g (spec/invariants.md,
 /// "3D layer 5"), assuming g passed layers 1-4; checks the lattice size
 /// first, so it is safe on any graph. Orientation and volumes are exact; the
 /// dihedral-angle bounds [45°, 120°] are checked in double precision with a
 /// tolerance of 1e-9 degrees.
-std::optional<Violation3> check_mesh(const Graph3& g, std::span<const Tet3> tets);
+std::optional<Violation> check_mesh(const Graph& g, std::span<const Tet> tets);
 
 }  // namespace bccmis::d3

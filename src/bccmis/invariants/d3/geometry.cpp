@@ -20,28 +20,28 @@
 #include <set>
 #include <vector>
 
-#include "bccmis/invariants/d3/lattice3.h"
+#include "bccmis/invariants/d3/detail/lattice.h"
 
-namespace bccmis::d3::inv3 {
+namespace bccmis::d3::inv {
 
 namespace {
 
 bool odd_multiple(std::int64_t v, std::int64_t h) { return v % h == 0 && (v / h) % 2 != 0; }
 
 // The center of the level-k cube containing the (inside, positive) point p.
-Point3 ancestor(const Box3& box, const Point3& p, int k) {
+Point ancestor(const Box& box, const Point& p, int k) {
   const std::int64_t h = box.half(k), s = 2 * h;
   return {p.x / s * s + h, p.y / s * s + h, p.z / s * s + h};
 }
 
 }  // namespace
 
-std::optional<Violation3> check_geometry(const Graph3& g) {
+std::optional<Violation> check_geometry(const Graph& g) {
   constexpr int layer = 4;
-  const Box3 box(g.size);
+  const Box box(g.size);
   const int L = g.size.L;
 
-  for (const Point3& c : g.C) {
+  for (const Point& c : g.C) {
     const int l = g.level.at(c);
     if (l < 0 || l > L)
       return violation(layer, "level-range", {c},
@@ -58,7 +58,7 @@ std::optional<Violation3> check_geometry(const Graph3& g) {
                            std::to_string(box.extent[2]) + "]",
                        "§1");
 
-  for (const Point3& c : g.C) {
+  for (const Point& c : g.C) {
     const int l = g.level.at(c);
     const std::int64_t h = box.half(l);
     if (odd_multiple(c.x, h) && odd_multiple(c.y, h) && odd_multiple(c.z, h)) continue;
@@ -73,11 +73,11 @@ std::optional<Violation3> check_geometry(const Graph3& g) {
   }
 
   // overlap: collect the refined cubes (ancestors of leaves).
-  std::set<Point3> refined;
-  for (const Point3& c : g.C) {
+  std::set<Point> refined;
+  for (const Point& c : g.C) {
     const int l = g.level.at(c);
     for (int k = l - 1; k >= 0; --k) {
-      const Point3 a = ancestor(box, c, k);
+      const Point a = ancestor(box, c, k);
       if (g.C.count(a))
         return violation(layer, "overlap", {a, c},
                          "the level-" + std::to_string(l) + " cube " + cube_text(c, box.half(l)) + " of center " +
@@ -92,7 +92,7 @@ std::optional<Violation3> check_geometry(const Graph3& g) {
   // one level-l cube (no overflow: the counts are at most |C|).
   {
     std::vector<std::int64_t> count(static_cast<std::size_t>(L) + 1, 0);
-    for (const Point3& c : g.C) ++count[static_cast<std::size_t>(g.level.at(c))];
+    for (const Point& c : g.C) ++count[static_cast<std::size_t>(g.level.at(c))];
     bool whole = true;
     std::int64_t carry = 0;
     for (int l = L; l >= 1; --l) {
@@ -105,17 +105,17 @@ std::optional<Violation3> check_geometry(const Graph3& g) {
     if (!(whole && fits && count[0] + carry == cubes)) {
       const std::string sum = "the leaves' volumes do not sum to the box's W*H*D*S^3 (" + std::to_string(g.size.W) +
                               "*" + std::to_string(g.size.H) + "*" + std::to_string(g.size.D) + " level-0 cubes)";
-      auto gap = [&](const Point3& p, int k) {
+      auto gap = [&](const Point& p, int k) {
         return violation(layer, "coverage", {p},
                          sum + ": the level-" + std::to_string(k) + " cube " + cube_text(p, box.half(k)) +
                              " centered at " + pos(p) + " contains no leaf",
                          "§1");
       };
-      for (const Point3& r : refined) {
+      for (const Point& r : refined) {
         const int k = *box.center_level(r);
         const std::int64_t q = box.half(k + 1);
         for (int i = 0; i < 8; ++i) {
-          const Point3 child{r.x + ((i & 4) ? q : -q), r.y + ((i & 2) ? q : -q), r.z + ((i & 1) ? q : -q)};
+          const Point child{r.x + ((i & 4) ? q : -q), r.y + ((i & 2) ? q : -q), r.z + ((i & 1) ? q : -q)};
           if (!g.C.count(child) && !refined.count(child)) return gap(child, k + 1);
         }
       }
@@ -126,7 +126,7 @@ std::optional<Violation3> check_geometry(const Graph3& g) {
       for (std::int64_t i = 0; i < g.size.W && budget > 0; ++i)
         for (std::int64_t j = 0; j < g.size.H && budget > 0; ++j)
           for (std::int64_t k = 0; k < g.size.D && budget > 0; ++k, --budget) {
-            const Point3 p{(2 * i + 1) * h0, (2 * j + 1) * h0, (2 * k + 1) * h0};
+            const Point p{(2 * i + 1) * h0, (2 * j + 1) * h0, (2 * k + 1) * h0};
             if (!g.C.count(p) && !refined.count(p)) return gap(p, 0);
           }
       return violation(layer, "coverage", {}, sum, "§1");  // unreachable when no overlap
@@ -134,8 +134,8 @@ std::optional<Violation3> check_geometry(const Graph3& g) {
   }
 
   // node-cells: point location at every level.
-  for (const Point3& n : g.N) {
-    PointSet3 cells;
+  for (const Point& n : g.N) {
+    PointSet cells;
     for (int l = 0; l <= L; ++l) {
       const std::int64_t h = box.half(l), s = 2 * h;
       for (int d = 0; d < 8; ++d) {
@@ -152,19 +152,19 @@ std::optional<Violation3> check_geometry(const Graph3& g) {
           }
         }
         if (!inside) continue;
-        const Point3 c = make_point(center);
+        const Point c = make_point(center);
         const auto it = g.level.find(c);
         if (it != g.level.end() && it->second == l) cells.insert(c);
       }
     }
-    const PointSet3& listed = g.nbr(n);
+    const PointSet& listed = g.nbr(n);
     if (cells == listed) continue;
-    for (const Point3& c : cells)
+    for (const Point& c : cells)
       if (!listed.count(c))
         return violation(layer, "node-cells", {n, c},
                          "node " + pos(n) + " lies on the closed cube of the leaf " + pos(c) + " but does not list it",
                          "§1");
-    for (const Point3& c : listed)
+    for (const Point& c : listed)
       if (!cells.count(c))
         return violation(layer, "node-cells", {n, c},
                          "node " + pos(n) + " lists " + pos(c) + ", whose closed cube does not contain it", "§1");
@@ -172,4 +172,4 @@ std::optional<Violation3> check_geometry(const Graph3& g) {
   return std::nullopt;
 }
 
-}  // namespace bccmis::d3::inv3
+}  // namespace bccmis::d3::inv

@@ -23,18 +23,18 @@
 #include <optional>
 #include <span>
 
-#include "bccmis/invariants/d3/invariants3.h"
+#include "bccmis/invariants/d3/invariants.h"
 
 namespace bccmis::d3 {
 
 /// The first layer-6 problem of `tets` as a mesh of g, or nothing.
-std::optional<Violation3> find_tetrahedralization_violation(const Graph3& g, std::span<const Tet3> tets);
+std::optional<Violation> find_tetrahedralization_violation(const Graph& g, std::span<const Tet> tets);
 
 /// Loads `tets` into a CGAL Triangulation_3 with the loader of cgal-invalid
 /// (exact kernel, Epeck) and calls held(finite cells) while the triangulation
 /// is alive and every temporary of the load is freed, so that a caller can
 /// measure what the triangulation holds (bench_memory3). Returns the finite
 /// cell count, or nothing when the loader refuses the tets.
-std::optional<std::size_t> hold_triangulation(std::span<const Tet3> tets, const std::function<void(std::size_t)>& held);
+std::optional<std::size_t> hold_triangulation(std::span<const Tet> tets, const std::function<void(std::size_t)>& held);
 
 }  // namespace bccmis::d3

@@ -20,25 +20,25 @@
 namespace bccmis::d3 {
 
 // gtest prints points readably.
-inline void PrintTo(const Point3& p, std::ostream* os) { *os << to_string(p); }
+inline void PrintTo(const Point& p, std::ostream* os) { *os << to_string(p); }
 
 namespace test {
 
 /// A vertex set written as {{x, y, z}, ...}.
-inline PointSet3 vs(std::initializer_list<Point3> points) { return PointSet3(points); }
+inline PointSet vs(std::initializer_list<Point> points) { return PointSet(points); }
 
-/// Replays a 3D trace (parse_trace3, the one stepper): the final graph, and
+/// Replays a 3D trace (parse_trace, the one stepper): the final graph, and
 /// the decision log in `log`.
-inline Graph3 replay(const std::string& text, std::string* log = nullptr) {
+inline Graph replay(const std::string& text, std::string* log = nullptr) {
   std::string local;
-  return bccmis::replay<Graph3>(parse_trace3(text, "<test>"), log ? *log : local);
+  return bccmis::replay<Graph>(parse_trace(text, "<test>"), log ? *log : local);
 }
 
 /// Replays a trace in which every operation must be applied (for building
 /// known states); throws on a refusal.
-inline Graph3 build(const std::string& text) {
+inline Graph build(const std::string& text) {
   std::string log;
-  Graph3 g = replay(text, &log);
+  Graph g = replay(text, &log);
   if (log.find("refused") != std::string::npos) throw std::logic_error("build: a step was refused:\n" + log);
   return g;
 }

@@ -1,4 +1,4 @@
-// The 3D picture of `bccmis render` (oracle.h render_svg3): the domain box's
+// The 3D picture of `bccmis render` (oracle.h d3::render_svg): the domain box's
 // visible boundary triangles in a cabinet projection beside one axis-aligned
 // slice through the lattice.
 #include <algorithm>
@@ -19,12 +19,11 @@ namespace bccmis {
 
 namespace {
 
-using d3::Point3;
 using Extents = std::array<std::int64_t, 3>;
 
-std::int64_t coord(const Point3& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
+std::int64_t coord(const d3::Point& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
 
-Extents extents(const d3::LatticeSize3& s) {
+Extents extents(const d3::LatticeSize& s) {
   const std::int64_t S = d3::level0_side(s);
   return {s.W * S, s.H * S, s.D * S};
 }
@@ -56,23 +55,23 @@ int visible_face(const Points& pts, const Extents& ext) {
   for (int f = 0; f < 3; ++f) {
     const VisibleFace& vf = kVisible[static_cast<std::size_t>(f)];
     const std::int64_t plane = vf.far ? ext[static_cast<std::size_t>(vf.axis)] : 0;
-    if (std::all_of(pts.begin(), pts.end(), [&](const Point3& p) { return coord(p, vf.axis) == plane; })) return f;
+    if (std::all_of(pts.begin(), pts.end(), [&](const d3::Point& p) { return coord(p, vf.axis) == plane; })) return f;
   }
   return -1;
 }
 
 // A boundary triangle: its vertices (sorted) and the leaf of its tetrahedron.
 struct BoundaryTriangle {
-  std::array<Point3, 3> v;
-  Point3 leaf;
+  std::array<d3::Point, 3> v;
+  d3::Point leaf;
 };
 
 // The triangles of exactly one tetrahedron (spec/mesh3d.md §6).
 std::vector<BoundaryTriangle> boundary_triangles(const std::vector<d3::Tet>& tets) {
-  std::map<std::array<Point3, 3>, std::pair<int, Point3>> count;
+  std::map<std::array<d3::Point, 3>, std::pair<int, d3::Point>> count;
   for (const d3::Tet& t : tets)
     for (std::size_t skip = 0; skip < 4; ++skip) {
-      std::array<Point3, 3> f{};
+      std::array<d3::Point, 3> f{};
       std::size_t k = 0;
       for (std::size_t i = 0; i < 4; ++i)
         if (i != skip) f[k++] = t[i];
@@ -87,12 +86,12 @@ std::vector<BoundaryTriangle> boundary_triangles(const std::vector<d3::Tet>& tet
 
 }  // namespace
 
-SlicePlane middle_slice(const d3::LatticeSize3& size) { return {2, extents(size)[2] / 2}; }
+SlicePlane middle_slice(const d3::LatticeSize& size) { return {2, extents(size)[2] / 2}; }
 
-std::vector<Point3> sliced_leaves(const d3::Graph3& g, const SlicePlane& slice) {
+std::vector<d3::Point> sliced_leaves(const d3::Graph& g, const SlicePlane& slice) {
   const std::int64_t top = extents(g.size)[static_cast<std::size_t>(std::clamp(slice.axis, 0, 2))];
-  std::vector<Point3> out;
-  for (const Point3& c : g.C) {
+  std::vector<d3::Point> out;
+  for (const d3::Point& c : g.C) {
     const std::int64_t h = d3::cell_side(g.size, g.level_of(c)) / 2;
     const std::int64_t lo = coord(c, slice.axis) - h, hi = coord(c, slice.axis) + h;
     if ((lo <= slice.value && slice.value < hi) || (slice.value == top && hi == top)) out.push_back(c);
@@ -100,7 +99,7 @@ std::vector<Point3> sliced_leaves(const d3::Graph3& g, const SlicePlane& slice) 
   return out;
 }
 
-std::string render_svg3(const d3::Graph3& g, const std::string& title, const SlicePlane& slice) {
+std::string d3::render_svg(const d3::Graph& g, const std::string& title, const SlicePlane& slice) {
   const Extents ext = extents(g.size);
   if (slice.axis < 0 || slice.axis > 2) throw std::invalid_argument("slice axis must be 0, 1 or 2 (x, y or z)");
   const auto sa = static_cast<std::size_t>(slice.axis);
@@ -122,8 +121,10 @@ std::string render_svg3(const d3::Graph3& g, const std::string& title, const Sli
   const double panel_h = std::max(box_h, sh) * scale;
   const double height = margin + head + panel_h + 70;
   const double top = margin + head;
-  auto PX = [&](const Point3& p) { return margin + (static_cast<double>(p.x) + k * static_cast<double>(p.y)) * scale; };
-  auto PY = [&](const Point3& p) {
+  auto PX = [&](const d3::Point& p) {
+    return margin + (static_cast<double>(p.x) + k * static_cast<double>(p.y)) * scale;
+  };
+  auto PY = [&](const d3::Point& p) {
     return top + (box_h - static_cast<double>(p.z) - k * static_cast<double>(p.y)) * scale;
   };
   const double sx0 = margin + box_w * scale + gap;
@@ -151,7 +152,7 @@ std::string render_svg3(const d3::Graph3& g, const std::string& title, const Sli
   // The green edges on the visible faces.
   out += "<g stroke=\"#1f7a1f\" stroke-width=\"2.2\" stroke-linecap=\"round\">\n";
   for (const auto& [a, b] : green_edges(g)) {
-    if (visible_face(std::array<Point3, 2>{a, b}, ext) < 0) continue;
+    if (visible_face(std::array<d3::Point, 2>{a, b}, ext) < 0) continue;
     std::snprintf(buf, sizeof buf, "<line class=\"green\" x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\"/>\n", PX(a),
                   PY(a), PX(b), PY(b));
     out += buf;
@@ -167,7 +168,7 @@ std::string render_svg3(const d3::Graph3& g, const std::string& title, const Sli
         vf.far ? ext[static_cast<std::size_t>(vf.axis)] : 0;
     p[sa] = q[sa] = slice.value;
     q[static_cast<std::size_t>(t)] = ext[static_cast<std::size_t>(t)];
-    const Point3 P{p[0], p[1], p[2]}, Q{q[0], q[1], q[2]};
+    const d3::Point P{p[0], p[1], p[2]}, Q{q[0], q[1], q[2]};
     std::snprintf(buf, sizeof buf, "<line class=\"slice-trace\" x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\"/>\n",
                   PX(P), PY(P), PX(Q), PY(Q));
     out += buf;
@@ -175,12 +176,12 @@ std::string render_svg3(const d3::Graph3& g, const std::string& title, const Sli
   out += "</g>\n";
 
   // Right panel: the slice.
-  const std::vector<Point3> leaves = sliced_leaves(g, slice);
+  const std::vector<d3::Point> leaves = sliced_leaves(g, slice);
   int finest = 0;
   for (const auto& [c, l] : g.level) finest = std::max(finest, std::clamp(l, 0, g.size.L));
   const double cell_px = static_cast<double>(d3::cell_side(g.size, finest)) * scale;
   out += "<g stroke=\"#333333\" stroke-width=\"0.8\">\n";
-  for (const Point3& c : leaves) {
+  for (const d3::Point& c : leaves) {
     const std::int64_t h = d3::cell_side(g.size, g.level_of(c)) / 2;
     const std::int64_t u = coord(c, ua), v = coord(c, va);
     std::snprintf(buf, sizeof buf,
@@ -191,7 +192,7 @@ std::string render_svg3(const d3::Graph3& g, const std::string& title, const Sli
   }
   out += "</g>\n<g>\n";
   const double center_px = std::clamp(cell_px / 8, 1.5, 5.0);
-  for (const Point3& c : leaves) {
+  for (const d3::Point& c : leaves) {
     if (coord(c, slice.axis) != slice.value) continue;
     std::snprintf(buf, sizeof buf,
                   "<rect class=\"center\" x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"#c03030\"/>\n",
@@ -200,7 +201,7 @@ std::string render_svg3(const d3::Graph3& g, const std::string& title, const Sli
   }
   const double r_node = std::clamp(cell_px / 10, 1.5, 4.0), r_ring = std::clamp(cell_px / 5, 3.0, 8.0);
   std::size_t nodes = 0, junctions = 0;
-  for (const Point3& n : g.N) {
+  for (const d3::Point& n : g.N) {
     if (coord(n, slice.axis) != slice.value) continue;
     ++nodes;
     const double x = SX(coord(n, ua)), y = SY(coord(n, va));

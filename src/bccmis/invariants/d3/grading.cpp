@@ -13,17 +13,17 @@
 #include <map>
 #include <optional>
 
-#include "bccmis/invariants/d3/lattice3.h"
+#include "bccmis/invariants/d3/detail/lattice.h"
 
-namespace bccmis::d3::inv3 {
+namespace bccmis::d3::inv {
 
-std::optional<Violation3> check_grading(const Graph3& g) {
+std::optional<Violation> check_grading(const Graph& g) {
   constexpr int layer = 3;
-  for (const Point3& a : g.C) {
+  for (const Point& a : g.C) {
     const int la = g.level.at(a);
-    std::map<Point3, int> shared;  // cell -> number of a's nodes it lists
-    for (const Point3& n : g.nbr(a))
-      for (const Point3& b : g.nbr(n))
+    std::map<Point, int> shared;  // cell -> number of a's nodes it lists
+    for (const Point& n : g.nbr(a))
+      for (const Point& b : g.nbr(n))
         if (b != a) ++shared[b];
     for (const auto& [b, count] : shared) {
       if (count < 2) continue;
@@ -39,4 +39,4 @@ std::optional<Violation3> check_grading(const Graph3& g) {
   return std::nullopt;
 }
 
-}  // namespace bccmis::d3::inv3
+}  // namespace bccmis::d3::inv

@@ -7,7 +7,7 @@
 // record ids; a union that cannot meet an element twice is an append, a
 // difference a removal. Every set is computed before the first write, so
 // that a lattice that is not valid (a logic_error) is left unchanged.
-#include "bccmis/fast/lattice3.h"
+#include "bccmis/fast/d3/lattice.h"
 
 #include <algorithm>
 #include <bit>
@@ -19,17 +19,16 @@
 #include "bccmis/d3/geometry.h"
 #include "bccmis/text_writer.h"
 
-namespace bccmis::fast {
+namespace bccmis::d3::fast {
 
 namespace {
 
-using d3::Point3;
-using Index = Lattice3::Index;
+using Index = Lattice::Index;
 
 // The position's hash: the three coordinates combined, then the splitmix64
 // finalizer, so that the low bits (the home slot) depend on every bit of
 // every coordinate (lattice coordinates are multiples of powers of two).
-std::uint64_t mix(const Point3& p) {
+std::uint64_t mix(const Point& p) {
   std::uint64_t h = static_cast<std::uint64_t>(p.x) * 0x9E3779B97F4A7C15ull;
   h += std::rotl(static_cast<std::uint64_t>(p.y) * 0xC2B2AE3D27D4EB4Full, 21);
   h += std::rotl(static_cast<std::uint64_t>(p.z) * 0x165667B19E3779F9ull, 42);
@@ -59,7 +58,7 @@ struct Ids {
 
 // ---- Construction and memory --------------------------------------------------
 
-Lattice3::Lattice3(const d3::LatticeSize3& size) : size_(size) {
+Lattice::Lattice(const d3::LatticeSize& size) : size_(size) {
   d3::validate_lattice_size(size);
   const std::int64_t S = d3::level0_side(size);
   // The number of cubes and of grid nodes, each below 2^31 (records are named by 31-bit ids).
@@ -68,7 +67,7 @@ Lattice3::Lattice3(const d3::LatticeSize3& size) : size_(size) {
     return a < kLimit && b < kLimit && c < kLimit && a * b < kLimit && a * b * c < kLimit;
   };
   if (!product_below_limit(size.W, size.H, size.D) || !product_below_limit(size.W + 1, size.H + 1, size.D + 1))
-    throw std::length_error("fast::Lattice3: the initial lattice needs 2^31 or more vertices of one kind");
+    throw std::length_error("d3::fast::Lattice: the initial lattice needs 2^31 or more vertices of one kind");
   const std::int64_t cubes = size.W * size.H * size.D;
   reserve(static_cast<std::size_t>(cubes));
   for (std::int64_t i = 0; i <= size.W; ++i)
@@ -85,7 +84,7 @@ Lattice3::Lattice3(const d3::LatticeSize3& size) : size_(size) {
       }
 }
 
-void Lattice3::reserve(std::size_t cells) {
+void Lattice::reserve(std::size_t cells) {
   centers_.reserve(cells);
   nodes_.reserve(cells + cells / 2 + 64);
   const std::size_t keys = centers_.capacity() + nodes_.capacity();
@@ -94,8 +93,8 @@ void Lattice3::reserve(std::size_t cells) {
   if (slots != table_.size()) rehash(slots);
 }
 
-Lattice3 Lattice3::from_graph(const d3::Graph3& g) {
-  Lattice3 lat(g.size);  // validates the size
+Lattice Lattice::from_graph(const d3::Graph& g) {
+  Lattice lat(g.size);  // validates the size
   lat.centers_.clear();
   lat.nodes_.clear();
   lat.free_centers_ = lat.free_nodes_ = kNone;
@@ -104,18 +103,18 @@ Lattice3 Lattice3::from_graph(const d3::Graph3& g) {
   std::fill(lat.table_.begin(), lat.table_.end(), kNone);
   lat.table_used_ = 0;
   if (g.C.size() >= kNodeBit || g.N.size() >= kNodeBit)
-    throw std::invalid_argument("fast::Lattice3::from_graph: 2^31 or more vertices of one kind");
+    throw std::invalid_argument("d3::fast::Lattice::from_graph: 2^31 or more vertices of one kind");
   lat.centers_.reserve(g.C.size());
   lat.nodes_.reserve(g.N.size());
   lat.ensure_room(g.C.size(), g.N.size());
-  for (const Point3& n : g.N) {
+  for (const Point& n : g.N) {
     if (g.nbr(n).size() > 8)
-      throw std::invalid_argument("fast::Lattice3::from_graph: node " + d3::to_string(n) +
+      throw std::invalid_argument("d3::fast::Lattice::from_graph: node " + d3::to_string(n) +
                                   " has more than 8 neighbors");
     lat.table_insert(lat.alloc_node(n) | kNodeBit);
   }
   const std::int64_t S = d3::level0_side(g.size);
-  for (const Point3& c : g.C) {
+  for (const Point& c : g.C) {
     const auto lv = g.level.find(c);
     // A level-l center has odd multiples of 2^(L-l) as coordinates, inside the domain.
     const auto zeros = [](std::int64_t v) { return v > 0 ? std::countr_zero(static_cast<std::uint64_t>(v)) : -1; };
@@ -123,18 +122,18 @@ Lattice3 Lattice3::from_graph(const d3::Graph3& g) {
     const bool inside = c.x < g.size.W * S && c.y < g.size.H * S && c.z < g.size.D * S;
     if (lv == g.level.end() || !inside || tz < 0 || zeros(c.y) != tz || zeros(c.z) != tz ||
         g.size.L - tz != lv->second || lv->second < 0)
-      throw std::invalid_argument("fast::Lattice3::from_graph: center " + d3::to_string(c) +
+      throw std::invalid_argument("d3::fast::Lattice::from_graph: center " + d3::to_string(c) +
                                   " has no level in 0..L that matches its position");
-    const d3::PointSet3& B = g.nbr(c);
+    const d3::PointSet& B = g.nbr(c);
     if (B.size() > 26)
-      throw std::invalid_argument("fast::Lattice3::from_graph: center " + d3::to_string(c) +
+      throw std::invalid_argument("d3::fast::Lattice::from_graph: center " + d3::to_string(c) +
                                   " has more than 26 neighbors");
     const Index ci = lat.alloc_center(c, lv->second);
     lat.table_insert(ci);
-    for (const Point3& b : B) {
+    for (const Point& b : B) {
       const Index ni = lat.find_node(b);
       if (ni == kNone)
-        throw std::invalid_argument("fast::Lattice3::from_graph: neighbor " + d3::to_string(b) + " of center " +
+        throw std::invalid_argument("d3::fast::Lattice::from_graph: neighbor " + d3::to_string(b) + " of center " +
                                     d3::to_string(c) + " is not a node");
       lat.link(ci, ni);
     }
@@ -142,7 +141,7 @@ Lattice3 Lattice3::from_graph(const d3::Graph3& g) {
   return lat;
 }
 
-std::size_t Lattice3::refine_each(std::span<const Point3> cells) {
+std::size_t Lattice::refine_each(std::span<const Point> cells) {
   constexpr std::size_t kAhead = 8;
   std::size_t applied = 0;
   for (std::size_t i = 0; i < cells.size(); ++i) {
@@ -152,7 +151,7 @@ std::size_t Lattice3::refine_each(std::span<const Point3> cells) {
   return applied;
 }
 
-std::size_t Lattice3::coarsen_each(std::span<const Point3> nodes) {
+std::size_t Lattice::coarsen_each(std::span<const Point> nodes) {
   constexpr std::size_t kAhead = 8;
   std::size_t applied = 0;
   for (std::size_t i = 0; i < nodes.size(); ++i) {
@@ -162,19 +161,19 @@ std::size_t Lattice3::coarsen_each(std::span<const Point3> nodes) {
   return applied;
 }
 
-void reserve(Lattice3& g, std::size_t cells) {
+void reserve(Lattice& g, std::size_t cells) {
   try {
-    g.reserve(std::min(cells, kMaxReserveHint));
+    g.reserve(std::min(cells, bccmis::fast::kMaxReserveHint));
   } catch (const std::bad_alloc&) {
     // A hint: the lattice grows as it goes.
   }
 }
 
-std::size_t Lattice3::memory_bytes() const {
+std::size_t Lattice::memory_bytes() const {
   return centers_.capacity() * sizeof(Center) + nodes_.capacity() * sizeof(Node) + table_.capacity() * sizeof(Index);
 }
 
-void Lattice3::ensure_room(std::size_t new_centers, std::size_t new_nodes) {
+void Lattice::ensure_room(std::size_t new_centers, std::size_t new_nodes) {
   auto grow = [](auto& pool, std::size_t free_count, std::size_t needed) {
     if (free_count + (pool.capacity() - pool.size()) < needed)
       pool.reserve(std::max(2 * pool.capacity(), pool.size() + needed));
@@ -186,10 +185,10 @@ void Lattice3::ensure_room(std::size_t new_centers, std::size_t new_nodes) {
   if (slots != table_.size()) rehash(slots);
 }
 
-Index Lattice3::alloc_center(const Point3& p, int level) {
+Index Lattice::alloc_center(const Point& p, int level) {
   Index c;
   if (free_centers_ == kNone) {
-    if (centers_.size() >= kNodeBit) throw std::length_error("fast::Lattice3: 2^31 centers");
+    if (centers_.size() >= kNodeBit) throw std::length_error("d3::fast::Lattice: 2^31 centers");
     centers_.emplace_back();
     c = static_cast<Index>(centers_.size() - 1);
   } else {
@@ -205,10 +204,10 @@ Index Lattice3::alloc_center(const Point3& p, int level) {
   return c;
 }
 
-Index Lattice3::alloc_node(const Point3& p) {
+Index Lattice::alloc_node(const Point& p) {
   Index n;
   if (free_nodes_ == kNone) {
-    if (nodes_.size() >= kNodeBit) throw std::length_error("fast::Lattice3: 2^31 nodes");
+    if (nodes_.size() >= kNodeBit) throw std::length_error("d3::fast::Lattice: 2^31 nodes");
     nodes_.emplace_back();
     n = static_cast<Index>(nodes_.size() - 1);
   } else {
@@ -223,7 +222,7 @@ Index Lattice3::alloc_node(const Point3& p) {
   return n;
 }
 
-void Lattice3::free_center(Index c) {
+void Lattice::free_center(Index c) {
   Center& r = centers_[c];
   r.level = -1;
   r.count = 0;
@@ -233,7 +232,7 @@ void Lattice3::free_center(Index c) {
   --cell_count_;
 }
 
-void Lattice3::free_node(Index n) {
+void Lattice::free_node(Index n) {
   Node& r = nodes_[n];
   r.count = kFree;
   r.nbr[0] = free_nodes_;
@@ -242,12 +241,13 @@ void Lattice3::free_node(Index n) {
   --node_count_;
 }
 
-void Lattice3::add_id(Index* ids, std::uint32_t& count, std::uint32_t capacity, Index id) {
-  if (count >= capacity) throw std::logic_error("fast::Lattice3: a neighbor list overflows; the lattice is not valid");
+void Lattice::add_id(Index* ids, std::uint32_t& count, std::uint32_t capacity, Index id) {
+  if (count >= capacity)
+    throw std::logic_error("d3::fast::Lattice: a neighbor list overflows; the lattice is not valid");
   ids[count++] = id;
 }
 
-void Lattice3::remove_id(Index* ids, std::uint32_t& count, Index id) {
+void Lattice::remove_id(Index* ids, std::uint32_t& count, Index id) {
   for (std::uint32_t i = 0; i < count; ++i)
     if (ids[i] == id) {
       ids[i] = ids[--count];
@@ -255,7 +255,7 @@ void Lattice3::remove_id(Index* ids, std::uint32_t& count, Index id) {
     }
 }
 
-void Lattice3::link(Index center, Index node) {
+void Lattice::link(Index center, Index node) {
   Center& c = centers_[center];
   Node& n = nodes_[node];
   add_id(c.nbr, c.count, 26, node);
@@ -264,15 +264,15 @@ void Lattice3::link(Index center, Index node) {
 
 // ---- Position table -------------------------------------------------------------
 
-std::size_t Lattice3::home(const Point3& p) const { return static_cast<std::size_t>(mix(p)) & (table_.size() - 1); }
+std::size_t Lattice::home(const Point& p) const { return static_cast<std::size_t>(mix(p)) & (table_.size() - 1); }
 
-std::size_t Lattice3::slot_of(const Point3& p) const {
+std::size_t Lattice::slot_of(const Point& p) const {
   const std::size_t mask = table_.size() - 1;
   for (std::size_t s = home(p);; s = (s + 1) & mask)
     if (table_[s] == kNone || key_of(table_[s]) == p) return s;
 }
 
-void Lattice3::table_insert(Index ref) {
+void Lattice::table_insert(Index ref) {
   const std::size_t mask = table_.size() - 1;
   std::size_t s = home(key_of(ref));
   while (table_[s] != kNone) s = (s + 1) & mask;
@@ -280,9 +280,9 @@ void Lattice3::table_insert(Index ref) {
   ++table_used_;
 }
 
-void Lattice3::table_replace(const Point3& p, Index ref) { table_[slot_of(p)] = ref; }
+void Lattice::table_replace(const Point& p, Index ref) { table_[slot_of(p)] = ref; }
 
-void Lattice3::table_erase(const Point3& p) {
+void Lattice::table_erase(const Point& p) {
   // Linear probing's deletion by backward shift: an entry after the hole
   // moves into it unless its home lies cyclically in (hole, entry].
   const std::size_t mask = table_.size() - 1;
@@ -300,7 +300,7 @@ void Lattice3::table_erase(const Point3& p) {
   --table_used_;
 }
 
-void Lattice3::rehash(std::size_t slots) {
+void Lattice::rehash(std::size_t slots) {
   std::vector<Index> old(slots, kNone);
   old.swap(table_);
   table_used_ = 0;
@@ -310,17 +310,17 @@ void Lattice3::rehash(std::size_t slots) {
 
 // ---- Queries -----------------------------------------------------------------------
 
-bool Lattice3::is_center(const Point3& v) const { return find_center(v) != kNone; }
-bool Lattice3::is_node(const Point3& v) const { return find_node(v) != kNone; }
+bool Lattice::is_center(const Point& v) const { return find_center(v) != kNone; }
+bool Lattice::is_node(const Point& v) const { return find_node(v) != kNone; }
 
-int Lattice3::level_of(const Point3& c) const {
+int Lattice::level_of(const Point& c) const {
   const Index ci = find_center(c);
-  if (ci == kNone) throw std::out_of_range("fast::Lattice3::level_of: " + d3::to_string(c) + " is not a center");
+  if (ci == kNone) throw std::out_of_range("d3::fast::Lattice::level_of: " + d3::to_string(c) + " is not a center");
   return centers_[ci].level;
 }
 
-SmallPoints3<26> Lattice3::nbr(const Point3& v) const {
-  SmallPoints3<26> out;
+SmallPoints<26> Lattice::nbr(const Point& v) const {
+  SmallPoints<26> out;
   const Index r = find(v);
   if (r == kNone) return out;
   if (r & kNodeBit) {
@@ -334,7 +334,7 @@ SmallPoints3<26> Lattice3::nbr(const Point3& v) const {
   return out;
 }
 
-std::vector<Index> Lattice3::sorted_centers() const {
+std::vector<Index> Lattice::sorted_centers() const {
   std::vector<Index> ids;
   ids.reserve(cell_count_);
   for (Index i = 0; i < centers_.size(); ++i)
@@ -343,7 +343,7 @@ std::vector<Index> Lattice3::sorted_centers() const {
   return ids;
 }
 
-std::vector<Index> Lattice3::sorted_nodes() const {
+std::vector<Index> Lattice::sorted_nodes() const {
   std::vector<Index> ids;
   ids.reserve(node_count_);
   for (Index i = 0; i < nodes_.size(); ++i)
@@ -352,40 +352,40 @@ std::vector<Index> Lattice3::sorted_nodes() const {
   return ids;
 }
 
-std::vector<Point3> Lattice3::cells() const {
-  std::vector<Point3> out;
+std::vector<Point> Lattice::cells() const {
+  std::vector<Point> out;
   out.reserve(cell_count_);
   for (const Index i : sorted_centers()) out.push_back(centers_[i].p);
   return out;
 }
 
-std::vector<Point3> Lattice3::nodes() const {
-  std::vector<Point3> out;
+std::vector<Point> Lattice::nodes() const {
+  std::vector<Point> out;
   out.reserve(node_count_);
   for (const Index i : sorted_nodes()) out.push_back(nodes_[i].p);
   return out;
 }
 
-d3::Graph3 Lattice3::to_graph() const {
-  d3::Graph3 g;
+d3::Graph Lattice::to_graph() const {
+  d3::Graph g;
   g.size = size_;
   for (const Center& c : centers_) {
     if (!c.live()) continue;
     g.C.insert(c.p);
     g.level[c.p] = c.level;
-    d3::PointSet3& s = g.neighbors[c.p];
+    d3::PointSet& s = g.neighbors[c.p];
     for (std::uint32_t i = 0; i < c.count; ++i) s.insert(nodes_[c.nbr[i]].p);
   }
   for (const Node& n : nodes_) {
     if (!n.live()) continue;
     g.N.insert(n.p);
-    d3::PointSet3& s = g.neighbors[n.p];
+    d3::PointSet& s = g.neighbors[n.p];
     for (std::uint32_t i = 0; i < n.count; ++i) s.insert(centers_[n.nbr[i]].p);
   }
   return g;
 }
 
-std::optional<std::string> Lattice3::audit() const {
+std::optional<std::string> Lattice::audit() const {
   std::size_t live_cells = 0, live_nodes = 0;
   for (Index i = 0; i < centers_.size(); ++i) {
     const Center& c = centers_[i];
@@ -426,7 +426,7 @@ std::optional<std::string> Lattice3::audit() const {
 
 // ---- Canonical state ---------------------------------------------------------------
 
-void Lattice3::write_canonical_state(std::ostream& out) const {
+void Lattice::write_canonical_state(std::ostream& out) const {
   TextWriter w(out);
   w.put("bccmis-state 1\nlattice ");
   w.put_int(size_.W);
@@ -437,7 +437,7 @@ void Lattice3::write_canonical_state(std::ostream& out) const {
   w.put(' ');
   w.put_int(size_.L);
   w.put('\n');
-  std::array<Point3, 26> around{};
+  std::array<Point, 26> around{};
   auto neighbors = [&](std::size_t count) {
     std::sort(around.begin(), around.begin() + static_cast<std::ptrdiff_t>(count));
     w.put(" :");
@@ -468,11 +468,11 @@ void Lattice3::write_canonical_state(std::ostream& out) const {
   w.flush();
 }
 
-std::string canonical_state(const Lattice3& g) { return canonical_text(g); }
+std::string canonical_state(const Lattice& g) { return canonical_text(g); }
 
 // ---- Preconditions -------------------------------------------------------------------
 
-std::optional<int> Lattice3::refined_center_level(const Point3& p) const {
+std::optional<int> Lattice::refined_center_level(const Point& p) const {
   const std::int64_t S = d3::level0_side(size_);
   if (p.x <= 0 || p.y <= 0 || p.z <= 0 || p.x >= size_.W * S || p.y >= size_.H * S || p.z >= size_.D * S)
     return std::nullopt;
@@ -485,7 +485,7 @@ std::optional<int> Lattice3::refined_center_level(const Point3& p) const {
   return l;
 }
 
-std::optional<RefineRefusal> Lattice3::refine_refusal(const Point3& c, Index& ci) const {
+std::optional<RefineRefusal> Lattice::refine_refusal(const Point& c, Index& ci) const {
   // spec/lattice3d.md §4 preconditions, in the reference's order.
   ci = find_center(c);
   if (ci == kNone) return RefineRefusal::NoSuchCell;
@@ -510,7 +510,7 @@ std::optional<RefineRefusal> Lattice3::refine_refusal(const Point3& c, Index& ci
   return std::nullopt;
 }
 
-std::optional<CoarsenRefusal> Lattice3::coarsen_refusal(const Point3& n, Index& ni, int& l) const {
+std::optional<CoarsenRefusal> Lattice::coarsen_refusal(const Point& n, Index& ni, int& l) const {
   // spec/lattice3d.md §5 preconditions, in the reference's order.
   ni = find_node(n);
   if (ni == kNone) return CoarsenRefusal::NoSuchNode;
@@ -526,12 +526,12 @@ std::optional<CoarsenRefusal> Lattice3::coarsen_refusal(const Point3& n, Index& 
   return std::nullopt;
 }
 
-std::optional<RefineRefusal> Lattice3::can_refine(const Point3& c) const {
+std::optional<RefineRefusal> Lattice::can_refine(const Point& c) const {
   Index ci;
   return refine_refusal(c, ci);
 }
 
-std::optional<CoarsenRefusal> Lattice3::can_coarsen(const Point3& n) const {
+std::optional<CoarsenRefusal> Lattice::can_coarsen(const Point& n) const {
   Index ni;
   int l;
   return coarsen_refusal(n, ni, l);
@@ -539,8 +539,8 @@ std::optional<CoarsenRefusal> Lattice3::can_coarsen(const Point3& n) const {
 
 // ---- Refine ----------------------------------------------------------------------------
 
-RefineResult3 Lattice3::refine(const Point3& c) {
-  RefineResult3 result;
+RefineResult Lattice::refine(const Point& c) {
+  RefineResult result;
   Index ci;
   result.refused = refine_refusal(c, ci);
   if (result.refused) return result;
@@ -552,7 +552,7 @@ RefineResult3 Lattice3::refine(const Point3& c) {
 
   // 1. The neighborhood of c (R1a-R1c): B = N(c), J the junctions of B, P = B \ J.
   Ids<26> J;
-  std::array<Point3, 8> p{};  // p_1..p_8, the corners, sorted by position
+  std::array<Point, 8> p{};  // p_1..p_8, the corners, sorted by position
   std::array<Index, 8> pid{};
   {
     std::size_t i = 0;
@@ -586,7 +586,7 @@ RefineResult3 Lattice3::refine(const Point3& c) {
   // junction at m (step 4), or the cells around m other than c (R1e, R1f)
   // that the new node at m (step 3) joins.
   struct Mid {
-    Point3 m;
+    Point m;
     Index old = kNone;  // the junction at m, if any
     Ids<8> X;           // X_e or X_f
   };
@@ -595,7 +595,7 @@ RefineResult3 Lattice3::refine(const Point3& c) {
   std::array<Mid, 12> edges{};
   std::array<Mid, 6> faces{};
   std::size_t old_junctions = 0;
-  auto junction_at = [&](const Point3& m) {
+  auto junction_at = [&](const Point& m) {
     for (const Index j : J)
       if (nodes_[j].p == m) return j;
     return kNone;
@@ -698,8 +698,8 @@ RefineResult3 Lattice3::refine(const Point3& c) {
 
 // ---- Coarsen ---------------------------------------------------------------------------
 
-CoarsenResult3 Lattice3::coarsen(const Point3& n) {
-  CoarsenResult3 result;
+CoarsenResult Lattice::coarsen(const Point& n) {
+  CoarsenResult result;
   Index ni;
   int l = 0;
   result.refused = coarsen_refusal(n, ni, l);
@@ -768,4 +768,4 @@ CoarsenResult3 Lattice3::coarsen(const Point3& n) {
   return result;
 }
 
-}  // namespace bccmis::fast
+}  // namespace bccmis::d3::fast

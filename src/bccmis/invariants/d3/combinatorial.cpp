@@ -16,12 +16,12 @@
 //   stray-level        only centers have a level
 #include <optional>
 
-#include "bccmis/invariants/d3/lattice3.h"
+#include "bccmis/invariants/d3/detail/lattice.h"
 #include "bccmis/invariants/detail/combinatorial.h"
 
-namespace bccmis::d3::inv3 {
+namespace bccmis::d3::inv {
 
-std::optional<Violation3> check_lattice_size(const LatticeSize3& s) {
+std::optional<Violation> check_lattice_size(const LatticeSize& s) {
   const std::string text = "lattice " + std::to_string(s.W) + " " + std::to_string(s.H) + " " + std::to_string(s.D) +
                            " " + std::to_string(s.L) + " is out of range: ";
   if (s.W < 1 || s.H < 1 || s.D < 1) return violation(1, "lattice-size", {}, text + "W, H and D must be >= 1", "§1");
@@ -32,9 +32,9 @@ std::optional<Violation3> check_lattice_size(const LatticeSize3& s) {
   return std::nullopt;
 }
 
-std::optional<Violation3> check_combinatorial(const Graph3& g) {
+std::optional<Violation> check_combinatorial(const Graph& g) {
   if (auto v = check_lattice_size(g.size)) return v;
   return inv_common::check_combinatorial(g, {"§1", "§1", "§1"}, violation);
 }
 
-}  // namespace bccmis::d3::inv3
+}  // namespace bccmis::d3::inv

@@ -1,10 +1,10 @@
-// bccmis::fast::Lattice3 against the 3D reference (bccmis::d3::Graph3):
+// bccmis::d3::fast::Lattice against the 3D reference (bccmis::d3::Graph):
 // random operation sequences on random lattices (1..3 cubes a side, L up to
-// 4) run through both in lock-step (tests/testing/twin3.h): every guard, every
+// 4) run through both in lock-step (tests/testing/d3/twin.h): every guard, every
 // decision, Y and J+ / J-, and the canonical state after every step must be
 // equal. Seeds are fixed; a failure prints its seed and the trace that
 // reproduces it (`bccmis replay FILE`). Then the hand examples of
-// spec/examples/d3 through replay<fast::Lattice3> against their .expected
+// spec/examples/d3 through replay<d3::fast::Lattice> against their .expected
 // output, byte for byte.
 #include <gtest/gtest.h>
 
@@ -17,15 +17,14 @@
 #include <vector>
 
 #include "bccmis/d3/ops.h"
-#include "bccmis/fast/lattice3.h"
+#include "bccmis/fast/d3/lattice.h"
 #include "bccmis/format.h"
 #include "bccmis/trace.h"
-#include "testing/twin3.h"
+#include "testing/d3/twin.h"
 
 namespace {
 
 using namespace bccmis;
-using d3::Point3;
 
 struct Stop {};  // thrown by the Fail callback after it has recorded the failure
 
@@ -37,7 +36,7 @@ std::string read_file(const std::filesystem::path& path) {
 }
 
 template <class Set>
-Point3 pick(std::mt19937_64& rng, const Set& set) {
+d3::Point pick(std::mt19937_64& rng, const Set& set) {
   auto it = set.begin();
   std::advance(it, static_cast<std::ptrdiff_t>(std::uniform_int_distribution<std::size_t>(0, set.size() - 1)(rng)));
   return *it;
@@ -50,27 +49,27 @@ std::size_t run_sequence(std::uint64_t seed, int operations) {
   auto uniform = [&](std::int64_t lo, std::int64_t hi) {
     return std::uniform_int_distribution<std::int64_t>(lo, hi)(rng);
   };
-  const d3::LatticeSize3 size{uniform(1, 3), uniform(1, 3), uniform(1, 3), static_cast<int>(uniform(0, 4))};
-  bccmis::testing::Twin3 twin(size, [seed](const std::string& what, const Trace3& so_far) {
+  const d3::LatticeSize size{uniform(1, 3), uniform(1, 3), uniform(1, 3), static_cast<int>(uniform(0, 4))};
+  bccmis::d3::testing::Twin twin(size, [seed](const std::string& what, const d3::Trace& so_far) {
     ADD_FAILURE() << "seed " << seed << ": " << what << "\nreproducer (bccmis replay FILE):\n" << format_trace(so_far);
     throw Stop{};
   });
   const std::int64_t S = d3::level0_side(size);
   for (int i = 0; i < operations; ++i) {
-    const d3::Graph3& g = twin.graph();
+    const d3::Graph& g = twin.graph();
     const int choice = static_cast<int>(uniform(0, 19));
     if (choice < 10) {
       twin.run(CommandKind::Refine, pick(rng, g.C));
     } else if (choice < 16) {
-      std::vector<Point3> refined;
-      for (const Point3& n : g.N)
+      std::vector<d3::Point> refined;
+      for (const d3::Point& n : g.N)
         if (d3::refined_center_level(size, n)) refined.push_back(n);
       if (!refined.empty())
         twin.run(CommandKind::Coarsen, pick(rng, refined));
       else
         twin.run(CommandKind::Coarsen, pick(rng, g.N));
     } else if (choice < 19) {
-      const Point3 p{uniform(-1, size.W * S + 1), uniform(-1, size.H * S + 1), uniform(-1, size.D * S + 1)};
+      const d3::Point p{uniform(-1, size.W * S + 1), uniform(-1, size.H * S + 1), uniform(-1, size.D * S + 1)};
       twin.run(choice == 17 ? CommandKind::Refine : CommandKind::Coarsen, p);
     } else {
       twin.reseat();
@@ -98,18 +97,18 @@ TEST(Fast3Differential, UniformRefinementToMaxLevelAndBack) {
   // coarsened back, finest first: the largest states the random sequences
   // rarely reach.
   try {
-    bccmis::testing::Twin3 twin({1, 1, 1, 3}, [](const std::string& what, const Trace3& so_far) {
+    bccmis::d3::testing::Twin twin({1, 1, 1, 3}, [](const std::string& what, const d3::Trace& so_far) {
       ADD_FAILURE() << what << "\nreproducer:\n" << format_trace(so_far);
       throw Stop{};
     });
     for (int level = 0; level < 3; ++level) {
-      const d3::PointSet3 cells = twin.graph().C;
-      for (const Point3& c : cells) twin.run(CommandKind::Refine, c);
+      const d3::PointSet cells = twin.graph().C;
+      for (const d3::Point& c : cells) twin.run(CommandKind::Refine, c);
     }
     EXPECT_EQ(cell_count(twin.lattice()), 512u);
     for (int level = 2; level >= 0; --level) {
-      const d3::PointSet3 nodes = twin.graph().N;
-      for (const Point3& n : nodes)
+      const d3::PointSet nodes = twin.graph().N;
+      for (const d3::Point& n : nodes)
         if (d3::refined_center_level(twin.graph().size, n) == level) twin.run(CommandKind::Coarsen, n);
     }
     EXPECT_EQ(cell_count(twin.lattice()), 1u);
@@ -127,22 +126,22 @@ TEST(Fast3Differential, HandExamplesGiveTheExpectedOutput) {
     std::filesystem::path expected_path = entry.path();
     expected_path.replace_extension(".expected");
     SCOPED_TRACE(entry.path().string());
-    const Trace3 trace = parse_trace3(read_file(entry.path()), entry.path().string());
+    const d3::Trace trace = d3::parse_trace(read_file(entry.path()), entry.path().string());
     std::string log;
-    const fast::Lattice3 g = replay<fast::Lattice3>(trace, log);
+    const d3::fast::Lattice g = replay<d3::fast::Lattice>(trace, log);
     EXPECT_EQ(log + canonical_text(g), read_file(expected_path));
   }
   EXPECT_GE(traces, 3);
 }
 
 TEST(Fast3Lattice, RefusedOperationsChangeNothingAndInvalidSizesThrow) {
-  fast::Lattice3 g({1, 1, 1, 1});
+  d3::fast::Lattice g({1, 1, 1, 1});
   const std::string before = canonical_text(g);
   EXPECT_EQ(g.refine({1, 1, 1}).refused, RefineRefusal::NoSuchCell);
   EXPECT_EQ(g.coarsen({2, 2, 2}).refused, CoarsenRefusal::NoSuchNode);
   EXPECT_EQ(canonical_text(g), before);
-  EXPECT_THROW(fast::Lattice3({0, 1, 1, 1}), LatticeError);
-  EXPECT_THROW(fast::Lattice3({1, 1, 1, -1}), LatticeError);
+  EXPECT_THROW(d3::fast::Lattice({0, 1, 1, 1}), LatticeError);
+  EXPECT_THROW(d3::fast::Lattice({1, 1, 1, -1}), LatticeError);
   EXPECT_THROW(g.level_of({0, 0, 0}), std::out_of_range);
 }
 

@@ -30,17 +30,17 @@
 #include "bccmis/lattice.h"
 #include "bccmis/ops.h"
 
-namespace bccmis::bench {
+namespace bccmis::d3::bench {
 
 /// The ball's path and the predicate both sides share.
-struct Ball3 {
+struct Ball {
   double x = 0, y = 0, z = 0;
 };
 
 /// The ball center at `frame` for a box of the given size: y and z at the
 /// box center, x a triangle wave between a quarter and three quarters of the
 /// box's width, `speed` level-L cell sides a frame.
-inline Ball3 ball_position(const d3::LatticeSize3& size, int frame, int speed) {
+inline Ball ball_position(const d3::LatticeSize& size, int frame, int speed) {
   const double S = static_cast<double>(d3::level0_side(size));
   const double x0 = 0.25 * static_cast<double>(size.W) * S, x1 = 0.75 * static_cast<double>(size.W) * S;
   const double step = static_cast<double>(d3::cell_side(size, size.L)) * speed;
@@ -52,7 +52,7 @@ inline Ball3 ball_position(const d3::LatticeSize3& size, int frame, int speed) {
 
 /// Whether the cube centered at c with half side h meets the ball (b, r):
 /// its closest point is within r of b.
-inline bool cube_meets(const d3::Point3& c, double h, const Ball3& b, double r) {
+inline bool cube_meets(const d3::Point& c, double h, const Ball& b, double r) {
   const double dx = std::max(0.0, std::abs(static_cast<double>(c.x) - b.x) - h);
   const double dy = std::max(0.0, std::abs(static_cast<double>(c.y) - b.y) - h);
   const double dz = std::max(0.0, std::abs(static_cast<double>(c.z) - b.z) - h);
@@ -60,18 +60,16 @@ inline bool cube_meets(const d3::Point3& c, double h, const Ball3& b, double r) 
 }
 
 template <AdaptiveLattice L>
-class LocalFeature3 {
+class LocalFeature {
  public:
-  using Point3 = d3::Point3;
-
   /// `reserve_cells` > 0: room for that many cells before the build.
-  LocalFeature3(const d3::LatticeSize3& size, double radius, int speed, std::size_t reserve_cells = 0)
+  LocalFeature(const d3::LatticeSize& size, double radius, int speed, std::size_t reserve_cells = 0)
       : size_(size), g_(size), radius_(radius), speed_(speed) {
     if constexpr (requires(L & s) { s.reserve(reserve_cells); })
       if (reserve_cells > 0) g_.reserve(reserve_cells);
     ball_ = ball_position(size_, 0, speed_);
     for (int l = 0; l < size_.L; ++l)
-      for_cells(l, ball_, radius_, nullptr, 0, [&](const Point3& c) {
+      for_cells(l, ball_, radius_, nullptr, 0, [&](const d3::Point& c) {
         if (is_center(g_, c) && level_of(g_, c) == l) refine_balanced(c, l);
       });
   }
@@ -79,26 +77,26 @@ class LocalFeature3 {
   /// Moves the ball one frame on and adapts; returns the operations applied.
   std::size_t frame() {
     ops_ = 0;
-    const Ball3 old = ball_;
+    const Ball old = ball_;
     ball_ = ball_position(size_, ++frame_, speed_);
     for (int l = size_.L - 1; l >= 0; --l) {
       const double margin = radius_ + 2.0 * static_cast<double>(d3::cell_side(size_, l));
-      for_cells(l, old, margin, &ball_, radius_, [&](const Point3& n) {
+      for_cells(l, old, margin, &ball_, radius_, [&](const d3::Point& n) {
         if (!can_coarsen(g_, n)) ops_ += coarsen(g_, n).applied();
       });
     }
-    for_cells(size_.L, ball_, radius_, &old, radius_, [&](const Point3& p) { refine_to(p, size_.L); });
+    for_cells(size_.L, ball_, radius_, &old, radius_, [&](const d3::Point& p) { refine_to(p, size_.L); });
     return ops_;
   }
 
   const L& state() const { return g_; }
-  const Ball3& ball() const { return ball_; }
+  const Ball& ball() const { return ball_; }
   int frame_number() const { return frame_; }
 
  private:
   // The column range [i0, i1] of the level cells (side s) in row (j, k) that
   // meet the ball (b, r); empty when i0 > i1.
-  std::pair<std::int64_t, std::int64_t> row_range(std::int64_t j, std::int64_t k, std::int64_t s, const Ball3& b,
+  std::pair<std::int64_t, std::int64_t> row_range(std::int64_t j, std::int64_t k, std::int64_t s, const Ball& b,
                                                   double r) const {
     const double h = static_cast<double>(s) / 2;
     const double dy = std::max(0.0, std::abs(static_cast<double>(j * s) + h - b.y) - h);
@@ -110,7 +108,7 @@ class LocalFeature3 {
     auto i1 = static_cast<std::int64_t>(std::floor((b.x + w) / static_cast<double>(s)));
     // Guard the floating-point ends with the exact predicate.
     const auto meets = [&](std::int64_t i) {
-      return cube_meets(Point3{i * s + s / 2, j * s + s / 2, k * s + s / 2}, h, b, r);
+      return cube_meets(d3::Point{i * s + s / 2, j * s + s / 2, k * s + s / 2}, h, b, r);
     };
     while (i0 <= i1 && !meets(i0)) ++i0;
     while (meets(i0 - 1)) --i0;
@@ -122,7 +120,7 @@ class LocalFeature3 {
   // Calls f(center) for the level-l cells inside the domain that meet ball
   // (b, r) and, when `minus` is given, do not meet ball (*minus, minus_r).
   template <class F>
-  void for_cells(int l, const Ball3& b, double r, const Ball3* minus, double minus_r, F&& f) const {
+  void for_cells(int l, const Ball& b, double r, const Ball* minus, double minus_r, F&& f) const {
     const std::int64_t s = d3::cell_side(size_, l);
     const double sd = static_cast<double>(s);
     const std::int64_t columns = size_.W << l, rows = size_.H << l, layers = size_.D << l;
@@ -146,17 +144,17 @@ class LocalFeature3 {
             i = m.second;  // skip the cells meeting `minus`
             continue;
           }
-          f(Point3{i * s + s / 2, j * s + s / 2, k * s + s / 2});
+          f(d3::Point{i * s + s / 2, j * s + s / 2, k * s + s / 2});
         }
       }
   }
 
   // The leaf cell containing p (strictly inside a level-L cell), searching
   // from level L up: the leaves a frame visits are fine.
-  Point3 locate(const Point3& p, int& level) const {
+  d3::Point locate(const d3::Point& p, int& level) const {
     for (int l = size_.L;; --l) {
       const std::int64_t s = d3::cell_side(size_, l);
-      const Point3 c{(p.x / s) * s + s / 2, (p.y / s) * s + s / 2, (p.z / s) * s + s / 2};
+      const d3::Point c{(p.x / s) * s + s / 2, (p.y / s) * s + s / 2, (p.z / s) * s + s / 2};
       if (l == 0 || is_center(g_, c)) {
         level = l;
         return c;
@@ -165,17 +163,17 @@ class LocalFeature3 {
   }
 
   // Refines the leaves containing p until the one there has level `target`.
-  void refine_to(const Point3& p, int target) {
+  void refine_to(const d3::Point& p, int target) {
     for (;;) {
       int level = 0;
-      const Point3 c = locate(p, level);
+      const d3::Point c = locate(p, level);
       if (level >= target || !refine_balanced(c, level)) return;
     }
   }
 
   // Refines c, first refining every coarser face- or edge-neighbor
   // (recursively): the leaves just outside c's 6 faces and 12 edges.
-  bool refine_balanced(const Point3& c, int level) {
+  bool refine_balanced(const d3::Point& c, int level) {
     const auto why = can_refine(g_, c);
     if (why == RefineRefusal::CoarserNeighbor) {
       const std::int64_t h = d3::cell_side(size_, level) / 2 + 1;
@@ -186,10 +184,10 @@ class LocalFeature3 {
           for (int dz = -1; dz <= 1; ++dz) {
             const int nonzero = (dx != 0) + (dy != 0) + (dz != 0);
             if (nonzero == 0 || nonzero == 3) continue;  // c itself, a corner
-            const Point3 q{c.x + dx * h, c.y + dy * h, c.z + dz * h};
+            const d3::Point q{c.x + dx * h, c.y + dy * h, c.z + dz * h};
             if (q.x < 0 || q.y < 0 || q.z < 0 || q.x >= X || q.y >= Y || q.z >= Z) continue;
             int nl = 0;
-            const Point3 x = locate(q, nl);
+            const d3::Point x = locate(q, nl);
             if (nl < level) refine_balanced(x, nl);
           }
     } else if (why) {
@@ -200,13 +198,13 @@ class LocalFeature3 {
     return ok;
   }
 
-  d3::LatticeSize3 size_;
+  d3::LatticeSize size_;
   L g_;
   double radius_;
   int speed_;
   int frame_ = 0;
-  Ball3 ball_;
+  Ball ball_;
   std::size_t ops_ = 0;
 };
 
-}  // namespace bccmis::bench
+}  // namespace bccmis::d3::bench

@@ -18,9 +18,9 @@
 #include <optional>
 #include <vector>
 
-#include "bccmis/invariants/d3/lattice3.h"
+#include "bccmis/invariants/d3/detail/lattice.h"
 
-namespace bccmis::d3::inv3 {
+namespace bccmis::d3::inv {
 
 namespace {
 
@@ -37,28 +37,28 @@ const char* role_name(Role r) {
 // How the cells of N(n) see a node.
 struct NodeRoles {
   int corner = 0, edge = 0, face = 0;
-  Point3 edge_holder{}, face_holder{};
+  Point edge_holder{}, face_holder{};
   bool judged = true;  // false when some neighbour has no valid position
 };
 
 }  // namespace
 
-std::optional<Violation3> check_structural(const Graph3& g) {
+std::optional<Violation> check_structural(const Graph& g) {
   constexpr int layer = 2;
-  const Box3 box(g.size);
+  const Box box(g.size);
 
   // The cube of every center with a valid position: its half-side, or 0.
-  auto half_of = [&](const Point3& c) -> std::int64_t {
+  auto half_of = [&](const Point& c) -> std::int64_t {
     const std::optional<int> l = box.center_level(c);
     return l ? box.half(*l) : 0;
   };
-  auto role = [&](const Point3& c, std::int64_t h, const Point3& p) {
+  auto role = [&](const Point& c, std::int64_t h, const Point& p) {
     return box.contains(p) ? role_on(c, h, p) : Role::Other;
   };
-  auto cube = [&](const Point3& c, std::int64_t h) { return "the cube " + cube_text(c, h) + " of center " + pos(c); };
+  auto cube = [&](const Point& c, std::int64_t h) { return "the cube " + cube_text(c, h) + " of center " + pos(c); };
 
   // center-degree
-  for (const Point3& c : g.C) {
+  for (const Point& c : g.C) {
     if (half_of(c) == 0) continue;
     const std::size_t k = g.nbr(c).size();
     if (k < 8 || k > 26)
@@ -69,11 +69,11 @@ std::optional<Violation3> check_structural(const Graph3& g) {
   }
 
   // center-corner
-  for (const Point3& c : g.C) {
+  for (const Point& c : g.C) {
     const std::int64_t h = half_of(c);
     if (h == 0) continue;
     for (int i = 0; i < 8; ++i) {
-      const Point3 p{c.x + ((i & 4) ? h : -h), c.y + ((i & 2) ? h : -h), c.z + ((i & 1) ? h : -h)};
+      const Point p{c.x + ((i & 4) ? h : -h), c.y + ((i & 2) ? h : -h), c.z + ((i & 1) ? h : -h)};
       if (!g.nbr(c).count(p))
         return violation(layer, "center-corner", {c, p},
                          "center " + pos(c) + " does not list " + pos(p) + ", a corner of " + cube(c, h), "§1");
@@ -81,10 +81,10 @@ std::optional<Violation3> check_structural(const Graph3& g) {
   }
 
   // center-neighbor
-  for (const Point3& c : g.C) {
+  for (const Point& c : g.C) {
     const std::int64_t h = half_of(c);
     if (h == 0) continue;
-    for (const Point3& p : g.nbr(c))
+    for (const Point& p : g.nbr(c))
       if (role(c, h, p) == Role::Other)
         return violation(layer, "center-neighbor", {c, p},
                          "center " + pos(c) + " lists " + pos(p) +
@@ -94,15 +94,15 @@ std::optional<Violation3> check_structural(const Graph3& g) {
 
   // face-center-edges: the finer cells beyond a face have its edge midpoints
   // as corners, so they are nodes on c's boundary.
-  for (const Point3& c : g.C) {
+  for (const Point& c : g.C) {
     const std::int64_t h = half_of(c);
     if (h == 0) continue;
-    for (const Point3& f : g.nbr(c)) {
+    for (const Point& f : g.nbr(c)) {
       if (role(c, h, f) != Role::FaceCenter) continue;
       for (int a = 0; a < 3; ++a) {
         if (coord(f, a) != coord(c, a)) continue;  // a runs along the face
         for (const std::int64_t d : {-h, h}) {
-          const Point3 m{f.x + (a == 0 ? d : 0), f.y + (a == 1 ? d : 0), f.z + (a == 2 ? d : 0)};
+          const Point m{f.x + (a == 0 ? d : 0), f.y + (a == 1 ? d : 0), f.z + (a == 2 ? d : 0)};
           if (!g.nbr(c).count(m))
             return violation(layer, "face-center-edges", {c, f, m},
                              "center " + pos(c) + " lists the face center " + pos(f) + " but not the midpoint " +
@@ -116,9 +116,9 @@ std::optional<Violation3> check_structural(const Graph3& g) {
   // The role of every node in each of its cells.
   std::vector<NodeRoles> roles;
   roles.reserve(g.N.size());
-  for (const Point3& n : g.N) {
+  for (const Point& n : g.N) {
     NodeRoles r;
-    for (const Point3& c : g.nbr(n)) {
+    for (const Point& c : g.nbr(n)) {
       const std::int64_t h = half_of(c);
       if (h == 0 || !box.contains(n)) {
         r.judged = false;
@@ -141,7 +141,7 @@ std::optional<Violation3> check_structural(const Graph3& g) {
   // node-degree: F1 for pure nodes, and the overall bound 8.
   {
     auto r = roles.begin();
-    for (const Point3& n : g.N) {
+    for (const Point& n : g.N) {
       const NodeRoles& k = *r++;
       if (!k.judged) continue;
       const std::size_t size = g.nbr(n).size();
@@ -164,7 +164,7 @@ std::optional<Violation3> check_structural(const Graph3& g) {
   // boundary-junction
   {
     auto r = roles.begin();
-    for (const Point3& n : g.N) {
+    for (const Point& n : g.N) {
       const NodeRoles& k = *r++;
       if (!k.judged) continue;
       const int inside = box.interior_coordinates(n);
@@ -184,10 +184,10 @@ std::optional<Violation3> check_structural(const Graph3& g) {
   // junction-degree
   {
     auto r = roles.begin();
-    for (const Point3& n : g.N) {
+    for (const Point& n : g.N) {
       const NodeRoles& k = *r++;
       if (!k.judged || (k.edge == 0 && k.face == 0)) continue;
-      const Point3 holder = k.face > 0 ? k.face_holder : k.edge_holder;
+      const Point holder = k.face > 0 ? k.face_holder : k.edge_holder;
       const std::string counts = "node " + pos(n) + " (" +
                                  role_name(k.face > 0 ? Role::FaceCenter : Role::EdgeMidpoint) + " of " + pos(holder) +
                                  ") is a face center of " + std::to_string(k.face) + " cells, an edge midpoint of " +
@@ -215,4 +215,4 @@ std::optional<Violation3> check_structural(const Graph3& g) {
   return std::nullopt;
 }
 
-}  // namespace bccmis::d3::inv3
+}  // namespace bccmis::d3::inv

@@ -26,14 +26,14 @@
 #include <utility>
 #include <vector>
 
-#include "bccmis/invariants/d3/lattice3.h"
+#include "bccmis/invariants/d3/detail/lattice.h"
 
 namespace bccmis::d3 {
 
 namespace {
 
-using inv3::coord;
-using inv3::pos;
+using inv::coord;
+using inv::pos;
 
 constexpr int layer = 5;
 const std::string kMeshSection = "spec/invariants.md, 3D layer 5";
@@ -47,10 +47,10 @@ __extension__ typedef unsigned __int128 UInt128;
 /// below 2^40 in magnitude (differences below 2^41, each product of three
 /// below 2^123, the sum of six below 2^126): exact, and without GMP's
 /// allocations, for every box with extents below 2^40. Empty otherwise.
-std::optional<Int128> orient_small(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+std::optional<Int128> orient_small(const Point& a, const Point& b, const Point& c, const Point& d) {
   constexpr std::int64_t kLimit = std::int64_t{1} << 40;
   std::array<std::array<Int128, 3>, 3> m{};
-  const std::array<const Point3*, 3> rows{&b, &c, &d};
+  const std::array<const Point*, 3> rows{&b, &c, &d};
   for (std::size_t i = 0; i < 3; ++i)
     for (int k = 0; k < 3; ++k) {
       const std::int64_t p = coord(*rows[i], k), q = coord(a, k);
@@ -62,9 +62,9 @@ std::optional<Int128> orient_small(const Point3& a, const Point3& b, const Point
 }
 
 /// det[b - a, c - a, d - a], exactly: six times the signed volume.
-mpz_class orient_big(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+mpz_class orient_big(const Point& a, const Point& b, const Point& c, const Point& d) {
   std::array<std::array<mpz_class, 3>, 3> m;
-  const std::array<const Point3*, 3> rows{&b, &c, &d};
+  const std::array<const Point*, 3> rows{&b, &c, &d};
   for (std::size_t i = 0; i < 3; ++i)
     for (int k = 0; k < 3; ++k) m[i][static_cast<std::size_t>(k)] = big(coord(*rows[i], k)) - big(coord(a, k));
   return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
@@ -72,13 +72,13 @@ mpz_class orient_big(const Point3& a, const Point3& b, const Point3& c, const Po
 }
 
 /// The sign of det[b - a, c - a, d - a], exactly.
-int orient_sign(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+int orient_sign(const Point& a, const Point& b, const Point& c, const Point& d) {
   if (const std::optional<Int128> v = orient_small(a, b, c, d)) return (*v > 0) - (*v < 0);
   return sgn(orient_big(a, b, c, d));
 }
 
 /// det[b - a, c - a, d - a] as an mpz_class, by the fast path when it applies.
-mpz_class orient(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+mpz_class orient(const Point& a, const Point& b, const Point& c, const Point& d) {
   if (const std::optional<Int128> v = orient_small(a, b, c, d)) {
     // |v| < 2^126: two 64-bit halves.
     const bool negative = *v < 0;
@@ -91,13 +91,13 @@ mpz_class orient(const Point3& a, const Point3& b, const Point3& c, const Point3
   return orient_big(a, b, c, d);
 }
 
-std::string tet_text(std::size_t i, const Tet3& t) {
+std::string tet_text(std::size_t i, const Tet& t) {
   return "tet #" + std::to_string(i) + " (" + pos(t[0]) + ", " + pos(t[1]) + ", " + pos(t[2]) + ", " + pos(t[3]) + ")";
 }
 
 using Vec = std::array<long double, 3>;
 
-Vec diff(const Point3& p, const Point3& q) {  // p - q, exact for int64 input in long double's 64-bit mantissa
+Vec diff(const Point& p, const Point& q) {  // p - q, exact for int64 input in long double's 64-bit mantissa
   return {static_cast<long double>(p.x) - static_cast<long double>(q.x),
           static_cast<long double>(p.y) - static_cast<long double>(q.y),
           static_cast<long double>(p.z) - static_cast<long double>(q.z)};
@@ -107,7 +107,7 @@ long double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] +
 /// The interior dihedral angle, in degrees, at the edge (p, q) between the
 /// faces through r and through s: the angle between r and s projected onto
 /// the plane perpendicular to the edge.
-long double dihedral(const Point3& p, const Point3& q, const Point3& r, const Point3& s) {
+long double dihedral(const Point& p, const Point& q, const Point& r, const Point& s) {
   const Vec e = diff(q, p);
   const long double ee = dot(e, e);
   Vec u = diff(r, p), v = diff(s, p);
@@ -123,16 +123,16 @@ long double dihedral(const Point3& p, const Point3& q, const Point3& r, const Po
 
 }  // namespace
 
-std::optional<Violation3> check_mesh(const Graph3& g, std::span<const Tet3> tets) {
-  if (auto v = inv3::check_lattice_size(g.size)) return v;
-  const inv3::Box3 box(g.size);
-  auto fail = [](std::string code, std::vector<Point3> where, const std::string& text, const std::string& section) {
-    return inv3::violation(layer, std::move(code), std::move(where), text, section);
+std::optional<Violation> check_mesh(const Graph& g, std::span<const Tet> tets) {
+  if (auto v = inv::check_lattice_size(g.size)) return v;
+  const inv::Box box(g.size);
+  auto fail = [](std::string code, std::vector<Point> where, const std::string& text, const std::string& section) {
+    return inv::violation(layer, std::move(code), std::move(where), text, section);
   };
 
   // mesh-vertex: the hull vertices are the centers of leaf faces lying in the
   // domain boundary.
-  std::set<Point3> hull;
+  std::set<Point> hull;
   for (const auto& [c, l] : g.level) {
     const std::int64_t h = box.half(l);
     if (h == 0 || !box.contains(c)) continue;
@@ -144,7 +144,7 @@ std::optional<Violation3> check_mesh(const Graph3& g, std::span<const Tet3> tets
       }
   }
   for (std::size_t i = 0; i < tets.size(); ++i)
-    for (const Point3& p : tets[i])
+    for (const Point& p : tets[i])
       if (!g.N.count(p) && !g.C.count(p) && !hull.count(p))
         return fail("mesh-vertex", {p},
                     tet_text(i, tets[i]) + " has the vertex " + pos(p) +
@@ -157,7 +157,7 @@ std::optional<Violation3> check_mesh(const Graph3& g, std::span<const Tet3> tets
   mpz_class sum = 0;
   Int128 small_sum = 0;
   for (std::size_t i = 0; i < tets.size(); ++i) {
-    const Tet3& t = tets[i];
+    const Tet& t = tets[i];
     const std::optional<Int128> small = orient_small(t[0], t[1], t[2], t[3]);
     if (small && *small > 0 && small_sum < (Int128{1} << 126)) {
       small_sum += *small;
@@ -175,7 +175,7 @@ std::optional<Violation3> check_mesh(const Graph3& g, std::span<const Tet3> tets
   // dihedral-angle
   constexpr long double kTolerance = 1e-9L, kMin = 45.0L, kMax = 120.0L;
   for (std::size_t i = 0; i < tets.size(); ++i) {
-    const Tet3& t = tets[i];
+    const Tet& t = tets[i];
     for (std::size_t a = 0; a < 4; ++a)
       for (std::size_t b = a + 1; b < 4; ++b) {
         std::size_t r = 0;
@@ -209,7 +209,7 @@ std::optional<Violation3> check_mesh(const Graph3& g, std::span<const Tet3> tets
   }
 
   // The triangles: sorted vertex triple -> (tet, side of the fourth vertex).
-  using Triangle = std::array<Point3, 3>;
+  using Triangle = std::array<Point, 3>;
   std::map<Triangle, std::vector<std::pair<std::size_t, int>>> faces;
   for (std::size_t i = 0; i < tets.size(); ++i)
     for (std::size_t skip = 0; skip < 4; ++skip) {
@@ -249,10 +249,10 @@ std::optional<Violation3> check_mesh(const Graph3& g, std::span<const Tet3> tets
   }
 
   // mesh-extra-edge / mesh-missing-edge: the node-center edges of the mesh.
-  std::set<std::pair<Point3, Point3>> edges;  // (center, node)
+  std::set<std::pair<Point, Point>> edges;  // (center, node)
   for (std::size_t i = 0; i < tets.size(); ++i)
-    for (const Point3& c : tets[i])
-      for (const Point3& n : tets[i]) {
+    for (const Point& c : tets[i])
+      for (const Point& n : tets[i]) {
         if (!g.C.count(c) || !g.N.count(n)) continue;
         if (!g.nbr(c).count(n))
           return fail("mesh-extra-edge", {c, n},
@@ -261,8 +261,8 @@ std::optional<Violation3> check_mesh(const Graph3& g, std::span<const Tet3> tets
                       "§1");
         edges.insert({c, n});
       }
-  for (const Point3& c : g.C)
-    for (const Point3& n : g.nbr(c))
+  for (const Point& c : g.C)
+    for (const Point& n : g.nbr(c))
       if (!edges.count({c, n}))
         return fail("mesh-missing-edge", {c, n},
                     "the graph edge from center " + pos(c) + " to node " + pos(n) + " is an edge of no tetrahedron",
