@@ -23,6 +23,7 @@ constexpr double kPi = std::numbers::pi;
 constexpr double k4Pi = 4 * std::numbers::pi;
 constexpr std::uint32_t kLeafSize = 8;
 constexpr int kMaxDepth = 60;
+constexpr double kSideBeta = 3.5;  // side()'s first pass (S18), by measurement (bench_winding_number)
 
 Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
@@ -423,7 +424,7 @@ WindingNumber::Estimate WindingNumber::direct_bounded(const Vec3& q) const { ret
 double WindingNumber::direct(const Vec3& q) const { return impl_->exact(q, {}).value; }
 
 // spec/stuffing.md S18: is w >= threshold (w summed without the excluded
-// triangles)? One pass with WindingNumber::kBeta, then, while the bound does not
+// triangles)? One pass with kSideBeta, then, while the bound does not
 // decide, the far node with the largest bound is replaced by its children
 // (or its triangles, exactly); with no far node left, a value within the
 // bound of the threshold counts as >= (the tie rule).
@@ -464,7 +465,7 @@ bool WindingNumber::Impl::at_least(const Vec3& q, std::span<const std::uint32_t>
       const Vec3 dx = sub(node.c, q);
       const double d = norm(dx);
       const double d_lo = d * (1 - 4 * kU);
-      if (d_lo > WindingNumber::kBeta * node.r) {
+      if (d_lo > kSideBeta * node.r) {
         const Estimate t = far_term(node, q, qnorm, dx, d, d_lo);
         sum += t.value;
         sum_abs += std::abs(t.value);

@@ -38,7 +38,7 @@ class WindingNumber {
 
   /// The far-field opening parameter of estimate(q): a node of the hierarchy
   /// is replaced by its expansion when |q - c| > beta r (spec/stuffing.md
-  /// S18). estimate(q) uses kBeta; side() starts with kBeta and, while the
+  /// S18). estimate(q) uses kBeta; side() starts with beta 3.5 and, while the
   /// bound does not decide, opens the far nodes with the largest bounds.
   static constexpr double kBeta = 4;
   /// estimate(q) with another beta (> 1; smaller is faster and looser). The
