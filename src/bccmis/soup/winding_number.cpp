@@ -104,6 +104,7 @@ struct Node {
   Vec3 n0{};                         // a unit vector near the triangles' normals (N / |N|)
   double slab = 0;                   // >= |(x - c) . n0| over the triangles
   double delta = 2;                  // >= |n_i - n0| over the triangles' unit normals
+  double i1 = 0;                     // sqrt(area i2) >= the sum of the integrals of |x - c|
   double area = 0;                   // sum of the triangles' areas (an upper bound)
   double area_abs = 0;               // sum of |b - a| |c - a| / 2 (for the rounding allowance)
   double mabs = 0;                   // sum of area_i |p_i - c| >= |M| (p_i the centroids)
@@ -266,6 +267,7 @@ void WindingNumber::Impl::finish(Node& node) const {
   node.area *= 1 + 128 * kU;
   node.mabs *= 1 + 128 * kU;
   node.i2 = std::min(node.i2 * (1 + 128 * kU), node.area * node.r * node.r);
+  node.i1 = std::sqrt(node.area * node.i2) * (1 + 4 * kU);
 }
 
 WindingNumber::WindingNumber(std::vector<Vec3> vertices, std::vector<Triangle> triangles) : impl_(new Impl) {
@@ -332,7 +334,8 @@ WindingNumber::Estimate far_term(const Node& node, const Vec3& q, double qnorm, 
     const double out = std::max({node.lo[k] - q[k], q[k] - node.hi[k], 0.0});
     box2 += out * out;
   }
-  const double gap = std::max(d_lo - node.r, std::sqrt(box2) * (1 - 8 * kU));
+  const double ball = d_lo - node.r;
+  const double gap = box2 > ball * ball ? std::max(ball, std::sqrt(box2) * (1 - 8 * kU)) : ball;
   const double gap2 = gap * gap;
   // |D^2 f [v, v]| <= min(6 |v|^2, 6 |n.v| |v| + 12 |e.n| |v|^2) / rho^4 (S18),
   // |n.v| <= slab + delta |v|, |e.n| <= kappa; the integral of |v| at most sqrt(A I2).
@@ -340,8 +343,7 @@ WindingNumber::Estimate far_term(const Node& node, const Vec3& q, double qnorm, 
   if (node.delta < 1) {
     const double height = std::abs(dot(dx, node.n0)) + 16 * kU * d;
     const double kappa = std::min(1.0, (height + node.slab) / gap + node.delta);
-    const double i1 = std::sqrt(node.area * node.i2);
-    moment = std::min(moment, (3 * (node.slab * i1 + node.delta * node.i2) + 6 * kappa * node.i2) * (1 + 32 * kU));
+    moment = std::min(moment, (3 * (node.slab * node.i1 + node.delta * node.i2) + 6 * kappa * node.i2) * (1 + 32 * kU));
   }
   const double taylor = moment / (gap2 * gap2) / k4Pi;
   const double inv_lo = 1 / d_lo;
