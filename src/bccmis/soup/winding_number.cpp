@@ -6,6 +6,7 @@
 #include <gmpxx.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -22,6 +23,7 @@ constexpr double kPi = std::numbers::pi;
 constexpr double k4Pi = 4 * std::numbers::pi;
 constexpr std::uint32_t kLeafSize = 8;
 constexpr int kMaxDepth = 60;
+constexpr double kSideBeta = 3.5;  // side()'s first pass (S18), by measurement (bench_winding_number)
 
 Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
@@ -47,7 +49,10 @@ WindingNumber::Estimate solid_angle(const Points& t, const Vec3& q) {
                            std::abs(a[1]) * (std::abs(b[2] * c[0]) + std::abs(b[0] * c[2])) +
                            std::abs(a[2]) * (std::abs(b[0] * c[1]) + std::abs(b[1] * c[0]));
   const double delta = 16 * kU * permanent + 64 * kU * (la * lb * lc);
-  const double size = std::hypot(det, den) * (1 - 4 * kU);
+  // |v| by sqrt(det^2 + den^2) (relative error under 3u) unless the squares
+  // could overflow or lose precision to underflow; then hypot.
+  const double size2 = det * det + den * den;
+  const double size = (size2 < 0x1p-960 || size2 > 0x1p960 ? std::hypot(det, den) : std::sqrt(size2)) * (1 - 4 * kU);
   double half_error = kPi;
   if (delta < size) half_error = std::min(kPi, (kPi / 2) * (delta / size) * (1 + 8 * kU));
   half_error += 4 * kU * kPi;  // atan2's own rounding
@@ -95,6 +100,11 @@ struct Node {
   Vec3 lo{}, hi{};                   // the box of the vertices (exact)
   Vec3 c{};                          // the expansion centre, the box's centre
   double r = 0;                      // every vertex within r of c (rounded up)
+  double cnorm = 0;                  // |c|
+  Vec3 n0{};                         // a unit vector near the triangles' normals (N / |N|)
+  double slab = 0;                   // >= |(x - c) . n0| over the triangles
+  double delta = 2;                  // >= |n_i - n0| over the triangles' unit normals
+  double i1 = 0;                     // sqrt(area i2) >= the sum of the integrals of |x - c|
   double area = 0;                   // sum of the triangles' areas (an upper bound)
   double area_abs = 0;               // sum of |b - a| |c - a| / 2 (for the rounding allowance)
   double mabs = 0;                   // sum of area_i |p_i - c| >= |M| (p_i the centroids)
@@ -122,6 +132,7 @@ struct WindingNumber::Impl {
   std::vector<std::uint32_t> ids;  // the input index of each, in tree order
   std::vector<char> degenerate;    // exactly collinear corners (S17: w = 0), in tree order
   std::vector<Node> nodes;
+  mutable std::atomic<std::uint64_t> full_sums{0};
 
   std::uint32_t build(std::vector<std::uint32_t>& order, const std::vector<Vec3>& centroids, std::uint32_t b,
                       std::uint32_t e, int depth);
@@ -179,6 +190,7 @@ void WindingNumber::Impl::finish(Node& node) const {
   for (std::uint32_t i = node.begin; i < node.end; ++i)
     for (const Vec3& v : points[i]) r = std::max(r, norm(sub(v, node.c)));
   node.r = r * (1 + 8 * kU);
+  node.cnorm = norm(node.c);
   node.n = {};
   node.m = {};
   node.area = node.area_abs = node.mabs = node.i2 = 0;
@@ -222,10 +234,40 @@ void WindingNumber::Impl::finish(Node& node) const {
       node.i2 += child->i2 + 2 * sk * std::sqrt(child->area * child->i2) + sk * sk * child->area;
     }
   }
+  // The normal cone and the slab about the plane through c along n0 (S18),
+  // from the node's own triangles.
+  const double nn = norm(node.n);
+  node.n0 = {};
+  node.slab = 0;
+  node.delta = 2;
+  if (nn > 0) {
+    node.n0 = {node.n[0] / nn, node.n[1] / nn, node.n[2] / nn};
+    double delta = 0, slab = 0;
+    for (std::uint32_t i = node.begin; i < node.end; ++i) {
+      const Points& t = points[i];
+      const Vec3 e1 = sub(t[1], t[0]), e2 = sub(t[2], t[0]);
+      const Vec3 cr = cross(e1, e2);
+      const double len = norm(cr);
+      const double alpha = norm(e1) * norm(e2);
+      for (const Vec3& v : t) slab = std::max(slab, std::abs(dot(sub(v, node.c), node.n0)));
+      if (alpha == 0) continue;  // a point: no area
+      if (!(len > 256 * kU * alpha)) {
+        delta = 2;  // (nearly) collinear: the normal is unknown, no cone
+        break;
+      }
+      // The computed cross product is within 16u alpha of the exact one, so
+      // its direction within 32u alpha / len; the division adds 8u.
+      const Vec3 ni = {cr[0] / len, cr[1] / len, cr[2] / len};
+      delta = std::max(delta, norm(sub(ni, node.n0)) + 32 * kU * alpha / len + 8 * kU);
+    }
+    node.delta = std::min(2.0, delta * (1 + 8 * kU));
+    node.slab = (slab + 16 * kU * node.r) * (1 + 8 * kU);
+  }
   // The sums were rounded: round the bounds up (depth <= 60 additions).
   node.area *= 1 + 128 * kU;
   node.mabs *= 1 + 128 * kU;
   node.i2 = std::min(node.i2 * (1 + 128 * kU), node.area * node.r * node.r);
+  node.i1 = std::sqrt(node.area * node.i2) * (1 + 4 * kU);
 }
 
 WindingNumber::WindingNumber(std::vector<Vec3> vertices, std::vector<Triangle> triangles) : impl_(new Impl) {
@@ -269,10 +311,57 @@ WindingNumber& WindingNumber::operator=(WindingNumber&& other) noexcept {
 
 std::size_t WindingNumber::size() const { return impl_ ? impl_->triangles.size() : 0; }
 
-// spec/stuffing.md S18: the far field of a node with |q - c| > beta r, to
-// first order, and its bound 3 I2 / (d - r)^4 / (4 pi) (I2 the second moment,
-// at most A r^2); the near field
-// exactly (S17). The sum's own rounding: n u sum|terms| (n the terms).
+std::uint64_t WindingNumber::full_sums() const { return impl_ ? impl_->full_sums.load(std::memory_order_relaxed) : 0; }
+
+namespace {
+
+// spec/stuffing.md S18: the far field of a node (|q - c| = d > r), to first
+// order, and its bound 3 I2 / (d - r)^4 / (4 pi) (I2 the second moment, at
+// most A r^2) with the rounding allowance of the expansion's evaluation.
+WindingNumber::Estimate far_term(const Node& node, const Vec3& q, double qnorm, const Vec3& dx, double d, double d_lo) {
+  const double inv = 1 / d, inv3 = inv * inv * inv;
+  const Vec3 u = {dx[0] * inv, dx[1] * inv, dx[2] * inv};
+  const std::array<double, 9>& mm = node.m;
+  double umu = 0;
+  for (int j = 0; j < 3; ++j)
+    for (int k = 0; k < 3; ++k) umu += u[j] * mm[3 * j + k] * u[k];
+  const double trace = mm[0] + mm[4] + mm[8];
+  const double value = (dot(node.n, dx) * inv3 + (trace - 3 * umu) * inv3) / k4Pi;
+  // The distance from q to the node's box (which holds the segments from c
+  // to its points), rounded down, when it is larger than d - r.
+  double box2 = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double out = std::max({node.lo[k] - q[k], q[k] - node.hi[k], 0.0});
+    box2 += out * out;
+  }
+  const double ball = d_lo - node.r;
+  const double gap = box2 > ball * ball ? std::max(ball, std::sqrt(box2) * (1 - 8 * kU)) : ball;
+  const double gap2 = gap * gap;
+  // |D^2 f [v, v]| <= min(6 |v|^2, 6 |n.v| |v| + 12 |e.n| |v|^2) / rho^4 (S18),
+  // |n.v| <= slab + delta |v|, |e.n| <= kappa; the integral of |v| at most sqrt(A I2).
+  double moment = 3 * node.i2;
+  if (node.delta < 1) {
+    const double height = std::abs(dot(dx, node.n0)) + 16 * kU * d;
+    const double kappa = std::min(1.0, (height + node.slab) / gap + node.delta);
+    moment = std::min(moment, (3 * (node.slab * node.i1 + node.delta * node.i2) + 6 * kappa * node.i2) * (1 + 32 * kU));
+  }
+  const double taylor = moment / (gap2 * gap2) / k4Pi;
+  const double inv_lo = 1 / d_lo;
+  const double allowance =
+      512 * kU *
+      (node.area_abs * inv_lo * inv_lo +
+       4 * (node.mabs + node.area_abs * (node.cnorm + qnorm + node.r)) * inv_lo * inv_lo * inv_lo) /
+      k4Pi;
+  return {value, taylor * (1 + 16 * kU) + allowance};
+}
+
+// The rounding of a sum of m positive bounds, each rounded up: gamma_m.
+double gamma_of(double m) { return m * kU / (1 - m * kU); }
+
+}  // namespace
+
+// Nodes with |q - c| > beta r in the far field, the rest exactly (S17). The
+// sum's own rounding: gamma_m sum|terms| (m the terms).
 WindingNumber::Estimate WindingNumber::Impl::run(const Vec3& q, double beta,
                                                  std::span<const std::uint32_t> excluded) const {
   if (!(beta > 1)) throw std::invalid_argument("soup::WindingNumber::estimate: beta must be > 1");
@@ -290,26 +379,10 @@ WindingNumber::Estimate WindingNumber::Impl::run(const Vec3& q, double beta,
     const double d = norm(dx);
     const double d_lo = d * (1 - 4 * kU);
     if (d_lo > beta * node.r) {
-      const double inv = 1 / d, inv3 = inv * inv * inv;
-      const Vec3 u = {dx[0] * inv, dx[1] * inv, dx[2] * inv};
-      const std::array<double, 9>& mm = node.m;
-      double umu = 0;
-      for (int j = 0; j < 3; ++j)
-        for (int k = 0; k < 3; ++k) umu += u[j] * mm[3 * j + k] * u[k];
-      const double trace = mm[0] + mm[4] + mm[8];
-      const double value = (dot(node.n, dx) * inv3 + (trace - 3 * umu) * inv3) / k4Pi;
-      const double gap = d_lo - node.r;
-      const double gap2 = gap * gap;
-      const double taylor = 3 * node.i2 / (gap2 * gap2) / k4Pi;
-      const double inv_lo = 1 / d_lo;
-      const double allowance =
-          512 * kU *
-          (node.area_abs * inv_lo * inv_lo +
-           4 * (node.mabs + node.area_abs * (norm(node.c) + qnorm + node.r)) * inv_lo * inv_lo * inv_lo) /
-          k4Pi;
-      sum += value;
-      sum_abs += std::abs(value);
-      error += taylor * (1 + 16 * kU) + allowance;
+      const Estimate t = far_term(node, q, qnorm, dx, d, d_lo);
+      sum += t.value;
+      sum_abs += std::abs(t.value);
+      error += t.error;
       terms += 1;
     } else if (node.right == 0) {
       for (std::uint32_t i = node.begin; i < node.end; ++i) {
@@ -326,8 +399,8 @@ WindingNumber::Estimate WindingNumber::Impl::run(const Vec3& q, double beta,
       stack[top++] = index + 1;
     }
   }
-  error += terms * kU * sum_abs / (1 - terms * kU);
-  return {sum, error * (1 + 64 * kU)};
+  const double g = gamma_of(terms);
+  return {sum, (error * (1 + g) + g * sum_abs * (1 + 2 * g)) * (1 + 4 * kU)};
 }
 
 WindingNumber::Estimate WindingNumber::Impl::exact(const Vec3& q, std::span<const std::uint32_t> excluded) const {
@@ -340,9 +413,8 @@ WindingNumber::Estimate WindingNumber::Impl::exact(const Vec3& q, std::span<cons
     sum_abs += std::abs(t.value);
     error += t.error;
   }
-  const double terms = static_cast<double>(points.size());
-  error += terms * kU * sum_abs / (1 - terms * kU);
-  return {sum, error * (1 + 64 * kU)};
+  const double g = gamma_of(static_cast<double>(points.size()));
+  return {sum, (error * (1 + g) + g * sum_abs * (1 + 2 * g)) * (1 + 4 * kU)};
 }
 
 WindingNumber::Estimate WindingNumber::estimate(const Vec3& q) const { return estimate(q, kBeta); }
@@ -354,17 +426,95 @@ WindingNumber::Estimate WindingNumber::direct_bounded(const Vec3& q) const { ret
 double WindingNumber::direct(const Vec3& q) const { return impl_->exact(q, {}).value; }
 
 // spec/stuffing.md S18: is w >= threshold (w summed without the excluded
-// triangles)? Decided by an estimate only when its bound decides; else with
-// a larger beta; else by the exact sum; a value within the exact sum's
-// rounding bound of the threshold counts as >= (the tie rule).
+// triangles)? One pass with kSideBeta, then, while the bound does not
+// decide, the far node with the largest bound is replaced by its children
+// (or its triangles, exactly); with no far node left, a value within the
+// bound of the threshold counts as >= (the tie rule).
 bool WindingNumber::Impl::at_least(const Vec3& q, std::span<const std::uint32_t> excluded, double threshold) const {
-  for (const double beta : {kBeta, 2 * kBeta}) {
-    const Estimate e = run(q, beta, excluded);
-    if (e.value - e.error >= threshold) return true;
-    if (e.value + e.error < threshold) return false;
+  if (nodes.empty()) return 0 >= threshold;
+  struct Far {
+    double bound, value;
+    std::uint32_t node;
+  };
+  auto by_bound = [](const Far& x, const Far& y) { return x.bound < y.bound; };
+  thread_local std::vector<Far> far;
+  far.clear();
+  const double qnorm = norm(q);
+  double sum = 0, sum_abs = 0, terms = 0;  // every term added or taken off
+  double exact_error = 0, exact_terms = 0;
+  double far_error = 0;  // >= the sum of the far nodes' bounds: rounded up at each step
+  bool heap = false;     // far is a max-heap by bound (after the first pass)
+  auto up = [](double x) { return x * (1 + 4 * kU); };
+  auto leaf = [&](const Node& node) {
+    for (std::uint32_t i = node.begin; i < node.end; ++i) {
+      if (degenerate[i]) continue;
+      if (!excluded.empty() && std::binary_search(excluded.begin(), excluded.end(), ids[i])) continue;
+      const Estimate t = solid_angle(points[i], q);
+      sum += t.value;
+      sum_abs += std::abs(t.value);
+      terms += 1;
+      exact_error += t.error;
+      exact_terms += 1;
+    }
+  };
+  std::uint32_t stack[2 * kMaxDepth + 8];
+  auto open = [&](std::uint32_t root) {
+    int top = 0;
+    stack[top++] = root;
+    while (top > 0) {
+      const std::uint32_t index = stack[--top];
+      const Node& node = nodes[index];
+      const Vec3 dx = sub(node.c, q);
+      const double d = norm(dx);
+      const double d_lo = d * (1 - 4 * kU);
+      if (d_lo > kSideBeta * node.r) {
+        const Estimate t = far_term(node, q, qnorm, dx, d, d_lo);
+        sum += t.value;
+        sum_abs += std::abs(t.value);
+        terms += 1;
+        far.push_back({t.error, t.value, index});
+        if (heap) std::push_heap(far.begin(), far.end(), by_bound);
+        far_error = up(far_error + t.error);
+      } else if (node.right == 0) {
+        leaf(node);
+      } else {
+        stack[top++] = node.right;
+        stack[top++] = index + 1;
+      }
+    }
+  };
+  open(0);
+  for (;;) {
+    const double g = gamma_of(terms), ge = gamma_of(exact_terms);
+    const double bound = (exact_error * (1 + ge) + far_error + g * sum_abs * (1 + 2 * g)) * (1 + 4 * kU);
+    // |w - sum| <= bound; the difference's rounding: compare with bound (1 + 4u).
+    const double margin = bound * (1 + 4 * kU);
+    const double diff = sum - threshold;
+    if (diff >= margin) return true;
+    if (diff < -margin) return false;
+    if (far.empty()) {
+      full_sums.fetch_add(1, std::memory_order_relaxed);
+      return true;
+    }
+    if (!heap) {
+      std::make_heap(far.begin(), far.end(), by_bound);
+      heap = true;
+    }
+    std::pop_heap(far.begin(), far.end(), by_bound);
+    const Far worst = far.back();
+    far.pop_back();
+    sum -= worst.value;
+    sum_abs += std::abs(worst.value);
+    terms += 1;
+    far_error = far.empty() ? 0 : up(far_error - worst.bound);
+    const Node& node = nodes[worst.node];
+    if (node.right == 0) {
+      leaf(node);
+    } else {
+      open(worst.node + 1);
+      open(node.right);
+    }
   }
-  const Estimate e = exact(q, excluded);
-  return !(e.value + e.error < threshold);
 }
 
 // spec/stuffing.md S19: the triangles whose closed set holds q, by exact

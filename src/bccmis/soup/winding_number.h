@@ -38,7 +38,8 @@ class WindingNumber {
 
   /// The far-field opening parameter of estimate(q): a node of the hierarchy
   /// is replaced by its expansion when |q - c| > beta r (spec/stuffing.md
-  /// S18). estimate(q) uses kBeta; side() tightens with kBeta * 2.
+  /// S18). estimate(q) uses kBeta; side() starts with beta 3.5 and, while the
+  /// bound does not decide, opens the far nodes with the largest bounds.
   static constexpr double kBeta = 4;
   /// estimate(q) with another beta (> 1; smaller is faster and looser). The
   /// bound holds for every beta > 1, which the tests use to plant estimates
@@ -59,6 +60,10 @@ class WindingNumber {
   int side(const Vec3& q) const;
 
   std::size_t size() const;
+
+  /// How many decisions of side() (counting each of the two limits on a
+  /// triangle) so far had no far node left: the O(n) sum (for benchmarks).
+  std::uint64_t full_sums() const;
 
  private:
   struct Impl;
