@@ -52,8 +52,21 @@ bccmis_cli_test(stuff_animate_too_fine 2 ARGS stuff --shape sphere -L 19 --cells
 bccmis_cli_test(stuff_path_without_animate 2 ARGS stuff --shape sphere --path 1,0,0 -o a.vtu
                 STDERR_REGEX "--path and --compare apply with --animate")
 if(TARGET bccmis::stuff_surface)
-  bccmis_cli_test(stuff_open_mesh 2 ARGS stuff ${CMAKE_CURRENT_SOURCE_DIR}/stuff/bad/open.off -o x.vtu
+  # --strict refuses at the first flaw with §1's message; by default the
+  # open cube is meshed (S21) with one line on stderr, and --json has the report.
+  bccmis_cli_test(stuff_open_mesh_strict 2 ARGS stuff ${CMAKE_CURRENT_SOURCE_DIR}/stuff/bad/open.off --strict -o x.vtu
                   STDERR_REGEX "open.off: open mesh: 3 border edges, one from vertex 3 to vertex 0")
+  bccmis_cli_test(stuff_open_mesh 0 ARGS stuff ${CMAKE_CURRENT_SOURCE_DIR}/stuff/bad/open.off -L 2 -o x.vtu
+                  STDERR_REGEX "open.off: 3 border edges: meshed as the solid where the winding number >= 1/2; --strict refuses")
+  bccmis_cli_test(stuff_open_mesh_json 0 ARGS stuff ${CMAKE_CURRENT_SOURCE_DIR}/stuff/bad/open.off -L 2 --stats --json -q
+                  STDOUT_REGEX "\"soup\": {.*\"border_edges\": {\"count\": 3, \"first\": \\[\\[0\\], \\[3\\], \\[9\\]\\]}")
+  bccmis_cli_test(stuff_self_intersecting_strict 2 ARGS stuff ${CMAKE_CURRENT_SOURCE_DIR}/stuff/bad/self_intersecting.off
+                  --strict -o x.vtu STDERR_REGEX "self_intersecting.off: self-intersecting \\(face 3 and face 4\\)")
+  bccmis_cli_test(stuff_self_intersecting_stats 0 ARGS stuff ${CMAKE_CURRENT_SOURCE_DIR}/stuff/bad/self_intersecting.off
+                  -L 2 --stats -q STDOUT_REGEX "soup_self_intersecting_pairs 3.soup_self_intersecting_pairs_first 3\\+4 3\\+5 3\\+6")
+  # One open triangle: the winding number stays below 1/2 (S21).
+  bccmis_cli_test(stuff_patch 2 ARGS stuff ${CMAKE_CURRENT_SOURCE_DIR}/stuff/bad/patch.off -L 2 -o x.vtu
+                  STDERR_REGEX "patch.off: encloses no volume \\(the winding number is below 1/2 at every lattice vertex\\)")
   bccmis_cli_test(stuff_syntax 2 ARGS stuff ${CMAKE_CURRENT_SOURCE_DIR}/stuff/bad/syntax.obj -o x.vtu
                   STDERR_REGEX "syntax.obj:3:7: ")
 endif()

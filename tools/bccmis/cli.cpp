@@ -99,7 +99,9 @@ CLI::App* add_mesh(CLI::App& app, MeshOptions& o) {
 CLI::App* add_stuff(CLI::App& app, StuffOptions& o) {
   CLI::App* cmd = app.add_subcommand(
       "stuff", "Mesh a closed shape with tetrahedra by isosurface stuffing on the graded BCC mesh (spec/stuffing.md).");
-  cmd->add_option("input", o.input, "Closed triangle mesh: .off, .obj or .stl (ASCII or binary)");
+  cmd->add_option("input", o.input,
+                  "Triangle mesh: .off, .obj or .stl (ASCII or binary); open, self-intersecting or otherwise "
+                  "flawed meshes are repaired and meshed as the solid where the winding number >= 1/2");
   cmd->add_option("--shape", o.shape,
                   "A built-in shape instead: sphere[:r=R], torus[:R=A,r=B], spheres[:r=R,d=D] (defaults r=1; R=1, "
                   "r=0.4; r=0.7, d=1)");
@@ -130,6 +132,9 @@ CLI::App* add_stuff(CLI::App& app, StuffOptions& o) {
   cmd->add_flag("--check", o.check,
                 "Check the mesh before writing: exact positive orientation, conformity, a closed boundary on the "
                 "surface (exit 1 on a violation)");
+  cmd->add_flag("--strict", o.strict,
+                "Refuse a triangle mesh that is not closed, manifold, consistently oriented and free of "
+                "self-intersections, naming its first flaw (exit 2)");
   cmd->add_flag("-q,--quiet", o.quiet, "No progress or summary on stderr");
   cmd->footer(
       "Examples:\n  bccmis stuff --shape torus -L 4 -o torus.vtu --stats\n"

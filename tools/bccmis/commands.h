@@ -122,7 +122,7 @@ struct MeshOptions {
 int run(const MeshOptions& o);
 
 struct StuffOptions {
-  std::string input;                 ///< a closed triangle mesh (.off, .obj, .stl)
+  std::string input;                 ///< a triangle mesh (.off, .obj, .stl)
   std::string shape;                 ///< or a built-in shape, NAME[:KEY=VALUE,...]
   std::vector<std::string> outputs;  ///< -o, repeatable; the extension names the format
   int max_level = 4;
@@ -136,6 +136,7 @@ struct StuffOptions {
   bool stats = false;
   bool json = false;
   bool check = false;
+  bool strict = false;  ///< refuse a triangle mesh at its first flaw (spec/stuffing.md S21)
   bool quiet = false;
 };
 int run(const StuffOptions& o);

@@ -49,7 +49,7 @@ std::shared_ptr<const stuff::Shape> load_shape(const StuffOptions& o) {
   if (o.shape.empty() && o.input.empty())
     throw InputError("nothing to mesh: give an input mesh (.off, .obj, .stl) or --shape NAME");
   if (!o.shape.empty()) return stuff::make_builtin(o.shape);
-  return stuff::load_mesh_file(o.input);
+  return stuff::load_mesh_file(o.input, o.strict);
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
@@ -57,6 +57,55 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }
 
 std::string number(double x) { return JsonWriter::number(x); }
+
+/// The faces of the first few instances of a flaw: "3+4 7+9" or [[3,4],[7,9]].
+std::string instances_text(const stuff::SoupFlaw& f) {
+  std::string out;
+  for (const auto& faces : f.first) {
+    out += out.empty() ? "" : " ";
+    for (std::size_t i = 0; i < faces.size(); ++i) out += (i == 0 ? "" : "+") + std::to_string(faces[i]);
+  }
+  return out;
+}
+void instances_json(JsonWriter& w, const stuff::SoupFlaw& f) {
+  w.begin_object().member("count", f.count).key("first").begin_array();
+  for (const auto& faces : f.first) {
+    w.begin_array();
+    for (std::size_t face : faces) w.value(face);
+    w.end_array();
+  }
+  w.end_array().end_object();
+}
+
+/// S21's report of a triangle-mesh file: `soup_...` lines, or the "soup" member.
+void soup_json(JsonWriter& w, const stuff::SoupReport& r) {
+  w.key("soup").begin_object().member("file", r.file).member("faces", r.faces).member("flaws", r.flaw_count());
+  for (std::size_t k = 0; k < stuff::SoupReport::kKinds; ++k) {
+    w.key(stuff::SoupReport::key(static_cast<stuff::SoupReport::Kind>(k)));
+    instances_json(w, r.flaws[k]);
+  }
+  w.member("components", r.components)
+      .member("inward_components", r.inward_components)
+      .member("flipped_faces", r.flipped_faces)
+      .member("dropped_faces", r.dropped_faces)
+      .key("bad_normals");
+  instances_json(w, r.bad_normals);
+  w.end_object();
+}
+std::string soup_text(const stuff::SoupReport& r) {
+  std::string out = "soup_faces " + std::to_string(r.faces) + "\nsoup_flaws " + std::to_string(r.flaw_count()) + "\n";
+  const auto item = [&](const std::string& key, const stuff::SoupFlaw& f) {
+    out += "soup_" + key + " " + std::to_string(f.count) + "\n";
+    if (f.count > 0) out += "soup_" + key + "_first " + instances_text(f) + "\n";
+  };
+  for (std::size_t k = 0; k < stuff::SoupReport::kKinds; ++k)
+    item(stuff::SoupReport::key(static_cast<stuff::SoupReport::Kind>(k)), r.flaws[k]);
+  out += "soup_components " + std::to_string(r.components) + "\nsoup_inward_components " +
+         std::to_string(r.inward_components) + "\nsoup_flipped_faces " + std::to_string(r.flipped_faces) +
+         "\nsoup_dropped_faces " + std::to_string(r.dropped_faces) + "\n";
+  item("bad_normals", r.bad_normals);
+  return out;
+}
 
 /// --stats: S13's report as `name value` lines, or one JSON object.
 std::string stats_text(const std::string& shape, const stuff::Meshed& m, const stuff::PhaseSeconds& seconds,
@@ -85,6 +134,7 @@ std::string stats_text(const std::string& shape, const stuff::Meshed& m, const s
       w.value(h.from_surface);
     w.member("max", h.max()).end_object();
     w.member("min_dihedral", q.min_dihedral).member("max_dihedral", q.max_dihedral).member("below10", s.below10());
+    if (m.soup) soup_json(w, *m.soup);
     w.key("dihedral_histogram").begin_object();
     for (std::size_t k = 0; k < q.histogram.size(); ++k) w.member(std::to_string(15 * k), q.histogram[k]);
     w.end_object().key("seconds").begin_object();
@@ -105,6 +155,7 @@ std::string stats_text(const std::string& shape, const stuff::Meshed& m, const s
          number(q.max_dihedral) + "\nbelow10 " + number(s.below10()) + "\n";
   for (std::size_t k = 0; k < q.histogram.size(); ++k)
     if (q.histogram[k] != 0) out += "dihedral_" + std::to_string(15 * k) + " " + std::to_string(q.histogram[k]) + "\n";
+  if (m.soup) out += soup_text(*m.soup);
   for (const auto& [phase, t] : seconds) out += "seconds_" + phase + " " + number(t) + "\n";
   return out;
 }
@@ -221,6 +272,9 @@ int run(const StuffOptions& o) {
     throw InputError(e.what());
   }
   stuff::PhaseSeconds seconds{{"input", seconds_since(t0)}};
+  if (const stuff::SoupReport* r = shape->soup_report(); r && r->flaw_count() > 0 && !o.stats && !o.quiet)
+    std::cerr << "bccmis stuff: " << r->file << ": " << r->summary()
+              << ": meshed as the solid where the winding number >= 1/2; --strict refuses\n";
   stuff::Settings settings;
   settings.lattice.max_level = o.max_level;
   settings.lattice.min_level = o.min_level;
@@ -231,6 +285,7 @@ int run(const StuffOptions& o) {
   settings.impl = o.impl == "reference" ? stuff::Impl::reference : stuff::Impl::fast;
   settings.statistics = o.stats;
   settings.check = o.check;
+  settings.strict = o.strict;
   const auto progress = [&](std::string_view what) {
     if (!o.quiet) std::cerr << "bccmis stuff: " << what << std::endl;
   };

@@ -4,9 +4,11 @@
 
 #include <array>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <string_view>
 
@@ -26,6 +28,26 @@ struct Merger {
     return it->second;
   }
 };
+
+/// The rest of a `facet` line: "normal nx ny nz", or anything else (NaN).
+d3::Vec3 read_normal(detail::LineScanner& t) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  d3::Vec3 n{nan, nan, nan};
+  if (t.token(false) != "normal") {
+    while (!t.token(false).empty()) {
+    }
+    return n;
+  }
+  for (auto& c : n) {
+    const std::string_view w = t.token(false);
+    double x = nan;
+    const auto [ptr, ec] = std::from_chars(w.data(), w.data() + w.size(), x);
+    c = !w.empty() && ec == std::errc() && ptr == w.data() + w.size() ? x : nan;
+  }
+  while (!t.token(false).empty()) {
+  }
+  return n;
+}
 
 TriangleSoup read_stl_ascii(const std::string& file, const std::string& data) {
   detail::LineScanner t(file, data);
@@ -49,8 +71,11 @@ TriangleSoup read_stl_ascii(const std::string& file, const std::string& data) {
     if (w == "endsolid") break;
     if (w != "facet") t.fail("expected 'facet' or 'endsolid', found '" + std::string(w) + "'");
     const std::size_t line = t.line();
-    expect("normal");
-    for (int i = 0; i < 3; ++i) t.number("a normal component");
+    // The normal is ignored (the vertex order defines the orientation): any
+    // tokens after "facet" on its line are accepted, "normal" and its three
+    // components included, whatever they are; those that do not read as
+    // three finite numbers give a normal of NaN.
+    s.normals.push_back(read_normal(t));
     next("'outer loop'");
     expect("outer");
     expect("loop");
@@ -107,6 +132,15 @@ TriangleSoup read_stl_binary(const std::string& file, const std::string& data) {
       }
       tri[static_cast<std::size_t>(k)] = merge(p);
     }
+    d3::Vec3 normal{};
+    for (int c = 0; c < 3; ++c) {
+      const std::size_t off = at + 4 * static_cast<std::size_t>(c);
+      const std::uint32_t bits = u8(off) | u8(off + 1) << 8 | u8(off + 2) << 16 | u8(off + 3) << 24;
+      float x = 0;
+      std::memcpy(&x, &bits, sizeof x);
+      normal[static_cast<std::size_t>(c)] = static_cast<double>(x);
+    }
+    s.normals.push_back(normal);
     s.triangles.push_back(tri);
     s.face.push_back(f);
     s.line.push_back(0);

@@ -10,7 +10,10 @@ namespace bccmis::io {
 /// The triangle soup of the STL file `data` (file name `file` for messages),
 /// each corner that repeats exactly merged into one vertex. Binary when the
 /// size matches the triangle count at byte 80 or the text does not start with
-/// "solid" (binary headers may start with it too). Throws ReadError: in ASCII
+/// "solid" (binary headers may start with it too). The facet normals are
+/// kept in `normals` but never refused: in ASCII whatever follows `facet` on
+/// its line is accepted (a missing, `nan` or garbled normal reads as NaN).
+/// Throws ReadError: in ASCII
 /// `file:line:column: message` on a keyword or number out of place, in binary
 /// `file: byte N: message` on a truncated file, bytes after the triangles or a
 /// coordinate that is not finite.

@@ -21,6 +21,10 @@ struct TriangleSoup {
   std::vector<std::size_t> face;
   std::vector<std::size_t> line;
   std::uint32_t vertex_base = 0;
+  /// STL only: the facet normals as written (NaN where an ASCII file has no
+  /// three numbers there), one per triangle; empty for OFF and OBJ. Ignored
+  /// but for the report of bad normals.
+  std::vector<d3::Vec3> normals;
 };
 
 }  // namespace bccmis::io

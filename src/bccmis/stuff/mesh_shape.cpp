@@ -17,10 +17,11 @@ using detail::seconds_since;
 std::string number(double x) { return JsonWriter::number(x); }
 }  // namespace
 
-std::unique_ptr<Shape> load_mesh_file(const std::string& path) {
+std::unique_ptr<Shape> load_mesh_file(const std::string& path, bool strict) {
 #if BCCMIS_HAVE_STUFF_SURFACE
-  return load_surface(path);
+  return strict ? load_surface(path) : load_soup(path);
 #else
+  (void)strict;
   throw ShapeError(path + ": this build has no CGAL, so it reads no meshes; use --shape");
 #endif
 }
@@ -41,6 +42,11 @@ Meshed mesh_shape(const Shape& shape, const Settings& settings, const Progress& 
     if (progress) progress(what);
   };
   Meshed r;
+  if (const SoupReport* soup = shape.soup_report()) {
+    r.soup = *soup;
+    if (settings.strict && soup->flaw_count() > 0)
+      throw ShapeError(soup->file + ": " + soup->summary() + " (strict: only a clean closed mesh is meshed)");
+  }
   StuffOptions options = settings.lattice;
   r.fit = fit_lattice(shape.bounds(), options);
   options.max_level = r.fit.size.L;
@@ -70,6 +76,9 @@ Meshed mesh_shape(const Shape& shape, const Settings& settings, const Progress& 
                {"stencils", times.stencils}};
   say(std::to_string(r.stuffed.mesh.tets.size()) + " tetrahedra (" + number(times.total() - times.lattice) + " s)");
 
+  // S21: a soup whose winding number is below 1/2 at every lattice vertex.
+  if (r.soup && r.stuffed.mesh.tets.empty())
+    throw ShapeError(r.soup->file + ": encloses no volume (the winding number is below 1/2 at every lattice vertex)");
   const auto t1 = Clock::now();
   r.boundary = boundary_triangles(r.stuffed.mesh);
   if (settings.check)

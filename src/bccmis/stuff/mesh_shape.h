@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "bccmis/stuff/shape.h"
+#include "bccmis/stuff/soup_report.h"
 #include "bccmis/stuff/statistics.h"
 #include "bccmis/stuff/stuff.h"
 
@@ -36,6 +37,10 @@ struct Settings {
   Impl impl = Impl::fast;   ///< the fast lattice, or the reference (its oracle)
   bool statistics = false;  ///< compute S13's statistics (quality, Hausdorff)
   bool check = false;       ///< run the checker's stuffed-mesh layer on the result
+  /// Refuse a triangle mesh with any flaw (S21): a shape whose soup report
+  /// counts flaws is refused with the first one's message, as
+  /// load_mesh_file(path, true) refuses it when reading.
+  bool strict = false;
 };
 
 /// One line of news for a person watching ("12,345 leaves (0.5 s)").
@@ -52,6 +57,7 @@ struct Meshed {
   Stuffed stuffed;                                     ///< the mesh and its counts (S5-S9)
   std::vector<std::array<std::uint32_t, 3>> boundary;  ///< S11, outward
   std::optional<Statistics> statistics;                ///< with Settings::statistics
+  std::optional<SoupReport> soup;                      ///< the shape's soup report (S21), when it has one
   PhaseSeconds seconds;
 };
 
@@ -63,13 +69,18 @@ class CheckError : public std::runtime_error {
 };
 
 /// S2-S13 on `shape`. Throws ShapeError when the lattice cannot be fitted
-/// (S2's refusals), CheckError when Settings::check finds a problem.
+/// (S2's refusals), when a soup's mesh has no tetrahedron ("<file>: encloses
+/// no volume ...", S21) or, with Settings::strict, when the shape's soup
+/// report has flaws; CheckError when Settings::check finds a problem.
 Meshed mesh_shape(const Shape& shape, const Settings& settings, const Progress& progress = {});
 
 /// The shape a user names: a triangle mesh file (.off, .obj, .stl), read
 /// through CGAL (ShapeError naming the file when this build has no CGAL or
-/// the file is refused).
-std::unique_ptr<Shape> load_mesh_file(const std::string& path);
+/// the file is refused). By default any soup that parses and has a face
+/// (load_soup, S21-S23; the shape's soup_report() says what was found and
+/// repaired); with `strict` only a clean closed mesh, refused at its first
+/// flaw (load_surface, §1's checks).
+std::unique_ptr<Shape> load_mesh_file(const std::string& path, bool strict = false);
 
 /// The checker's stuffed-mesh layer (bccmis/invariants/d3/stuffed_mesh.h) on
 /// a mesh of `shape` on the lattice `fit`: boundary vertices within 1e-9 h

@@ -20,6 +20,7 @@
 namespace bccmis::stuff {
 
 using Vec3 = std::array<double, 3>;
+struct SoupReport;  // soup_report.h
 
 /// An axis-aligned box, lo <= hi componentwise.
 struct Bounds {
@@ -50,6 +51,10 @@ class Shape {
   virtual double volume() const = 0;
   /// n points on the surface, spread evenly by area, the same for the same seed.
   virtual std::vector<Vec3> sample_surface(std::size_t n, std::uint64_t seed) const = 0;
+  /// What the inspection of a triangle-mesh file read by the default path
+  /// found and repaired (spec/stuffing.md S21-S22); nullptr for the other
+  /// shapes and for --strict.
+  virtual const SoupReport* soup_report() const { return nullptr; }
   /// One line naming the shape for messages and --stats ("sphere r=1", "mesh elephant.off: 2775 triangles").
   virtual std::string describe() const = 0;
 };

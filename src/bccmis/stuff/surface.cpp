@@ -6,6 +6,7 @@
 #include "bccmis/stuff/surface.h"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
@@ -15,6 +16,7 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
 #include <cctype>
@@ -26,10 +28,12 @@
 #include <iterator>
 #include <limits>
 #include <map>
+#include <mutex>
 #include <optional>
 #include <random>
 #include <sstream>
 #include <string_view>
+#include <unordered_map>
 #include <utility>
 
 #include "bccmis/io/obj.h"
@@ -37,6 +41,8 @@
 #include "bccmis/io/read_error.h"
 #include "bccmis/io/stl.h"
 #include "bccmis/io/triangle_soup.h"
+#include "bccmis/soup/winding_number.h"
+#include "bccmis/stuff/soup_report.h"
 
 namespace bccmis::stuff {
 namespace {
@@ -56,6 +62,39 @@ using Soup = io::TriangleSoup;
 std::string basename_of(const std::string& path) {
   const auto slash = path.find_last_of('/');
   return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+std::uint64_t edge_key(std::uint32_t u, std::uint32_t w) {
+  return static_cast<std::uint64_t>(std::min(u, w)) << 32 | std::max(u, w);
+}
+
+/// The edge-connected components of triangles (through every shared edge).
+struct Components {
+  std::size_t count = 0;
+  std::vector<std::size_t> of;
+};
+Components edge_components(const std::vector<Tri>& T) {
+  std::vector<std::size_t> parent(T.size());
+  for (std::size_t i = 0; i < T.size(); ++i) parent[i] = i;
+  const auto find = [&](std::size_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  std::unordered_map<std::uint64_t, std::size_t> first;
+  for (std::size_t t = 0; t < T.size(); ++t)
+    for (std::size_t k = 0; k < 3; ++k) {
+      const auto [it, fresh] = first.try_emplace(edge_key(T[t][k], T[t][(k + 1) % 3]), t);
+      if (!fresh) parent[find(t)] = find(it->second);
+    }
+  Components c;
+  c.of.assign(T.size(), 0);
+  std::vector<std::size_t> label(T.size(), SIZE_MAX);
+  for (std::size_t t = 0; t < T.size(); ++t) {
+    const std::size_t r = find(t);
+    if (label[r] == SIZE_MAX) label[r] = c.count++;
+    c.of[t] = label[r];
+  }
+  return c;
 }
 
 // ---------------------------------------------------------------------------
@@ -78,17 +117,25 @@ class Checker {
   std::string vertex(std::uint32_t v) const { return std::to_string(static_cast<std::uint64_t>(v) + s_.vertex_base); }
   [[noreturn]] void fail(const std::string& what) const { throw ShapeError(name_ + ": " + what); }
 
-  void run() const {
+  /// The refusals of both modes (S21): no faces, a coordinate not finite, an
+  /// index out of range.
+  void basics() const {
     const auto& V = s_.vertices;
     const auto& T = s_.triangles;
     if (T.empty()) fail("empty mesh (no faces)");
     for (std::size_t i = 0; i < V.size(); ++i)
       for (double x : V[i])
         if (!std::isfinite(x)) fail("vertex " + vertex(static_cast<std::uint32_t>(i)) + " has a coordinate not finite");
-    for (std::size_t t = 0; t < T.size(); ++t) {
+    for (std::size_t t = 0; t < T.size(); ++t)
       for (auto v : T[t])
         if (v >= V.size())
           fail(face(t) + ": vertex index " + vertex(v) + " out of range (" + std::to_string(V.size()) + " vertices)");
+  }
+
+  void run() const {
+    const auto& T = s_.triangles;
+    basics();
+    for (std::size_t t = 0; t < T.size(); ++t) {
       const auto [a, b, c] = T[t];
       if (a == b || b == c || a == c)
         fail(face(t) + " is degenerate: vertex " + vertex(a == b || a == c ? a : b) + " repeated");
@@ -312,7 +359,29 @@ class MeshShape final : public Shape {
     return "mesh " + name_ + ": " + std::to_string(triangles_.size()) + " triangles";
   }
 
+  const SoupReport* soup_report() const override { return report_ ? &*report_ : nullptr; }
+  /// The default path's report of a clean file (S21): its notes filled here.
+  void set_report(SoupReport r, const Soup& s) {
+    // Faces orient_to_bound_a_volume reversed: not a rotation of the input's corners.
+    std::vector<char> reversed(s.triangles.size(), 0);
+    for (std::size_t t = 0; t < s.triangles.size() && t < triangles_.size(); ++t) {
+      const auto& [a, b, c] = triangles_[t];
+      const auto& in = s.triangles[t];
+      const Point p(s.vertices[in[0]][0], s.vertices[in[0]][1], s.vertices[in[0]][2]);
+      const Point q(s.vertices[in[1]][0], s.vertices[in[1]][1], s.vertices[in[1]][2]);
+      reversed[t] = !((a == p && b == q) || (b == p && c == q) || (c == p && a == q));
+    }
+    const auto comp = edge_components(s.triangles);
+    r.components = comp.count;
+    std::vector<char> inward(comp.count, 0);
+    for (std::size_t t = 0; t < reversed.size(); ++t)
+      if (reversed[t]) inward[comp.of[t]] = 1;
+    r.inward_components = static_cast<std::size_t>(std::count(inward.begin(), inward.end(), 1));
+    report_ = std::move(r);
+  }
+
  private:
+  std::optional<SoupReport> report_;
   std::string name_;
   Mesh mesh_;
   Tree tree_;
@@ -323,6 +392,498 @@ class MeshShape final : public Shape {
   std::vector<double> area_sum_;
 };
 
+// ---------------------------------------------------------------------------
+// Triangle soups (S20-S23): the inspection that counts every flaw, the
+// repairs, and the shape of the solid {w >= 1/2}.
+
+/// A soup inspected and repaired (S21, S22): the report, the triangles kept
+/// (oriented), the input face of each, and the net boundary of the kept
+/// triangles as directed edges, repeated by multiplicity.
+struct Repaired {
+  SoupReport report;
+  std::vector<Tri> tris;
+  std::vector<std::size_t> face;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> boundary;
+};
+
+/// Whether the triangles t1, t2 (indices into V, not degenerate, not the
+/// same three vertices) meet other than in the vertices or the edge they
+/// share, after PMP::self_intersections' rules.
+bool faces_meet(const std::vector<Vec3>& V, const Tri& t1, const Tri& t2) {
+  const auto P = [&](std::uint32_t v) { return Point(V[v][0], V[v][1], V[v][2]); };
+  std::array<int, 3> in2{-1, -1, -1};  // for each corner of t1, its corner in t2
+  int shared = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (t1[static_cast<std::size_t>(i)] == t2[static_cast<std::size_t>(j)])
+        in2[static_cast<std::size_t>(i)] = j, ++shared;
+  const K::Triangle_3 T1(P(t1[0]), P(t1[1]), P(t1[2])), T2(P(t2[0]), P(t2[1]), P(t2[2]));
+  if (shared == 0) return CGAL::do_intersect(T1, T2);
+  if (shared == 1) {
+    std::size_t i = 0;
+    while (in2[i] < 0) ++i;
+    const auto j = static_cast<std::size_t>(in2[i]);
+    const K::Segment_3 opp1(P(t1[(i + 1) % 3]), P(t1[(i + 2) % 3])), opp2(P(t2[(j + 1) % 3]), P(t2[(j + 2) % 3]));
+    return CGAL::do_intersect(opp1, T2) || CGAL::do_intersect(opp2, T1);
+  }
+  // A shared edge pq: they overlap when coplanar with the third corners on the same side.
+  std::size_t i = 0, j = 0;
+  while (in2[i] >= 0) ++i;  // the corner of t1 not in t2
+  for (std::size_t k = 0; k < 3; ++k)
+    if (t2[k] != t1[0] && t2[k] != t1[1] && t2[k] != t1[2]) j = k;
+  const Point p = P(t1[(i + 1) % 3]), q = P(t1[(i + 2) % 3]), r = P(t1[i]), x = P(t2[j]);
+  return CGAL::coplanar(p, q, r, x) && CGAL::coplanar_orientation(p, q, r, x) == CGAL::POSITIVE;
+}
+
+/// STL facet normals not finite, zero, or against the vertex order (S21).
+SoupFlaw bad_normals_of(const Soup& s) {
+  SoupFlaw f;
+  const auto P = [&](std::uint32_t v) { return Point(s.vertices[v][0], s.vertices[v][1], s.vertices[v][2]); };
+  for (std::size_t t = 0; t < s.normals.size() && t < s.triangles.size(); ++t) {
+    const auto& n = s.normals[t];
+    const auto& [a, b, c] = s.triangles[t];
+    const K::Vector_3 m = CGAL::cross_product(P(b) - P(a), P(c) - P(a));
+    const bool finite = std::isfinite(n[0]) && std::isfinite(n[1]) && std::isfinite(n[2]);
+    if (!finite || (n[0] == 0 && n[1] == 0 && n[2] == 0) || m * K::Vector_3(n[0], n[1], n[2]) < 0) {
+      if (f.first.size() < SoupReport::kListed) f.first.push_back({s.face[t]});
+      ++f.count;
+    }
+  }
+  return f;
+}
+
+Repaired inspect(const Soup& s, const std::string& name) {
+  const auto& V = s.vertices;
+  const auto& T = s.triangles;
+  Repaired out;
+  SoupReport& r = out.report;
+  r.file = name;
+  r.faces = T.size();
+  std::array<std::vector<std::vector<std::size_t>>, SoupReport::kKinds> found;
+  const auto add = [&](SoupReport::Kind k, std::vector<std::size_t> faces) {
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    found[k].push_back(std::move(faces));
+  };
+  const auto P = [&](std::uint32_t v) { return Point(V[v][0], V[v][1], V[v][2]); };
+
+  // Degenerate faces, then the same three vertices: back-to-back pairs
+  // dropped, duplicates after the first dropped.
+  std::vector<char> keep(T.size(), 1);
+  std::map<Tri, std::vector<std::size_t>> same;
+  for (std::size_t t = 0; t < T.size(); ++t) {
+    const auto [a, b, c] = T[t];
+    if (a == b || b == c || a == c || CGAL::collinear(P(a), P(b), P(c))) {
+      keep[t] = 0;
+      add(SoupReport::degenerate_faces, {s.face[t]});
+      continue;
+    }
+    Tri key = T[t];
+    std::sort(key.begin(), key.end());
+    same[key].push_back(t);
+  }
+  for (const auto& [key, ts] : same) {
+    if (ts.size() < 2) continue;
+    // Parity against the sorted corners: a rotation of them, or not.
+    std::vector<std::size_t> plus, minus;
+    for (std::size_t t : ts) {
+      const Tri& x = T[t];
+      const bool even = (x[0] == key[0] && x[1] == key[1]) || (x[1] == key[0] && x[2] == key[1]) ||
+                        (x[2] == key[0] && x[0] == key[1]);
+      (even ? plus : minus).push_back(t);
+    }
+    const std::size_t pairs = std::min(plus.size(), minus.size());
+    for (std::size_t i = 0; i < pairs; ++i) {
+      keep[plus[i]] = keep[minus[i]] = 0;
+      add(SoupReport::back_to_back_faces, {s.face[plus[i]], s.face[minus[i]]});
+    }
+    const auto& rest = plus.size() > pairs ? plus : minus;
+    for (std::size_t i = pairs + 1; i < rest.size(); ++i) {
+      keep[rest[i]] = 0;
+      add(SoupReport::duplicate_faces, {s.face[rest[pairs]], s.face[rest[i]]});
+    }
+  }
+  std::vector<std::size_t> kept;  // indices into T, in order
+  for (std::size_t t = 0; t < T.size(); ++t)
+    if (keep[t]) kept.push_back(t);
+  r.dropped_faces = T.size() - kept.size();
+
+  // Edges of the kept faces: k (index into kept) on each.
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> edges;
+  for (std::size_t k = 0; k < kept.size(); ++k)
+    for (std::size_t i = 0; i < 3; ++i) edges[edge_key(T[kept[k]][i], T[kept[k]][(i + 1) % 3])].push_back(k);
+  const auto runs = [&](std::size_t t, std::uint32_t u, std::uint32_t w) {
+    for (std::size_t i = 0; i < 3; ++i)
+      if (T[t][i] == u && T[t][(i + 1) % 3] == w) return true;
+    return false;
+  };
+  for (const auto& [e, on] : edges) {
+    std::vector<std::size_t> faces;
+    for (std::size_t k : on) faces.push_back(s.face[kept[k]]);
+    if (on.size() == 1) add(SoupReport::border_edges, faces);
+    if (on.size() > 2) add(SoupReport::nonmanifold_edges, faces);
+    if (on.size() == 2) {
+      const auto u = static_cast<std::uint32_t>(e >> 32), w = static_cast<std::uint32_t>(e);
+      if (runs(kept[on[0]], u, w) == runs(kept[on[1]], u, w)) add(SoupReport::inconsistent_edges, faces);
+    }
+  }
+  // Non-manifold vertices: the kept faces at a vertex in more than one fan.
+  {
+    std::vector<std::vector<std::size_t>> around(V.size());
+    for (std::size_t k = 0; k < kept.size(); ++k)
+      for (auto v : T[kept[k]]) around[v].push_back(k);
+    std::vector<char> seen(kept.size(), 0);
+    for (std::uint32_t v = 0; v < around.size(); ++v) {
+      const auto& fan = around[v];
+      if (fan.empty()) continue;
+      std::vector<std::size_t> stack{fan[0]};
+      seen[fan[0]] = 1;
+      while (!stack.empty()) {
+        const std::size_t k = stack.back();
+        stack.pop_back();
+        for (auto w : T[kept[k]]) {
+          if (w == v) continue;
+          for (std::size_t o : edges.at(edge_key(v, w)))
+            if (!seen[o]) seen[o] = 1, stack.push_back(o);
+        }
+      }
+      const auto other = std::find_if(fan.begin(), fan.end(), [&](std::size_t k) { return !seen[k]; });
+      if (other != fan.end()) add(SoupReport::nonmanifold_vertices, {s.face[kept[fan[0]]], s.face[kept[*other]]});
+      for (std::size_t k : fan) seen[k] = 0;
+    }
+  }
+
+  // S22: orientation made consistent across manifold edges (breadth first
+  // from each component's first face), the larger class keeping its way round.
+  std::vector<char> flip(kept.size(), 0);
+  std::vector<std::size_t> comp(kept.size(), SIZE_MAX);
+  std::vector<std::vector<std::size_t>> members;
+  for (std::size_t start = 0; start < kept.size(); ++start) {
+    if (comp[start] != SIZE_MAX) continue;
+    const std::size_t c = members.size();
+    members.emplace_back();
+    std::vector<std::size_t> queue{start};
+    comp[start] = c;
+    for (std::size_t qi = 0; qi < queue.size(); ++qi) {
+      const std::size_t k = queue[qi];
+      members[c].push_back(k);
+      const Tri& t = T[kept[k]];
+      for (std::size_t i = 0; i < 3; ++i) {
+        // The edge as face k runs it after its flip.
+        std::uint32_t u = t[i], w = t[(i + 1) % 3];
+        if (flip[k]) std::swap(u, w);
+        const auto& on = edges.at(edge_key(u, w));
+        if (on.size() != 2) continue;
+        const std::size_t j = on[0] == k ? on[1] : on[0];
+        if (comp[j] != SIZE_MAX) continue;
+        comp[j] = c;
+        flip[j] = runs(kept[j], u, w) ? 1 : 0;
+        queue.push_back(j);
+      }
+    }
+    std::size_t flipped = 0;
+    for (std::size_t k : members[c]) flipped += flip[k];
+    if (2 * flipped > members[c].size()) {
+      for (std::size_t k : members[c]) flip[k] = !flip[k];
+      flipped = members[c].size() - flipped;
+    }
+    r.flipped_faces += flipped;
+  }
+  r.components = members.size();
+  const auto oriented = [&](std::size_t k) {
+    Tri t = T[kept[k]];
+    if (flip[k]) std::swap(t[1], t[2]);
+    return t;
+  };
+  // Then each component bounds positive volume, or negative when it lies
+  // inside an odd number of the others (a cavity; CGAL's rule). Its volume
+  // from its own centroid; nesting by the winding number of each other
+  // component at the centroid of its first face (skipped above 64 components).
+  std::vector<soup::Vec3> wv(V.begin(), V.end());
+  std::vector<std::vector<Tri>> comp_tris(members.size());
+  for (std::size_t c = 0; c < members.size(); ++c)
+    for (std::size_t k : members[c]) comp_tris[c].push_back(oriented(k));
+  std::vector<soup::WindingNumber> comp_w;
+  if (members.size() > 1 && members.size() <= 64)
+    for (std::size_t c = 0; c < members.size(); ++c) comp_w.emplace_back(wv, comp_tris[c]);
+  for (std::size_t c = 0; c < members.size(); ++c) {
+    double cx = 0, cy = 0, cz = 0, n = 0;
+    for (const Tri& t : comp_tris[c])
+      for (auto v : t) cx += V[v][0], cy += V[v][1], cz += V[v][2], n += 1;
+    const Point o(cx / n, cy / n, cz / n);
+    double six = 0;
+    for (const Tri& t : comp_tris[c]) six += CGAL::determinant(P(t[0]) - o, P(t[1]) - o, P(t[2]) - o);
+    std::size_t depth = 0;
+    if (!comp_w.empty()) {
+      const Tri& f = comp_tris[c][0];
+      const soup::Vec3 q{(V[f[0]][0] + V[f[1]][0] + V[f[2]][0]) / 3, (V[f[0]][1] + V[f[1]][1] + V[f[2]][1]) / 3,
+                         (V[f[0]][2] + V[f[1]][2] + V[f[2]][2]) / 3};
+      for (std::size_t d = 0; d < members.size(); ++d)
+        if (d != c && std::abs(comp_w[d].direct(q)) >= 0.5) ++depth;
+    }
+    const bool want_positive = depth % 2 == 0;
+    if (six != 0 && (six > 0) != want_positive) {
+      ++r.inward_components;
+      for (std::size_t k : members[c]) flip[k] = !flip[k];
+    }
+  }
+  for (std::size_t k = 0; k < kept.size(); ++k) {
+    out.tris.push_back(oriented(k));
+    out.face.push_back(s.face[kept[k]]);
+  }
+  // The net boundary: each edge's count one way minus the other.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, long> net;
+  for (const Tri& t : out.tris)
+    for (std::size_t i = 0; i < 3; ++i) {
+      const std::uint32_t u = t[i], w = t[(i + 1) % 3];
+      net[{std::min(u, w), std::max(u, w)}] += u < w ? 1 : -1;
+    }
+  for (const auto& [e, m] : net)
+    for (long i = 0; i < std::abs(m); ++i) out.boundary.push_back(m > 0 ? e : std::pair{e.second, e.first});
+
+  // Self-intersections among the kept faces: boxes, then exact predicates.
+  {
+    using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
+    std::vector<Box> boxes;
+    boxes.reserve(out.tris.size());
+    for (std::size_t k = 0; k < out.tris.size(); ++k) {
+      const Tri& t = out.tris[k];
+      boxes.emplace_back(P(t[0]).bbox() + P(t[1]).bbox() + P(t[2]).bbox(), k);
+    }
+    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& a, const Box& b) {
+      if (faces_meet(V, out.tris[a.info()], out.tris[b.info()]))
+        add(SoupReport::self_intersections, {out.face[a.info()], out.face[b.info()]});
+    });
+  }
+
+  const auto finish = [](std::vector<std::vector<std::size_t>>& all, SoupFlaw& f) {
+    f.count = all.size();
+    std::sort(all.begin(), all.end());
+    if (all.size() > SoupReport::kListed) all.resize(SoupReport::kListed);
+    f.first = std::move(all);
+  };
+  for (std::size_t k = 0; k < SoupReport::kKinds; ++k) finish(found[k], r.flaws[k]);
+  r.bad_normals = bad_normals_of(s);
+  return out;
+}
+
+/// The solid {w >= 1/2} of a repaired soup (S20, S23).
+class SoupShape final : public Shape {
+ public:
+  SoupShape(const Soup& s, Repaired rep, const std::string& name)
+      : name_(basename_of(name)), report_(std::move(rep.report)), wn_(to_soup(s.vertices), rep.tris) {
+    const auto P = [&](std::uint32_t v) { return Point(s.vertices[v][0], s.vertices[v][1], s.vertices[v][2]); };
+    // Bounds: the vertices of every face of the input.
+    bounds_.lo = bounds_.hi = s.vertices[s.triangles.at(0)[0]];
+    for (const Tri& t : s.triangles)
+      for (auto v : t)
+        for (std::size_t k = 0; k < 3; ++k) {
+          bounds_.lo[k] = std::min(bounds_.lo[k], s.vertices[v][k]);
+          bounds_.hi[k] = std::max(bounds_.hi[k], s.vertices[v][k]);
+        }
+    // The tree's triangles are (v0, v1, v2), as the clean shape's face-graph
+    // primitive gives a face added as (v0, v1, v2); the samples and the
+    // volume go through (v2, v0, v1), the clean shape's halfedge order: so
+    // that on a clean mesh every number is the clean shape's.
+    const Point o(bounds_.lo[0], bounds_.lo[1], bounds_.lo[2]);
+    double six_volume = 0;
+    for (const Tri& t : rep.tris) {
+      tree_triangles_.emplace_back(P(t[0]), P(t[1]), P(t[2]));
+      const Point a = P(t[2]), b = P(t[0]), c = P(t[1]);
+      triangles_.push_back({a, b, c});
+      six_volume += CGAL::determinant(a - o, b - o, c - o);
+      area_sum_.push_back((area_sum_.empty() ? 0.0 : area_sum_.back()) +
+                          std::sqrt(K::Triangle_3(a, b, c).squared_area()));
+    }
+    if (tree_triangles_.empty()) throw ShapeError(name + ": encloses no volume (no face is left after the repairs)");
+    tree_.insert(tree_triangles_.cbegin(), tree_triangles_.cend());
+    tree_.build();
+    tree_.accelerate_distance_queries();
+    for (const auto& [u, w] : rep.boundary) {
+      boundary_.emplace_back(P(u), P(w));
+      boundary_length_ += std::sqrt(boundary_.back().squared_length());
+    }
+    if (!boundary_.empty()) {
+      boundary_tree_.insert(boundary_.cbegin(), boundary_.cend());
+      boundary_tree_.build();
+      boundary_tree_.accelerate_distance_queries();
+    }
+    // S23: exact for a closed soup without self-intersections, else sampled.
+    exact_volume_ = boundary_.empty() && report_.flaws[SoupReport::self_intersections].count == 0;
+    volume_ = six_volume / 6;
+  }
+
+  /// S20: a closed soup without self-intersections has w = 0 or 1 off its
+  /// triangles, each triangle between the two: a point on one (exact, through
+  /// the tree) is on the surface, as Side_of_triangle_mesh says of it.
+  int side(const Vec3& p) const override {
+    if (exact_volume_ && tree_.do_intersect(Point(p[0], p[1], p[2]))) return 0;
+    return wn_.side(p);
+  }
+
+  /// S20: the distance to the triangles, and across the holes a lower bound
+  /// of the distance to where w passes 1/2 (from a bound on |grad w|).
+  double distance(const Vec3& p) const override {
+    const Point q(p[0], p[1], p[2]);
+    const double d = std::sqrt(tree_.squared_distance(q));
+    if (boundary_.empty()) return d;
+    const auto e = wn_.estimate(p);
+    const double delta = std::abs(e.value - 0.5) - e.error;
+    if (!(delta > 0)) return 0;
+    const double db = std::sqrt(boundary_tree_.squared_distance(q));
+    const double x = 4 * 3.14159265358979323846 * delta * db / boundary_length_;
+    return std::min(d, db * (x / (1 + x)));
+  }
+
+  double signed_distance(const Vec3& p) const override {
+    const int s = side(p);
+    return s == 0 ? 0 : s * distance(p);
+  }
+
+  /// S20: the first intersection of [a, b] with the triangles after which the
+  /// side differs from a's, else bisection on the side.
+  double crossing(const Vec3& a, const Vec3& b) const override {
+    if (a == b) return 0;
+    const int sa = side(a);
+    if (sa == 0) return 0;
+    const Point pa(a[0], a[1], a[2]), qb(b[0], b[1], b[2]);
+    std::vector<SoupTree::Intersection_and_primitive_id<K::Segment_3>::Type> hits;
+    tree_.all_intersections(K::Segment_3(pa, qb), std::back_inserter(hits));
+    const K::Vector_3 d = qb - pa;
+    const double dd = d.squared_length();
+    auto param = [&](const Point& p) { return std::clamp(((p - pa) * d) / dd, 0.0, 1.0); };
+    std::vector<std::pair<double, double>> spans;  // [t0, t1] of each hit
+    for (const auto& hit : hits) {
+      if (const Point* p = boost::get<Point>(&hit.first)) {
+        spans.emplace_back(param(*p), param(*p));
+      } else if (const K::Segment_3* sg = boost::get<K::Segment_3>(&hit.first)) {
+        const double u = param(sg->source()), w = param(sg->target());
+        spans.emplace_back(std::min(u, w), std::max(u, w));
+      }
+    }
+    std::sort(spans.begin(), spans.end());
+    double end = 0;  // the furthest t1 so far
+    for (std::size_t i = 0; i < spans.size(); ++i) {
+      end = std::max(end, spans[i].second);
+      const double next = i + 1 < spans.size() ? spans[i + 1].first : 1.0;
+      if (i + 1 < spans.size() && next <= end) continue;  // overlapping hits: decide after the last
+      const double t = (end + next) / 2;
+      const int s = i + 1 < spans.size() ? side(at(a, b, t)) : side(b);
+      if (s != sa) return spans[i].first;
+    }
+    // None flips the side: w passes 1/2 away from the triangles.
+    double lo = 0, hi = 1;
+    for (int i = 0; i < 60; ++i) {
+      const double mid = (lo + hi) / 2;
+      const int s = side(at(a, b, mid));
+      if (s == 0) return mid;
+      (s == sa ? lo : hi) = mid;
+    }
+    return (lo + hi) / 2;
+  }
+
+  Bounds bounds() const override { return bounds_; }
+
+  double volume() const override {
+    if (exact_volume_) return volume_;
+    // S23: the fraction of 2^15 uniform points of the box (std::mt19937_64,
+    // seed 1) on the inside, times the box's volume.
+    std::call_once(sampled_, [this] {
+      std::mt19937_64 rng(1);
+      std::uniform_real_distribution<double> u(0, 1);
+      constexpr int n = 1 << 15;
+      double inside = 0;
+      for (int i = 0; i < n; ++i) {
+        Vec3 p{};
+        for (std::size_t k = 0; k < 3; ++k) p[k] = bounds_.lo[k] + u(rng) * (bounds_.hi[k] - bounds_.lo[k]);
+        const int s = side(p);
+        inside += s < 0 ? 1 : s == 0 ? 0.5 : 0;
+      }
+      double box = 1;
+      for (std::size_t k = 0; k < 3; ++k) box *= bounds_.hi[k] - bounds_.lo[k];
+      sampled_volume_ = inside / n * box;
+    });
+    return sampled_volume_;
+  }
+
+  std::vector<Vec3> sample_surface(std::size_t n, std::uint64_t seed) const override {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::vector<Vec3> out;
+    out.reserve(n);
+    const double total = area_sum_.back();
+    for (std::size_t i = 0; i < n; ++i) {
+      const double pick = u(rng) * total;
+      const auto it = std::upper_bound(area_sum_.begin(), area_sum_.end(), pick);
+      const std::size_t t =
+          std::min<std::size_t>(static_cast<std::size_t>(it - area_sum_.begin()), area_sum_.size() - 1);
+      const double r = std::sqrt(u(rng)), w = u(rng);
+      const auto& [a, b, c] = triangles_[t];
+      const double ca = 1 - r, cb = r * (1 - w), cc = r * w;
+      out.push_back({ca * a.x() + cb * b.x() + cc * c.x(), ca * a.y() + cb * b.y() + cc * c.y(),
+                     ca * a.z() + cb * b.z() + cc * c.z()});
+    }
+    return out;
+  }
+
+  std::string describe() const override {
+    const std::size_t n = report_.flaw_count();
+    return "mesh " + name_ + ": " + std::to_string(report_.faces) + " triangles, repaired (" + std::to_string(n) +
+           " flaw" + (n == 1 ? "" : "s") + ")";
+  }
+
+  const SoupReport* soup_report() const override { return &report_; }
+
+ private:
+  using SoupPrimitive = CGAL::AABB_triangle_primitive<K, std::vector<K::Triangle_3>::const_iterator>;
+  using SoupTree = CGAL::AABB_tree<CGAL::AABB_traits<K, SoupPrimitive>>;
+  using EdgePrimitive = CGAL::AABB_segment_primitive<K, std::vector<K::Segment_3>::const_iterator>;
+  using EdgeTree = CGAL::AABB_tree<CGAL::AABB_traits<K, EdgePrimitive>>;
+
+  static std::vector<soup::Vec3> to_soup(const std::vector<Vec3>& v) { return {v.begin(), v.end()}; }
+  static Vec3 at(const Vec3& a, const Vec3& b, double t) {
+    return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
+  }
+
+  std::string name_;
+  SoupReport report_;
+  soup::WindingNumber wn_;
+  std::vector<K::Triangle_3> tree_triangles_;
+  SoupTree tree_;
+  std::vector<K::Segment_3> boundary_;
+  EdgeTree boundary_tree_;
+  double boundary_length_ = 0;
+  Bounds bounds_;
+  bool exact_volume_ = true;
+  double volume_ = 0;
+  mutable std::once_flag sampled_;
+  mutable double sampled_volume_ = 0;
+  std::vector<std::array<Point, 3>> triangles_;
+  std::vector<double> area_sum_;
+};
+
+/// The default path (S21): the refusals of both modes, then today's shape
+/// when today's checks pass, else the soup's.
+std::unique_ptr<Shape> soup_shape_of(const Soup& s, const std::string& name, bool force_soup) {
+  const Checker checker(s, name);
+  checker.basics();
+  if (!force_soup) {
+    try {
+      checker.run();
+      auto shape = std::make_unique<MeshShape>(s, name);
+      Repaired none;  // the notes of a clean file
+      none.report.file = name;
+      none.report.faces = s.triangles.size();
+      none.report.bad_normals = bad_normals_of(s);
+      shape->set_report(std::move(none.report), s);
+      return shape;
+    } catch (const ShapeError&) {
+      // A flaw: the soup's shape below.
+    }
+  }
+  return std::make_unique<SoupShape>(s, inspect(s, name), name);
+}
+
 std::unique_ptr<Shape> shape_of(const Soup& s, const std::string& name) {
   Checker(s, name).run();
   return std::make_unique<MeshShape>(s, name);
@@ -330,7 +891,9 @@ std::unique_ptr<Shape> shape_of(const Soup& s, const std::string& name) {
 
 }  // namespace
 
-std::unique_ptr<Shape> load_surface(const std::string& path) {
+namespace {
+
+Soup read_file(const std::string& path) {
   const auto dot = path.find_last_of('.');
   const auto slash = path.find_last_of('/');
   const std::string ext = dot == std::string::npos || (slash != std::string::npos && dot < slash)
@@ -345,24 +908,43 @@ std::unique_ptr<Shape> load_surface(const std::string& path) {
   buf << in.rdbuf();
   if (in.bad()) throw ShapeError(path + ": cannot read");
   const std::string data = std::move(buf).str();
-  Soup s;
   try {
-    s = ext == "off" ? io::read_off(path, data) : ext == "obj" ? io::read_obj(path, data) : io::read_stl(path, data);
+    return ext == "off" ? io::read_off(path, data) : ext == "obj" ? io::read_obj(path, data) : io::read_stl(path, data);
   } catch (const io::ReadError& e) {
     throw ShapeError(e.what());
   }
-  return shape_of(s, path);
 }
 
-std::unique_ptr<Shape> make_mesh_shape(const std::vector<Vec3>& vertices, const std::vector<Tri>& triangles,
-                                       const std::string& name) {
+Soup soup_in_memory(const std::vector<Vec3>& vertices, const std::vector<Tri>& triangles) {
   Soup s;
   s.vertices = vertices;
   s.triangles = triangles;
   s.face.resize(triangles.size());
   for (std::size_t i = 0; i < triangles.size(); ++i) s.face[i] = i;
   s.line.assign(triangles.size(), 0);
-  return shape_of(s, name);
+  return s;
+}
+
+}  // namespace
+
+std::unique_ptr<Shape> load_surface(const std::string& path) { return shape_of(read_file(path), path); }
+
+std::unique_ptr<Shape> load_soup(const std::string& path) { return soup_shape_of(read_file(path), path, false); }
+
+std::unique_ptr<Shape> make_mesh_shape(const std::vector<Vec3>& vertices, const std::vector<Tri>& triangles,
+                                       const std::string& name) {
+  return shape_of(soup_in_memory(vertices, triangles), name);
+}
+
+std::unique_ptr<Shape> make_soup_shape(const std::vector<Vec3>& vertices, const std::vector<Tri>& triangles,
+                                       const std::string& name, SoupPath path) {
+  return soup_shape_of(soup_in_memory(vertices, triangles), name, path == SoupPath::always);
+}
+
+SoupReport inspect_soup(const std::vector<Vec3>& vertices, const std::vector<Tri>& triangles, const std::string& name) {
+  const Soup s = soup_in_memory(vertices, triangles);
+  Checker(s, name).basics();
+  return inspect(s, name).report;
 }
 
 double max_distance_to_triangles(const std::vector<Vec3>& points, const std::vector<Vec3>& vertices,
