@@ -11,16 +11,19 @@ timeout and a memory cap; every run classified:
            the surface, dihedral bounds; peers: tetrahedra > 0 and every one
            positively oriented, computed here from their output);
   refused  the mesher declined the input (bccmis: exit 2; TetGen: a nonzero
-           exit with a message, e.g. self-intersections; CGAL: stuff_peers'
-           exit 1 with a message), with the first line of the message;
-  failed   a crash (signal or another exit status), a timeout, out of
-           memory, no tetrahedra, or a mesh failing the checks.
+           exit with a message; CGAL: stuff_peers' exit 1 with a message,
+           not a failed CGAL assertion), with the first line of the message;
+  failed   a crash (a signal, e.g. Debian's tetgen aborting on an uncaught
+           `int` exception, its error path, with no message; another exit
+           status), a timeout, out of memory, no tetrahedra (e.g. TetGen
+           removing every tetrahedron of an open input as exterior), or a
+           mesh failing the checks.
 And for every meshed run, an INDEPENDENT volume check (wildmesh.py): the
 volume V of the solid {q : w(q) >= 1/2}, w the generalized winding number of
-the input triangles (-w for a surface whose signed volume is negative, i.e.
-oriented inward as a whole: today's bccmis meshes those, e.g.
-tetrahedron.off, as the solid they bound) (Van Oosterom-Strackee solid angles, numpy), estimated
-by stratified uniform sampling of the bounding box (fixed seed) with its
+the input triangles (Van Oosterom-Strackee solid angles, numpy; -w for a
+surface whose signed volume is negative, i.e. oriented inward as a whole:
+today's bccmis meshes those, e.g. tetrahedron.off, as the solid they bound),
+estimated by stratified uniform sampling of the bounding box (fixed seed) with its
 binomial standard error sigma (an upper bound for stratified sampling),
 against the mesh's volume (bccmis: read from its .vtu; peers: from their
 tetrahedra). "vol ok" when |V_mesh - V| <= (A + A_holes) * h + 3 sigma:
@@ -57,10 +60,17 @@ a file). The table is also printed.
 
   /usr/bin/python3 bench/stuff_wild.py --bccmis build/release/tools/bccmis/bccmis \\
       --peers build/release/bench/stuff_peers [--level 3] [--timeout 60] \\
-      [--memory-gb 4] [--only PATTERN] [--out DIR] [--jobs 1] [--no-peers]
+      [--memory-gb 4] [--only PATTERN] [--out DIR] [--jobs 1] [--no-peers] \\
+      [--stats] [--reuse RUNS.jsonl]
 
   --only PATTERN   a regular expression searched in the file names (e.g. 'cube|sphere')
   --jobs N         files in parallel (each run is single-threaded)
+  --no-peers       bccmis alone; --reuse RUNS.jsonl then adds the peers to
+                   that run's bccmis results without running bccmis again
+  --stats          pass --stats to bccmis too (its JSON then has the counts,
+                   angles, Hausdorff distance; slower)
+On 2 shared cores (load ~10) with --jobs 2: about 5 minutes for bccmis and
+the winding numbers at -L 3, about 17 more for the peers.
 Needs numpy (Debian's python3-numpy: /usr/bin/python3) and tetgen.
 """
 import argparse
@@ -401,7 +411,7 @@ def bccmis_cell(r, ref):
 
 def main():
     here = os.path.dirname(os.path.abspath(__file__))
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+    ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--bccmis", default=os.path.join(here, "..", "build", "release", "tools", "bccmis", "bccmis"))
     ap.add_argument("--peers", default=os.path.join(here, "..", "build", "release", "bench", "stuff_peers"))

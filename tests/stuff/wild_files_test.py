@@ -23,6 +23,7 @@ open patch filled wrongly), not small errors; the line printed for each
 file gives the numbers.
 """
 import os
+import shutil
 import subprocess
 import sys
 import tarfile
@@ -65,6 +66,13 @@ def main(argv):
         return 2
     names = [n for n in FILES if only in (None, n)]
     tmp = tempfile.mkdtemp(prefix="wild_files_test.")
+    try:
+        return run_all(bccmis, meshes, names, tmp)
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+
+
+def run_all(bccmis, meshes, names, tmp):
     if not meshes:
         with tarfile.open("/usr/share/doc/libcgal-dev/data.tar.gz") as tar:
             tar.extractall(tmp, members=[tar.getmember("data/meshes/" + n) for n in names])
