@@ -11,6 +11,8 @@ packages=(
   libcgal-demo
   # outside readers of the 3D mesh writers (tests/d3/mesh_readers_test.py)
   python3-meshio gmsh
+  # the winding-number volume of tests/stuff/wild_files_test.py and bench/stuff_wild.py
+  python3-numpy
   # the peers of `bccmis stuff` in the comparison benchmark (bench/stuff_peers.cpp)
   tetgen
   # optional components: the p4est bridge (p4est is built with OpenMPI, whose
