@@ -283,12 +283,11 @@ class BrickOf {
   const LatticeSize& size() const { return size_; }
   typename Traits::connectivity_t* connectivity() const { return conn_.get(); }
 
-  /// The tree of level-0 cell (i, j), 0 <= i < W, 0 <= j < H.
-  std::int32_t tree(std::int64_t i, std::int64_t j) const requires(Dim == 2) { return tree_at({i, j}); }
-  /// The tree of level-0 cube (i, j, k), 0 <= i < W, 0 <= j < H, 0 <= k < D.
-  std::int32_t tree(std::int64_t i, std::int64_t j, std::int64_t k) const requires(Dim == 3) {
-    return tree_at({i, j, k});
-  }
+  /// The tree of level-0 cell (i, j), 0 <= i < W, 0 <= j < H (2D), or of
+  /// level-0 cube (i, j, k), 0 <= k < D too (3D).
+  template <class... I>
+  requires(sizeof...(I) == Dim && (std::is_integral_v<I> && ...)) std::int32_t tree(I... index)
+  const { return tree_at(Cell{static_cast<std::int64_t>(index)...}); }
   /// The tree of the level-0 cell with these indices along the axes.
   std::int32_t tree_at(const Cell& cell) const;
 
