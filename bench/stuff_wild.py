@@ -61,12 +61,16 @@ a file). The table is also printed.
   /usr/bin/python3 bench/stuff_wild.py --bccmis build/release/tools/bccmis/bccmis \\
       --peers build/release/bench/stuff_peers [--level 3] [--timeout 60] \\
       [--memory-gb 4] [--only PATTERN] [--out DIR] [--jobs 1] [--no-peers] \\
-      [--stats] [--reuse RUNS.jsonl]
+      [--stats] [--reuse RUNS.jsonl] [--peers-from RUNS.jsonl]
 
   --only PATTERN   a regular expression searched in the file names (e.g. 'cube|sphere')
   --jobs N         files in parallel (each run is single-threaded)
   --no-peers       bccmis alone; --reuse RUNS.jsonl then adds the peers to
                    that run's bccmis results without running bccmis again
+  --peers-from RUNS.jsonl
+                   the reverse: bccmis runs, TetGen's and CGAL's runs are
+                   taken from that earlier run (they do not change with
+                   bccmis)
   --stats          pass --stats to bccmis too (its JSON then has the counts,
                    angles, Hausdorff distance; slower)
 On 2 shared cores (load ~10) with --jobs 2: about 5 minutes for bccmis and
@@ -299,10 +303,11 @@ def short_paths(rec, path):
     return rec
 
 
-def one_file(path, args, has_strict, reuse=None):
+def one_file(path, args, has_strict, reuse=None, peers_from=None):
     """All runs on one file; with reuse (a record of an earlier run), its
     flaws, winding-number volume and bccmis runs are taken and only the
-    peers run."""
+    peers run; with peers_from (a record of an earlier run), its peers'
+    runs are taken and only bccmis runs."""
     name = os.path.basename(path)
     rec = {"file": name}
     work = tempfile.mkdtemp(prefix="stuff_wild.")
@@ -346,7 +351,11 @@ def one_file(path, args, has_strict, reuse=None):
                 rec["bccmis_strict"] = run_bccmis(args.bccmis, path, args.level, True, args, work, ref, fl)
         fl, ref = rec["flaws"], rec["winding"]
         h = rec["bccmis"].get("h") or fl["fallback_h"]
-        if not args.no_peers:
+        if peers_from is not None:
+            for m in ("tetgen", "cgal"):
+                if m in peers_from:
+                    rec[m] = peers_from[m]
+        elif not args.no_peers:
             if pts is None or not h or len(tris) == 0:
                 for m in ("tetgen", "cgal"):
                     rec[m] = {"mesher": m, "result": "refused", "reason": "not run: %s" %
@@ -427,6 +436,8 @@ def main():
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--reuse", default=None, help="runs.jsonl of an earlier run at the same level: its bccmis runs "
                     "and winding-number volumes are taken, only the peers run")
+    ap.add_argument("--peers-from", default=None, help="runs.jsonl of an earlier run at the same level: its "
+                    "TetGen and CGAL runs are taken, only bccmis runs (the peers do not change with bccmis)")
     ap.add_argument("--wn-points", type=int, default=8000, help="sample points at most")
     ap.add_argument("--wn-pairs", type=int, default=10_000_000,
                     help="points x triangles budget (the sample shrinks to it, to 512 points at least)")
@@ -446,6 +457,13 @@ def main():
             for line in f:
                 r = json.loads(line)
                 reused[r["file"]] = r
+    peers_from = {}
+    if args.peers_from:
+        with open(args.peers_from) as f:
+            for line in f:
+                r = json.loads(line)
+                peers_from[r["file"]] = r
+        args.no_peers = False
     data = tempfile.mkdtemp(prefix="stuff_wild_data.")
     try:
         with tarfile.open(args.archive) as tar:
@@ -460,7 +478,8 @@ def main():
         recs = {}
         with open(os.path.join(args.out, "runs.jsonl"), "w") as jl:
             with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as ex:
-                futs = {ex.submit(one_file, f, args, has_strict, reused.get(os.path.basename(f))): f for f in files}
+                futs = {ex.submit(one_file, f, args, has_strict, reused.get(os.path.basename(f)),
+                                  peers_from.get(os.path.basename(f)) if args.peers_from else None): f for f in files}
                 for fut in concurrent.futures.as_completed(futs):
                     rec = fut.result()
                     recs[rec["file"]] = rec

@@ -277,6 +277,63 @@ def signed_volume(pts, tris):
     return float(np.einsum("ij,ij->i", a, np.cross(b, d)).sum() / 6)
 
 
+def orient_consistently(pts, tris):
+    """The faces flipped so that, across every edge of exactly two faces, the
+    two traverse it in opposite directions (breadth-first over those edges,
+    each component from its first face), then every component flipped as a
+    whole so that it is oriented outward when an even number of the other
+    components enclose it and inward when an odd number do (nesting parity:
+    the outward-oriented components' winding number at one of its vertices,
+    summed, is the count). This is the repair bccmis applies to an
+    inconsistently oriented soup before its winding number (spec/stuffing.md
+    S21), written here independently so that the volume check of such a file
+    measures the solid the user means rather than a winding number near 0.
+    A component whose faces cannot all be made consistent (a Moebius-like
+    band) keeps the first orientation reached."""
+    t = np.array(tris, dtype=np.int64).copy()
+    m = len(t)
+    if m == 0:
+        return t
+    edges = {}
+    for f in range(m):
+        for k in range(3):
+            a, b = int(t[f, k]), int(t[f, (k + 1) % 3])
+            edges.setdefault((min(a, b), max(a, b)), []).append(f)
+    comp = -np.ones(m, dtype=np.int64)
+    ncomp = 0
+    for seed in range(m):
+        if comp[seed] >= 0:
+            continue
+        comp[seed] = ncomp
+        queue = [seed]
+        while queue:
+            f = queue.pop()
+            for k in range(3):
+                a, b = int(t[f, k]), int(t[f, (k + 1) % 3])
+                faces = edges[(min(a, b), max(a, b))]
+                if len(faces) != 2:
+                    continue
+                g = faces[0] if faces[1] == f else faces[1]
+                if comp[g] >= 0:
+                    continue
+                comp[g] = ncomp
+                # g must run from b to a: if it runs from a to b, flip it.
+                row = [int(x) for x in t[g]]
+                if any(row[j] == a and row[(j + 1) % 3] == b for j in range(3)):
+                    t[g] = t[g][::-1]
+                queue.append(g)
+        ncomp += 1
+    parts = [t[comp == c] for c in range(ncomp)]
+    for c in range(ncomp):
+        if signed_volume(pts, parts[c]) < 0:
+            parts[c] = parts[c][:, ::-1]
+    outward = [Winding(pts, part) for part in parts]
+    p = np.nan_to_num(pts)
+    depth = [sum(outward[d](p[parts[c][0, 0]][None, :])[0] >= 0.5 for d in range(ncomp) if d != c)
+             for c in range(ncomp)]
+    return np.concatenate([part[:, ::-1] if depth[c] % 2 else part for c, part in enumerate(parts)])
+
+
 def winding_volume(pts, tris, n_points, seed=1):
     """Volume of {s w >= 1/2}, s = -1 when the triangles' signed volume is
     negative (a surface oriented inward as a whole, which bccmis meshes as
@@ -285,7 +342,11 @@ def winding_volume(pts, tris, n_points, seed=1):
     sampling). The estimate is unbiased; its variance is at most the
     binomial p(1-p)/N of N independent uniform points (stratification with
     equal strata never increases it), so the binomial standard error
-    reported is an upper bound. A flat bounding box (zero volume) gives 0."""
+    reported is an upper bound. A flat bounding box (zero volume) gives 0.
+    Triangles with inconsistently oriented edges are first oriented as
+    bccmis orients them (orient_consistently)."""
+    if len(tris) and flaws(pts, tris)["misoriented_edges"]:
+        tris = orient_consistently(pts, tris)
     w = Winding(pts, tris)
     lo, hi = w.lo, w.hi
     ext = hi - lo

@@ -232,6 +232,33 @@ TEST(SoupMeshing, OpenCube) {
   meshes_to(cube_vertices(), t, "open", 8, 24);
 }
 
+TEST(SoupCrossing, AcrossAHoleOnTheLevelSet) {
+  // The cube without its top (z = 2, both triangles): w = 1/2 exactly on
+  // the missing square (see OpenCube), and no triangle lies between
+  // z = 1.5 and 2.5 above the square, so S20's crossing is the root of
+  // w - 1/2 (regula falsi, Illinois): at z = 2 up to the beta-16 bound.
+  // Inside-to-outside and outside-to-inside, near and far ends (a poor
+  // secant), and a slanted segment.
+  Tris t = cube_triangles();
+  t.erase(t.begin() + 2, t.begin() + 4);
+  const auto shape = make_soup_shape(cube_vertices(), t, "topless");
+  ASSERT_EQ(shape->side({1, 1, 1.5}), -1);
+  ASSERT_EQ(shape->side({1, 1, 2.5}), 1);
+  struct Case {
+    Vec3 a, b;
+  };
+  const std::vector<Case> cases = {{{1, 1, 1.5}, {1, 1, 2.5}},
+                                   {{1, 1, 2.5}, {1, 1, 1.5}},
+                                   {{0.5, 1.5, 1.99}, {0.5, 1.5, 3}},
+                                   {{0.3, 0.7, 0.2}, {1.7, 1.2, 2.01}},
+                                   {{1.2, 0.4, 6}, {1.2, 0.4, 1.8}}};
+  for (const auto& [a, b] : cases) {
+    const double tc = shape->crossing(a, b);
+    const double z = a[2] + tc * (b[2] - a[2]);
+    EXPECT_NEAR(z, 2.0, 1e-3) << "segment from z = " << a[2] << " to " << b[2] << ", t = " << tc;
+  }
+}
+
 TEST(SoupMeshing, DuplicatedFace) {
   Tris t = cube_triangles();
   t.push_back(t[5]);

@@ -772,14 +772,7 @@ class SoupShape final : public Shape {
       if (s != sa) return spans[i].first;
     }
     // None flips the side: w passes 1/2 away from the triangles.
-    double lo = 0, hi = 1;
-    for (int i = 0; i < 60; ++i) {
-      const double mid = (lo + hi) / 2;
-      const int s = side(at(a, b, mid));
-      if (s == 0) return mid;
-      (s == sa ? lo : hi) = mid;
-    }
-    return (lo + hi) / 2;
+    return level_crossing(a, b, sa);
   }
 
   Bounds bounds() const override { return bounds_; }
@@ -841,6 +834,49 @@ class SoupShape final : public Shape {
   using EdgeTree = CGAL::AABB_tree<CGAL::AABB_traits<K, EdgePrimitive>>;
 
   static std::vector<soup::Vec3> to_soup(const std::vector<Vec3>& v) { return {v.begin(), v.end()}; }
+  /// S20: w(p) - 1/2 with a bound on its error: the estimate with beta 4,
+  /// or with beta 16 where the first bound does not decide the sign.
+  soup::WindingNumber::Estimate excess(const Vec3& p) const {
+    soup::WindingNumber::Estimate e = wn_.estimate(p);
+    if (std::abs(e.value - 0.5) <= e.error) e = wn_.estimate(p, 4 * soup::WindingNumber::kBeta);
+    e.value -= 0.5;
+    return e;
+  }
+
+  /// S20: where w passes 1/2 on [a, b] away from the triangles: regula falsi
+  /// (Illinois) on g(t) = s (w - 1/2), s = 1 when a (side sa) is inside,
+  /// with a halving every fourth step; every sign certified by its bound.
+  double level_crossing(const Vec3& a, const Vec3& b, int sa) const {
+    const double s = sa < 0 ? 1 : -1;
+    // The ends' sides are certified; an end whose bound does not decide
+    // the sign of g counts as just on its side.
+    auto end_value = [&](const Vec3& p, double sign) {
+      const auto e = excess(p);
+      const double g = s * e.value;
+      return sign * g > e.error ? g : sign * e.error;
+    };
+    double lo = 0, hi = 1;
+    double glo = end_value(a, 1), ghi = end_value(b, -1);
+    int kept = 0;  // 1: lo kept last step, -1: hi kept last step
+    for (int step = 0; hi - lo > 0x1p-30; ++step) {
+      double t = (lo * ghi - hi * glo) / (ghi - glo);
+      if (step % 4 == 3 || !(t > lo && t < hi)) t = (lo + hi) / 2;
+      const auto e = excess(at(a, b, t));
+      if (std::abs(e.value) <= e.error) return t;
+      const double g = s * e.value;
+      if (g > 0) {
+        lo = t, glo = g;
+        if (kept == -1) ghi /= 2;
+        kept = -1;
+      } else {
+        hi = t, ghi = g;
+        if (kept == 1) glo /= 2;
+        kept = 1;
+      }
+    }
+    return (lo + hi) / 2;
+  }
+
   static Vec3 at(const Vec3& a, const Vec3& b, double t) {
     return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
   }
