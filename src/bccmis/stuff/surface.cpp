@@ -902,6 +902,9 @@ std::string input_name(const std::string& path) { return path == "-" ? "stdin" :
 /// extension, or for standard input by its content (io::read_surface).
 Soup read_file(const std::string& path, std::optional<io::SurfaceFormat> format) {
   const std::string name = input_name(path);
+  std::error_code ec;
+  if (path != "-" && std::filesystem::is_directory(path, ec))
+    throw ShapeError(path + ": is a directory, expected a file");
   if (path != "-" && !format) {
     format = io::format_of_extension(path);
     if (!format) {
@@ -919,8 +922,6 @@ Soup read_file(const std::string& path, std::optional<io::SurfaceFormat> format)
     buf << std::cin.rdbuf();
     if (std::cin.bad()) throw ShapeError(name + ": cannot read");
   } else {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw ShapeError(path + ": is a directory, expected a file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw ShapeError(path + ": cannot open: " + std::strerror(errno));
     buf << in.rdbuf();
