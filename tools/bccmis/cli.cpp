@@ -197,8 +197,9 @@ CLI::App* add_stuff(CLI::App& app, StuffOptions& o) {
   cmd->add_option("--impl", o.impl,
                   "The lattice: fast (d3::fast::Lattice, default) or reference (d3::Graph); the same mesh")
       ->check(CLI::IsMember({"fast", "reference"}));
-  cmd->add_flag("--stats", o.stats,
-                "Print counts, volume and its error, Hausdorff distance, dihedral angles and seconds per phase");
+  cmd->add_flag(
+      "--stats", o.stats,
+      "Print counts, volume and its error, sampled Hausdorff distance, dihedral angles and seconds per phase");
   cmd->add_flag("--json", o.json, "Statistics as JSON (implies --stats)");
   cmd->add_flag("--check", o.check,
                 "Check the mesh before writing: exact positive orientation, conformity, a closed boundary on the "
