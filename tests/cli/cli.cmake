@@ -66,6 +66,8 @@ bccmis_cli_test(stuff_level_not_integer 2 ARGS stuff --shape sphere -L 3.5 --sta
                 STDERR_REGEX "^bccmis: --max-level: '3\\.5' is not an integer from 0 to 20\nRun 'bccmis stuff --help'")
 bccmis_cli_test(replay_depth_out_of_range 2 ARGS replay --depth 9 ${_examples}/fig2.trace
                 STDERR_REGEX "^bccmis: --depth: '9' is not an integer from 1 to 5\n")
+bccmis_cli_test(explore_threads_negative 2 ARGS explore 1 1 2 --threads -1
+                STDERR_REGEX "^bccmis: --threads: '-1' is not a non-negative integer\nRun 'bccmis explore --help'")
 bccmis_cli_test(stuff_size_zero 2 ARGS stuff --shape sphere --size 0 --stats
                 STDERR_REGEX "^bccmis: --size: '0' is not a positive finite number\nRun 'bccmis stuff --help'")
 bccmis_cli_test(stuff_size_infinite 2 ARGS stuff --shape sphere --size inf --stats

@@ -20,6 +20,14 @@ namespace {
 
 // ---- Option groups and checks that several subcommands share ----------------
 
+/// Whether all of `text` reads as one number (std::from_chars: no sign for
+/// an unsigned type, no leading '+' or white space).
+template <class Number>
+bool read_whole(const std::string& text, Number& value) {
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  return !text.empty() && ec == std::errc() && ptr == text.data() + text.size();
+}
+
 /// An integer from `lo` to `hi`; CLI11 prefixes the option's name to the
 /// message, which names the value as given: "--max-level: '3.5' is not an
 /// integer from 0 to 20".
@@ -28,12 +36,21 @@ CLI::Validator integer_in(std::int64_t lo, std::int64_t hi) {
   return CLI::Validator(
       [lo, hi, range](std::string& text) -> std::string {
         std::int64_t v = 0;
-        const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-        if (text.empty() || ec != std::errc() || ptr != text.data() + text.size() || v < lo || v > hi)
-          return "'" + text + "' is not an integer from " + range;
-        return std::string();
+        return read_whole(text, v) && v >= lo && v <= hi ? std::string()
+                                                         : "'" + text + "' is not an integer from " + range;
       },
       "INT in [" + std::to_string(lo) + " - " + std::to_string(hi) + "]");
+}
+
+/// A whole number >= 0 (seeds, counts): "--threads: '-1' is not a
+/// non-negative integer".
+CLI::Validator non_negative_integer() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        std::uint64_t v = 0;
+        return read_whole(text, v) ? std::string() : "'" + text + "' is not a non-negative integer";
+      },
+      "NONNEGATIVE");
 }
 
 /// A finite number above zero: "--size: '0' is not a positive finite number".
@@ -41,10 +58,8 @@ CLI::Validator positive_finite() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
         double v = 0;
-        const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-        if (text.empty() || ec != std::errc() || ptr != text.data() + text.size() || !std::isfinite(v) || v <= 0)
-          return "'" + text + "' is not a positive finite number";
-        return std::string();
+        return read_whole(text, v) && std::isfinite(v) && v > 0 ? std::string()
+                                                                : "'" + text + "' is not a positive finite number";
       },
       "POSITIVE");
 }
@@ -282,7 +297,7 @@ CLI::App* add_conformance(CLI::App& app, ConformanceCommandOptions& o) {
   cmd->add_option("--random", o.random, "Number of random traces")
       ->check(integer_in(0, 1000000))
       ->capture_default_str();
-  cmd->add_option("--seed", o.seed, "Seed of the random traces")->check(CLI::NonNegativeNumber)->capture_default_str();
+  cmd->add_option("--seed", o.seed, "Seed of the random traces")->check(non_negative_integer())->capture_default_str();
   cmd->add_option("--max-ops", o.max_ops, "Operations per random trace")
       ->check(integer_in(1, 100000))
       ->capture_default_str();
@@ -317,10 +332,10 @@ CLI::App* add_explore(CLI::App& app, ExploreCommandOptions& o) {
       ->capture_default_str();
   cmd->add_option("--max-states", o.max_states,
                   "Stop after this many states (0: no limit); the result is then incomplete")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative_integer())
       ->capture_default_str();
   cmd->add_option("--threads", o.threads, "Worker threads (0: one per core)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative_integer())
       ->capture_default_str();
   cmd->add_flag("--json", o.json, "One line of JSON instead of the summary");
   cmd->add_flag("--no-progress", o.no_progress, "No progress line on stderr");
@@ -343,7 +358,7 @@ CLI::App* add_heightfield(CLI::App& app, HeightfieldCommandOptions& o) {
   add_choice(cmd, "--measure", o.measure, "Cell error: max (every pixel, exact) or samples (the paper's)",
              {"max", "samples"});
   cmd->add_option("--samples", o.samples, "Random points per cell for --measure=samples")->capture_default_str();
-  cmd->add_option("--seed", o.seed, "Seed of --measure=samples")->check(CLI::NonNegativeNumber)->capture_default_str();
+  cmd->add_option("--seed", o.seed, "Seed of --measure=samples")->check(non_negative_integer())->capture_default_str();
   add_choice(cmd, "--balance", o.balance, "2:1 rule: edge (the core's) or corner", {"edge", "corner"});
   add_lattice_impl(cmd, o.impl);
   cmd->add_option("--sweeps", o.sweeps, "Number of sweeps; 0 = until nothing changes")->capture_default_str();
