@@ -184,9 +184,9 @@ def volume_verdict(r, ref, h):
 
 def run_bccmis(bccmis, path, level, strict, args, work, ref, fl):
     out = os.path.join(work, "bccmis%s.vtu" % ("_strict" if strict else ""))
-    cmd = [bccmis, "stuff", path, "-L", str(level), "--check", "--json", "-o", out]
-    if args.stats:
-        cmd.insert(-2, "--stats")
+    cmd = [bccmis, "stuff", path, "-L", str(level), "--check", "-o", out]
+    if args.stats:  # --json implies --stats (spec/cli.md)
+        cmd.insert(-2, "--json")
     if strict:
         cmd.insert(3, "--strict")
     status, so, se, secs = run(cmd, args.timeout, args.memory_gb)
@@ -498,7 +498,7 @@ def main():
     lines = ["# bccmis stuff on libcgal-demo's meshes (bench/stuff_wild.py)", "",
              "%s; `%s`; level %d, timeout %g s, memory cap %g GB; %d files in %.0f s (%s)." % (
                  datetime.date.today().isoformat(), " ".join([os.path.relpath(args.bccmis)] + ["stuff", "FILE", "-L",
-                                                                                                  str(args.level), "--check", "--json"]),
+                                                                                                  str(args.level), "--check"]),
                  args.level, args.timeout, args.memory_gb, len(recs), elapsed,
                  "strict option present" if has_strict else "no --strict: today's default is strict"),
              "Flaws counted here: border (edges used once), nonmanifold (3+ faces), misoriented (two faces "

@@ -52,6 +52,58 @@ bccmis_cli_test(bad_check_mode 2 ARGS replay --check=sometimes ${_examples}/fig2
 bccmis_cli_test(summary 0 ARGS replay ${_examples}/fig2.trace
                 STDERR_REGEX "2 refine and 0 coarsen commands \\(0 refused\\), 4 checks passed.*9 cells \\(level 0: 1, level 1: 8\\), 17 nodes")
 
+# The top-level help says what the tool does (spec/cli.md); a usage error
+# points to the help of the subcommand it was in (spec/cli.md, "Inputs,
+# outputs and messages").
+bccmis_cli_test(help_describes_tool 0 ARGS --help
+                STDOUT_REGEX "^bccmis: adaptive BCC lattices in 2D and 3D [^\n]*tetrahedral meshes of shapes by isosurface stuffing")
+bccmis_cli_test(unknown_option_subcommand_help 2 ARGS stuff --frobnicate
+                STDERR_REGEX "argument was not expected: --frobnicate\nRun 'bccmis stuff --help' for usage")
+bccmis_cli_test(unknown_option_tool_help 2 ARGS --frobnicate STDERR_REGEX "Run 'bccmis --help' for usage")
+# Values out of range are named as given (spec/cli.md, "Inputs, outputs and
+# messages"): an integer option given 3.5, a size of 0 or inf.
+bccmis_cli_test(stuff_level_not_integer 2 ARGS stuff --shape sphere -L 3.5 --stats
+                STDERR_REGEX "^bccmis: --max-level: '3\\.5' is not an integer from 0 to 20\nRun 'bccmis stuff --help'")
+bccmis_cli_test(replay_depth_out_of_range 2 ARGS replay --depth 9 ${_examples}/fig2.trace
+                STDERR_REGEX "^bccmis: --depth: '9' is not an integer from 1 to 5\n")
+bccmis_cli_test(explore_threads_negative 2 ARGS explore 1 1 2 --threads -1
+                STDERR_REGEX "^bccmis: --threads: '-1' is not a non-negative integer\nRun 'bccmis explore --help'")
+bccmis_cli_test(stuff_size_zero 2 ARGS stuff --shape sphere --size 0 --stats
+                STDERR_REGEX "^bccmis: --size: '0' is not a positive finite number\nRun 'bccmis stuff --help'")
+bccmis_cli_test(stuff_size_infinite 2 ARGS stuff --shape sphere --size inf --stats
+                STDERR_REGEX "^bccmis: --size: 'inf' is not a positive finite number\n")
+# spec/cli.md, stuff: --size and -L both choose the finest level; --json
+# implies --stats and prints with -o too (stuff and mesh).
+bccmis_cli_test(stuff_size_and_level 2 ARGS stuff --shape sphere --size 0.1 -L 3 --stats
+                STDERR_REGEX "^bccmis: --size and -L,--max-level both choose the finest level: give one\n")
+bccmis_cli_test(stuff_json_alone 0 ARGS stuff --shape sphere -L 2 --cells 3 --json -o sphere.mesh -q
+                STDOUT_REGEX "^{\"shape\": \"sphere r=1\", \"leaves\": [0-9]+,.*\"tetrahedra\": [1-9][0-9]*,")
+bccmis_cli_test(mesh_json_alone 0 ARGS mesh ${_examples}/d3/face_refined.state --json
+                STDOUT_REGEX "\"tetrahedra\": 168")
+# Triangle-mesh inputs (spec/cli.md, stuff; spec/stuffing.md, "Formats"):
+# standard input ('-', the format sniffed or given), --format over the
+# extension, a directory, OFF text named .stl, text that is no STL.
+if(TARGET bccmis::stuff_surface)
+  bccmis_cli_test(stuff_stdin_sniffed 0 ARGS stuff - -L 1 --cells 6 -o cube.mesh
+                  STDIN_FILE ${PROJECT_SOURCE_DIR}/tests/stuff/good/cube.off
+                  STDERR_REGEX "^bccmis stuff: mesh stdin: 12 triangles: .* tetrahedra written to 1 file\n$")
+  bccmis_cli_test(stuff_stdin_format 0 ARGS stuff - --format obj -L 1 --cells 6 -o cube.mesh
+                  STDIN_FILE ${PROJECT_SOURCE_DIR}/tests/stuff/good/cube_quads.obj
+                  STDERR_REGEX "^bccmis stuff: mesh stdin: 12 triangles: .* tetrahedra written to 1 file\n$")
+  bccmis_cli_test(stuff_stdin_unknown 2 ARGS stuff - --stats STDIN_FILE ${_cli}/words.stl
+                  STDERR_REGEX "^bccmis: stdin: cannot tell the format of the content \\(text\\): expected OFF, OBJ or STL")
+  bccmis_cli_test(stuff_stdin_wrong_format 2 ARGS stuff - --format stl --stats
+                  STDIN_FILE ${_cli}/tetrahedron_off_text.stl
+                  STDERR_REGEX "^bccmis: stdin: the content is OFF text, not STL \\(to read it as OFF: --format off\\)\n")
+  bccmis_cli_test(stuff_off_named_stl 2 ARGS stuff ${_cli}/tetrahedron_off_text.stl --stats
+                  STDERR_REGEX "tetrahedron_off_text.stl: the content is OFF text, not STL \\(to read it as OFF: --format off\\)\n")
+  bccmis_cli_test(stuff_format_over_extension 0 ARGS stuff ${_cli}/tetrahedron_off_text.stl --format off -L 2 -o tet.mesh
+                  STDERR_REGEX "^bccmis stuff: mesh [^\n]*tetrahedron_off_text.stl: 4 triangles: .* tetrahedra written to 1 file\n$")
+  bccmis_cli_test(stuff_text_stl 2 ARGS stuff ${_cli}/words.stl --stats
+                  STDERR_REGEX "words.stl:1:1: expected 'solid', found 'a'\n")
+  bccmis_cli_test(stuff_directory 2 ARGS stuff ${_cli} --stats STDERR_REGEX "cli: is a directory, expected a file\n")
+endif()
+
 # Bad input: exit 2 with file:line:column.
 bccmis_cli_test(bad_lattice 2 ARGS replay ${_cli}/bad_lattice.trace
                 STDERR_REGEX "bad_lattice.trace:2:9: lattice width W must be >= 1, got 0")

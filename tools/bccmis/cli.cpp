@@ -3,6 +3,9 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <iostream>
 #include <string>
@@ -15,6 +18,98 @@ namespace bccmis::cli {
 
 namespace {
 
+// ---- Option groups and checks that several subcommands share ----------------
+
+/// Whether all of `text` reads as one number (std::from_chars: no sign for
+/// an unsigned type, no leading '+' or white space).
+template <class Number>
+bool read_whole(const std::string& text, Number& value) {
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  return !text.empty() && ec == std::errc() && ptr == text.data() + text.size();
+}
+
+/// An integer from `lo` to `hi`; CLI11 prefixes the option's name to the
+/// message, which names the value as given: "--max-level: '3.5' is not an
+/// integer from 0 to 20".
+CLI::Validator integer_in(std::int64_t lo, std::int64_t hi) {
+  const std::string range = std::to_string(lo) + " to " + std::to_string(hi);
+  return CLI::Validator(
+      [lo, hi, range](std::string& text) -> std::string {
+        std::int64_t v = 0;
+        return read_whole(text, v) && v >= lo && v <= hi ? std::string()
+                                                         : "'" + text + "' is not an integer from " + range;
+      },
+      "INT in [" + std::to_string(lo) + " - " + std::to_string(hi) + "]");
+}
+
+/// A whole number >= 0 (seeds, counts): "--threads: '-1' is not a
+/// non-negative integer".
+CLI::Validator non_negative_integer() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        std::uint64_t v = 0;
+        return read_whole(text, v) ? std::string() : "'" + text + "' is not a non-negative integer";
+      },
+      "NONNEGATIVE");
+}
+
+/// A finite number above zero: "--size: '0' is not a positive finite number".
+CLI::Validator positive_finite() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        double v = 0;
+        return read_whole(text, v) && std::isfinite(v) && v > 0 ? std::string()
+                                                                : "'" + text + "' is not a positive finite number";
+      },
+      "POSITIVE");
+}
+
+/// An option whose value is one of `choices`, its default shown.
+CLI::Option* add_choice(CLI::App* cmd, const std::string& name, std::string& value, const std::string& help,
+                        const std::vector<std::string>& choices) {
+  return cmd->add_option(name, value, help)->check(CLI::IsMember(choices))->capture_default_str();
+}
+
+/// --depth: the checker's layers (replay, check, view).
+void add_check_depth(CLI::App* cmd, int& depth) {
+  cmd->add_option(
+         "--depth", depth,
+         "Checker layers to run: 1-4, or 5 for the CGAL triangulation layer (3D: the mesh layer and its CGAL check)")
+      ->check(integer_in(1, max_check_depth()))
+      ->capture_default_str();
+}
+
+/// --max-vertices: the bound on a replayed lattice (replay, view).
+void add_max_vertices(CLI::App* cmd, std::int64_t& max_vertices, const std::string& help) {
+  cmd->add_option("--max-vertices", max_vertices, help)
+      ->check(integer_in(1, std::int64_t{1} << 40))
+      ->capture_default_str();
+}
+
+/// -W, -H, -L: the 2D applications' initial lattice (heightfield, animate).
+void add_lattice_size(CLI::App* cmd, std::int64_t& width, std::int64_t& height, int& max_level,
+                      const std::string& lattice) {
+  cmd->add_option("-W,--width", width, lattice + " width in level-0 cells")->capture_default_str();
+  cmd->add_option("-H,--height", height, lattice + " height in level-0 cells")->capture_default_str();
+  cmd->add_option("-L,--max-level", max_level, "Maximum refinement level")->capture_default_str();
+}
+
+/// --impl: the 2D applications' lattice (heightfield, animate).
+void add_lattice_impl(CLI::App* cmd, std::string& impl) {
+  add_choice(cmd, "--impl", impl, "Lattice implementation: reference or fast (same output, faster)",
+             {"reference", "fast"});
+}
+
+/// --state, --stats, --json, --check: what the 2D applications report after
+/// each `step` (heightfield: sweep, animate: frame).
+void add_run_report(CLI::App* cmd, std::string& state, std::string& stats, bool& json, bool& check,
+                    const std::string& statistics, const std::string& step) {
+  cmd->add_option("--state", state, "Write the final canonical state");
+  cmd->add_option("--stats", stats, "Where the " + statistics + " go ('-' = stdout)")->capture_default_str();
+  cmd->add_flag("--json", json, "Statistics as JSON");
+  cmd->add_flag("--check", check, "Run the invariant checker after every " + step);
+}
+
 // ---- One function per subcommand: its flags, bound to its options struct ----
 
 CLI::App* add_replay(CLI::App& app, ReplayOptions& o) {
@@ -22,23 +117,14 @@ CLI::App* add_replay(CLI::App& app, ReplayOptions& o) {
   cmd->add_option("trace", o.trace, "Trace file ('-' for stdin)")->required();
   cmd->add_option("--log", o.log_file, "Write the decision log to this file (atomically) instead of stdout");
   cmd->add_option("--state", o.state_file, "Write the canonical state to this file (atomically) instead of stdout");
-  cmd->add_option("--check", o.check, "When to run the invariant checker: every (after each command), end, none")
-      ->check(CLI::IsMember({"every", "end", "none"}))
-      ->capture_default_str();
-  cmd->add_option(
-         "--depth", o.depth,
-         "Checker layers to run: 1-4, or 5 for the CGAL triangulation layer (3D: the mesh layer and its CGAL check)")
-      ->check(CLI::Range(1, max_check_depth()))
-      ->capture_default_str();
+  add_choice(cmd, "--check", o.check, "When to run the invariant checker: every (after each command), end, none",
+             {"every", "end", "none"});
+  add_check_depth(cmd, o.depth);
   cmd->add_flag("-q,--quiet", o.quiet, "No summary on stderr");
   cmd->add_flag("--json", o.json, "Print one JSON object (decisions, counts, canonical state) instead of the text");
-  cmd->add_option("--impl", o.impl, "Implementation to replay with: reference (the transcription) or fast")
-      ->check(CLI::IsMember({"reference", "fast"}))
-      ->capture_default_str();
-  cmd->add_option("--max-vertices", o.max_vertices,
-                  "Refuse a trace whose lattice grows beyond this many vertices (exit 2)")
-      ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 40))
-      ->capture_default_str();
+  add_choice(cmd, "--impl", o.impl, "Implementation to replay with: reference (the transcription) or fast",
+             {"reference", "fast"});
+  add_max_vertices(cmd, o.max_vertices, "Refuse a trace whose lattice grows beyond this many vertices (exit 2)");
   cmd->add_option("--mesh", o.mesh_files,
                   "3D: also write the final state's tetrahedral mesh to this file (.vtu, .msh or .mesh; repeatable)");
   cmd->footer(
@@ -51,11 +137,7 @@ CLI::App* add_replay(CLI::App& app, ReplayOptions& o) {
 CLI::App* add_check(CLI::App& app, CheckOptions& o) {
   CLI::App* cmd = app.add_subcommand("check", "Check a canonical state against every invariant.");
   cmd->add_option("state", o.state, "State file ('-' for stdin)")->required();
-  cmd->add_option(
-         "--depth", o.depth,
-         "Checker layers to run: 1-4, or 5 for the CGAL triangulation layer (3D: the mesh layer and its CGAL check)")
-      ->check(CLI::Range(1, max_check_depth()))
-      ->capture_default_str();
+  add_check_depth(cmd, o.depth);
   cmd->add_flag("-q,--quiet", o.quiet, "Print nothing when the state is valid");
   cmd->footer("Example:\n  bccmis replay spec/examples/fig2.trace --state fig2.state && bccmis check fig2.state");
   return cmd;
@@ -89,7 +171,7 @@ CLI::App* add_mesh(CLI::App& app, MeshOptions& o) {
                   "(Gmsh 4.1), .mesh (Medit); repeatable");
   cmd->add_flag("--stats", o.stats,
                 "Print vertices, tetrahedra, boundary triangles, min/max dihedral angle and a histogram");
-  cmd->add_flag("--json", o.json, "Statistics as JSON");
+  cmd->add_flag("--json", o.json, "Statistics as JSON (implies --stats)");
   cmd->add_flag("--check", o.check, "Also run the mesh layer of the checker on the tetrahedra (exit 1 on a violation)");
   cmd->add_flag("-q,--quiet", o.quiet, "No summary on stderr");
   cmd->footer("Example:\n  bccmis mesh spec/examples/d3/face_refined.state -o face.vtu -o face.msh --stats");
@@ -100,8 +182,12 @@ CLI::App* add_stuff(CLI::App& app, StuffOptions& o) {
   CLI::App* cmd = app.add_subcommand(
       "stuff", "Mesh a closed shape with tetrahedra by isosurface stuffing on the graded BCC mesh (spec/stuffing.md).");
   cmd->add_option("input", o.input,
-                  "Triangle mesh: .off, .obj or .stl (ASCII or binary); open, self-intersecting or otherwise "
-                  "flawed meshes are repaired and meshed as the solid where the winding number >= 1/2");
+                  "Triangle mesh: .off, .obj or .stl (ASCII or binary), '-' for stdin; open, self-intersecting or "
+                  "otherwise flawed meshes are repaired and meshed as the solid where the winding number >= 1/2");
+  cmd->add_option("--format", o.format,
+                  "Read the input as off, obj or stl whatever its name (default: the extension; for stdin, "
+                  "what the content is)")
+      ->check(CLI::IsMember({"off", "obj", "stl"}));
   cmd->add_option("--shape", o.shape,
                   "A built-in shape instead: sphere[:r=R], torus[:R=A,r=B], spheres[:r=R,d=D] (defaults r=1; R=1, "
                   "r=0.4; r=0.7, d=1)");
@@ -109,26 +195,27 @@ CLI::App* add_stuff(CLI::App& app, StuffOptions& o) {
                   "File to write (atomically, all or none); the extension names it: .vtu, .msh (Gmsh 4.1), .mesh "
                   "(Medit) for the tetrahedra, .off, .obj for the boundary surface; repeatable");
   cmd->add_option("-L,--max-level", o.max_level, "Finest lattice level, used where the surface is (default 4)")
-      ->check(CLI::Range(0, 20));
+      ->check(integer_in(0, 20));
   cmd->add_option("--min-level", o.min_level, "Every lattice leaf at least this level (default 0)")
-      ->check(CLI::Range(0, 20));
+      ->check(integer_in(0, 20));
   cmd->add_option("--cells", o.cells, "Level-0 cubes along the shape's longest side (default 4)")
-      ->check(CLI::Range(1, 1 << 20));
-  cmd->add_option("--size", o.size, "Finest edge length at most this (chooses --max-level)")
-      ->check(CLI::PositiveNumber);
+      ->check(integer_in(1, 1 << 20));
+  cmd->add_option("--size", o.size, "Finest edge length at most this (chooses --max-level; not with -L)")
+      ->check(positive_finite());
   cmd->add_option("--animate", o.animate,
                   "Move the shape through the lattice in N frames: local refine and coarsen per frame; -o names "
                   "a .pvd (ParaView) and the frames are written beside it as .vtu")
-      ->check(CLI::Range(1, 100000));
+      ->check(integer_in(1, 100000));
   cmd->add_option("--path", o.path,
                   "--animate: the whole motion DX,DY,DZ (default: 1.5 times the shape's x extent along x)");
   cmd->add_flag("--compare", o.compare, "--animate: also build every frame from scratch and report both times");
   cmd->add_option("--impl", o.impl,
                   "The lattice: fast (d3::fast::Lattice, default) or reference (d3::Graph); the same mesh")
       ->check(CLI::IsMember({"fast", "reference"}));
-  cmd->add_flag("--stats", o.stats,
-                "Print counts, volume and its error, Hausdorff distance, dihedral angles and seconds per phase");
-  cmd->add_flag("--json", o.json, "Statistics as JSON");
+  cmd->add_flag(
+      "--stats", o.stats,
+      "Print counts, volume and its error, sampled Hausdorff distance, dihedral angles and seconds per phase");
+  cmd->add_flag("--json", o.json, "Statistics as JSON (implies --stats)");
   cmd->add_flag("--check", o.check,
                 "Check the mesh before writing: exact positive orientation, conformity, a closed boundary on the "
                 "surface (exit 1 on a violation)");
@@ -171,26 +258,18 @@ CLI::App* add_view(CLI::App& app, ViewCommandOptions& o) {
                   "Instead of a trace: canonical state files, one per step, or one directory of *.state files "
                   "(taken in name order)");
   cmd->add_option("-o,--output", o.output, "HTML file to write (atomically); '-' for stdout")->required();
-  cmd->add_option(
-         "--check", o.check,
-         "When to run the invariant checker: every (each state; the page opens at the first violation), end, none")
-      ->check(CLI::IsMember({"every", "end", "none"}))
-      ->capture_default_str();
-  cmd->add_option(
-         "--depth", o.depth,
-         "Checker layers to run: 1-4, or 5 for the CGAL triangulation layer (3D: the mesh layer and its CGAL check)")
-      ->check(CLI::Range(1, max_check_depth()))
-      ->capture_default_str();
+  add_choice(cmd, "--check", o.check,
+             "When to run the invariant checker: every (each state; the page opens at the first violation), end, none",
+             {"every", "end", "none"});
+  add_check_depth(cmd, o.depth);
   cmd->add_option("--step", o.step, "Open the page at this step (default: the first violation, else step 0)")
-      ->check(CLI::Range(std::int64_t{0}, std::int64_t{1} << 40));
+      ->check(integer_in(0, std::int64_t{1} << 40));
   cmd->add_option("--from-log", o.from_log,
                   "Another implementation's output on the trace (decision log, optionally followed by its "
                   "canonical state, spec/conformance.md): mark the first disagreement with the reference");
   cmd->add_option("--title", o.title, "Title of the page (default: the input's name)");
-  cmd->add_option("--max-vertices", o.max_vertices,
-                  "Refuse a trace whose lattice grows beyond this many vertices (exit 2), as replay does")
-      ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 40))
-      ->capture_default_str();
+  add_max_vertices(cmd, o.max_vertices,
+                   "Refuse a trace whose lattice grows beyond this many vertices (exit 2), as replay does");
   cmd->add_flag("-q,--quiet", o.quiet, "No summary on stderr");
   cmd->footer(
       "Step k shows the state after the k-th command (step 0: the initial lattice) and what the command\n"
@@ -216,18 +295,17 @@ CLI::App* add_conformance(CLI::App& app, ConformanceCommandOptions& o) {
       ->required();
   cmd->add_option("--traces", o.traces, "Directory of bundled *.trace files to run first");
   cmd->add_option("--random", o.random, "Number of random traces")
-      ->check(CLI::Range(0, 1000000))
+      ->check(integer_in(0, 1000000))
       ->capture_default_str();
-  cmd->add_option("--seed", o.seed, "Seed of the random traces")->check(CLI::NonNegativeNumber)->capture_default_str();
+  cmd->add_option("--seed", o.seed, "Seed of the random traces")->check(non_negative_integer())->capture_default_str();
   cmd->add_option("--max-ops", o.max_ops, "Operations per random trace")
-      ->check(CLI::Range(1, 100000))
+      ->check(integer_in(1, 100000))
       ->capture_default_str();
   cmd->add_option("--timeout", o.timeout_seconds, "Seconds per run of the implementation")
       ->check(CLI::Range(0.01, 86400.0))
       ->capture_default_str();
-  cmd->add_option("--dim", o.dim, "Dimension of the random traces: 2, 3, or mixed (2D and 3D alternately)")
-      ->check(CLI::IsMember({"2", "3", "mixed"}))
-      ->capture_default_str();
+  add_choice(cmd, "--dim", o.dim, "Dimension of the random traces: 2, 3, or mixed (2D and 3D alternately)",
+             {"2", "3", "mixed"});
   cmd->add_option("--view", o.view,
                   "On a 2D disagreement, write a viewer page (bccmis view) for the minimal trace: the reference "
                   "and the implementation's state side by side at the first disagreement; on a 3D one, write "
@@ -250,14 +328,14 @@ CLI::App* add_explore(CLI::App& app, ExploreCommandOptions& o) {
       ->expected(3, 4)
       ->required();
   cmd->add_option("--depth", o.depth, "Checker layers on every state (0-4; in 3D, 4 adds the mesh layer)")
-      ->check(CLI::Range(0, 4))
+      ->check(integer_in(0, 4))
       ->capture_default_str();
   cmd->add_option("--max-states", o.max_states,
                   "Stop after this many states (0: no limit); the result is then incomplete")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative_integer())
       ->capture_default_str();
   cmd->add_option("--threads", o.threads, "Worker threads (0: one per core)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative_integer())
       ->capture_default_str();
   cmd->add_flag("--json", o.json, "One line of JSON instead of the summary");
   cmd->add_flag("--no-progress", o.no_progress, "No progress line on stderr");
@@ -274,35 +352,24 @@ CLI::App* add_heightfield(CLI::App& app, HeightfieldCommandOptions& o) {
   CLI::App* cmd =
       app.add_subcommand("heightfield", "Tessellate a height-field image adaptively (the paper's §3, Fig. 4-5).");
   cmd->add_option("input", o.input, "PGM (P2/P5, 8/16-bit) or PNG image; '-' for stdin")->required();
-  cmd->add_option("-W,--width", o.width, "Initial lattice width in level-0 cells")->capture_default_str();
-  cmd->add_option("-H,--height", o.height, "Initial lattice height in level-0 cells")->capture_default_str();
-  cmd->add_option("-L,--max-level", o.max_level, "Maximum refinement level")->capture_default_str();
+  add_lattice_size(cmd, o.width, o.height, o.max_level, "Initial lattice");
   cmd->add_option("--vertical-scale", o.vertical_scale, "Height of a full-scale pixel")->capture_default_str();
   cmd->add_option("-t,--tolerance", o.tolerance, "Refine cells whose error is above this")->capture_default_str();
-  cmd->add_option("--measure", o.measure, "Cell error: max (every pixel, exact) or samples (the paper's)")
-      ->check(CLI::IsMember({"max", "samples"}))
-      ->capture_default_str();
+  add_choice(cmd, "--measure", o.measure, "Cell error: max (every pixel, exact) or samples (the paper's)",
+             {"max", "samples"});
   cmd->add_option("--samples", o.samples, "Random points per cell for --measure=samples")->capture_default_str();
-  cmd->add_option("--seed", o.seed, "Seed of --measure=samples")->check(CLI::NonNegativeNumber)->capture_default_str();
-  cmd->add_option("--balance", o.balance, "2:1 rule: edge (the core's) or corner")
-      ->check(CLI::IsMember({"edge", "corner"}))
-      ->capture_default_str();
-  cmd->add_option("--impl", o.impl, "Lattice implementation: reference or fast (same output, faster)")
-      ->check(CLI::IsMember({"reference", "fast"}))
-      ->capture_default_str();
+  cmd->add_option("--seed", o.seed, "Seed of --measure=samples")->check(non_negative_integer())->capture_default_str();
+  add_choice(cmd, "--balance", o.balance, "2:1 rule: edge (the core's) or corner", {"edge", "corner"});
+  add_lattice_impl(cmd, o.impl);
   cmd->add_option("--sweeps", o.sweeps, "Number of sweeps; 0 = until nothing changes")->capture_default_str();
   cmd->add_option("--from", o.from, "Start from this canonical state (incremental re-tessellation)");
   cmd->add_option("--obj", o.obj, "Write a Wavefront OBJ mesh");
   cmd->add_option("--ply", o.ply, "Write an ASCII PLY mesh");
   cmd->add_option("--vtu", o.vtu, "Write a VTK .vtu (level and error as cell data)");
   cmd->add_option("--svg", o.svg, "Write an SVG top view");
-  cmd->add_option("--state", o.state, "Write the final canonical state");
-  cmd->add_option("--stats", o.stats, "Where the statistics go ('-' = stdout)")->capture_default_str();
-  cmd->add_flag("--json", o.json, "Statistics as JSON");
-  cmd->add_flag("--check", o.check, "Run the invariant checker after every sweep");
-  cmd->add_option("--progress", o.progress, "Progress lines on stderr: auto, always, never")
-      ->check(CLI::IsMember({"auto", "always", "never"}))
-      ->capture_default_str();
+  add_run_report(cmd, o.state, o.stats, o.json, o.check, "statistics", "sweep");
+  add_choice(cmd, "--progress", o.progress, "Progress lines on stderr: auto, always, never",
+             {"auto", "always", "never"});
   cmd->add_flag("-q,--quiet", o.quiet, "No summary line on stderr");
   cmd->footer(
       "Example:\n  bccmis heightfield apps/samples/terrain128.pgm --tolerance 0.02 --obj terrain.obj --svg "
@@ -313,26 +380,17 @@ CLI::App* add_heightfield(CLI::App& app, HeightfieldCommandOptions& o) {
 CLI::App* add_animate(CLI::App& app, AnimateCommandOptions& o) {
   CLI::App* cmd =
       app.add_subcommand("animate", "A disk moves along a path; the lattice adapts around it (the paper's Fig. 6).");
-  cmd->add_option("-W,--width", o.width, "Lattice width in level-0 cells")->capture_default_str();
-  cmd->add_option("-H,--height", o.height, "Lattice height in level-0 cells")->capture_default_str();
-  cmd->add_option("-L,--max-level", o.max_level, "Maximum refinement level")->capture_default_str();
+  add_lattice_size(cmd, o.width, o.height, o.max_level, "Lattice");
   cmd->add_option("--target-level", o.target_level, "Level of the cells the feature meets; -1 = L")
       ->capture_default_str();
   cmd->add_option("--radius", o.radius, "Feature radius in level-0 cell units")->capture_default_str();
   cmd->add_option("--path", o.path, "Path 'x,y;x,y;...' in level-0 cell units")->capture_default_str();
-  cmd->add_option("--balance", o.balance, "2:1 rule: edge or corner")
-      ->check(CLI::IsMember({"edge", "corner"}))
-      ->capture_default_str();
+  add_choice(cmd, "--balance", o.balance, "2:1 rule: edge or corner", {"edge", "corner"});
   cmd->add_option("--frames", o.frames, "Number of frames")->capture_default_str();
-  cmd->add_option("--impl", o.impl, "Lattice implementation: reference or fast (same output, faster)")
-      ->check(CLI::IsMember({"reference", "fast"}))
-      ->capture_default_str();
+  add_lattice_impl(cmd, o.impl);
   cmd->add_flag("--lift", o.lift, "One more frame without the feature at the end");
   cmd->add_option("--svg-dir", o.svg_dir, "Write frame_NNNN.svg into this existing directory");
-  cmd->add_option("--state", o.state, "Write the final canonical state");
-  cmd->add_option("--stats", o.stats, "Where the per-frame statistics go ('-' = stdout)")->capture_default_str();
-  cmd->add_flag("--json", o.json, "Statistics as JSON");
-  cmd->add_flag("--check", o.check, "Run the invariant checker after every frame");
+  add_run_report(cmd, o.state, o.stats, o.json, o.check, "per-frame statistics", "frame");
   cmd->add_flag("-q,--quiet", o.quiet, "No summary line on stderr");
   cmd->footer("Example:\n  mkdir frames && bccmis animate --frames 60 --svg-dir frames --check");
   return cmd;
@@ -375,12 +433,19 @@ std::string unknown_subcommand(std::string_view given, const std::vector<std::st
   return message + ")";
 }
 
+/// Where a usage error points: the subcommand's help when argv[1] names one
+/// (parse_command_line has refused any other word there), else the tool's.
+std::string help_command(int argc, char** argv) {
+  if (argc > 1 && argv[1][0] != '-') return std::string("bccmis ") + argv[1] + " --help";
+  return "bccmis --help";
+}
+
 }  // namespace
 
 std::variant<int, Command> parse_command_line(int argc, char** argv) {
   CLI::App app{
-      "bccmis: reference implementation and oracle for Erleben's 2009 MIS graph "
-      "representation of adaptive 2D BCC lattices."};
+      "bccmis: adaptive BCC lattices in 2D and 3D (Erleben's 2009 MIS graph representation, checked against "
+      "every invariant), their meshes, and tetrahedral meshes of shapes by isosurface stuffing."};
   app.set_version_flag("--version", std::string("bccmis ") + BCCMIS_VERSION);
   app.require_subcommand(1);
   app.footer(
@@ -399,14 +464,15 @@ std::variant<int, Command> parse_command_line(int argc, char** argv) {
   ExploreCommandOptions explore;
   HeightfieldCommandOptions heightfield;
   AnimateCommandOptions animate;
-  // In the order --help lists them.
+  CLI::App* stuff_cmd = nullptr;
+  // In the order --help lists them (a braced list is evaluated in order).
   const std::vector<std::pair<CLI::App*, std::function<Command()>>> commands = {
       {add_replay(app, replay), [&] { return Command(replay); }},
       {add_check(app, check), [&] { return Command(check); }},
       {add_diff(app, diff), [&] { return Command(diff); }},
       {add_stats(app, stats), [&] { return Command(stats); }},
       {add_mesh(app, mesh), [&] { return Command(mesh); }},
-      {add_stuff(app, stuff), [&] { return Command(stuff); }},
+      {stuff_cmd = add_stuff(app, stuff), [&] { return Command(stuff); }},
       {add_render(app, render), [&] { return Command(render); }},
       {add_view(app, view), [&] { return Command(view); }},
       {add_conformance(app, conformance), [&] { return Command(conformance); }},
@@ -432,9 +498,18 @@ std::variant<int, Command> parse_command_line(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "bccmis: " << e.what() << "\nRun 'bccmis --help' for usage.\n";
+    std::cerr << "bccmis: " << e.what() << "\nRun '" << help_command(argc, argv) << "' for usage.\n";
     return kExitInput;
   }
+  // spec/cli.md, stuff: --size chooses the max level, so it and -L exclude
+  // each other; --json implies --stats (stuff, mesh).
+  if (*stuff_cmd && stuff_cmd->count("--size") > 0 && stuff_cmd->count("--max-level") > 0) {
+    std::cerr << "bccmis: --size and -L,--max-level both choose the finest level: give one\n"
+              << "Run 'bccmis stuff --help' for usage.\n";
+    return kExitInput;
+  }
+  stuff.stats = stuff.stats || stuff.json;
+  mesh.stats = mesh.stats || mesh.json;
   for (const auto& [cmd, options] : commands)
     if (*cmd) return options();
   return kExitInternal;

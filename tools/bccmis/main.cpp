@@ -1,10 +1,10 @@
 // bccmis: the command-line oracle (spec/cli.md). main parses the command
 // line (cli.cpp) and runs the chosen subcommand (one file each: replay.cpp,
-// check.cpp, diff.cpp, stats.cpp, render.cpp, view.cpp, conformance.cpp,
-// explore.cpp, heightfield.cpp, animate.cpp); io.h owns reading, writing and
-// the exit codes: 0 success; 1 an invariant is violated (or states differ,
-// or implementations disagree); 2 bad input (usage, parse error, unreadable
-// file, unwritable output); 3 internal error.
+// check.cpp, diff.cpp, stats.cpp, mesh.cpp, stuff.cpp, render.cpp, view.cpp,
+// conformance.cpp, explore.cpp, heightfield.cpp, animate.cpp); io.h owns
+// reading, writing and the exit codes: 0 success; 1 an invariant is violated
+// (or states differ, or implementations disagree); 2 bad input (usage, parse
+// error, unreadable file, unwritable output); 3 internal error.
 #include <variant>
 
 #include "cli.h"

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "bccmis/io/medit.h"
@@ -49,7 +50,11 @@ std::shared_ptr<const stuff::Shape> load_shape(const StuffOptions& o) {
   if (o.shape.empty() && o.input.empty())
     throw InputError("nothing to mesh: give an input mesh (.off, .obj, .stl) or --shape NAME");
   if (!o.shape.empty()) return stuff::make_builtin(o.shape);
-  return stuff::load_mesh_file(o.input, o.strict);
+  std::optional<io::SurfaceFormat> format;
+  if (o.format == "off") format = io::SurfaceFormat::off;
+  if (o.format == "obj") format = io::SurfaceFormat::obj;
+  if (o.format == "stl") format = io::SurfaceFormat::stl;
+  return stuff::load_mesh_file(o.input, o.strict, format);
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {

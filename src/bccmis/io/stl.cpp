@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "bccmis/io/detail/line_scanner.h"
+#include "bccmis/io/surface_format.h"
 
 namespace bccmis::io {
 
@@ -151,8 +152,9 @@ TriangleSoup read_stl_binary(const std::string& file, const std::string& data) {
 }  // namespace
 
 TriangleSoup read_stl(const std::string& file, const std::string& data) {
-  // Binary when the size matches the triangle count at byte 80 or the file
-  // does not start with "solid" (binary headers may start with it too).
+  // Binary when the size matches the triangle count at byte 80 (binary
+  // headers may start with "solid" too); else ASCII when the file starts with
+  // "solid" or is text (the ASCII reader then names what it found instead).
   if (data.size() >= 84) {
     const auto u8 = [&](std::size_t i) { return static_cast<std::uint32_t>(static_cast<unsigned char>(data[i])); };
     const std::uint64_t n = u8(80) | u8(81) << 8 | u8(82) << 16 | u8(83) << 24;
@@ -160,7 +162,7 @@ TriangleSoup read_stl(const std::string& file, const std::string& data) {
   }
   std::size_t i = 0;
   while (i < data.size() && std::isspace(static_cast<unsigned char>(data[i]))) ++i;
-  if (data.compare(i, 5, "solid") == 0) return read_stl_ascii(file, data);
+  if (data.compare(i, 5, "solid") == 0 || is_text(data)) return read_stl_ascii(file, data);
   return read_stl_binary(file, data);
 }
 

@@ -9,8 +9,9 @@ namespace bccmis::io {
 
 /// The triangle soup of the STL file `data` (file name `file` for messages),
 /// each corner that repeats exactly merged into one vertex. Binary when the
-/// size matches the triangle count at byte 80 or the text does not start with
-/// "solid" (binary headers may start with it too). The facet normals are
+/// size matches the triangle count at byte 80 (binary headers may start with
+/// "solid" too); otherwise ASCII when the file starts with "solid" or is text
+/// (is_text, surface_format.h), binary when it is not. The facet normals are
 /// kept in `normals` but never refused: in ASCII whatever follows `facet` on
 /// its line is accepted (a missing, `nan` or garbled normal reads as NaN).
 /// Throws ReadError: in ASCII

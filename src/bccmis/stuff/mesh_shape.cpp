@@ -17,11 +17,11 @@ using detail::seconds_since;
 std::string number(double x) { return JsonWriter::number(x); }
 }  // namespace
 
-std::unique_ptr<Shape> load_mesh_file(const std::string& path, bool strict) {
+std::unique_ptr<Shape> load_mesh_file(const std::string& path, bool strict, std::optional<io::SurfaceFormat> format) {
 #if BCCMIS_HAVE_STUFF_SURFACE
-  return strict ? load_surface(path) : load_soup(path);
+  return strict ? load_surface(path, format) : load_soup(path, format);
 #else
-  (void)strict;
+  (void)strict, (void)format;
   throw ShapeError(path + ": this build has no CGAL, so it reads no meshes; use --shape");
 #endif
 }

@@ -24,6 +24,7 @@
 #include <utility>
 #include <vector>
 
+#include "bccmis/io/surface_format.h"
 #include "bccmis/stuff/shape.h"
 #include "bccmis/stuff/soup_report.h"
 #include "bccmis/stuff/statistics.h"
@@ -79,8 +80,10 @@ Meshed mesh_shape(const Shape& shape, const Settings& settings, const Progress& 
 /// the file is refused). By default any soup that parses and has a face
 /// (load_soup, S21-S23; the shape's soup_report() says what was found and
 /// repaired); with `strict` only a clean closed mesh, refused at its first
-/// flaw (load_surface, §1's checks).
-std::unique_ptr<Shape> load_mesh_file(const std::string& path, bool strict = false);
+/// flaw (load_surface, §1's checks). `format` overrides the extension; "-"
+/// is standard input, in `format` or as its content says.
+std::unique_ptr<Shape> load_mesh_file(const std::string& path, bool strict = false,
+                                      std::optional<io::SurfaceFormat> format = std::nullopt);
 
 /// The checker's stuffed-mesh layer (bccmis/invariants/d3/stuffed_mesh.h) on
 /// a mesh of `shape` on the lattice `fit`: boundary vertices within 1e-9 h

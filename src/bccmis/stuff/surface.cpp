@@ -24,7 +24,9 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <iterator>
 #include <limits>
 #include <map>
@@ -929,23 +931,41 @@ std::unique_ptr<Shape> shape_of(const Soup& s, const std::string& name) {
 
 namespace {
 
-Soup read_file(const std::string& path) {
-  const auto dot = path.find_last_of('.');
-  const auto slash = path.find_last_of('/');
-  const std::string ext = dot == std::string::npos || (slash != std::string::npos && dot < slash)
-                              ? std::string()
-                              : lower(path.substr(dot + 1));
-  if (ext != "off" && ext != "obj" && ext != "stl")
-    throw ShapeError(path + ": unknown extension '" + (ext.empty() ? std::string() : "." + ext) +
-                     "' (expected .off, .obj or .stl)");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ShapeError(path + ": cannot open: " + std::strerror(errno));
+/// How messages name the input: its path, or "stdin" for "-".
+std::string input_name(const std::string& path) { return path == "-" ? "stdin" : path; }
+
+/// The soup of the file `path` ("-": standard input) in `format`, or by its
+/// extension, or for standard input by its content (io::read_surface).
+Soup read_file(const std::string& path, std::optional<io::SurfaceFormat> format) {
+  const std::string name = input_name(path);
+  std::error_code ec;
+  if (path != "-" && std::filesystem::is_directory(path, ec))
+    throw ShapeError(path + ": is a directory, expected a file");
+  if (path != "-" && !format) {
+    format = io::format_of_extension(path);
+    if (!format) {
+      const auto dot = path.find_last_of('.');
+      const auto slash = path.find_last_of('/');
+      const std::string ext = dot == std::string::npos || (slash != std::string::npos && dot < slash)
+                                  ? std::string()
+                                  : lower(path.substr(dot + 1));
+      throw ShapeError(path + ": unknown extension '" + (ext.empty() ? std::string() : "." + ext) +
+                       "' (expected .off, .obj or .stl)");
+    }
+  }
   std::ostringstream buf;
-  buf << in.rdbuf();
-  if (in.bad()) throw ShapeError(path + ": cannot read");
+  if (path == "-") {
+    buf << std::cin.rdbuf();
+    if (std::cin.bad()) throw ShapeError(name + ": cannot read");
+  } else {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw ShapeError(path + ": cannot open: " + std::strerror(errno));
+    buf << in.rdbuf();
+    if (in.bad()) throw ShapeError(path + ": cannot read");
+  }
   const std::string data = std::move(buf).str();
   try {
-    return ext == "off" ? io::read_off(path, data) : ext == "obj" ? io::read_obj(path, data) : io::read_stl(path, data);
+    return io::read_surface(name, data, format);
   } catch (const io::ReadError& e) {
     throw ShapeError(e.what());
   }
@@ -963,9 +983,13 @@ Soup soup_in_memory(const std::vector<Vec3>& vertices, const std::vector<Tri>& t
 
 }  // namespace
 
-std::unique_ptr<Shape> load_surface(const std::string& path) { return shape_of(read_file(path), path); }
+std::unique_ptr<Shape> load_surface(const std::string& path, std::optional<io::SurfaceFormat> format) {
+  return shape_of(read_file(path, format), input_name(path));
+}
 
-std::unique_ptr<Shape> load_soup(const std::string& path) { return soup_shape_of(read_file(path), path, false); }
+std::unique_ptr<Shape> load_soup(const std::string& path, std::optional<io::SurfaceFormat> format) {
+  return soup_shape_of(read_file(path, format), input_name(path), false);
+}
 
 std::unique_ptr<Shape> make_mesh_shape(const std::vector<Vec3>& vertices, const std::vector<Tri>& triangles,
                                        const std::string& name) {

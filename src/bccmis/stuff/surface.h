@@ -6,21 +6,25 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "bccmis/io/surface_format.h"
 #include "bccmis/stuff/shape.h"
 #include "bccmis/stuff/soup_report.h"
 
 namespace bccmis::stuff {
 
 /// The strict path (--strict): reads an OFF, OBJ or STL (ASCII or binary)
-/// file, chosen by its extension (case-insensitive). Refuses with ShapeError, naming the file and the
+/// file in `format`, or the one its extension names (case-insensitive);
+/// "-" is standard input ("stdin" in messages), in `format` or the one its
+/// content plainly is (io::read_surface). Refuses with ShapeError, naming the file and the
 /// problem with its place: a syntax error (file:line:col), an index out of
 /// range, a degenerate face, an open mesh (a border edge, by its two vertex
 /// indices), a non-manifold edge or vertex, a self-intersection (two faces by
 /// index), an empty mesh. A closed mesh oriented inwards is reversed.
-std::unique_ptr<Shape> load_surface(const std::string& path);
+std::unique_ptr<Shape> load_surface(const std::string& path, std::optional<io::SurfaceFormat> format = std::nullopt);
 
 /// The same from vertices and triangles in memory (`name` for messages).
 std::unique_ptr<Shape> make_mesh_shape(const std::vector<Vec3>& vertices,
@@ -34,7 +38,7 @@ std::unique_ptr<Shape> make_mesh_shape(const std::vector<Vec3>& vertices,
 /// report of its notes); any other gives the shape of the solid where the
 /// winding number of the repaired soup is >= 1/2. Either way
 /// Shape::soup_report() says what was found.
-std::unique_ptr<Shape> load_soup(const std::string& path);
+std::unique_ptr<Shape> load_soup(const std::string& path, std::optional<io::SurfaceFormat> format = std::nullopt);
 
 /// Whether make_soup_shape dispatches as load_soup does, or makes the soup's
 /// shape even of a clean mesh (the tests compare the two on clean meshes).
