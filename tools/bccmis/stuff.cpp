@@ -34,6 +34,8 @@ bool ends_with(const std::string& s, std::string_view suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
+io::Encoding encoding(const StuffOptions& o) { return o.binary ? io::Encoding::binary : io::Encoding::ascii; }
+
 bool is_surface_path(const std::string& path) { return ends_with(path, ".off") || ends_with(path, ".obj"); }
 
 void check_stuff_path(const std::string& path) {
@@ -209,7 +211,7 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
     const stuff::FrameReport& r = f.report;
     const d3::TetMeshF& mesh = *f.mesh;
     if (!pvd.empty()) {
-      outputs.add(stem + frame_name(k), [&](std::ostream& out) { io::write_vtu(out, mesh); });
+      outputs.add(stem + frame_name(k), [&](std::ostream& out) { io::write_vtu(out, mesh, encoding(o)); });
       frames.emplace_back(k, base + frame_name(k));
     }
     json.begin_object()
@@ -303,11 +305,14 @@ int run(const StuffOptions& o) {
   const d3::TetMeshF& mesh = m.stuffed.mesh;
   OutputSet outputs;
   for (const std::string& path : o.outputs) {
-    if (ends_with(path, ".vtu")) outputs.add(path, [&](std::ostream& out) { io::write_vtu(out, mesh); });
-    if (ends_with(path, ".msh")) outputs.add(path, [&](std::ostream& out) { io::write_msh(out, mesh); });
+    const bool all = o.surface_vertices == "all";
+    if (ends_with(path, ".vtu")) outputs.add(path, [&](std::ostream& out) { io::write_vtu(out, mesh, encoding(o)); });
+    if (ends_with(path, ".msh")) outputs.add(path, [&](std::ostream& out) { io::write_msh(out, mesh, encoding(o)); });
     if (ends_with(path, ".mesh")) outputs.add(path, [&](std::ostream& out) { io::write_medit(out, mesh); });
-    if (ends_with(path, ".off")) outputs.add(path, [&](std::ostream& out) { io::write_off(out, mesh, m.boundary); });
-    if (ends_with(path, ".obj")) outputs.add(path, [&](std::ostream& out) { io::write_obj(out, mesh, m.boundary); });
+    if (ends_with(path, ".off"))
+      outputs.add(path, [&](std::ostream& out) { io::write_off(out, mesh, m.boundary, all); });
+    if (ends_with(path, ".obj"))
+      outputs.add(path, [&](std::ostream& out) { io::write_obj(out, mesh, m.boundary, all); });
   }
   seconds.emplace_back("write", seconds_since(t));
   if (o.stats) outputs.add("-", stats_text(shape->describe(), m, seconds, o.json));

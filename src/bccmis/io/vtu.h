@@ -7,15 +7,17 @@
 #include <string>
 
 #include "bccmis/d3/tet_mesh.h"
+#include "bccmis/io/encoding.h"
 #include "bccmis/triangle_mesh.h"
 
 namespace bccmis::io {
 
 /// Int64 points, VTK_TETRA (10) cells, the point data array "kind" and the
-/// cell data array "level".
-void write_vtu(std::ostream& out, const d3::TetMesh& mesh);
+/// cell data array "level"; ASCII, or binary (base64 inline, a UInt64 byte
+/// count before each array's values; spec/mesh3d.md M20).
+void write_vtu(std::ostream& out, const d3::TetMesh& mesh, Encoding encoding = Encoding::ascii);
 /// The same with Float64 points.
-void write_vtu(std::ostream& out, const d3::TetMeshF& mesh);
+void write_vtu(std::ostream& out, const d3::TetMeshF& mesh, Encoding encoding = Encoding::ascii);
 
 /// Triangles (type 5); point data `height`; cell data `level` (Int32) and,
 /// when present, `error` (Float64). Streams through TextWriter
