@@ -13,3 +13,11 @@ add_test(NAME cli.fem_files COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${CMAKE_CURRENT_LIS
 add_test(NAME cli.fem_poisson COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${CMAKE_CURRENT_LIST_DIR}/fem_poisson_test.py
                                       $<TARGET_FILE:bccmis>)
 set_tests_properties(cli.fem_files cli.fem_poisson PROPERTIES LABELS cli TIMEOUT 120)
+
+# Outputs fail early and leave nothing (spec/cli.md, "Outputs"): an
+# unwritable -o ends `stuff` before meshing with the reason; SIGTERM and
+# SIGINT while meshing leave no temporary and no output
+# (tests/io/outputs_early_test.py).
+add_test(NAME cli.outputs_early COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${CMAKE_CURRENT_LIST_DIR}/outputs_early_test.py
+                                        $<TARGET_FILE:bccmis>)
+set_tests_properties(cli.outputs_early PROPERTIES LABELS cli TIMEOUT 120)
