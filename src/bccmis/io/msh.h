@@ -3,9 +3,12 @@
 #pragma once
 
 #include <iosfwd>
+#include <string>
+#include <string_view>
 
 #include "bccmis/d3/tet_mesh.h"
 #include "bccmis/io/encoding.h"
+#include "bccmis/io/orientation.h"
 
 namespace bccmis::io {
 
@@ -17,5 +20,17 @@ namespace bccmis::io {
 /// tets + j + 1; node tags from 1.
 void write_msh(std::ostream& out, const d3::TetMesh& mesh, Encoding encoding = Encoding::ascii);
 void write_msh(std::ostream& out, const d3::TetMeshF& mesh, Encoding encoding = Encoding::ascii);
+
+/// The tetrahedra of the ASCII MSH 4.1 text `text` (as write_msh writes it,
+/// or Gmsh): $MeshFormat 4.1 0 8, $Nodes (not parametric), $Elements whose
+/// 4-node tetrahedra (type 4) are read, in the file's order, with their
+/// nodes (every node becomes a vertex, in the file's order; kind 0, level
+/// 0), triangles, lines and points (types 2, 1, 15) skipped; any other
+/// section skipped to its $End line. Throws ParseError (file `name`, line,
+/// column) on anything else: a binary file, another version or element
+/// type, a count or number that does not parse, a coordinate not finite, a
+/// node tag repeated or unknown, a tetrahedron with a repeated vertex or not
+/// positively oriented (by `orientation`).
+d3::TetMeshF read_msh(std::string_view text, const std::string& name, Orientation orientation);
 
 }  // namespace bccmis::io

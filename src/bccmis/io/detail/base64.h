@@ -1,5 +1,5 @@
 // bccmis::io::detail: base64 (RFC 4648, with padding), the encoding of the
-// binary DataArrays of a .vtu (spec/mesh3d.md M20).
+// binary DataArrays of a .vtu (spec/mesh3d.md M20), both ways.
 #pragma once
 
 #include <cstddef>
@@ -27,6 +27,40 @@ inline std::string base64(std::string_view bytes) {
     out += '=';
   }
   return out;
+}
+
+/// The bytes of the base64 text `text` (white space ignored; padding may
+/// end each encoded block); false on a character outside the alphabet.
+inline bool from_base64(std::string_view text, std::string& bytes) {
+  unsigned v = 0;
+  int bits = 0;
+  for (const char c : text) {
+    int d = -1;
+    if (c >= 'A' && c <= 'Z')
+      d = c - 'A';
+    else if (c >= 'a' && c <= 'z')
+      d = c - 'a' + 26;
+    else if (c >= '0' && c <= '9')
+      d = c - '0' + 52;
+    else if (c == '+')
+      d = 62;
+    else if (c == '/')
+      d = 63;
+    else if (c == '=') {
+      bits = 0;
+      v = 0;
+      continue;
+    } else if (c == ' ' || c == '\n' || c == '\r' || c == '\t')
+      continue;
+    if (d < 0) return false;
+    v = (v << 6) | static_cast<unsigned>(d);
+    bits += 6;
+    if (bits >= 8) {
+      bits -= 8;
+      bytes += static_cast<char>((v >> bits) & 0xff);
+    }
+  }
+  return true;
 }
 
 }  // namespace bccmis::io::detail
