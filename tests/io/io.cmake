@@ -21,3 +21,9 @@ set_tests_properties(cli.fem_files cli.fem_poisson PROPERTIES LABELS cli TIMEOUT
 add_test(NAME cli.outputs_early COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${CMAKE_CURRENT_LIST_DIR}/outputs_early_test.py
                                         $<TARGET_FILE:bccmis>)
 set_tests_properties(cli.outputs_early PROPERTIES LABELS cli TIMEOUT 120)
+
+# bccmis render reads the .vtu and .msh that stuff and mesh write, besides
+# the .mesh (tests/io/render_readers_test.py).
+add_test(NAME cli.render_readers COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${CMAKE_CURRENT_LIST_DIR}/render_readers_test.py
+                                         $<TARGET_FILE:bccmis>)
+set_tests_properties(cli.render_readers PROPERTIES LABELS cli TIMEOUT 120)
