@@ -22,6 +22,21 @@ void expect(Tokens& in, std::string_view word) {
     in.fail(t, "expected '" + std::string(word) + "', got '" + std::string(t.text.substr(0, 40)) + "'");
 }
 
+// "numEntityBlocks numWHATs minWHATTag maxWHATTag": the number of blocks.
+std::int64_t section_header(Tokens& in, const std::string& what) {
+  const std::int64_t blocks = in.integer(("the number of " + what + " blocks").c_str(), 0, kMaxCount);
+  in.integer(("the number of " + what + "s").c_str(), 0, kMaxCount);
+  in.integer(("the smallest " + what + " tag").c_str(), 0, kMaxTag);
+  in.integer(("the largest " + what + " tag").c_str(), 0, kMaxTag);
+  return blocks;
+}
+
+// "entityDim entityTag" at the start of a block.
+void block_entity(Tokens& in) {
+  in.integer("the entity dimension", 0, 3);
+  in.integer("the entity tag", std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
+}
+
 }  // namespace
 
 d3::TetMeshF read_msh(std::string_view text, const std::string& name, Orientation orientation) {
@@ -43,13 +58,9 @@ d3::TetMeshF read_msh(std::string_view text, const std::string& name, Orientatio
     if (key.text == "$Nodes") {
       if (nodes) in.fail(key, "a second '$Nodes' section");
       nodes = true;
-      const std::int64_t blocks = in.integer("the number of node blocks", 0, kMaxCount);
-      in.integer("the number of nodes", 0, kMaxCount);
-      in.integer("the smallest node tag", 0, kMaxTag);
-      in.integer("the largest node tag", 0, kMaxTag);
+      const std::int64_t blocks = section_header(in, "node");
       for (std::int64_t b = 0; b < blocks; ++b) {
-        in.integer("the entity dimension", 0, 3);
-        in.integer("the entity tag", std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
+        block_entity(in);
         in.integer("the parametric flag (0: not parametric)", 0, 0);
         const std::int64_t n = in.integer("the number of nodes in the block", 0, kMaxCount);
         const auto first = static_cast<std::uint32_t>(mesh.vertices.size());
@@ -72,13 +83,9 @@ d3::TetMeshF read_msh(std::string_view text, const std::string& name, Orientatio
       if (!nodes) in.fail(key, "'$Elements' before '$Nodes'");
       if (elements) in.fail(key, "a second '$Elements' section");
       elements = true;
-      const std::int64_t blocks = in.integer("the number of element blocks", 0, kMaxCount);
-      in.integer("the number of elements", 0, kMaxCount);
-      in.integer("the smallest element tag", 0, kMaxTag);
-      in.integer("the largest element tag", 0, kMaxTag);
+      const std::int64_t blocks = section_header(in, "element");
       for (std::int64_t b = 0; b < blocks; ++b) {
-        in.integer("the entity dimension", 0, 3);
-        in.integer("the entity tag", std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
+        block_entity(in);
         Tokens probe = in;
         const Tokens::Token type_at = probe.next();
         const std::int64_t type = in.integer("the element type", 1, 1000);

@@ -91,24 +91,13 @@ class VtuText {
         out.push_back(static_cast<double>(v));
       }
     };
-    if (type == "UInt8")
-      read(std::uint8_t{});
-    else if (type == "Int8")
-      read(std::int8_t{});
-    else if (type == "Int32")
-      read(std::int32_t{});
-    else if (type == "UInt32")
-      read(std::uint32_t{});
-    else if (type == "Int64")
-      read(std::int64_t{});
-    else if (type == "UInt64")
-      read(std::uint64_t{});
-    else if (type == "Float32")
-      read(float{});
-    else if (type == "Float64")
-      read(double{});
-    else
-      fail(tag, "DataArray type '" + type + "'");
+    // VTK's type names and the C++ types they are.
+    const bool known =
+        (type == "UInt8" && (read(std::uint8_t{}), true)) || (type == "Int8" && (read(std::int8_t{}), true)) ||
+        (type == "Int32" && (read(std::int32_t{}), true)) || (type == "UInt32" && (read(std::uint32_t{}), true)) ||
+        (type == "Int64" && (read(std::int64_t{}), true)) || (type == "UInt64" && (read(std::uint64_t{}), true)) ||
+        (type == "Float32" && (read(float{}), true)) || (type == "Float64" && (read(double{}), true));
+    if (!known) fail(tag, "DataArray type '" + type + "'");
     for (const double v : out)
       if (!std::isfinite(v)) fail(open_end + 1, "a number that is not finite");
     return out;
