@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """`bccmis render` reads every tetrahedral format that `stuff` and `mesh`
 write (spec/cli.md, render; io::read_msh, io::read_vtu): one stuffed mesh
-written as .mesh, .vtu (ASCII and binary) and .msh is drawn from each; the
+written as .mesh, .vtu and .msh (ASCII and binary) is drawn from each; the
 .vtu pictures equal the .mesh picture (the file name aside), and the .msh
 picture has the same triangles at the same places (a .msh carries no
 levels: they are drawn as level 0). Malformed files are refused with exit 2
@@ -41,7 +41,7 @@ def main():
         s = os.path.join(d, "s")
         shape = [bccmis, "stuff", "--shape", "torus", "-L", "3", "--cells", "2", "--quiet"]
         subprocess.run(shape + ["-o", s + ".mesh", "-o", s + ".vtu", "-o", s + ".msh"], check=True)
-        subprocess.run(shape + ["--binary", "-o", s + "-b.vtu"], check=True)
+        subprocess.run(shape + ["--binary", "-o", s + "-b.vtu", "-o", s + "-b.msh"], check=True)
         medit = render(bccmis, s + ".mesh", d)
         if medit.count('class="tri"') < 100:
             fail("the .mesh picture has %d triangles" % medit.count('class="tri"'))
@@ -51,16 +51,19 @@ def main():
 
         def places(svg):
             return sorted(re.findall(r'class="tri" data-level="\d+" points="([^"]*)"', svg))
-        if places(render(bccmis, s + ".msh", d)) != places(medit):
-            fail("the .msh's triangles are drawn elsewhere than the .mesh's")
-        print("render: .mesh, .vtu (ASCII, binary) and .msh drawn alike")
+        for msh in (s + ".msh", s + "-b.msh"):
+            if places(render(bccmis, msh, d)) != places(medit):
+                fail("%s's triangles are drawn elsewhere than the .mesh's" % msh)
+        print("render: .mesh, .vtu and .msh (ASCII, binary) drawn alike")
 
         text = open(s + ".msh").read()
         bad = os.path.join(d, "truncated.msh")
         open(bad, "w").write(text[: text.index("$EndNodes")])
         refused(bccmis, bad, r"^bccmis: .*truncated\.msh:\d+:\d+: expected '\$EndNodes', got ''")
-        subprocess.run(shape + ["--binary", "-o", s + "-b.msh"], check=True)
-        refused(bccmis, s + "-b.msh", r"s-b\.msh:2:5: a binary \.msh")
+        binary = open(s + "-b.msh", "rb").read()
+        cut = os.path.join(d, "cut.msh")
+        open(cut, "wb").write(binary[: binary.index(b"$EndNodes") - 8])
+        refused(bccmis, cut, r"cut\.msh:\d+:\d+: unexpected end of file: expected a coordinate")
         vtu = open(s + ".vtu").read()
         conn = vtu.index('Name="connectivity" format="ascii">\n') + len('Name="connectivity" format="ascii">\n')
         first = vtu[conn:vtu.index("\n", conn)].split()

@@ -21,13 +21,13 @@ namespace bccmis::io {
 void write_msh(std::ostream& out, const d3::TetMesh& mesh, Encoding encoding = Encoding::ascii);
 void write_msh(std::ostream& out, const d3::TetMeshF& mesh, Encoding encoding = Encoding::ascii);
 
-/// The tetrahedra of the ASCII MSH 4.1 text `text` (as write_msh writes it,
-/// or Gmsh): $MeshFormat 4.1 0 8, $Nodes (not parametric), $Elements whose
+/// The tetrahedra of the MSH 4.1 text `text` (as write_msh writes it, or
+/// Gmsh), ASCII or binary: $MeshFormat 4.1 0 8 or 4.1 1 8, $Nodes (not parametric), $Elements whose
 /// 4-node tetrahedra (type 4) are read, in the file's order, with their
 /// nodes (every node becomes a vertex, in the file's order; kind 0, level
 /// 0), triangles, lines and points (types 2, 1, 15) skipped; any other
 /// section skipped to its $End line. Throws ParseError (file `name`, line,
-/// column) on anything else: a binary file, another version or element
+/// column; in a binary section the column counts bytes) on anything else: another version or element
 /// type, a count or number that does not parse, a coordinate not finite, a
 /// node tag repeated or unknown, a tetrahedron with a repeated vertex or not
 /// positively oriented (by `orientation`).

@@ -1,9 +1,11 @@
-// The Gmsh MSH 4.1 ASCII reader (msh.h): one pass over the sections.
+// The Gmsh MSH 4.1 reader (msh.h): one pass over the sections of an ASCII
+// file; a binary file goes to msh_read_binary.cpp.
 #include <cstdint>
 #include <limits>
 #include <string>
 #include <unordered_map>
 
+#include "bccmis/io/detail/msh_binary.h"
 #include "bccmis/io/detail/tokens.h"
 #include "bccmis/io/msh.h"
 
@@ -45,11 +47,14 @@ d3::TetMeshF read_msh(std::string_view text, const std::string& name, Orientatio
   const Tokens::Token version = in.next();
   if (version.text != "4.1")
     in.fail(version, "MSH version '" + std::string(version.text.substr(0, 40)) + "': read 4.1");
-  const Tokens::Token file_type = in.next();
-  if (file_type.text != "0")
-    in.fail(file_type, "a binary .msh (file type '" + std::string(file_type.text.substr(0, 40)) +
-                           "'): read ASCII (written without --binary)");
+  const std::int64_t file_type = in.integer("the file type (0 ASCII, 1 binary)", 0, 1);
   in.integer("the data size", 8, 8);
+  if (file_type == 1) {
+    // The byte-order int follows the header line's newline.
+    const std::size_t line_end = text.find('\n', in.offset());
+    return detail::read_msh_binary(text, name, line_end == std::string_view::npos ? text.size() : line_end + 1,
+                                   orientation);
+  }
   expect(in, "$EndMeshFormat");
   d3::TetMeshF mesh;
   std::unordered_map<std::int64_t, std::uint32_t> vertex_of;  // node tag -> vertex
@@ -109,12 +114,8 @@ d3::TetMeshF read_msh(std::string_view text, const std::string& name, Orientatio
               if (t[j] == t[k]) in.fail(at, "node " + std::string(at.text) + " appears twice");
           }
           if (type != 4) continue;
-          const auto& v = mesh.vertices;
-          const int sign = orientation(v[t[0]], v[t[1]], v[t[2]], v[t[3]]);
-          if (sign <= 0)
-            in.fail(first, "tetrahedron " + std::to_string(mesh.tets.size() + 1) + " is " +
-                               (sign == 0 ? "flat" : "negatively oriented") +
-                               " (det[v1 - v0, v2 - v0, v3 - v0] must be positive)");
+          if (const std::string why = orientation_fault(orientation, mesh.vertices, t); !why.empty())
+            in.fail(first, "tetrahedron " + std::to_string(mesh.tets.size() + 1) + why);
           mesh.tets.push_back(t);
           mesh.level.push_back(0);
         }

@@ -145,11 +145,8 @@ d3::TetMeshF read_vtu(std::string_view text, const std::string& name, Orientatio
       for (std::size_t j = 0; j < k; ++j)
         if (t[j] == t[k]) vtu.fail(cells_at, cell + ": point " + std::to_string(t[k]) + " appears twice");
     }
-    const auto& v = mesh.vertices;
-    const int sign = orientation(v[t[0]], v[t[1]], v[t[2]], v[t[3]]);
-    if (sign <= 0)
-      vtu.fail(cells_at, cell + " is " + (sign == 0 ? "flat" : "negatively oriented") +
-                             " (det[v1 - v0, v2 - v0, v3 - v0] must be positive)");
+    if (const std::string why = orientation_fault(orientation, mesh.vertices, t); !why.empty())
+      vtu.fail(cells_at, cell + why);
     mesh.tets.push_back(t);
     mesh.level.push_back(level.empty() ? 0 : static_cast<int>(level[c]));
   }
