@@ -411,9 +411,9 @@ bccmis_cli_test(mesh_render_slice_not_a_number 2 ARGS render ${_two_tets} --slic
 bccmis_cli_test(mesh_render_histogram_and_slice 2 ARGS render ${_two_tets} --histogram --slice z=0 -o out.svg
                 STDERR_REGEX "--histogram draws no cut-away; drop --slice")
 bccmis_cli_test(mesh_render_histogram_of_a_state 2 ARGS render ${_face3} --histogram -o out.svg
-                STDERR_REGEX "face_refined.state: --histogram applies to a .mesh file")
+                STDERR_REGEX "face_refined.state: --histogram applies to a mesh file [(].mesh, .msh, .vtu[)]")
 bccmis_cli_test(mesh_render_from_trace 2 ARGS render --from-trace ${_two_tets} -o out.svg
-                STDERR_REGEX "two_tets.mesh: a .mesh file; --from-trace applies to traces")
+                STDERR_REGEX "two_tets.mesh: a mesh file; --from-trace applies to traces")
 # docs/stuff-sphere.svg and docs/stuff-sphere-angles.svg are the README's
 # commands' output as drawn now: the unit sphere stuffed at level 4 on 3
 # cells, levels 2 to 4 in the cut-away.

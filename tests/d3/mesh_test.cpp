@@ -539,6 +539,38 @@ TEST(D3MeshWriters, VtuReadsBack) {
   EXPECT_EQ(std::count(arrays[0].begin(), arrays[0].end(), 2), 25);
 }
 
+// The sign of det[b - a, c - a, d - a] on lattice points.
+int orientation_of(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const std::int64_t u[3] = {b.x - a.x, b.y - a.y, b.z - a.z}, v[3] = {c.x - a.x, c.y - a.y, c.z - a.z},
+                     w[3] = {d.x - a.x, d.y - a.y, d.z - a.z};
+  const std::int64_t det =
+      u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0]);
+  return (det > 0) - (det < 0);
+}
+
+// `tri` is a face of exactly one of `tets`, and that tetrahedron's fourth
+// vertex lies behind it (the triangle faces outward).
+void expect_outward_boundary(const Tets& tets, const std::array<Point, 3>& tri) {
+  int owners = 0;
+  for (const Tet& t : tets) {
+    int shared = 0;
+    const Point* other = nullptr;
+    for (const Point& p : t) {
+      if (p == tri[0] || p == tri[1] || p == tri[2])
+        ++shared;
+      else
+        other = &p;
+    }
+    if (shared != 3) continue;
+    ++owners;
+    EXPECT_LT(orientation_of(tri[0], tri[1], tri[2], *other), 0) << "a boundary triangle faces inward";
+  }
+  EXPECT_EQ(owners, 1);
+}
+
+// M21: the physical groups, entities, nodes, the tetrahedra in their order
+// and the boundary triangles (104 on the split state, mesh3d.md M18's
+// boundary_triangles) facing outward.
 TEST(D3MeshWriters, MshReadsBack) {
   Tets tets;
   const TetMesh mesh = split_face_mesh(&tets);
@@ -555,24 +587,45 @@ TEST(D3MeshWriters, MshReadsBack) {
   EXPECT_EQ(file_type, 0);
   EXPECT_EQ(data_size, 8);
   EXPECT_EQ(word, "$EndMeshFormat");
+  std::string line;
+  std::getline(in >> std::ws, line);
+  EXPECT_EQ(line, "$PhysicalNames");
+  for (const char* expected : {"2", "3 1 \"component_1\"", "2 2 \"boundary\"", "$EndPhysicalNames", "$Entities"}) {
+    std::getline(in, line);
+    EXPECT_EQ(line, expected);
+  }
+  // No points or curves; surface 1 (the boundary, physical 2), volume 1
+  // (physical 1, bounded by surface 1), both with the box [0,16]x[0,8]x[0,8].
+  EXPECT_EQ(numbers(in, 4), (std::vector<std::int64_t>{0, 0, 1, 1}));
+  EXPECT_EQ(numbers(in, 10), (std::vector<std::int64_t>{1, 0, 0, 0, 16, 8, 8, 1, 2, 0}));
+  EXPECT_EQ(numbers(in, 11), (std::vector<std::int64_t>{1, 0, 0, 0, 16, 8, 8, 1, 1, 1, 1}));
+  in >> word;
+  EXPECT_EQ(word, "$EndEntities");
   in >> word;
   EXPECT_EQ(word, "$Nodes");
   EXPECT_EQ(numbers(in, 8), (std::vector<std::int64_t>{1, 65, 1, 65, 3, 1, 0, 65}));
   const std::vector<std::int64_t> tags = numbers(in, 65);
   for (std::size_t i = 0; i < 65; ++i) EXPECT_EQ(tags[i], static_cast<std::int64_t>(i + 1));
   const std::vector<std::int64_t> xyz = numbers(in, 3 * 65);
+  const auto point = [&](std::int64_t tag) {
+    const auto v = static_cast<std::size_t>(tag - 1);
+    return Point{xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]};
+  };
   in >> word;
   EXPECT_EQ(word, "$EndNodes");
   in >> word;
   EXPECT_EQ(word, "$Elements");
-  EXPECT_EQ(numbers(in, 8), (std::vector<std::int64_t>{1, 168, 1, 168, 3, 1, 4, 168}));
+  EXPECT_EQ(numbers(in, 8), (std::vector<std::int64_t>{2, 272, 1, 272, 3, 1, 4, 168}));
   for (std::size_t i = 0; i < 168; ++i) {
     const std::vector<std::int64_t> e = numbers(in, 5);
     EXPECT_EQ(e[0], static_cast<std::int64_t>(i + 1));
-    for (std::size_t j = 0; j < 4; ++j) {
-      const auto v = static_cast<std::size_t>(e[j + 1] - 1);
-      EXPECT_EQ((Point{xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]}), tets[i][j]);
-    }
+    for (std::size_t j = 0; j < 4; ++j) EXPECT_EQ(point(e[j + 1]), tets[i][j]);
+  }
+  EXPECT_EQ(numbers(in, 4), (std::vector<std::int64_t>{2, 1, 2, 104}));
+  for (std::size_t i = 0; i < 104; ++i) {
+    const std::vector<std::int64_t> e = numbers(in, 4);
+    EXPECT_EQ(e[0], static_cast<std::int64_t>(168 + i + 1));
+    expect_outward_boundary(tets, {point(e[1]), point(e[2]), point(e[3])});
   }
   in >> word;
   EXPECT_EQ(word, "$EndElements");
@@ -595,8 +648,8 @@ TEST(D3MeshWriters, EmptyAndHandBuiltMeshes) {
   std::ostringstream msh;
   io::write_msh(msh, empty);
   EXPECT_EQ(msh.str(),
-            "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 0 0 0\n3 1 0 0\n$EndNodes\n"
-            "$Elements\n1 0 0 0\n3 1 4 0\n$EndElements\n");
+            "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PhysicalNames\n0\n$EndPhysicalNames\n$Entities\n0 0 0 0\n"
+            "$EndEntities\n$Nodes\n0 0 0 0\n$EndNodes\n$Elements\n0 0 0 0\n$EndElements\n");
   // One cube (lattice 1 1 1 0): a tetrahedron listed from a corner first.
   const Graph g(LatticeSize{1, 1, 1, 0});
   const Tet t{Point{0, 0, 0}, Point{2, 0, 0}, Point{0, 2, 0}, Point{0, 0, 2}};
@@ -640,6 +693,20 @@ TEST(D3MeshWriters, MeditReadsBack) {
       EXPECT_EQ((Point{v[4 * k], v[4 * k + 1], v[4 * k + 2]}), tets[i][j]);
       EXPECT_EQ(v[4 * k + 3], static_cast<std::int64_t>(mesh.kind[k]));
     }
+  }
+  // M22: the boundary triangles, outward, each with its component (1).
+  in >> a;
+  EXPECT_EQ(a, "Triangles");
+  EXPECT_EQ(numbers(in, 1).front(), 104);
+  for (std::size_t i = 0; i < 104; ++i) {
+    const std::vector<std::int64_t> e = numbers(in, 4);
+    std::array<Point, 3> tri;
+    for (std::size_t j = 0; j < 3; ++j) {
+      const auto k = static_cast<std::size_t>(e[j] - 1);
+      tri[j] = Point{v[4 * k], v[4 * k + 1], v[4 * k + 2]};
+    }
+    expect_outward_boundary(tets, tri);
+    EXPECT_EQ(e[3], 1);
   }
   in >> a;
   EXPECT_EQ(a, "End");

@@ -35,6 +35,8 @@ bool ends_with(const std::string& s, std::string_view suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
+io::Encoding encoding(const StuffOptions& o) { return o.binary ? io::Encoding::binary : io::Encoding::ascii; }
+
 bool is_surface_path(const std::string& path) { return ends_with(path, ".off") || ends_with(path, ".obj"); }
 
 void check_stuff_path(const std::string& path) {
@@ -184,7 +186,8 @@ Vec3 parse_path(const std::string& text, const stuff::Shape& shape) {
 
 /// --animate N -o OUT.pvd: frames 0..N (frame 0 the shape where it is),
 /// written as OUT_0000.vtu ... beside the .pvd (spec/stuffing.md S15).
-int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>& shape, stuff::StuffOptions so) {
+int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>& shape, stuff::StuffOptions so,
+                OutputSet& outputs) {
   if (o.outputs.size() > 1 || (!o.outputs.empty() && !ends_with(o.outputs[0], ".pvd")))
     throw InputError("--animate writes one .pvd (ParaView's index) with its .vtu frames beside it: give -o FILE.pvd");
   if (o.outputs.empty() && !o.stats) throw InputError("nothing to do: give -o FILE.pvd or --stats");
@@ -202,7 +205,10 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
     std::snprintf(buf, sizeof buf, "_%04d.vtu", k);
     return std::string(buf);
   };
-  OutputSet outputs;
+  if (!pvd.empty()) {  // every file created before the first frame is made
+    for (int k = 0; k <= o.animate; ++k) outputs.open(stem + frame_name(k));
+    outputs.open(pvd);
+  }
   std::vector<std::pair<int, std::string>> frames;  // the .pvd index: timestep, file
   JsonWriter json;
   json.begin_object().key("frames").begin_array();
@@ -214,7 +220,7 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
     const stuff::FrameReport& r = f.report;
     const d3::TetMeshF& mesh = *f.mesh;
     if (!pvd.empty()) {
-      outputs.add(stem + frame_name(k), [&](std::ostream& out) { io::write_vtu(out, mesh); });
+      outputs.add(stem + frame_name(k), [&](std::ostream& out) { io::write_vtu(out, mesh, encoding(o)); });
       frames.emplace_back(k, base + frame_name(k));
     }
     json.begin_object()
@@ -269,6 +275,10 @@ int run(const StuffOptions& o) {
     if (o.outputs.empty() && !o.stats)
       throw InputError("nothing to do: give -o FILE (.vtu, .msh, .mesh, .off, .obj) or --stats");
   }
+  // The outputs' temporaries are created before the work (spec/cli.md).
+  OutputSet outputs;
+  if (o.animate == 0)
+    for (const std::string& path : o.outputs) outputs.open(path);
   const auto t0 = std::chrono::steady_clock::now();
   std::shared_ptr<const stuff::Shape> shape;
   try {
@@ -285,7 +295,7 @@ int run(const StuffOptions& o) {
   settings.lattice.min_level = o.min_level;
   settings.lattice.cells = o.cells;
   if (o.size > 0) settings.lattice.size = o.size;
-  if (o.animate > 0) return run_animate(o, shape, settings.lattice);
+  if (o.animate > 0) return run_animate(o, shape, settings.lattice, outputs);
   if (!o.path.empty() || o.compare) throw InputError("--path and --compare apply with --animate");
   settings.impl = o.impl == "reference" ? stuff::Impl::reference : stuff::Impl::fast;
   settings.statistics = o.stats;
@@ -306,13 +316,15 @@ int run(const StuffOptions& o) {
 
   const auto t = std::chrono::steady_clock::now();
   const d3::TetMeshF& mesh = m.stuffed.mesh;
-  OutputSet outputs;
   for (const std::string& path : o.outputs) {
-    if (ends_with(path, ".vtu")) outputs.add(path, [&](std::ostream& out) { io::write_vtu(out, mesh); });
-    if (ends_with(path, ".msh")) outputs.add(path, [&](std::ostream& out) { io::write_msh(out, mesh); });
+    const bool all = o.surface_vertices == "all";
+    if (ends_with(path, ".vtu")) outputs.add(path, [&](std::ostream& out) { io::write_vtu(out, mesh, encoding(o)); });
+    if (ends_with(path, ".msh")) outputs.add(path, [&](std::ostream& out) { io::write_msh(out, mesh, encoding(o)); });
     if (ends_with(path, ".mesh")) outputs.add(path, [&](std::ostream& out) { io::write_medit(out, mesh); });
-    if (ends_with(path, ".off")) outputs.add(path, [&](std::ostream& out) { io::write_off(out, mesh, m.boundary); });
-    if (ends_with(path, ".obj")) outputs.add(path, [&](std::ostream& out) { io::write_obj(out, mesh, m.boundary); });
+    if (ends_with(path, ".off"))
+      outputs.add(path, [&](std::ostream& out) { io::write_off(out, mesh, m.boundary, all); });
+    if (ends_with(path, ".obj"))
+      outputs.add(path, [&](std::ostream& out) { io::write_obj(out, mesh, m.boundary, all); });
   }
   seconds.emplace_back("write", seconds_since(t));
   if (o.stats) outputs.add("-", stats_text(shape->describe(), m, seconds, o.json));
