@@ -214,7 +214,9 @@ def run_bccmis(bccmis, path, level, strict, args, work, ref, fl):
             if r["volume_check"] == "off":
                 r.update(result="failed", reason="volume off")
     elif status == 2:
-        r.update(result="refused", reason=first_line(se, drop=("bccmis stuff: mesh ",)))
+        # The error line ("bccmis: ..."), not the report of the flaws found before it.
+        errors = [line for line in se.splitlines() if line.startswith("bccmis: ")]
+        r.update(result="refused", reason=errors[-1] if errors else first_line(se, drop=("bccmis stuff: mesh ",)))
     elif status == 1:
         r.update(result="failed", reason="check: " + first_line(se, drop=("bccmis stuff: ",)) or "exit 1")
     else:
