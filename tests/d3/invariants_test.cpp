@@ -40,6 +40,18 @@ void link(Graph& g, const Point& a, const Point& b) {
   g.neighbors[b].insert(a);
 }
 
+// Adds the cell c of `level` and its 8 corners c +- h (as nodes), linked.
+void add_cube(Graph& g, const Point& c, int level, std::int64_t h) {
+  g.C.insert(c);
+  g.level[c] = level;
+  for (const std::int64_t x : {c.x - h, c.x + h})
+    for (const std::int64_t y : {c.y - h, c.y + h})
+      for (const std::int64_t z : {c.z - h, c.z + h}) {
+        g.N.insert({x, y, z});
+        link(g, c, {x, y, z});
+      }
+}
+
 void unlink(Graph& g, const Point& a, const Point& b) {
   g.neighbors[a].erase(b);
   g.neighbors[b].erase(a);
@@ -450,15 +462,7 @@ TEST(D3Layer2, NodeDegreeAboveEight) {
   // lattice 2 2 2 2 (S = 8): a level-2 cell [8, 10]^3 inside the level-0
   // cube (12, 12, 12) gives the interior node (8, 8, 8) a ninth cell.
   Graph g({2, 2, 2, 2});
-  const Point c{9, 9, 9};
-  g.C.insert(c);
-  g.level[c] = 2;
-  for (const std::int64_t x : {8, 10})
-    for (const std::int64_t y : {8, 10})
-      for (const std::int64_t z : {8, 10}) {
-        g.N.insert({x, y, z});
-        link(g, c, {x, y, z});
-      }
+  add_cube(g, {9, 9, 9}, 2, 1);
   const std::optional<Violation> v = find_violation(g);
   expect_violation(v, "node-degree", 2);
   EXPECT_EQ(v->message, "node-degree: node (8, 8, 8) has 9 cells; a node has at most 8");
@@ -530,15 +534,7 @@ TEST(D3Layer4, LevelRange) {
 TEST(D3Layer4, OutsideDomain) {
   // A second level-0 cube stacked on top of lattice 1 1 1 1 (S = 4).
   Graph g({1, 1, 1, 1});
-  const Point c{2, 2, 6};
-  g.C.insert(c);
-  g.level[c] = 0;
-  for (const std::int64_t x : {0, 4})
-    for (const std::int64_t y : {0, 4})
-      for (const std::int64_t z : {4, 8}) {
-        g.N.insert({x, y, z});
-        link(g, c, {x, y, z});
-      }
+  add_cube(g, {2, 2, 6}, 0, 2);
   const std::optional<Violation> v = find_violation(g);
   expect_violation(v, "outside-domain", 4);
   EXPECT_EQ(v->where, std::vector<Point>({{0, 0, 8}}));
