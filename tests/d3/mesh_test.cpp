@@ -265,24 +265,28 @@ TEST(D3Mesh, FiveShapesAndTheirAngles) {
   EXPECT_NEAR(static_cast<double>(hi), 120.0, 1e-9);
 }
 
+// The mesh of g: `count` tetrahedra, 6 times their volumes summing to
+// `det6`, `cases` of each case (spec/mesh3d.md M3-M8), and no problem.
+void expect_mesh(const Graph& g, const Tets& tets, std::size_t count, std::int64_t det6,
+                 const std::map<Case, std::size_t>& cases) {
+  EXPECT_EQ(tets.size(), count);
+  EXPECT_EQ(total_det6(tets), det6);
+  EXPECT_EQ(case_counts(g, tets), cases);
+  EXPECT_EQ(mesh_problem(g, tets), "");
+}
+
 TEST(D3Mesh, OneCube) {
   // spec/mesh3d.md M15: 6 hull faces x 4 segments.
   const Graph g(LatticeSize{1, 1, 1, 0});
   const Tets tets = tetrahedra(g);
-  EXPECT_EQ(tets.size(), 24u);
-  EXPECT_EQ(total_det6(tets), 48);
-  EXPECT_EQ(case_counts(g, tets), (std::map<Case, std::size_t>{{Case::hull, 24}}));
-  EXPECT_EQ(mesh_problem(g, tets), "");
+  expect_mesh(g, tets, 24u, 48, std::map<Case, std::size_t>{{Case::hull, 24}});
 }
 
 TEST(D3Mesh, TwoCubes) {
   // spec/mesh3d.md M16: 4 on the equal face, 10 hull faces x 4.
   const Graph g(LatticeSize{2, 1, 1, 0});
   const Tets tets = tetrahedra(g);
-  EXPECT_EQ(tets.size(), 44u);
-  EXPECT_EQ(total_det6(tets), 96);
-  EXPECT_EQ(case_counts(g, tets), (std::map<Case, std::size_t>{{Case::equal, 4}, {Case::hull, 40}}));
-  EXPECT_EQ(mesh_problem(g, tets), "");
+  expect_mesh(g, tets, 44u, 96, std::map<Case, std::size_t>{{Case::equal, 4}, {Case::hull, 40}});
   // M5: the equal face's tetrahedra are whole BCC tetrahedra, emitted from (1,1,1).
   for (const Tet& t : tets)
     if (case_of(g, t) == Case::equal) {
@@ -297,10 +301,7 @@ TEST(D3Mesh, RefinedRoot) {
   Graph g(LatticeSize{1, 1, 1, 1});
   ASSERT_TRUE(refine(g, {2, 2, 2}).applied());
   const Tets tets = tetrahedra(g);
-  EXPECT_EQ(tets.size(), 144u);
-  EXPECT_EQ(total_det6(tets), 384);
-  EXPECT_EQ(case_counts(g, tets), (std::map<Case, std::size_t>{{Case::equal, 48}, {Case::hull, 96}}));
-  EXPECT_EQ(mesh_problem(g, tets), "");
+  expect_mesh(g, tets, 144u, 384, std::map<Case, std::size_t>{{Case::equal, 48}, {Case::hull, 96}});
 }
 
 TEST(D3Mesh, SplitFace) {
@@ -308,10 +309,8 @@ TEST(D3Mesh, SplitFace) {
   Graph g(LatticeSize{2, 1, 1, 2});
   ASSERT_TRUE(refine(g, {4, 4, 4}).applied());
   const Tets tets = tetrahedra(g);
-  EXPECT_EQ(tets.size(), 168u);
-  EXPECT_EQ(total_det6(tets), 6144);
-  EXPECT_EQ(case_counts(g, tets),
-            (std::map<Case, std::size_t>{{Case::equal, 48}, {Case::coarse, 8}, {Case::fine, 8}, {Case::hull, 104}}));
+  expect_mesh(g, tets, 168u, 6144,
+              std::map<Case, std::size_t>{{Case::equal, 48}, {Case::coarse, 8}, {Case::fine, 8}, {Case::hull, 104}});
   // M6: the coarse side, 8 tetrahedra with apex (8,4,4), one per half edge.
   // M7: 2 per quarter face, with apex (8,4,4) a corner of the fine leaf.
   std::map<Point, std::size_t> fine_per_leaf;

@@ -54,17 +54,18 @@ void expect_counts(const PointSet& Y, const PointSet& J, const char* J_name, con
                        "after " + op);
 }
 
-// Runs op(g) between the checks: g must be valid before, and check(before,
-// g, result) passes after. Strong guarantee: whatever failed after the
-// operation (a violation, an allocation in the checker), the caller gets the
-// graph it passed in.
+// Runs op(g, at) between the checks: g must be valid before, and
+// check(before, g, result, at, text) passes after, `text` being "verb (x, y)".
+// Strong guarantee: whatever failed after the operation (a violation, an
+// allocation in the checker), the caller gets the graph it passed in.
 template <class Op, class Check>
-auto run_checked(Graph& g, const std::string& op_text, Op op, Check check) {
-  validate(g, "before " + op_text);
+auto run_checked(Graph& g, const Point& at, const char* verb, Op op, Check check) {
+  const std::string text = verb + inv::pos(at);
+  validate(g, "before " + text);
   Graph before = g;
-  auto r = op(g);
+  auto r = op(g, at);
   try {
-    check(before, g, r);
+    check(before, g, r, at, text);
   } catch (...) {
     g = std::move(before);  // a move of std::map/std::set members: no allocation
     throw;
@@ -116,21 +117,13 @@ void check_coarsen_result(const Graph& before, const Graph& g, const CoarsenResu
 }  // namespace
 
 RefineResult checked_refine(Graph& g, const Point& c) {
-  const std::string op = "refine " + inv::pos(c);
   return run_checked(
-      g, op, [&](Graph& h) { return refine(h, c); },
-      [&](const Graph& before, const Graph& after, const RefineResult& r) {
-        check_refine_result(before, after, r, c, op);
-      });
+      g, c, "refine ", [](Graph& h, const Point& p) { return refine(h, p); }, check_refine_result);
 }
 
 CoarsenResult checked_coarsen(Graph& g, const Point& n) {
-  const std::string op = "coarsen " + inv::pos(n);
   return run_checked(
-      g, op, [&](Graph& h) { return coarsen(h, n); },
-      [&](const Graph& before, const Graph& after, const CoarsenResult& r) {
-        check_coarsen_result(before, after, r, n, op);
-      });
+      g, n, "coarsen ", [](Graph& h, const Point& p) { return coarsen(h, p); }, check_coarsen_result);
 }
 
 }  // namespace bccmis
