@@ -495,6 +495,13 @@ TetMesh split_face_mesh(Tets* tets) {
   return index_mesh(g, *tets);
 }
 
+// The text `write` makes of mesh.
+std::string written(const TetMesh& mesh, void (*write)(std::ostream&, const TetMesh&)) {
+  std::ostringstream out;
+  write(out, mesh);
+  return out.str();
+}
+
 std::vector<std::int64_t> numbers(std::istream& in, std::size_t count) {
   std::vector<std::int64_t> out(count);
   for (std::int64_t& v : out) in >> v;
@@ -504,9 +511,7 @@ std::vector<std::int64_t> numbers(std::istream& in, std::size_t count) {
 TEST(D3MeshWriters, VtuReadsBack) {
   Tets tets;
   const TetMesh mesh = split_face_mesh(&tets);
-  std::ostringstream out;
-  io::write_vtu(out, mesh);
-  const std::string text = out.str();
+  const std::string text = written(mesh, io::write_vtu);
   EXPECT_NE(text.find("<Piece NumberOfPoints=\"65\" NumberOfCells=\"168\">"), std::string::npos);
   // The six DataArrays in order: kind, level, points, connectivity, offsets, types.
   std::vector<std::vector<std::int64_t>> arrays;
@@ -541,9 +546,7 @@ TEST(D3MeshWriters, VtuReadsBack) {
 TEST(D3MeshWriters, MshReadsBack) {
   Tets tets;
   const TetMesh mesh = split_face_mesh(&tets);
-  std::ostringstream out;
-  io::write_msh(out, mesh);
-  std::istringstream in(out.str());
+  std::istringstream in(written(mesh, io::write_msh));
   std::string word;
   in >> word;
   EXPECT_EQ(word, "$MeshFormat");
@@ -613,9 +616,7 @@ TEST(D3MeshWriters, EmptyAndHandBuiltMeshes) {
 TEST(D3MeshWriters, MeditReadsBack) {
   Tets tets;
   const TetMesh mesh = split_face_mesh(&tets);
-  std::ostringstream out;
-  io::write_medit(out, mesh);
-  std::istringstream in(out.str());
+  std::istringstream in(written(mesh, io::write_medit));
   std::string a, b;
   in >> a >> b;
   EXPECT_EQ(a + ' ' + b, "MeshVersionFormatted 2");
