@@ -9,6 +9,7 @@
 #include <array>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <iterator>
 #include <optional>
 #include <random>
@@ -38,6 +39,14 @@ Graph refined(const LatticeSize& size, const std::vector<Point>& cells) {
 void link(Graph& g, const Point& a, const Point& b) {
   g.neighbors[a].insert(b);
   g.neighbors[b].insert(a);
+}
+
+// Adds the nodes `points`, each linked to every cell of `cells`.
+void add_linked_nodes(Graph& g, std::initializer_list<Point> cells, std::initializer_list<Point> points) {
+  for (const Point& p : points) {
+    g.N.insert(p);
+    for (const Point& c : cells) link(g, c, p);
+  }
 }
 
 // Adds the cell c of `level` and its 8 corners c +- h (as nodes), linked.
@@ -470,8 +479,7 @@ TEST(D3Layer2, NodeDegreeAboveEight) {
 
 TEST(D3Layer2, BoundaryJunctionOnADomainEdge) {
   Graph g({1, 1, 1, 1});
-  g.N.insert({2, 0, 0});  // the midpoint of an edge on a domain edge
-  link(g, {2, 2, 2}, {2, 0, 0});
+  add_linked_nodes(g, {{2, 2, 2}}, {{2, 0, 0}});  // the midpoint of an edge on a domain edge
   const std::optional<Violation> v = find_violation(g);
   expect_violation(v, "boundary-junction", 2);
   EXPECT_EQ(v->where, std::vector<Point>({{2, 2, 2}, {2, 0, 0}}));
@@ -481,10 +489,7 @@ TEST(D3Layer2, BoundaryJunctionOnADomainFace) {
   // lattice 3 3 1 1: the middle cell lists the center of its bottom face,
   // which is in the domain boundary, with the face's four edge midpoints.
   Graph g({3, 3, 1, 1});
-  for (const Point& p : {Point{6, 6, 0}, Point{4, 6, 0}, Point{8, 6, 0}, Point{6, 4, 0}, Point{6, 8, 0}}) {
-    g.N.insert(p);
-    link(g, {6, 6, 2}, p);
-  }
+  add_linked_nodes(g, {{6, 6, 2}}, {{6, 6, 0}, {4, 6, 0}, {8, 6, 0}, {6, 4, 0}, {6, 8, 0}});
   const std::optional<Violation> v = find_violation(g);
   expect_violation(v, "boundary-junction", 2);
   EXPECT_EQ(v->where, std::vector<Point>({{6, 6, 2}, {6, 6, 0}}));
@@ -494,11 +499,7 @@ TEST(D3Layer2, JunctionDegree) {
   // lattice 2 1 1 1: both cells list the center of their shared face and its
   // edge midpoints, but no finer cell has them as corners.
   Graph g({2, 1, 1, 1});
-  for (const Point& p : {Point{4, 2, 2}, Point{4, 0, 2}, Point{4, 4, 2}, Point{4, 2, 0}, Point{4, 2, 4}}) {
-    g.N.insert(p);
-    link(g, {2, 2, 2}, p);
-    link(g, {6, 2, 2}, p);
-  }
+  add_linked_nodes(g, {{2, 2, 2}, {6, 2, 2}}, {{4, 2, 2}, {4, 0, 2}, {4, 4, 2}, {4, 2, 0}, {4, 2, 4}});
   const std::optional<Violation> v = find_violation(g);
   expect_violation(v, "junction-degree", 2);
   EXPECT_EQ(v->where, std::vector<Point>({{2, 2, 2}, {4, 0, 2}}));
