@@ -495,8 +495,9 @@ TetMesh split_face_mesh(Tets* tets) {
   return index_mesh(g, *tets);
 }
 
-// The text `write` makes of mesh.
-std::string written(const TetMesh& mesh, void (*write)(std::ostream&, const TetMesh&)) {
+// The text write(out, mesh) makes.
+template <class Write>
+std::string written(const TetMesh& mesh, Write write) {
   std::ostringstream out;
   write(out, mesh);
   return out.str();
@@ -511,7 +512,7 @@ std::vector<std::int64_t> numbers(std::istream& in, std::size_t count) {
 TEST(D3MeshWriters, VtuReadsBack) {
   Tets tets;
   const TetMesh mesh = split_face_mesh(&tets);
-  const std::string text = written(mesh, io::write_vtu);
+  const std::string text = written(mesh, [](std::ostream& out, const TetMesh& m) { io::write_vtu(out, m); });
   EXPECT_NE(text.find("<Piece NumberOfPoints=\"65\" NumberOfCells=\"168\">"), std::string::npos);
   // The six DataArrays in order: kind, level, points, connectivity, offsets, types.
   std::vector<std::vector<std::int64_t>> arrays;
@@ -546,7 +547,7 @@ TEST(D3MeshWriters, VtuReadsBack) {
 TEST(D3MeshWriters, MshReadsBack) {
   Tets tets;
   const TetMesh mesh = split_face_mesh(&tets);
-  std::istringstream in(written(mesh, io::write_msh));
+  std::istringstream in(written(mesh, [](std::ostream& out, const TetMesh& m) { io::write_msh(out, m); }));
   std::string word;
   in >> word;
   EXPECT_EQ(word, "$MeshFormat");
@@ -616,7 +617,7 @@ TEST(D3MeshWriters, EmptyAndHandBuiltMeshes) {
 TEST(D3MeshWriters, MeditReadsBack) {
   Tets tets;
   const TetMesh mesh = split_face_mesh(&tets);
-  std::istringstream in(written(mesh, io::write_medit));
+  std::istringstream in(written(mesh, [](std::ostream& out, const TetMesh& m) { io::write_medit(out, m); }));
   std::string a, b;
   in >> a >> b;
   EXPECT_EQ(a + ' ' + b, "MeshVersionFormatted 2");
