@@ -265,24 +265,28 @@ TEST(D3Mesh, FiveShapesAndTheirAngles) {
   EXPECT_NEAR(static_cast<double>(hi), 120.0, 1e-9);
 }
 
+// The mesh of g: `count` tetrahedra, 6 times their volumes summing to
+// `det6`, `cases` of each case (spec/mesh3d.md M3-M8), and no problem.
+void expect_mesh(const Graph& g, const Tets& tets, std::size_t count, std::int64_t det6,
+                 const std::map<Case, std::size_t>& cases) {
+  EXPECT_EQ(tets.size(), count);
+  EXPECT_EQ(total_det6(tets), det6);
+  EXPECT_EQ(case_counts(g, tets), cases);
+  EXPECT_EQ(mesh_problem(g, tets), "");
+}
+
 TEST(D3Mesh, OneCube) {
   // spec/mesh3d.md M15: 6 hull faces x 4 segments.
   const Graph g(LatticeSize{1, 1, 1, 0});
   const Tets tets = tetrahedra(g);
-  EXPECT_EQ(tets.size(), 24u);
-  EXPECT_EQ(total_det6(tets), 48);
-  EXPECT_EQ(case_counts(g, tets), (std::map<Case, std::size_t>{{Case::hull, 24}}));
-  EXPECT_EQ(mesh_problem(g, tets), "");
+  expect_mesh(g, tets, 24u, 48, std::map<Case, std::size_t>{{Case::hull, 24}});
 }
 
 TEST(D3Mesh, TwoCubes) {
   // spec/mesh3d.md M16: 4 on the equal face, 10 hull faces x 4.
   const Graph g(LatticeSize{2, 1, 1, 0});
   const Tets tets = tetrahedra(g);
-  EXPECT_EQ(tets.size(), 44u);
-  EXPECT_EQ(total_det6(tets), 96);
-  EXPECT_EQ(case_counts(g, tets), (std::map<Case, std::size_t>{{Case::equal, 4}, {Case::hull, 40}}));
-  EXPECT_EQ(mesh_problem(g, tets), "");
+  expect_mesh(g, tets, 44u, 96, std::map<Case, std::size_t>{{Case::equal, 4}, {Case::hull, 40}});
   // M5: the equal face's tetrahedra are whole BCC tetrahedra, emitted from (1,1,1).
   for (const Tet& t : tets)
     if (case_of(g, t) == Case::equal) {
@@ -297,10 +301,7 @@ TEST(D3Mesh, RefinedRoot) {
   Graph g(LatticeSize{1, 1, 1, 1});
   ASSERT_TRUE(refine(g, {2, 2, 2}).applied());
   const Tets tets = tetrahedra(g);
-  EXPECT_EQ(tets.size(), 144u);
-  EXPECT_EQ(total_det6(tets), 384);
-  EXPECT_EQ(case_counts(g, tets), (std::map<Case, std::size_t>{{Case::equal, 48}, {Case::hull, 96}}));
-  EXPECT_EQ(mesh_problem(g, tets), "");
+  expect_mesh(g, tets, 144u, 384, std::map<Case, std::size_t>{{Case::equal, 48}, {Case::hull, 96}});
 }
 
 TEST(D3Mesh, SplitFace) {
@@ -308,10 +309,8 @@ TEST(D3Mesh, SplitFace) {
   Graph g(LatticeSize{2, 1, 1, 2});
   ASSERT_TRUE(refine(g, {4, 4, 4}).applied());
   const Tets tets = tetrahedra(g);
-  EXPECT_EQ(tets.size(), 168u);
-  EXPECT_EQ(total_det6(tets), 6144);
-  EXPECT_EQ(case_counts(g, tets),
-            (std::map<Case, std::size_t>{{Case::equal, 48}, {Case::coarse, 8}, {Case::fine, 8}, {Case::hull, 104}}));
+  expect_mesh(g, tets, 168u, 6144,
+              std::map<Case, std::size_t>{{Case::equal, 48}, {Case::coarse, 8}, {Case::fine, 8}, {Case::hull, 104}});
   // M6: the coarse side, 8 tetrahedra with apex (8,4,4), one per half edge.
   // M7: 2 per quarter face, with apex (8,4,4) a corner of the fine leaf.
   std::map<Point, std::size_t> fine_per_leaf;
@@ -496,6 +495,14 @@ TetMesh split_face_mesh(Tets* tets) {
   return index_mesh(g, *tets);
 }
 
+// The text write(out, mesh) makes.
+template <class Write>
+std::string written(const TetMesh& mesh, Write write) {
+  std::ostringstream out;
+  write(out, mesh);
+  return out.str();
+}
+
 std::vector<std::int64_t> numbers(std::istream& in, std::size_t count) {
   std::vector<std::int64_t> out(count);
   for (std::int64_t& v : out) in >> v;
@@ -505,9 +512,7 @@ std::vector<std::int64_t> numbers(std::istream& in, std::size_t count) {
 TEST(D3MeshWriters, VtuReadsBack) {
   Tets tets;
   const TetMesh mesh = split_face_mesh(&tets);
-  std::ostringstream out;
-  io::write_vtu(out, mesh);
-  const std::string text = out.str();
+  const std::string text = written(mesh, [](std::ostream& out, const TetMesh& m) { io::write_vtu(out, m); });
   EXPECT_NE(text.find("<Piece NumberOfPoints=\"65\" NumberOfCells=\"168\">"), std::string::npos);
   // The six DataArrays in order: kind, level, points, connectivity, offsets, types.
   std::vector<std::vector<std::int64_t>> arrays;
@@ -574,9 +579,7 @@ void expect_outward_boundary(const Tets& tets, const std::array<Point, 3>& tri) 
 TEST(D3MeshWriters, MshReadsBack) {
   Tets tets;
   const TetMesh mesh = split_face_mesh(&tets);
-  std::ostringstream out;
-  io::write_msh(out, mesh);
-  std::istringstream in(out.str());
+  std::istringstream in(written(mesh, [](std::ostream& out, const TetMesh& m) { io::write_msh(out, m); }));
   std::string word;
   in >> word;
   EXPECT_EQ(word, "$MeshFormat");
@@ -667,9 +670,7 @@ TEST(D3MeshWriters, EmptyAndHandBuiltMeshes) {
 TEST(D3MeshWriters, MeditReadsBack) {
   Tets tets;
   const TetMesh mesh = split_face_mesh(&tets);
-  std::ostringstream out;
-  io::write_medit(out, mesh);
-  std::istringstream in(out.str());
+  std::istringstream in(written(mesh, [](std::ostream& out, const TetMesh& m) { io::write_medit(out, m); }));
   std::string a, b;
   in >> a >> b;
   EXPECT_EQ(a + ' ' + b, "MeshVersionFormatted 2");

@@ -236,6 +236,29 @@ class Checker {
 // ---------------------------------------------------------------------------
 // The shape.
 
+// n points uniform on the triangles by area (area_sum: the running sums of
+// their areas), drawn from `seed`.
+std::vector<Vec3> sample_triangles(const std::vector<std::array<Point, 3>>& triangles,
+                                   const std::vector<double>& area_sum, std::size_t n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Vec3> out;
+  out.reserve(n);
+  const double total = area_sum.back();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double pick = u(rng) * total;
+    const auto it = std::upper_bound(area_sum.begin(), area_sum.end(), pick);
+    const std::size_t t = std::min<std::size_t>(static_cast<std::size_t>(it - area_sum.begin()), area_sum.size() - 1);
+    // Uniform on the triangle: sqrt of one variable, the other linear.
+    const double r = std::sqrt(u(rng)), w = u(rng);
+    const auto& [a, b, c] = triangles[t];
+    const double ca = 1 - r, cb = r * (1 - w), cc = r * w;
+    out.push_back({ca * a.x() + cb * b.x() + cc * c.x(), ca * a.y() + cb * b.y() + cc * c.y(),
+                   ca * a.z() + cb * b.z() + cc * c.z()});
+  }
+  return out;
+}
+
 class MeshShape final : public Shape {
  public:
   MeshShape(const Soup& s, const std::string& name) : name_(basename_of(name)) {
@@ -337,24 +360,7 @@ class MeshShape final : public Shape {
   double volume() const override { return volume_; }
 
   std::vector<Vec3> sample_surface(std::size_t n, std::uint64_t seed) const override {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> u(0, 1);
-    std::vector<Vec3> out;
-    out.reserve(n);
-    const double total = area_sum_.back();
-    for (std::size_t i = 0; i < n; ++i) {
-      const double pick = u(rng) * total;
-      const auto it = std::upper_bound(area_sum_.begin(), area_sum_.end(), pick);
-      const std::size_t t =
-          std::min<std::size_t>(static_cast<std::size_t>(it - area_sum_.begin()), area_sum_.size() - 1);
-      // Uniform on the triangle: sqrt of one variable, the other linear.
-      const double r = std::sqrt(u(rng)), w = u(rng);
-      const auto& [a, b, c] = triangles_[t];
-      const double ca = 1 - r, cb = r * (1 - w), cc = r * w;
-      out.push_back({ca * a.x() + cb * b.x() + cc * c.x(), ca * a.y() + cb * b.y() + cc * c.y(),
-                     ca * a.z() + cb * b.z() + cc * c.z()});
-    }
-    return out;
+    return sample_triangles(triangles_, area_sum_, n, seed);
   }
 
   std::string describe() const override {
@@ -802,23 +808,7 @@ class SoupShape final : public Shape {
   }
 
   std::vector<Vec3> sample_surface(std::size_t n, std::uint64_t seed) const override {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> u(0, 1);
-    std::vector<Vec3> out;
-    out.reserve(n);
-    const double total = area_sum_.back();
-    for (std::size_t i = 0; i < n; ++i) {
-      const double pick = u(rng) * total;
-      const auto it = std::upper_bound(area_sum_.begin(), area_sum_.end(), pick);
-      const std::size_t t =
-          std::min<std::size_t>(static_cast<std::size_t>(it - area_sum_.begin()), area_sum_.size() - 1);
-      const double r = std::sqrt(u(rng)), w = u(rng);
-      const auto& [a, b, c] = triangles_[t];
-      const double ca = 1 - r, cb = r * (1 - w), cc = r * w;
-      out.push_back({ca * a.x() + cb * b.x() + cc * c.x(), ca * a.y() + cb * b.y() + cc * c.y(),
-                     ca * a.z() + cb * b.z() + cc * c.z()});
-    }
-    return out;
+    return sample_triangles(triangles_, area_sum_, n, seed);
   }
 
   std::string describe() const override {
