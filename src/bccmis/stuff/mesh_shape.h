@@ -24,6 +24,7 @@
 #include <utility>
 #include <vector>
 
+#include "bccmis/stuff/normalisation.h"
 #include "bccmis/stuff/shape.h"
 #include "bccmis/stuff/soup_report.h"
 #include "bccmis/stuff/statistics.h"
@@ -41,6 +42,8 @@ struct Settings {
   /// counts flaws is refused with the first one's message, as
   /// load_mesh_file(path, true) refuses it when reading.
   bool strict = false;
+  /// The memory a run may take (S25); unset: MemAvailable of /proc/meminfo.
+  std::optional<double> memory_limit;
 };
 
 /// One line of news for a person watching ("12,345 leaves (0.5 s)").
@@ -68,11 +71,18 @@ class CheckError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// S2-S13 on `shape`. Throws ShapeError when the lattice cannot be fitted
+/// S2-S13 on `shape`, in the local coordinates of S24 (the mesh, the fit and
+/// the statistics reported in the shape's own). Throws ShapeError when the lattice cannot be fitted
 /// (S2's refusals), when a soup's mesh has no tetrahedron ("<file>: encloses
 /// no volume ...", S21) or, with Settings::strict, when the shape's soup
 /// report has flaws; CheckError when Settings::check finds a problem.
 Meshed mesh_shape(const Shape& shape, const Settings& settings, const Progress& progress = {});
+
+/// S24's map back: every vertex of `mesh` (made in n's local coordinates)
+/// to world coordinates. Throws ShapeError when a coordinate overflows or,
+/// when n translates, a tetrahedron is no longer positively oriented once
+/// rounded (`h`, the finest side in world units, for the message).
+void to_world(d3::TetMeshF& mesh, const Normalisation& n, double h);
 
 /// The shape a user names: a triangle mesh file (.off, .obj, .stl), read
 /// through CGAL (ShapeError naming the file when this build has no CGAL or

@@ -9,6 +9,8 @@
 #include <numbers>
 #include <random>
 
+#include "bccmis/stuff/normalisation.h"
+
 namespace bccmis::stuff {
 namespace {
 
@@ -65,6 +67,9 @@ class Sphere final : public Shape {
     return out;
   }
   std::string describe() const override { return fmt("sphere", {{"r", r_}}); }
+  std::unique_ptr<Shape> normalised(const Normalisation& n) const override {
+    return std::make_unique<Sphere>(n.to_local(c_), std::ldexp(r_, -n.exponent));
+  }
 
  private:
   Vec3 c_;
@@ -102,6 +107,9 @@ class Torus final : public Shape {
     return out;
   }
   std::string describe() const override { return fmt("torus", {{"R", R_}, {"r", r_}}); }
+  std::unique_ptr<Shape> normalised(const Normalisation& n) const override {
+    return std::make_unique<Torus>(n.to_local(c_), std::ldexp(R_, -n.exponent), std::ldexp(r_, -n.exponent));
+  }
 
  private:
   Vec3 c_;
@@ -145,6 +153,9 @@ class Spheres final : public Shape {
     return out;
   }
   std::string describe() const override { return fmt("spheres", {{"r", r_}, {"d", norm(sub(ca_, cb_))}}); }
+  std::unique_ptr<Shape> normalised(const Normalisation& n) const override {
+    return std::make_unique<Spheres>(n.to_local(ca_), n.to_local(cb_), std::ldexp(r_, -n.exponent));
+  }
 
  private:
   Sphere a_, b_;
@@ -171,6 +182,10 @@ class Translated final : public Shape {
     return out;
   }
   std::string describe() const override { return s_->describe(); }
+  // S24: (x - d) - (t - d) is x - t.
+  std::unique_ptr<Shape> normalised(const Normalisation& n) const override {
+    return s_->normalised({sub(n.translation, d_), n.exponent});
+  }
 
  private:
   std::shared_ptr<const Shape> s_;

@@ -43,6 +43,17 @@ Statistics statistics(const Shape& shape, const d3::TetMeshF& mesh,
   s.shape_volume = shape.volume();
   s.vertices = mesh.vertices.size();
   s.tetrahedra = mesh.tets.size();
+  s.relative_volume_error = (s.quality.volume - s.shape_volume) / s.shape_volume;
+  return s;
+}
+
+Statistics to_world(Statistics s, const Normalisation& n) {
+  const auto length = [&](double x) { return std::ldexp(x, n.exponent); };
+  const auto volume = [&](double x) { return std::ldexp(x, 3 * n.exponent); };
+  s.hausdorff.from_boundary = length(s.hausdorff.from_boundary);
+  if (s.hausdorff.from_surface >= 0) s.hausdorff.from_surface = length(s.hausdorff.from_surface);
+  s.quality.volume = volume(s.quality.volume);
+  s.shape_volume = volume(s.shape_volume);
   return s;
 }
 

@@ -42,6 +42,7 @@
 #include "bccmis/io/stl.h"
 #include "bccmis/io/triangle_soup.h"
 #include "bccmis/soup/winding_number.h"
+#include "bccmis/stuff/normalisation.h"
 #include "bccmis/stuff/soup_report.h"
 
 namespace bccmis::stuff {
@@ -862,11 +863,41 @@ class SoupShape final : public Shape {
   std::vector<double> area_sum_;
 };
 
+/// S24: the normalisation of the box of the vertices the faces use (the
+/// box both shapes report), after Checker::basics.
+Normalisation normalisation_of_soup(const Soup& s, const std::string& name) {
+  Bounds box{s.vertices[s.triangles.at(0)[0]], s.vertices[s.triangles.at(0)[0]]};
+  for (const Tri& t : s.triangles)
+    for (auto v : t)
+      for (std::size_t k = 0; k < 3; ++k) {
+        box.lo[k] = std::min(box.lo[k], s.vertices[v][k]);
+        box.hi[k] = std::max(box.hi[k], s.vertices[v][k]);
+      }
+  try {
+    return normalisation_of(box);
+  } catch (const ShapeError& e) {
+    throw ShapeError(name + ": " + e.what());
+  }
+}
+
+/// The soup in S24's local coordinates.
+Soup normalised_soup(Soup s, const Normalisation& n) {
+  for (Vec3& v : s.vertices) v = n.to_local(v);
+  return s;
+}
+
+std::unique_ptr<Shape> local_soup_shape_of(const Soup& s, const std::string& name, bool force_soup);
+
 /// The default path (S21): the refusals of both modes, then today's shape
 /// when today's checks pass, else the soup's.
-std::unique_ptr<Shape> soup_shape_of(const Soup& s, const std::string& name, bool force_soup) {
+std::unique_ptr<Shape> soup_shape_of(const Soup& world, const std::string& name, bool force_soup) {
+  Checker(world, name).basics();
+  const Normalisation n = normalisation_of_soup(world, name);
+  return placed(local_soup_shape_of(normalised_soup(world, n), name, force_soup), n);
+}
+
+std::unique_ptr<Shape> local_soup_shape_of(const Soup& s, const std::string& name, bool force_soup) {
   const Checker checker(s, name);
-  checker.basics();
   if (!force_soup) {
     try {
       checker.run();
@@ -884,9 +915,12 @@ std::unique_ptr<Shape> soup_shape_of(const Soup& s, const std::string& name, boo
   return std::make_unique<SoupShape>(s, inspect(s, name), name);
 }
 
-std::unique_ptr<Shape> shape_of(const Soup& s, const std::string& name) {
+std::unique_ptr<Shape> shape_of(const Soup& world, const std::string& name) {
+  Checker(world, name).basics();
+  const Normalisation n = normalisation_of_soup(world, name);
+  const Soup s = normalised_soup(world, n);
   Checker(s, name).run();
-  return std::make_unique<MeshShape>(s, name);
+  return placed(std::make_unique<MeshShape>(s, name), n);
 }
 
 }  // namespace
