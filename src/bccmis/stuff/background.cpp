@@ -53,8 +53,8 @@ Fit fit_lattice(const Bounds& box, const StuffOptions& options) {
   // S2: the fast lattice names its records by 31-bit ids (lattice3d.md).
   constexpr double kLimit = 2147483648.0;  // 2^31
   const double cubes = static_cast<double>(counts[0]) * static_cast<double>(counts[1]) * static_cast<double>(counts[2]);
-  const double nodes = static_cast<double>(counts[0] + 1) * static_cast<double>(counts[1] + 1) *
-                       static_cast<double>(counts[2] + 1);
+  const double nodes =
+      static_cast<double>(counts[0] + 1) * static_cast<double>(counts[1] + 1) * static_cast<double>(counts[2] + 1);
   if (cubes >= kLimit || nodes >= kLimit)
     throw ShapeError("the initial lattice of " + std::to_string(counts[0]) + " x " + std::to_string(counts[1]) + " x " +
                      std::to_string(counts[2]) +

@@ -21,8 +21,8 @@ using detail::Clock;
 using detail::seconds_since;
 std::string number(double x) { return JsonWriter::number(x); }
 
-/// S26: the finest side against the box's thinnest extent e, and the level
-/// whose side is at most e / 4.
+}  // namespace
+
 std::string empty_mesh_hint(const Bounds& box, const Fit& fit) {
   double e = box.hi[0] - box.lo[0];
   for (std::size_t i = 1; i < 3; ++i) e = std::min(e, box.hi[i] - box.lo[i]);
@@ -32,7 +32,6 @@ std::string empty_mesh_hint(const Bounds& box, const Fit& fit) {
          " against the thinnest extent of the shape's box " + number(e) + "); -L " + std::to_string(level) +
          " would resolve it";
 }
-}  // namespace
 
 std::unique_ptr<Shape> load_mesh_file(const std::string& path, bool strict) {
 #if BCCMIS_HAVE_STUFF_SURFACE
@@ -133,8 +132,8 @@ void to_world(d3::TetMeshF& mesh, const Normalisation& n, double h) {
       const double m = std::max({std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
       throw ShapeError("a tetrahedron near (" + number(p[0]) + ", " + number(p[1]) + ", " + number(p[2]) +
                        ") is flat once written: coordinates of magnitude " + number(m) + " are spaced " +
-                       number(std::nextafter(m, HUGE_VAL) - m) + " apart, too coarse for the finest side " +
-                       number(h) + "; use a coarser level or move the shape nearer the origin");
+                       number(std::nextafter(m, HUGE_VAL) - m) + " apart, too coarse for the finest side " + number(h) +
+                       "; use a coarser level or move the shape nearer the origin");
     }
 }
 

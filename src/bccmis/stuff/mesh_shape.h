@@ -84,6 +84,11 @@ Meshed mesh_shape(const Shape& shape, const Settings& settings, const Progress& 
 /// rounded (`h`, the finest side in world units, for the message).
 void to_world(d3::TetMeshF& mesh, const Normalisation& n, double h);
 
+/// S26's message for an empty mesh: the finest side of `fit` against the
+/// thinnest extent of `box` (both in world units), and the level whose
+/// finest side is at most a quarter of it.
+std::string empty_mesh_hint(const Bounds& box, const Fit& fit);
+
 /// The shape a user names: a triangle mesh file (.off, .obj, .stl), read
 /// through CGAL (ShapeError naming the file when this build has no CGAL or
 /// the file is refused). By default any soup that parses and has a face

@@ -51,9 +51,7 @@ class NormalisedView final : public Shape {
   double signed_distance(const Vec3& p) const override { return down(s_.signed_distance(n_.to_world(p))); }
   double distance(const Vec3& p) const override { return down(s_.distance(n_.to_world(p))); }
   int side(const Vec3& p) const override { return s_.side(n_.to_world(p)); }
-  double crossing(const Vec3& a, const Vec3& b) const override {
-    return s_.crossing(n_.to_world(a), n_.to_world(b));
-  }
+  double crossing(const Vec3& a, const Vec3& b) const override { return s_.crossing(n_.to_world(a), n_.to_world(b)); }
   Bounds bounds() const override {
     const Bounds b = s_.bounds();
     return {n_.to_local(b.lo), n_.to_local(b.hi)};

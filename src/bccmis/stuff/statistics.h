@@ -16,10 +16,12 @@
 
 namespace bccmis::stuff {
 
-/// S13: the Hausdorff distance, sampled both ways.
+/// S13: the Hausdorff distance, sampled both ways (a lower bound of the exact one).
 struct Hausdorff {
-  double from_boundary = 0;  ///< max |f| over 7 points of every boundary triangle
-  double from_surface = -1;  ///< max distance of 20,000 surface samples to the boundary (-1: not computed)
+  double from_boundary = 0;         ///< max |f| over 7 points of every boundary triangle
+  double from_surface = -1;         ///< max distance of 20,000 surface samples to the boundary (-1: not computed)
+  std::size_t boundary_points = 0;  ///< the points of the boundary sampled (7 a triangle)
+  std::size_t surface_samples = 0;  ///< the surface samples (0: not computed)
   double max() const { return std::max(from_boundary, from_surface); }
 };
 
