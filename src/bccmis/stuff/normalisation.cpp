@@ -2,10 +2,18 @@
 #include "bccmis/stuff/normalisation.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <string>
 
 namespace bccmis::stuff {
+
+namespace {
+std::string shortest(double x) {
+  char buf[32];
+  return std::string(buf, std::to_chars(buf, buf + sizeof buf, x).ptr);
+}
+}  // namespace
 
 Vec3 Normalisation::to_local(const Vec3& p) const {
   return {std::ldexp(p[0] - translation[0], -exponent), std::ldexp(p[1] - translation[1], -exponent),
@@ -24,8 +32,8 @@ Normalisation normalisation_of(const Bounds& box) {
       throw ShapeError("the shape's bounding box is empty or not finite");
     const double extent = box.hi[i] - box.lo[i];
     if (!std::isfinite(extent))
-      throw ShapeError("the shape's extent overflows a double (from " + std::to_string(box.lo[i]) + " to " +
-                       std::to_string(box.hi[i]) + " along axis " + std::to_string(i) + ")");
+      throw ShapeError("the shape's extent along axis " + std::to_string(i) + " overflows a double (from " +
+                       shortest(box.lo[i]) + " to " + shortest(box.hi[i]) + ")");
     E = std::max(E, extent);
   }
   if (!(E > 0)) throw ShapeError("the shape's bounding box has no extent");
