@@ -42,3 +42,15 @@ if(TARGET bccmis::stuff_surface)
   bccmis_cli_test(stuff_slab_empty 2 ARGS stuff ${_extreme}/slab.off -L 3 -o x.vtu
                   STDERR_REGEX "slab.off: 12 triangles: the mesh is empty: bad input for this level \\(the finest cell side [0-9.]+ against the thinnest extent of the shape's box 0\\.002\\); -L [0-9]+ would resolve it")
 endif()
+if(TARGET bccmis::stuff_surface)
+  # S27: a lost component is an error; a changed topology a warning (an error
+  # under --check). CGAL's elephant (one closed surface) gives 3 boundary
+  # components at -L 3.
+  bccmis_cli_test(stuff_lost_component 2 ARGS stuff ${_extreme}/two_octahedra.off -L 3 -o x.vtu
+                  STDERR_REGEX "two_octahedra.off: 16 triangles: a component is lost: the mesh's boundary has 1 component where the shape's surface has 2: bad input for this level")
+  bccmis_cli_test(stuff_changed_topology 0 ARGS stuff ${bccmis_cgal_data}/data/meshes/elephant.off -L 3 --stats
+                  STDERR_REGEX "warning: the mesh's boundary has 3 components where the shape's surface has 1"
+                  STDOUT_REGEX "boundary_components 3\n.*warning the mesh's boundary has 3 components where the shape's surface has 1\n")
+  bccmis_cli_test(stuff_changed_topology_check 1 ARGS stuff ${bccmis_cgal_data}/data/meshes/elephant.off -L 3 --check -o x.vtu
+                  STDERR_REGEX "the mesh's boundary has 3 components where the shape's surface has 1")
+endif()

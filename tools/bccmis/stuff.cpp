@@ -119,7 +119,9 @@ std::string stats_text(const std::string& shape, const stuff::Meshed& m, const s
                                                         {"warped", m.stuffed.warped},
                                                         {"vertices", s.vertices},
                                                         {"tetrahedra", s.tetrahedra},
-                                                        {"boundary_triangles", q.boundary_triangles}};
+                                                        {"boundary_triangles", q.boundary_triangles},
+                                                        {"boundary_components", m.topology.boundary_components},
+                                                        {"nonmanifold_edges", m.topology.nonmanifold_edges}};
   if (json) {
     JsonWriter w;
     w.begin_object().member("shape", shape);
@@ -143,6 +145,9 @@ std::string stats_text(const std::string& shape, const stuff::Meshed& m, const s
         .member("surface_samples", h.surface_samples)
         .end_object();
     w.member("min_dihedral", q.min_dihedral).member("max_dihedral", q.max_dihedral).member("below10", s.below10());
+    w.member("boundary_euler", m.topology.boundary_euler).key("warnings").begin_array();
+    for (const std::string& warning : m.warnings) w.value(warning);
+    w.end_array();
     if (m.soup) soup_json(w, *m.soup);
     w.key("dihedral_histogram").begin_object();
     for (std::size_t k = 0; k < q.histogram.size(); ++k) w.member(std::to_string(15 * k), q.histogram[k]);
@@ -166,6 +171,8 @@ std::string stats_text(const std::string& shape, const stuff::Meshed& m, const s
          "\n";
   for (std::size_t k = 0; k < q.histogram.size(); ++k)
     if (q.histogram[k] != 0) out += "dihedral_" + std::to_string(15 * k) + " " + std::to_string(q.histogram[k]) + "\n";
+  out += "boundary_euler " + std::to_string(m.topology.boundary_euler) + "\n";
+  for (const std::string& warning : m.warnings) out += "warning " + warning + "\n";
   if (m.soup) out += soup_text(*m.soup);
   for (const auto& [phase, t] : seconds) out += "seconds_" + phase + " " + number(t) + "\n";
   return out;
@@ -317,6 +324,8 @@ int run(const StuffOptions& o) {
     throw CheckFailure(e.what());
   }
   seconds.insert(seconds.end(), m.seconds.begin(), m.seconds.end());
+  if (!o.quiet)
+    for (const std::string& warning : m.warnings) std::cerr << "bccmis stuff: warning: " << warning << "\n";
 
   const auto t = std::chrono::steady_clock::now();
   const d3::TetMeshF& mesh = m.stuffed.mesh;

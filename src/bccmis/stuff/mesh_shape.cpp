@@ -23,12 +23,12 @@ std::string number(double x) { return JsonWriter::number(x); }
 
 }  // namespace
 
-std::string empty_mesh_hint(const Bounds& box, const Fit& fit) {
+std::string level_hint(const Bounds& box, const Fit& fit) {
   double e = box.hi[0] - box.lo[0];
   for (std::size_t i = 1; i < 3; ++i) e = std::min(e, box.hi[i] - box.lo[i]);
   int level = fit.size.L;
   for (double h = fit.h; h > e / 4 && level < 64; h /= 2) ++level;
-  return "the mesh is empty: bad input for this level (the finest cell side " + number(fit.h) +
+  return "bad input for this level (the finest cell side " + number(fit.h) +
          " against the thinnest extent of the shape's box " + number(e) + "); -L " + std::to_string(level) +
          " would resolve it";
 }
@@ -107,9 +107,26 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
   if (r.soup && r.soup->flaw_count() > 0 && r.stuffed.mesh.tets.empty())
     throw ShapeError(r.soup->file + ": encloses no volume (the winding number is below 1/2 at every lattice vertex)");
   // S26: an empty mesh is bad input for this level.
-  if (r.stuffed.mesh.tets.empty()) throw ShapeError(world.describe() + ": " + empty_mesh_hint(world.bounds(), r.fit));
+  if (r.stuffed.mesh.tets.empty())
+    throw ShapeError(world.describe() + ": the mesh is empty: " + level_hint(world.bounds(), r.fit));
   const auto t1 = Clock::now();
   r.boundary = boundary_triangles(r.stuffed.mesh);
+  // S27: what the mesh is against what the shape is.
+  r.topology = topology(r.stuffed.mesh, r.boundary);
+  if (const auto want = shape.surface_components()) {
+    const std::size_t got = r.topology.boundary_components;
+    const std::string counts = "the mesh's boundary has " + std::to_string(got) + " component" + (got == 1 ? "" : "s") +
+                               " where the shape's surface has " + std::to_string(*want);
+    if (got < *want)
+      throw ShapeError(world.describe() + ": a component is lost: " + counts +
+                       ": bad input for this level (a part thinner than about 2 finest cell sides, 2 x " +
+                       number(r.fit.h) + ", may vanish; each level further halves that)");
+    if (got > *want) r.warnings.push_back(counts);
+  }
+  if (r.topology.nonmanifold_edges > 0)
+    r.warnings.push_back("the mesh's boundary has " + std::to_string(r.topology.nonmanifold_edges) +
+                         " non-manifold edges (parts meeting along a lattice edge; a finer level separates them)");
+  if (settings.check && !r.warnings.empty()) throw CheckError(world.describe() + ": " + r.warnings.front());
   if (settings.check)
     if (auto why = find_stuffed_problem(shape, fit, r.stuffed.mesh)) throw CheckError(world.describe() + ": " + *why);
   if (settings.statistics) r.statistics = to_world(statistics(shape, r.stuffed.mesh, r.boundary), n);

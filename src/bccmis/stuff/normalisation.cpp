@@ -72,6 +72,7 @@ class NormalisedView final : public Shape {
   }
   const SoupReport* soup_report() const override { return s_.soup_report(); }
   std::string describe() const override { return s_.describe(); }
+  std::optional<std::size_t> surface_components() const override { return s_.surface_components(); }
 
  private:
   double down(double d) const { return std::ldexp(d, -n_.exponent); }
@@ -101,6 +102,7 @@ class Placed final : public Shape {
   }
   const SoupReport* soup_report() const override { return local_->soup_report(); }
   std::string describe() const override { return local_->describe(); }
+  std::optional<std::size_t> surface_components() const override { return local_->surface_components(); }
   std::unique_ptr<Shape> normalised(const Normalisation& n) const override {
     return n == n_ ? view_normalised(*local_, Normalisation{}) : view_normalised(*this, n);
   }

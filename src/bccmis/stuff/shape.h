@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -63,6 +64,9 @@ class Shape {
   /// computation sees a number far outside [2^-60, 2^60]. The result may
   /// refer to this shape, which must outlive it.
   virtual std::unique_ptr<Shape> normalised(const Normalisation& n) const;
+  /// The number of connected components of the surface, when the shape
+  /// knows it (S27): the built-in shapes and clean triangle meshes.
+  virtual std::optional<std::size_t> surface_components() const { return std::nullopt; }
   /// One line naming the shape for messages and --stats ("sphere r=1", "mesh elephant.off: 2775 triangles").
   virtual std::string describe() const = 0;
 };

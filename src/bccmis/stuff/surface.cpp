@@ -237,7 +237,8 @@ class Checker {
 
 class MeshShape final : public Shape {
  public:
-  MeshShape(const Soup& s, const std::string& name) : name_(basename_of(name)) {
+  MeshShape(const Soup& s, const std::string& name)
+      : name_(basename_of(name)), surface_components_(edge_components(s.triangles).count) {
     std::vector<Mesh::Vertex_index> vs;
     vs.reserve(s.vertices.size());
     for (const auto& p : s.vertices) vs.push_back(mesh_.add_vertex(Point(p[0], p[1], p[2])));
@@ -359,6 +360,7 @@ class MeshShape final : public Shape {
   std::string describe() const override {
     return "mesh " + name_ + ": " + std::to_string(triangles_.size()) + " triangles";
   }
+  std::optional<std::size_t> surface_components() const override { return surface_components_; }
 
   const SoupReport* soup_report() const override { return report_ ? &*report_ : nullptr; }
   /// The default path's report of a clean file (S21): its notes filled here.
@@ -384,6 +386,7 @@ class MeshShape final : public Shape {
  private:
   std::optional<SoupReport> report_;
   std::string name_;
+  std::size_t surface_components_ = 0;
   Mesh mesh_;
   Tree tree_;
   std::optional<Side> side_;
