@@ -54,3 +54,7 @@ if(TARGET bccmis::stuff_surface)
   bccmis_cli_test(stuff_changed_topology_check 1 ARGS stuff ${bccmis_cgal_data}/data/meshes/elephant.off -L 3 --check -o x.vtu
                   STDERR_REGEX "the mesh's boundary has 3 components where the shape's surface has 1")
 endif()
+
+# S24's map: exactness of the translation, the scale, and a tiny sphere as
+# the unit sphere scaled, coordinate for coordinate.
+bccmis_add_gtest(stuff_normalisation_tests SOURCES normalisation_test.cpp LIBS bccmis::stuffing LABELS unit)
