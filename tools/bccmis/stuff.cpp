@@ -126,21 +126,35 @@ std::string stats_text(const std::string& shape, const stuff::Meshed& m, const s
                                                         {"warped", m.stuffed.warped},
                                                         {"vertices", s.vertices},
                                                         {"tetrahedra", s.tetrahedra},
-                                                        {"boundary_triangles", q.boundary_triangles}};
+                                                        {"boundary_triangles", q.boundary_triangles},
+                                                        {"boundary_components", m.topology.boundary_components},
+                                                        {"nonmanifold_edges", m.topology.nonmanifold_edges}};
   if (json) {
     JsonWriter w;
     w.begin_object().member("shape", shape);
     for (const auto& [name, n] : counts) w.member(name, n);
-    w.member("volume", q.volume)
-        .member("shape_volume", s.shape_volume)
-        .member("volume_rel_error", s.volume_rel_error());
+    // A volume that overflows a double (S24) is null.
+    const auto finite_or_null = [&](const char* key, double x) {
+      w.key(key);
+      std::isfinite(x) ? w.value(x) : w.null();
+    };
+    finite_or_null("volume", q.volume);
+    finite_or_null("shape_volume", s.shape_volume);
+    w.member("volume_rel_error", s.volume_rel_error());
     w.key("hausdorff").begin_object().member("from_boundary", h.from_boundary).key("from_surface");
     if (h.from_surface < 0)
       w.null();
     else
       w.value(h.from_surface);
-    w.member("max", h.max()).end_object();
+    w.member("max", h.max())
+        .member("sampled", true)
+        .member("boundary_points", h.boundary_points)
+        .member("surface_samples", h.surface_samples)
+        .end_object();
     w.member("min_dihedral", q.min_dihedral).member("max_dihedral", q.max_dihedral).member("below10", s.below10());
+    w.member("boundary_euler", m.topology.boundary_euler).key("warnings").begin_array();
+    for (const std::string& warning : m.warnings) w.value(warning);
+    w.end_array();
     if (m.soup) soup_json(w, *m.soup);
     w.key("dihedral_histogram").begin_object();
     for (std::size_t k = 0; k < q.histogram.size(); ++k) w.member(std::to_string(15 * k), q.histogram[k]);
@@ -158,10 +172,14 @@ std::string stats_text(const std::string& shape, const stuff::Meshed& m, const s
   out += "volume " + number(q.volume) + "\nshape_volume " + number(s.shape_volume) + "\nvolume_rel_error " +
          number(s.volume_rel_error()) + "\nhausdorff_from_boundary " + number(h.from_boundary) +
          "\nhausdorff_from_surface " + (h.from_surface < 0 ? std::string("-") : number(h.from_surface)) +
-         "\nhausdorff " + number(h.max()) + "\nmin_dihedral " + number(q.min_dihedral) + "\nmax_dihedral " +
-         number(q.max_dihedral) + "\nbelow10 " + number(s.below10()) + "\n";
+         "\nhausdorff " + number(h.max()) + "\nhausdorff_boundary_points " + std::to_string(h.boundary_points) +
+         "\nhausdorff_surface_samples " + std::to_string(h.surface_samples) + "\nmin_dihedral " +
+         number(q.min_dihedral) + "\nmax_dihedral " + number(q.max_dihedral) + "\nbelow10 " + number(s.below10()) +
+         "\n";
   for (std::size_t k = 0; k < q.histogram.size(); ++k)
     if (q.histogram[k] != 0) out += "dihedral_" + std::to_string(15 * k) + " " + std::to_string(q.histogram[k]) + "\n";
+  out += "boundary_euler " + std::to_string(m.topology.boundary_euler) + "\n";
+  for (const std::string& warning : m.warnings) out += "warning " + warning + "\n";
   if (m.soup) out += soup_text(*m.soup);
   for (const auto& [phase, t] : seconds) out += "seconds_" + phase + " " + number(t) + "\n";
   return out;
@@ -246,6 +264,14 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
   };
   stuff::AnimationSummary summary;
   try {
+    // S14: the lattice is fitted to the swept box; say what that costs.
+    if (!o.quiet) {
+      const double moving = stuff::fit_moving(*shape, settings.path, so).h,
+                   still = stuff::fit_lattice(shape->bounds(), so).h;
+      if (moving > still)
+        std::cerr << "bccmis stuff: --animate fits the lattice to the swept box: finest side " << number(moving)
+                  << " against " << number(still) << " for the shape alone\n";
+    }
     summary = stuff::animate_shape(shape, settings, on_frame);
   } catch (const stuff::ShapeError& e) {  // S2, S14, S16: refused before any frame is made
     throw InputError(e.what());
@@ -313,6 +339,8 @@ int run(const StuffOptions& o) {
     throw CheckFailure(e.what());
   }
   seconds.insert(seconds.end(), m.seconds.begin(), m.seconds.end());
+  if (!o.quiet)
+    for (const std::string& warning : m.warnings) std::cerr << "bccmis stuff: warning: " << warning << "\n";
 
   const auto t = std::chrono::steady_clock::now();
   const d3::TetMeshF& mesh = m.stuffed.mesh;
