@@ -123,10 +123,16 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
                        number(r.fit.h) + ", may vanish; each level further halves that)");
     if (got > *want) r.warnings.push_back(counts);
   }
-  if (r.topology.nonmanifold_edges > 0)
+  // A repaired soup's own surface may be non-manifold (overlapping parts
+  // meet along curves): there its non-manifold edges are no change, so
+  // only a warning even under --check.
+  const bool input_manifold = !(r.soup && r.soup->flaw_count() > 0);
+  if (settings.check && !r.warnings.empty()) throw CheckError(world.describe() + ": " + r.warnings.front());
+  if (r.topology.nonmanifold_edges > 0) {
     r.warnings.push_back("the mesh's boundary has " + std::to_string(r.topology.nonmanifold_edges) +
                          " non-manifold edges (parts meeting along a lattice edge; a finer level separates them)");
-  if (settings.check && !r.warnings.empty()) throw CheckError(world.describe() + ": " + r.warnings.front());
+    if (settings.check && input_manifold) throw CheckError(world.describe() + ": " + r.warnings.back());
+  }
   if (settings.check)
     if (auto why = find_stuffed_problem(shape, fit, r.stuffed.mesh)) throw CheckError(world.describe() + ": " + *why);
   if (settings.statistics) r.statistics = to_world(statistics(shape, r.stuffed.mesh, r.boundary), n);
