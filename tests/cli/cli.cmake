@@ -91,7 +91,7 @@ if(TARGET bccmis::stuff_surface)
                   STDIN_FILE ${PROJECT_SOURCE_DIR}/tests/stuff/good/cube_quads.obj
                   STDERR_REGEX "^bccmis stuff: mesh stdin: 12 triangles: .* tetrahedra written to 1 file\n$")
   bccmis_cli_test(stuff_stdin_unknown 2 ARGS stuff - --stats STDIN_FILE ${_cli}/words.stl
-                  STDERR_REGEX "^bccmis: stdin: cannot tell the format of the content \\(text\\): expected OFF, OBJ or STL")
+                  STDERR_REGEX "^bccmis: stdin: cannot tell the format of the content \\(text\\): expected OFF, OBJ, PLY or STL")
   bccmis_cli_test(stuff_stdin_wrong_format 2 ARGS stuff - --format stl --stats
                   STDIN_FILE ${_cli}/tetrahedron_off_text.stl
                   STDERR_REGEX "^bccmis: stdin: the content is OFF text, not STL \\(to read it as OFF: --format off\\)\n")

@@ -23,7 +23,8 @@ TEST(SurfaceFormat, ByExtensionCaseInsensitive) {
   EXPECT_EQ(format_of_extension("a/b.OFF"), SurfaceFormat::off);
   EXPECT_EQ(format_of_extension("b.obj"), SurfaceFormat::obj);
   EXPECT_EQ(format_of_extension("b.Stl"), SurfaceFormat::stl);
-  EXPECT_EQ(format_of_extension("b.ply"), std::nullopt);
+  EXPECT_EQ(format_of_extension("b.PLY"), SurfaceFormat::ply);
+  EXPECT_EQ(format_of_extension("b.xyz"), std::nullopt);
   EXPECT_EQ(format_of_extension("dir.off/b"), std::nullopt);
   EXPECT_EQ(format_of_extension("-"), std::nullopt);
 }
@@ -32,6 +33,10 @@ TEST(SurfaceFormat, SniffedByFirstWordOfText) {
   EXPECT_EQ(sniff_format("# a comment\n\nCOFF\n0 0 0\n"), SurfaceFormat::off);
   EXPECT_EQ(sniff_format("# exported\nmtllib a.mtl\nv 0 0 0\n"), SurfaceFormat::obj);
   EXPECT_EQ(sniff_format("  solid cube\nendsolid cube\n"), SurfaceFormat::stl);
+  EXPECT_EQ(sniff_format("ply\nformat ascii 1.0\n"), SurfaceFormat::ply);
+  EXPECT_EQ(sniff_format(std::string("ply\r\nformat binary_little_endian 1.0\r\nend_header\r\n") + '\0' + '\1'),
+            SurfaceFormat::ply);  // binary: not text, still PLY by its first line
+  EXPECT_EQ(sniff_format("plywood\n"), std::nullopt);
   EXPECT_EQ(sniff_format("OFFICE 1 2 3\n"), std::nullopt);  // a word that does not end in OFF
   EXPECT_EQ(sniff_format("hello\n"), std::nullopt);
   EXPECT_EQ(sniff_format(""), std::nullopt);
@@ -69,8 +74,8 @@ TEST(SurfaceFormat, ContentOfAnotherFormatIsRefusedNamingBoth) {
     FAIL() << "read";
   } catch (const ReadError& e) {
     EXPECT_STREQ(e.what(),
-                 "stdin: cannot tell the format of the content (text): expected OFF, OBJ or STL (--format off, obj or "
-                 "stl says which)");
+                 "stdin: cannot tell the format of the content (text): expected OFF, OBJ, PLY or STL (--format off, "
+                 "obj, ply or stl says which)");
   }
 }
 
