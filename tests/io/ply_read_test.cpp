@@ -98,6 +98,15 @@ TEST(PlyRead, AsciiCrlfAndExtraPropertiesAndElementsSkipped) {
   EXPECT_EQ(s.triangles, (std::vector<Tri>{{2, 0, 1}}));
 }
 
+TEST(PlyRead, ElementWithoutPropertiesTakesNoRoomWhateverItsCount) {
+  // Read past at once: looping over 10^18 instances of nothing would not end.
+  const auto s =
+      read_ply("t.ply", "ply\nformat binary_little_endian 1.0\nelement nothing 1000000000000000000\n" +
+                            std::string(kSquareHeader) + std::string(4 * 12, '\0') + "\3" + std::string(3 * 4, '\0'));
+  EXPECT_EQ(s.vertices.size(), 4u);
+  EXPECT_EQ(s.triangles, (std::vector<Tri>{{0, 0, 0}}));
+}
+
 /// A square in binary of either byte order: coordinates of three types
 /// around a colour, a triangle and a quad with a texture list after each.
 std::string binary_square(bool little) {
@@ -179,18 +188,19 @@ TEST(PlyRead, HeaderErrorsNameLineAndColumn) {
 
 TEST(PlyRead, AsciiBodyErrorsNameLineColumnAndElement) {
   const std::string head = "ply\nformat ascii 1.0\n" + std::string(kSquareHeader);  // the body starts on line 10
-  EXPECT_EQ(message(head + "0 0 0\n1 0 0\n1 1 0\n0 1\n"),
-            "t.ply:13:4: unexpected end of file in vertex 3, property 'z'");
-  EXPECT_EQ(message(head + "0 0 0\n1 0 0\n1 1 zero\n"),
-            "t.ply:12:5: bad number 'zero' (expected vertex 2, property 'z')");
-  EXPECT_EQ(message(head + "0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 4\n"),
-            "t.ply:14:9: face 0: vertex index 4 out of range (4 vertices)");
-  EXPECT_EQ(message(head + "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 -1 2\n"),
-            "t.ply:14:5: face 0: vertex index -1 out of range (4 vertices)");
-  EXPECT_EQ(message(head + "0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 0 1\n"),
-            "t.ply:14:1: face 0 has 2 vertices (at least 3 needed)");
-  EXPECT_EQ(message(head + "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n\n7\n"),
-            "t.ply:16:1: unexpected text after the last element");
+  const std::string vertices = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n";                      // the face on line 14
+  struct Case {
+    std::string body, message;
+  };
+  for (const Case& c : {
+           Case{"0 0 0\n1 0 0\n1 1 0\n0 1\n", "t.ply:13:4: unexpected end of file in vertex 3, property 'z'"},
+           Case{"0 0 0\n1 0 0\n1 1 zero\n", "t.ply:12:5: bad number 'zero' (expected vertex 2, property 'z')"},
+           Case{vertices + "4 0 1 2 4\n", "t.ply:14:9: face 0: vertex index 4 out of range (4 vertices)"},
+           Case{vertices + "3 0 -1 2\n", "t.ply:14:5: face 0: vertex index -1 out of range (4 vertices)"},
+           Case{vertices + "2 0 1\n", "t.ply:14:1: face 0 has 2 vertices (at least 3 needed)"},
+           Case{vertices + "3 0 1 2\n\n7\n", "t.ply:16:1: unexpected text after the last element"},
+       })
+    EXPECT_EQ(message(head + c.body), c.message) << c.body;
 }
 
 TEST(PlyRead, BinaryBodyErrorsNameByteOffsetAndElement) {

@@ -276,6 +276,7 @@ void read_body(Values& in, const Header& h, TriangleSoup& s) {
     if (e.name == "vertex") vertex_count = e.count;
   std::vector<std::uint32_t> poly;
   for (const Element& e : h.elements) {
+    if (e.properties.empty()) continue;  // its instances take no room: nothing to read, however many
     const bool vertex = e.name == "vertex", face = e.name == "face";
     Place at{&e, 0, nullptr};
     for (at.index = 0; at.index < e.count; ++at.index) {
