@@ -56,10 +56,20 @@ TEST(SurfaceFormat, ContentInWords) {
   EXPECT_EQ(describe_content("OFF\n"), "OFF text");
   EXPECT_EQ(describe_content("v 1 2 3\n"), "OBJ text");
   EXPECT_EQ(describe_content("solid x\n"), "ASCII STL");
+  EXPECT_EQ(describe_content("ply\nformat binary_big_endian 1.0\n"), "PLY");
   EXPECT_EQ(describe_content(""), "empty");
   EXPECT_EQ(describe_content("three vertices\n"), "text");
   EXPECT_FALSE(is_text(std::string("a\0b", 3)));
   EXPECT_TRUE(is_text("a\tb\r\n\f\v"));
+}
+
+TEST(SurfaceFormat, PlyNamedOffIsRefusedNamingBoth) {
+  try {
+    read_surface("t.off", "ply\nformat ascii 1.0\n", SurfaceFormat::off);
+    FAIL() << "read";
+  } catch (const ReadError& e) {
+    EXPECT_STREQ(e.what(), "t.off: the content is PLY, not OFF (to read it as PLY: --format ply)");
+  }
 }
 
 TEST(SurfaceFormat, ContentOfAnotherFormatIsRefusedNamingBoth) {
