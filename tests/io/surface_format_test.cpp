@@ -63,30 +63,24 @@ TEST(SurfaceFormat, ContentInWords) {
   EXPECT_TRUE(is_text("a\tb\r\n\f\v"));
 }
 
-TEST(SurfaceFormat, PlyNamedOffIsRefusedNamingBoth) {
+/// What read_surface throws on `data` named `file` in `format`, or "" when it reads.
+std::string refusal(const std::string& file, const std::string& data, std::optional<SurfaceFormat> format) {
   try {
-    read_surface("t.off", "ply\nformat ascii 1.0\n", SurfaceFormat::off);
-    FAIL() << "read";
+    read_surface(file, data, format);
   } catch (const ReadError& e) {
-    EXPECT_STREQ(e.what(), "t.off: the content is PLY, not OFF (to read it as PLY: --format ply)");
+    return e.what();
   }
+  return "";
 }
 
 TEST(SurfaceFormat, ContentOfAnotherFormatIsRefusedNamingBoth) {
-  try {
-    read_surface("t.stl", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", SurfaceFormat::stl);
-    FAIL() << "read";
-  } catch (const ReadError& e) {
-    EXPECT_STREQ(e.what(), "t.stl: the content is OFF text, not STL (to read it as OFF: --format off)");
-  }
-  try {
-    read_surface("stdin", "three vertices\n", std::nullopt);
-    FAIL() << "read";
-  } catch (const ReadError& e) {
-    EXPECT_STREQ(e.what(),
-                 "stdin: cannot tell the format of the content (text): expected OFF, OBJ, PLY or STL (--format off, "
-                 "obj, ply or stl says which)");
-  }
+  EXPECT_EQ(refusal("t.stl", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", SurfaceFormat::stl),
+            "t.stl: the content is OFF text, not STL (to read it as OFF: --format off)");
+  EXPECT_EQ(refusal("t.off", "ply\nformat ascii 1.0\n", SurfaceFormat::off),
+            "t.off: the content is PLY, not OFF (to read it as PLY: --format ply)");
+  EXPECT_EQ(refusal("stdin", "three vertices\n", std::nullopt),
+            "stdin: cannot tell the format of the content (text): expected OFF, OBJ, PLY or STL (--format off, "
+            "obj, ply or stl says which)");
 }
 
 TEST(SurfaceFormat, SniffedContentIsRead) {
