@@ -49,6 +49,19 @@ struct Totals {
   std::string coarsened_state;  // after the coarsens (--verify)
 };
 
+// The thread time of op(p) for each p of `points`, each of which must be
+// applied (exit 1 on a refusal).
+template <class Op>
+double timed_all(const char* name, const char* what, const std::vector<d3::Point>& points, Op op) {
+  const double start = thread_ns();
+  for (const d3::Point& p : points)
+    if (!op(p)) {
+      std::fprintf(stderr, "bench_fast3: %s refused %s %s\n", name, what, d3::to_string(p).c_str());
+      std::exit(1);
+    }
+  return thread_ns() - start;
+}
+
 // Refines every cell level by level, then coarsens back; prints one line per
 // level and phase and the totals.
 template <class L, class State>
@@ -61,13 +74,7 @@ Totals sweep(const char* name, L& g, bool random, bool verify, const State& stat
     std::vector<d3::Point>& todo = refined[static_cast<std::size_t>(level)];
     for (const d3::Point& c : cells(g)) todo.push_back(c);
     if (random) std::shuffle(todo.begin(), todo.end(), rng);
-    const double start = thread_ns();
-    for (const d3::Point& c : todo)
-      if (!refine(g, c).applied()) {
-        std::fprintf(stderr, "bench_fast3: %s refused refine %s\n", name, d3::to_string(c).c_str());
-        std::exit(1);
-      }
-    const double ns = thread_ns() - start;
+    const double ns = timed_all(name, "refine", todo, [&](const d3::Point& c) { return refine(g, c).applied(); });
     t.refine_ns += ns;
     refines += todo.size();
     std::printf("%-9s refine  level %d -> %d: %9zu ops, %9zu cells, %8.1f ns/op\n", name, level, level + 1, todo.size(),
@@ -78,13 +85,7 @@ Totals sweep(const char* name, L& g, bool random, bool verify, const State& stat
     std::vector<d3::Point>& todo = refined[static_cast<std::size_t>(level)];
     if (random) std::shuffle(todo.begin(), todo.end(), rng);
     const std::size_t before = cell_count(g);
-    const double start = thread_ns();
-    for (const d3::Point& n : todo)
-      if (!coarsen(g, n).applied()) {
-        std::fprintf(stderr, "bench_fast3: %s refused coarsen %s\n", name, d3::to_string(n).c_str());
-        std::exit(1);
-      }
-    const double ns = thread_ns() - start;
+    const double ns = timed_all(name, "coarsen", todo, [&](const d3::Point& n) { return coarsen(g, n).applied(); });
     t.coarsen_ns += ns;
     coarsens += todo.size();
     std::printf("%-9s coarsen level %d -> %d: %9zu ops, %9zu cells, %8.1f ns/op\n", name, level + 1, level, todo.size(),

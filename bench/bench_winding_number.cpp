@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "bccmis/soup/winding_number.h"
+#include "testing/icosphere.h"
 
 namespace {
 
@@ -51,35 +52,8 @@ Vec3 unit(Vec3 x) {
 
 // The icosahedron subdivided `levels` times, on the unit sphere, outward.
 Soup icosphere(int levels) {
-  const double p = (1 + std::sqrt(5.0)) / 2;
   Soup s;
-  s.v = {{-1, p, 0},  {1, p, 0},  {-1, -p, 0}, {1, -p, 0}, {0, -1, p},  {0, 1, p},
-         {0, -1, -p}, {0, 1, -p}, {p, 0, -1},  {p, 0, 1},  {-p, 0, -1}, {-p, 0, 1}};
-  s.t = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-         {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-         {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
-  for (Vec3& x : s.v) x = unit(x);
-  for (int l = 0; l < levels; ++l) {
-    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> mid;
-    auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
-      const auto key = std::minmax(a, b);
-      const auto it = mid.find(key);
-      if (it != mid.end()) return it->second;
-      const auto i = static_cast<std::uint32_t>(s.v.size());
-      s.v.push_back(unit({s.v[a][0] + s.v[b][0], s.v[a][1] + s.v[b][1], s.v[a][2] + s.v[b][2]}));
-      mid.emplace(key, i);
-      return i;
-    };
-    std::vector<Triangle> next;
-    for (const Triangle& t : s.t) {
-      const std::uint32_t ab = midpoint(t[0], t[1]), bc = midpoint(t[1], t[2]), ca = midpoint(t[2], t[0]);
-      next.push_back({t[0], ab, ca});
-      next.push_back({t[1], bc, ab});
-      next.push_back({t[2], ca, bc});
-      next.push_back({ab, bc, ca});
-    }
-    s.t = std::move(next);
-  }
+  bccmis::testing::subdivided_icosahedron(levels, unit, s.v, s.t);
   return s;
 }
 

@@ -57,6 +57,7 @@
 #include <utility>
 #include <vector>
 
+#include "testing/icosphere.h"
 #include "tet_quality.h"
 
 namespace {
@@ -151,35 +152,9 @@ void write_off(const std::string& path, const Surface& s) {
 // vertices pushed onto the sphere of radius r; faces counter-clockwise seen
 // from outside.
 Surface icosphere(long double r, int levels) {
-  const long double t = (1 + std::sqrt(5.0L)) / 2;
   Surface s;
-  s.points = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
-              {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
-  s.triangles = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                 {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-                 {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
-  for (int level = 0; level < levels; ++level) {
-    std::map<std::pair<std::size_t, std::size_t>, std::size_t> midpoint;
-    auto mid = [&](std::size_t a, std::size_t b) {
-      const auto key = std::minmax(a, b);
-      const auto it = midpoint.find(key);
-      if (it != midpoint.end()) return it->second;
-      const Vec3L& p = s.points[a];
-      const Vec3L& q = s.points[b];
-      s.points.push_back({(p[0] + q[0]) / 2, (p[1] + q[1]) / 2, (p[2] + q[2]) / 2});
-      return midpoint[key] = s.points.size() - 1;
-    };
-    std::vector<Tri> finer;
-    finer.reserve(s.triangles.size() * 4);
-    for (const Tri& tri : s.triangles) {
-      const std::size_t ab = mid(tri[0], tri[1]), bc = mid(tri[1], tri[2]), ca = mid(tri[2], tri[0]);
-      finer.push_back({tri[0], ab, ca});
-      finer.push_back({tri[1], bc, ab});
-      finer.push_back({tri[2], ca, bc});
-      finer.push_back({ab, bc, ca});
-    }
-    s.triangles = std::move(finer);
-  }
+  bccmis::testing::subdivided_icosahedron(
+      levels, [](const Vec3L& p) { return p; }, s.points, s.triangles);
   for (Vec3L& p : s.points) {
     const long double scale = r / bccmis::bench::norm(p);
     for (auto& c : p) c *= scale;
@@ -273,42 +248,42 @@ int run_process(const std::vector<std::string>& args, double& cpu_seconds) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-// A .node file: "n 3 attributes markers", then "index x y z ...". The first
-// index (0 or 1) is the numbering base of the .ele file too.
-std::vector<Vec3L> read_node(const std::string& path, std::size_t& base) {
+// The records of a TetGen file: a first line whose first number is n, then
+// n lines, each parsed by parse(line, i); `plural` names them in errors.
+template <class Record, class Parse>
+std::vector<Record> read_records(const std::string& path, const char* plural, Parse parse) {
   std::ifstream in(path);
   std::string line;
   if (!in || !next_line(in, line)) throw std::runtime_error("cannot read " + path);
   std::size_t n = 0;
   std::istringstream(line) >> n;
-  std::vector<Vec3L> points;
-  points.reserve(n);
+  std::vector<Record> records;
+  records.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
-    if (!next_line(in, line)) throw std::runtime_error(path + ": too few nodes");
+    if (!next_line(in, line)) throw std::runtime_error(path + ": too few " + plural);
     std::istringstream l(line);
+    records.push_back(parse(l, i));
+  }
+  return records;
+}
+
+// A .node file: "n 3 attributes markers", then "index x y z ...". The first
+// index (0 or 1) is the numbering base of the .ele file too.
+std::vector<Vec3L> read_node(const std::string& path, std::size_t& base) {
+  return read_records<Vec3L>(path, "nodes", [&](std::istringstream& l, std::size_t i) {
     std::size_t index = 0;
     long double x = 0, y = 0, z = 0;
     if (!(l >> index >> x >> y >> z)) throw std::runtime_error(path + ": bad node");
     if (i == 0) base = index;
-    points.push_back({x, y, z});
-  }
-  return points;
+    return Vec3L{x, y, z};
+  });
 }
 
 // A .ele file: "n 4 attributes", then "index a b c d ..."; the corners as
 // TetGen orders them, which is the positive orientation of tet_quality.h
 // (orient6 > 0; --verify checks it).
 std::vector<Tet> read_ele(const std::string& path, std::size_t base, std::size_t nodes) {
-  std::ifstream in(path);
-  std::string line;
-  if (!in || !next_line(in, line)) throw std::runtime_error("cannot read " + path);
-  std::size_t n = 0;
-  std::istringstream(line) >> n;
-  std::vector<Tet> tets;
-  tets.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!next_line(in, line)) throw std::runtime_error(path + ": too few tetrahedra");
-    std::istringstream l(line);
+  return read_records<Tet>(path, "tetrahedra", [&](std::istringstream& l, std::size_t) {
     std::size_t index = 0;
     Tet t{};
     if (!(l >> index >> t[0] >> t[1] >> t[2] >> t[3])) throw std::runtime_error(path + ": bad tetrahedron");
@@ -316,9 +291,8 @@ std::vector<Tet> read_ele(const std::string& path, std::size_t base, std::size_t
       if (v < base || v - base >= nodes) throw std::runtime_error(path + ": node index out of range");
       v -= base;
     }
-    tets.push_back(t);
-  }
-  return tets;
+    return t;
+  });
 }
 
 TetMesh run_tetgen(const std::string& input, double max_volume, double& seconds, double& cpu_seconds) {

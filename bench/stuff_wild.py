@@ -182,6 +182,21 @@ def volume_verdict(r, ref, h):
     r["volume_check"] = "ok" if abs(diff) <= tol else "off"
 
 
+def quality_verdict(r, q, not_positive):
+    """Records in r the quality q of a mesher's output read back: failed
+    with no tetrahedra or with some not positive (the reason `not_positive`
+    % their count), else meshed; True when meshed."""
+    r.update(q)
+    if q["tetrahedra"] == 0:
+        r.update(result="failed", reason="no tetrahedra")
+    elif q["inverted"]:
+        r.update(result="failed", reason=not_positive % q["inverted"])
+    else:
+        r["result"] = "meshed"
+        return True
+    return False
+
+
 def run_bccmis(bccmis, path, level, strict, args, work, ref, fl):
     out = os.path.join(work, "bccmis%s.vtu" % ("_strict" if strict else ""))
     cmd = [bccmis, "stuff", path, "-L", str(level), "--check", "-o", out]
@@ -202,19 +217,15 @@ def run_bccmis(bccmis, path, level, strict, args, work, ref, fl):
         except (OSError, W.ReadError, KeyError, ValueError) as e:
             r.update(result="failed", reason="output unreadable: %s" % e)
             return r
-        r.update(q)
-        if q["tetrahedra"] == 0:
-            r.update(result="failed", reason="no tetrahedra")
-        elif q["inverted"]:
-            r.update(result="failed", reason="%d tetrahedra not positive (read back)" % q["inverted"])
-        else:
-            r["result"] = "meshed"
+        if quality_verdict(r, q, "%d tetrahedra not positive (read back)"):
             h = r["h"] or fl["fallback_h"]
             volume_verdict(r, ref, h)
             if r["volume_check"] == "off":
                 r.update(result="failed", reason="volume off")
     elif status == 2:
-        r.update(result="refused", reason=first_line(se, drop=("bccmis stuff: mesh ",)))
+        # The error line ("bccmis: ..."), not the report of the flaws found before it.
+        errors = [line for line in se.splitlines() if line.startswith("bccmis: ")]
+        r.update(result="refused", reason=errors[-1] if errors else first_line(se, drop=("bccmis stuff: mesh ",)))
     elif status == 1:
         r.update(result="failed", reason="check: " + first_line(se, drop=("bccmis stuff: ",)) or "exit 1")
     else:
@@ -242,13 +253,7 @@ def run_tetgen(off, h, args, work, ref):
     elif status == 0:
         try:
             q = W.tet_quality(*W.tetgen_tets(os.path.join(d, "in.1")))
-            r.update(q)
-            if q["tetrahedra"] == 0:
-                r.update(result="failed", reason="no tetrahedra")
-            elif q["inverted"]:
-                r.update(result="failed", reason="%d tetrahedra not positive" % q["inverted"])
-            else:
-                r["result"] = "meshed"
+            if quality_verdict(r, q, "%d tetrahedra not positive"):
                 volume_verdict(r, ref, h)
         except (OSError, IndexError, ValueError) as e:
             r.update(result="failed", reason="output unreadable: %s" % e)

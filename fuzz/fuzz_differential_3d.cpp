@@ -21,9 +21,6 @@
 // trace on stderr (and in $BCCMIS_FUZZ_TRACE), so `bccmis replay` reproduces it.
 #include <cstddef>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
-#include <fstream>
 #include <iterator>
 #include <string>
 #include <string_view>
@@ -31,6 +28,7 @@
 
 #include "bccmis/d3/ops.h"
 #include "bccmis/format.h"
+#include "fuzz_util.h"
 #include "testing/byte_program.h"
 #include "testing/d3/twin.h"
 
@@ -40,18 +38,6 @@ using namespace bccmis;
 
 constexpr std::size_t kMaxOps = 96;
 constexpr std::string_view kTarget = "fuzz_differential_3d";
-
-[[noreturn]] void fail(const std::string& what, const d3::Trace& trace) {
-  const std::string text = "# " + std::string(kTarget) + ": " + what + "\n" + format_trace(trace);
-  std::fprintf(stderr, "\n==== %s failure: %s\n", std::string(kTarget).c_str(), what.c_str());
-  std::fprintf(stderr, "==== equivalent trace (bccmis replay FILE):\n%s==== end of trace\n", text.c_str());
-  if (const char* path = std::getenv("BCCMIS_FUZZ_TRACE")) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-  }
-  std::fflush(stderr);
-  std::abort();
-}
 
 template <class Set>
 d3::Point nth(const Set& set, std::size_t k) {
@@ -70,7 +56,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   lattice.H = 1 + in.next() % 3;
   lattice.D = 1 + in.next() % 3;
   lattice.L = in.next() % 5;
-  d3::testing::Twin twin(lattice, fail);
+  d3::testing::Twin twin(lattice,
+                         [](const std::string& what, const d3::Trace& so_far) { fuzz::fail(kTarget, what, &so_far); });
   const std::int64_t S = d3::level0_side(lattice);
   auto raw = [&](std::int64_t extent) { return static_cast<std::int64_t>(in.next()) % (extent + 3) - 1; };
   for (std::size_t op = 0; op < kMaxOps && !in.empty(); ++op) {

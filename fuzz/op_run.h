@@ -61,31 +61,17 @@ class OpRun {
 
   void refine_at(const P& c, bool invert) {
     if (cell_count(g_) + (std::size_t{1} << L::dimension) - 1 > max_cells_) return;
-    // The checked operation already rejects a refusal that changes the
-    // lattice; the copy is only needed to compare after an inversion.
-    std::optional<L> before;
-    if (invert) before = g_;
-    record(CommandKind::Refine, c);
-    const auto r = guarded([&] { return checked_.refine(g_, c); });
-    if (!r.applied() || !invert) return;
-    record(CommandKind::Coarsen, c);
-    const auto back = guarded([&] { return coarsen(g_, c); });
-    if (!back.applied())
-      fail("coarsen right after refine at the same position was refused (" + std::string(code(*back.refused)) + ")");
-    expect_state(*before, "coarsen(refine(g, c), c) != g (paper §3)");
+    run_and_invert(
+        CommandKind::Refine, CommandKind::Coarsen, c, invert, [&] { return checked_.refine(g_, c); },
+        [&] { return coarsen(g_, c); }, "coarsen right after refine at the same position was refused (",
+        "coarsen(refine(g, c), c) != g (paper §3)");
   }
 
   void coarsen_at(const P& n, bool invert) {
-    std::optional<L> before;
-    if (invert) before = g_;
-    record(CommandKind::Coarsen, n);
-    const auto r = guarded([&] { return checked_.coarsen(g_, n); });
-    if (!r.applied() || !invert) return;
-    record(CommandKind::Refine, n);
-    const auto back = guarded([&] { return refine(g_, n); });
-    if (!back.applied())
-      fail("refine right after coarsen at the same position was refused (" + std::string(code(*back.refused)) + ")");
-    expect_state(*before, "refine(coarsen(g, n), n) != g");
+    run_and_invert(
+        CommandKind::Coarsen, CommandKind::Refine, n, invert, [&] { return checked_.coarsen(g_, n); },
+        [&] { return refine(g_, n); }, "refine right after coarsen at the same position was refused (",
+        "refine(coarsen(g, n), n) != g");
   }
 
   /// Coarsens every refined cell, finest first; each must be applied. Then the
@@ -129,6 +115,26 @@ class OpRun {
     c.at = at;
     c.line = static_cast<int>(trace_.commands.size()) + 2;
     trace_.commands.push_back(c);
+  }
+
+  // Records and runs `op` (checked); when it is applied and `invert` is
+  // set, records and runs `inverse` at the same position, which must be
+  // applied (else: `refused` and the refusal's code) and give back the
+  // lattice before (else: `differs`).
+  template <class Op, class Inverse>
+  void run_and_invert(CommandKind kind, CommandKind inverse_kind, const P& at, bool invert, Op op, Inverse inverse,
+                      const std::string& refused, const std::string& differs) {
+    // The checked operation already rejects a refusal that changes the
+    // lattice; the copy is only needed to compare after an inversion.
+    std::optional<L> before;
+    if (invert) before = g_;
+    record(kind, at);
+    const auto r = guarded(op);
+    if (!r.applied() || !invert) return;
+    record(inverse_kind, at);
+    const auto back = guarded(inverse);
+    if (!back.applied()) fail(refused + std::string(code(*back.refused)) + ")");
+    expect_state(*before, differs);
   }
 
   // The canonical texts (spec/formats.md) must be byte-identical, and the

@@ -53,28 +53,46 @@ TEST(CanonicalState, RefinedRootByHand) {
   EXPECT_EQ(canonical_state(test::build("lattice 1 1 1\nrefine 2 2\n")), expected);
 }
 
-struct BadState {
+// An input a parser must reject, and where and why.
+struct BadInput {
   const char* name;
   std::string text;
   int line, column;
   const char* message_part;
 };
 
-class StateErrors : public testing::TestWithParam<BadState> {};
-
-TEST_P(StateErrors, NamesLineColumnAndProblem) {
-  const BadState& b = GetParam();
+// parse(b.text, file) must throw a ParseError that names the file, b's line
+// and column and a message containing b.message_part, and whose what() starts
+// with "file:line:column: ".
+template <class Parse>
+void expect_parse_error(const BadInput& b, const std::string& file, Parse parse) {
   try {
-    parse_state(b.text, "s.txt");
+    parse(b.text, file);
     FAIL() << "parsed: " << b.name;
   } catch (const ParseError& e) {
-    EXPECT_EQ(e.file, "s.txt");
+    EXPECT_EQ(e.file, file);
     EXPECT_EQ(e.line, b.line) << e.what();
     EXPECT_EQ(e.column, b.column) << e.what();
     EXPECT_NE(e.message.find(b.message_part), std::string::npos) << e.what();
-    EXPECT_EQ(std::string(e.what()).rfind("s.txt:" + std::to_string(b.line) + ":" + std::to_string(b.column) + ": ", 0),
-              0u);
+    EXPECT_EQ(
+        std::string(e.what()).rfind(file + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) + ": ", 0),
+        0u);
   }
+}
+
+// A test's name: the input's name, '_' for every character not a letter or digit.
+std::string test_name(const testing::TestParamInfo<BadInput>& p) {
+  std::string n = p.param.name;
+  for (char& ch : n)
+    if (!isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  return n;
+}
+
+class StateErrors : public testing::TestWithParam<BadInput> {};
+
+TEST_P(StateErrors, NamesLineColumnAndProblem) {
+  expect_parse_error(GetParam(), "s.txt",
+                     [](const std::string& text, const std::string& file) { parse_state(text, file); });
 }
 
 std::string with(std::string text, const std::string& from, const std::string& to) {
@@ -85,30 +103,25 @@ std::string with(std::string text, const std::string& from, const std::string& t
 INSTANTIATE_TEST_SUITE_P(
     Format, StateErrors,
     testing::Values(
-        BadState{"empty", "", 1, 1, "empty file"},
-        BadState{"magic", with(kLattice110, "bccmis-state 1", "bccmis-stat 1"), 1, 1, "expected 'bccmis-state 1'"},
-        BadState{"version", with(kLattice110, "bccmis-state 1", "bccmis-state 2"), 1, 14, "version"},
-        BadState{"double space", with(kLattice110, "C 1 1 0 :", "C 1  1 0 :"), 3, 5, "single space"},
-        BadState{"trailing space", with(kLattice110, "N 0 0 : 1 1\n", "N 0 0 : 1 1 \n"), 4, 12, "trailing space"},
-        BadState{"bad int", with(kLattice110, "N 0 2 : 1 1", "N 0 2 : 1 x"), 5, 11, "expected y coordinate"},
-        BadState{"leading zero", with(kLattice110, "N 0 2 : 1 1", "N 0 02 : 1 1"), 5, 5, "expected y coordinate"},
-        BadState{"unsorted", with(kLattice110, "N 0 2 : 1 1\nN 2 0", "N 2 0 : 1 1\nN 0 2"), 6, 3, "sorted"},
-        BadState{"count", with(kLattice110, "end 1 4", "end 1 5"), 8, 7, "node count 5"},
-        BadState{"no end", "bccmis-state 1\nlattice 1 1 0\n", 3, 1, "unexpected end of file"},
-        BadState{"no newline", with(kLattice110, "end 1 4\n", "end 1 4"), 8, 8, "missing newline"},
-        BadState{"after end", std::string(kLattice110) + "x\n", 9, 1, "after the 'end' line"},
-        BadState{"bad lattice", with(kLattice110, "lattice 1 1 0", "lattice 0 1 0"), 2, 9, "W must be >= 1"},
-        BadState{"huge int", with(kLattice110, "N 0 0 : 1 1", "N 0 0 : 1 99999999999999999999"), 4, 11, "out of range"},
-        BadState{"crlf", with(kLattice110, "end 1 4\n", "end 1 4\r\n"), 8, 8, "carriage return"},
-        BadState{"both kinds", with(kLattice110, "N 0 0 : 1 1", "N 1 1 : 1 1"), 4, 3, "both as a center and as a node"},
-        BadState{"odd neighbors", with(kLattice110, "N 0 0 : 1 1", "N 0 0 : 1 1 2"), 4, 13, "odd number"},
-        BadState{"no colon", with(kLattice110, "N 0 0 : 1 1", "N 0 0 1 1"), 4, 7, "expected 'N x y : neighbors'"}),
-    [](const testing::TestParamInfo<BadState>& p) {
-      std::string n = p.param.name;
-      for (char& ch : n)
-        if (!isalnum(static_cast<unsigned char>(ch))) ch = '_';
-      return n;
-    });
+        BadInput{"empty", "", 1, 1, "empty file"},
+        BadInput{"magic", with(kLattice110, "bccmis-state 1", "bccmis-stat 1"), 1, 1, "expected 'bccmis-state 1'"},
+        BadInput{"version", with(kLattice110, "bccmis-state 1", "bccmis-state 2"), 1, 14, "version"},
+        BadInput{"double space", with(kLattice110, "C 1 1 0 :", "C 1  1 0 :"), 3, 5, "single space"},
+        BadInput{"trailing space", with(kLattice110, "N 0 0 : 1 1\n", "N 0 0 : 1 1 \n"), 4, 12, "trailing space"},
+        BadInput{"bad int", with(kLattice110, "N 0 2 : 1 1", "N 0 2 : 1 x"), 5, 11, "expected y coordinate"},
+        BadInput{"leading zero", with(kLattice110, "N 0 2 : 1 1", "N 0 02 : 1 1"), 5, 5, "expected y coordinate"},
+        BadInput{"unsorted", with(kLattice110, "N 0 2 : 1 1\nN 2 0", "N 2 0 : 1 1\nN 0 2"), 6, 3, "sorted"},
+        BadInput{"count", with(kLattice110, "end 1 4", "end 1 5"), 8, 7, "node count 5"},
+        BadInput{"no end", "bccmis-state 1\nlattice 1 1 0\n", 3, 1, "unexpected end of file"},
+        BadInput{"no newline", with(kLattice110, "end 1 4\n", "end 1 4"), 8, 8, "missing newline"},
+        BadInput{"after end", std::string(kLattice110) + "x\n", 9, 1, "after the 'end' line"},
+        BadInput{"bad lattice", with(kLattice110, "lattice 1 1 0", "lattice 0 1 0"), 2, 9, "W must be >= 1"},
+        BadInput{"huge int", with(kLattice110, "N 0 0 : 1 1", "N 0 0 : 1 99999999999999999999"), 4, 11, "out of range"},
+        BadInput{"crlf", with(kLattice110, "end 1 4\n", "end 1 4\r\n"), 8, 8, "carriage return"},
+        BadInput{"both kinds", with(kLattice110, "N 0 0 : 1 1", "N 1 1 : 1 1"), 4, 3, "both as a center and as a node"},
+        BadInput{"odd neighbors", with(kLattice110, "N 0 0 : 1 1", "N 0 0 : 1 1 2"), 4, 13, "odd number"},
+        BadInput{"no colon", with(kLattice110, "N 0 0 : 1 1", "N 0 0 1 1"), 4, 7, "expected 'N x y : neighbors'"}),
+    test_name);
 
 // ---- Traces ------------------------------------------------------------------
 
@@ -135,50 +148,30 @@ TEST(Trace, DecisionLogSaysOkOrRefusedWithCode) {
             "refine 0 0 refused no-such-cell\n");
 }
 
-struct BadTrace {
-  const char* name;
-  const char* text;
-  int line, column;
-  const char* message_part;
-};
-
-class TraceErrors : public testing::TestWithParam<BadTrace> {};
+class TraceErrors : public testing::TestWithParam<BadInput> {};
 
 TEST_P(TraceErrors, NamesLineColumnAndProblem) {
-  const BadTrace& b = GetParam();
-  try {
-    parse_trace(b.text, "t.trace");
-    FAIL() << "parsed: " << b.name;
-  } catch (const ParseError& e) {
-    EXPECT_EQ(e.file, "t.trace");
-    EXPECT_EQ(e.line, b.line) << e.what();
-    EXPECT_EQ(e.column, b.column) << e.what();
-    EXPECT_NE(e.message.find(b.message_part), std::string::npos) << e.what();
-  }
+  expect_parse_error(GetParam(), "t.trace",
+                     [](const std::string& text, const std::string& file) { parse_trace(text, file); });
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Format, TraceErrors,
-    testing::Values(BadTrace{"unknown", "lattice 1 1 1\nsplit 2 2\n", 2, 1, "unknown command 'split'"},
-                    BadTrace{"no lattice", "# nothing\nrefine 2 2\n", 2, 1, "before the 'lattice W H L' command"},
-                    BadTrace{"empty", "", 1, 1, "no 'lattice W H L' command"},
-                    BadTrace{"two lattices", "lattice 1 1 1\nlattice 1 1 1\n", 2, 1, "second 'lattice'"},
-                    BadTrace{"few args", "lattice 1 1 1\nrefine 2\n", 2, 9, "too few arguments"},
-                    BadTrace{"many args", "lattice 1 1 1\n  refine 2 2 2\n", 2, 14, "too many arguments"},
-                    BadTrace{"not int", "lattice 1 1 1\nrefine 2 two\n", 2, 10, "expected y coordinate"},
-                    BadTrace{"overflow", "lattice 1 1 1\ncoarsen 9223372036854775808 0\n", 2, 9, "out of range"},
-                    BadTrace{"zero width", "lattice 0 1 1\n", 1, 9, "W must be >= 1"},
-                    BadTrace{"negative L", "lattice 1 1 -1\n", 1, 13, "L must be >= 0"},
-                    BadTrace{"huge L", "lattice 1 1 62\n", 1, 13, "above 61"},
-                    BadTrace{"domain too big", "lattice 3 1 60\n", 1, 1, "exceed 2^62"},
-                    BadTrace{"too many cells", "lattice 3000 3000 0\n", 1, 1, "exceeds the limit"},
-                    BadTrace{"binary", "lattice 1 1 1\nrefine \x01 2\n", 2, 8, "unexpected byte '\\x01'"}),
-    [](const testing::TestParamInfo<BadTrace>& p) {
-      std::string n = p.param.name;
-      for (char& ch : n)
-        if (!isalnum(static_cast<unsigned char>(ch))) ch = '_';
-      return n;
-    });
+    testing::Values(BadInput{"unknown", "lattice 1 1 1\nsplit 2 2\n", 2, 1, "unknown command 'split'"},
+                    BadInput{"no lattice", "# nothing\nrefine 2 2\n", 2, 1, "before the 'lattice W H L' command"},
+                    BadInput{"empty", "", 1, 1, "no 'lattice W H L' command"},
+                    BadInput{"two lattices", "lattice 1 1 1\nlattice 1 1 1\n", 2, 1, "second 'lattice'"},
+                    BadInput{"few args", "lattice 1 1 1\nrefine 2\n", 2, 9, "too few arguments"},
+                    BadInput{"many args", "lattice 1 1 1\n  refine 2 2 2\n", 2, 14, "too many arguments"},
+                    BadInput{"not int", "lattice 1 1 1\nrefine 2 two\n", 2, 10, "expected y coordinate"},
+                    BadInput{"overflow", "lattice 1 1 1\ncoarsen 9223372036854775808 0\n", 2, 9, "out of range"},
+                    BadInput{"zero width", "lattice 0 1 1\n", 1, 9, "W must be >= 1"},
+                    BadInput{"negative L", "lattice 1 1 -1\n", 1, 13, "L must be >= 0"},
+                    BadInput{"huge L", "lattice 1 1 62\n", 1, 13, "above 61"},
+                    BadInput{"domain too big", "lattice 3 1 60\n", 1, 1, "exceed 2^62"},
+                    BadInput{"too many cells", "lattice 3000 3000 0\n", 1, 1, "exceeds the limit"},
+                    BadInput{"binary", "lattice 1 1 1\nrefine \x01 2\n", 2, 8, "unexpected byte '\\x01'"}),
+    test_name);
 
 TEST(Lattice, RejectsSizesOutOfRange) {
   EXPECT_THROW(make_lattice({0, 1, 0}), LatticeError);

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "testing/decision.h"
 #include "testing/generators.h"
 
 namespace bccmis::proptest {
@@ -43,13 +44,7 @@ void run_and_compare(OpKind op, const Point& at, const model::State& before, Sut
   const std::string expected = model_decision(before, op, at);
   std::string have;
   try {
-    if (op == OpKind::Refine) {
-      const RefineResult r = refine(sut.g, at);
-      have = r.refused ? std::string(code(*r.refused)) : "ok";
-    } else {
-      const CoarsenResult r = coarsen(sut.g, at);
-      have = r.refused ? std::string(code(*r.refused)) : "ok";
-    }
+    have = testing::run_and_decide(sut.g, op == OpKind::Refine, at);
   } catch (const std::exception& e) {
     fail(std::string("the operation threw: ") + e.what());
   }
@@ -91,28 +86,30 @@ Point any_position(const model::State& m) {
                *rc::gen::inRange<std::int64_t>(-2, m.lat.H * S + 3)};
 }
 
-struct Refine : Cmd {
+// A command that runs `op` at `at` on the model (if it accepts) and on the
+// graph, and compares them.
+template <OpKind op>
+struct OpAt : Cmd {
   Point at;
-  explicit Refine(const model::State& m) : at(point_of(model::center_of(m.lat, *rc::gen::elementOf(m.leaves)))) {}
-  void apply(model::State& m) const override { apply_to_model(OpKind::Refine, at, m); }
-  void run(const model::State& m, Sut& sut) const override { run_and_compare(OpKind::Refine, at, m, sut); }
+  void apply(model::State& m) const override { apply_to_model(op, at, m); }
+  void run(const model::State& m, Sut& sut) const override { run_and_compare(op, at, m, sut); }
+};
+
+struct Refine : OpAt<OpKind::Refine> {
+  explicit Refine(const model::State& m) { at = point_of(model::center_of(m.lat, *rc::gen::elementOf(m.leaves))); }
   void show(std::ostream& os) const override { os << "Refine" << point_text(at); }
 };
 
-struct Coarsen : Cmd {
-  Point at;
+struct Coarsen : OpAt<OpKind::Coarsen> {
   explicit Coarsen(const model::State& m) {
     const std::vector<model::Leaf> parents = parents_of_leaves(m);
     RC_PRE(!parents.empty());
     at = point_of(model::center_of(m.lat, *rc::gen::elementOf(parents)));
   }
-  void apply(model::State& m) const override { apply_to_model(OpKind::Coarsen, at, m); }
-  void run(const model::State& m, Sut& sut) const override { run_and_compare(OpKind::Coarsen, at, m, sut); }
   void show(std::ostream& os) const override { os << "Coarsen" << point_text(at); }
 };
 
-struct RefineIllegal : Cmd {
-  Point at;
+struct RefineIllegal : OpAt<OpKind::Refine> {
   explicit RefineIllegal(const model::State& m) {
     switch (*rc::gen::inRange(0, 3)) {
       case 0: at = point_of(*rc::gen::elementOf(corners_of_leaves(m))); break;  // a node
@@ -123,13 +120,10 @@ struct RefineIllegal : Cmd {
     }
     RC_PRE(model_decision(m, OpKind::Refine, at) != "ok");
   }
-  void apply(model::State& m) const override { apply_to_model(OpKind::Refine, at, m); }
-  void run(const model::State& m, Sut& sut) const override { run_and_compare(OpKind::Refine, at, m, sut); }
   void show(std::ostream& os) const override { os << "RefineIllegal" << point_text(at); }
 };
 
-struct CoarsenIllegal : Cmd {
-  Point at;
+struct CoarsenIllegal : OpAt<OpKind::Coarsen> {
   explicit CoarsenIllegal(const model::State& m) {
     const std::vector<model::Leaf> parents = parents_of_leaves(m);
     switch (*rc::gen::inRange(0, 4)) {
@@ -143,8 +137,6 @@ struct CoarsenIllegal : Cmd {
     }
     RC_PRE(model_decision(m, OpKind::Coarsen, at) != "ok");
   }
-  void apply(model::State& m) const override { apply_to_model(OpKind::Coarsen, at, m); }
-  void run(const model::State& m, Sut& sut) const override { run_and_compare(OpKind::Coarsen, at, m, sut); }
   void show(std::ostream& os) const override { os << "CoarsenIllegal" << point_text(at); }
 };
 

@@ -13,26 +13,34 @@
 namespace bccmis {
 namespace {
 
-// Refines every cell of g (in sorted order) and checks that coarsening the
-// same position restores the canonical state byte for byte.
-void expect_every_refine_undone(const Graph& g) {
+// Applies `op` at each of `points` (in sorted order) to a copy of g and
+// checks that `inverse` at the same position restores the canonical state
+// byte for byte.
+template <class Op, class Inverse>
+void expect_every_undone(const Graph& g, const PointSet& points, Op op, Inverse inverse, const std::string& op_name,
+                         const std::string& inverse_name) {
   const std::string before = canonical_state(g);
-  for (const Point& c : g.C) {
+  for (const Point& p : points) {
     Graph h = g;
-    if (!refine(h, c).applied()) continue;
-    ASSERT_TRUE(coarsen(h, c).applied()) << "coarsen after refine of (" << c.x << ", " << c.y << ")";
-    EXPECT_EQ(canonical_state(h), before) << "refine+coarsen of (" << c.x << ", " << c.y << ")";
+    if (!op(h, p).applied()) continue;
+    ASSERT_TRUE(inverse(h, p).applied()) << inverse_name << " after " << op_name << " of (" << p.x << ", " << p.y
+                                         << ")";
+    EXPECT_EQ(canonical_state(h), before) << op_name << "+" << inverse_name << " of (" << p.x << ", " << p.y << ")";
   }
 }
 
+// Refines every cell of g and checks that coarsening the same position
+// restores the canonical state.
+void expect_every_refine_undone(const Graph& g) {
+  expect_every_undone(
+      g, g.C, [](Graph& h, const Point& c) { return refine(h, c); },
+      [](Graph& h, const Point& c) { return coarsen(h, c); }, "refine", "coarsen");
+}
+
 void expect_every_coarsen_undone(const Graph& g) {
-  const std::string before = canonical_state(g);
-  for (const Point& n : g.N) {
-    Graph h = g;
-    if (!coarsen(h, n).applied()) continue;
-    ASSERT_TRUE(refine(h, n).applied()) << "refine after coarsen of (" << n.x << ", " << n.y << ")";
-    EXPECT_EQ(canonical_state(h), before) << "coarsen+refine of (" << n.x << ", " << n.y << ")";
-  }
+  expect_every_undone(
+      g, g.N, [](Graph& h, const Point& n) { return coarsen(h, n); },
+      [](Graph& h, const Point& n) { return refine(h, n); }, "coarsen", "refine");
 }
 
 TEST(RoundTrip, RefineThenCoarsenOnInteriorBoundaryAndCornerCells) {

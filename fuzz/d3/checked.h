@@ -53,11 +53,7 @@ struct Checked {
     const std::string op = "refine " + d3::to_string(c);
     const d3::Graph before = g;
     d3::RefineResult r = d3::refine(g, c);
-    if (!r.applied()) {
-      unchanged(before, g, op + " was refused (" + std::string(code(*r.refused)) + ")");
-      return r;
-    }
-    validate(g, op);
+    if (!refused_unchanged_or_valid(r, before, g, op)) return r;
     if (r.Y.size() != 8 || r.J_plus.size() > 18)
       throw InvariantFailure(op + " returned |Y| = " + std::to_string(r.Y.size()) + " and |J+| = " +
                              std::to_string(r.J_plus.size()) + "; spec/lattice3d.md §4 gives 8 and 0..18");
@@ -72,11 +68,7 @@ struct Checked {
     const std::string op = "coarsen " + d3::to_string(n);
     const d3::Graph before = g;
     d3::CoarsenResult r = d3::coarsen(g, n);
-    if (!r.applied()) {
-      unchanged(before, g, op + " was refused (" + std::string(code(*r.refused)) + ")");
-      return r;
-    }
-    validate(g, op);
+    if (!refused_unchanged_or_valid(r, before, g, op)) return r;
     if (r.Y.size() != 8)
       throw InvariantFailure(op + " returned |Y| = " + std::to_string(r.Y.size()) + "; spec/lattice3d.md §5 gives 8");
     expect_change(before.C, g.C, {n}, r.Y, "C", op);
@@ -87,6 +79,18 @@ struct Checked {
   }
 
  private:
+  // A refused operation must have left the state unchanged (false); an
+  // applied one must have left it valid (true).
+  template <class Result>
+  bool refused_unchanged_or_valid(const Result& r, const d3::Graph& before, const d3::Graph& g, const std::string& op) {
+    if (!r.applied()) {
+      unchanged(before, g, op + " was refused (" + std::string(code(*r.refused)) + ")");
+      return false;
+    }
+    validate(g, op);
+    return true;
+  }
+
   void validate(const d3::Graph& g, const std::string& op) {
     ++applied;
     const bool mesh = g.C.size() <= mesh_cells || (mesh_every != 0 && applied % mesh_every == 0);

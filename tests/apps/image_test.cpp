@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bccmis/apps/image.h"
@@ -71,33 +72,34 @@ TEST(Pgm, RoundTripThroughFormatPgm) {
 }
 
 TEST(Pgm, ErrorsNameTheFileAndThePlace) {
-  EXPECT_EQ(error_of(""), "f.pgm: empty file, expected a PGM or PNG image");
-  EXPECT_EQ(error_of("GIF89a"), "f.pgm: not a PGM (P2/P5) or PNG image: it starts with 'G' 'I'");
-  EXPECT_EQ(error_of("P6\n1 1\n255\nabc"),
-            "f.pgm:1:1: wrong magic 'P6' (a colour PPM; convert it with ppmtopgm): expected P2 or P5 (a PGM image)");
-  EXPECT_EQ(error_of("P5\n0 4\n255\n"), "f.pgm:2:1: zero width");
-  EXPECT_EQ(error_of("P2\n4 0\n255\n"), "f.pgm:2:1: zero height");
-  EXPECT_EQ(error_of("P5\n# big\n100000 3\n255\n"),
-            "f.pgm:3:1: image of 100000x3 pixels exceeds the limit of 65536 pixels per side");
-  EXPECT_EQ(error_of("P5\n60000 60000\n255\n"),
-            "f.pgm:2:1: image of 60000x60000 = 3600000000 pixels exceeds the limit of 67108864 pixels");
-  EXPECT_EQ(error_of("P5\n99999999999999 2\n255\n"), "f.pgm:2:1: the width is absurdly large");
-  EXPECT_EQ(error_of("P5\n2 2\n"), "f.pgm:3:1: unexpected end of file, expected the maxval");
-  EXPECT_EQ(error_of("P5\n2 x\n255\n"), "f.pgm:2:3: expected the height, found 'x'");
-  EXPECT_EQ(error_of("P5\n2 2\n70000\n"), "f.pgm:3:1: maxval 70000 is out of range 1..65535");
-  EXPECT_EQ(error_of("P5\n2 2\n0\n"), "f.pgm:3:1: maxval 0 is out of range 1..65535");
-  EXPECT_EQ(error_of(std::string("P5\n2 2\n255\n\x01\x02\x03", 14)),
-            "f.pgm: byte 14: truncated raster: 2x2 samples of 1 byte need 4 bytes from byte 11, the file has 3");
-  EXPECT_EQ(error_of(std::string("P5\n2 1\n65535\n\x01\x02\x03", 16)),
-            "f.pgm: byte 16: truncated raster: 2x1 samples of 2 bytes need 4 bytes from byte 13, the file has 3");
-  EXPECT_EQ(error_of(std::string("P5\n2 1\n100\n\x01\xc8", 13)),
-            "f.pgm: byte 12: sample 200 exceeds maxval 100 (row 0, column 1)");
-  EXPECT_EQ(error_of("P2\n2 2\n10\n1 2\n3\n"),
-            "f.pgm:6:1: unexpected end of file: the raster has 3 of 4 samples (2x2)");
-  EXPECT_EQ(error_of("P2\n2 1\n10\n1 11\n"), "f.pgm:4:3: sample 11 exceeds maxval 10 (row 0, column 1)");
-  EXPECT_EQ(error_of("P2\n2 1\n10\n1 2 3\n"), "f.pgm:4:5: unexpected '3' after the 2 samples");
-  EXPECT_EQ(error_of("P2\n2 1\n10\n1 z\n"), "f.pgm:4:3: expected a sample, found 'z'");
-  EXPECT_EQ(error_of("P2\n2 1\n10\n1 2z\n"), "f.pgm:4:4: expected whitespace after a sample, found 'z'");
+  // The input and the message, in the order the reader checks.
+  const std::pair<std::string, std::string> cases[] = {
+      {"", "f.pgm: empty file, expected a PGM or PNG image"},
+      {"GIF89a", "f.pgm: not a PGM (P2/P5) or PNG image: it starts with 'G' 'I'"},
+      {"P6\n1 1\n255\nabc",
+       "f.pgm:1:1: wrong magic 'P6' (a colour PPM; convert it with ppmtopgm): expected P2 or P5 (a PGM image)"},
+      {"P5\n0 4\n255\n", "f.pgm:2:1: zero width"},
+      {"P2\n4 0\n255\n", "f.pgm:2:1: zero height"},
+      {"P5\n# big\n100000 3\n255\n", "f.pgm:3:1: image of 100000x3 pixels exceeds the limit of 65536 pixels per side"},
+      {"P5\n60000 60000\n255\n",
+       "f.pgm:2:1: image of 60000x60000 = 3600000000 pixels exceeds the limit of 67108864 pixels"},
+      {"P5\n99999999999999 2\n255\n", "f.pgm:2:1: the width is absurdly large"},
+      {"P5\n2 2\n", "f.pgm:3:1: unexpected end of file, expected the maxval"},
+      {"P5\n2 x\n255\n", "f.pgm:2:3: expected the height, found 'x'"},
+      {"P5\n2 2\n70000\n", "f.pgm:3:1: maxval 70000 is out of range 1..65535"},
+      {"P5\n2 2\n0\n", "f.pgm:3:1: maxval 0 is out of range 1..65535"},
+      {std::string("P5\n2 2\n255\n\x01\x02\x03", 14),
+       "f.pgm: byte 14: truncated raster: 2x2 samples of 1 byte need 4 bytes from byte 11, the file has 3"},
+      {std::string("P5\n2 1\n65535\n\x01\x02\x03", 16),
+       "f.pgm: byte 16: truncated raster: 2x1 samples of 2 bytes need 4 bytes from byte 13, the file has 3"},
+      {std::string("P5\n2 1\n100\n\x01\xc8", 13), "f.pgm: byte 12: sample 200 exceeds maxval 100 (row 0, column 1)"},
+      {"P2\n2 2\n10\n1 2\n3\n", "f.pgm:6:1: unexpected end of file: the raster has 3 of 4 samples (2x2)"},
+      {"P2\n2 1\n10\n1 11\n", "f.pgm:4:3: sample 11 exceeds maxval 10 (row 0, column 1)"},
+      {"P2\n2 1\n10\n1 2 3\n", "f.pgm:4:5: unexpected '3' after the 2 samples"},
+      {"P2\n2 1\n10\n1 z\n", "f.pgm:4:3: expected a sample, found 'z'"},
+      {"P2\n2 1\n10\n1 2z\n", "f.pgm:4:4: expected whitespace after a sample, found 'z'"},
+  };
+  for (const auto& [bytes, message] : cases) EXPECT_EQ(error_of(bytes), message);
   ImageLimits small;
   small.max_pixels = 10;
   EXPECT_EQ(error_of("P2 4 4 1\n", "f.pgm", small),

@@ -22,6 +22,19 @@ no_temporaries() {
   [ -z "$leftovers" ] || fail "temporary files left behind: $leftovers"
 }
 
+# Runs bccmis with the arguments after the first (stdout.txt, stderr.txt)
+# and fails unless it exits with the first (the message shows stderr when 0
+# was expected).
+run_expecting() {
+  expected=$1
+  shift
+  "$bccmis" "$@" > stdout.txt 2> stderr.txt
+  rc=$?
+  [ $rc -eq "$expected" ] && return 0
+  [ "$expected" -eq 0 ] && fail "exit code $rc, expected 0: $(cat stderr.txt)"
+  fail "exit code $rc, expected $expected"
+}
+
 printf 'lattice 2 1 1\nrefine 2 2\n' > good.trace
 printf 'lattice 2 1 1\nrefine 2 2\nsplit 4 4\n' > bad.trace
 
@@ -30,26 +43,20 @@ case $case_name in
     # A run that fails on its input must not touch existing output files.
     printf 'old state\n' > out.state
     printf 'old log\n' > out.log
-    "$bccmis" replay --quiet --state out.state --log out.log bad.trace > stdout.txt 2> stderr.txt
-    rc=$?
-    [ $rc -eq 2 ] || fail "exit code $rc, expected 2"
+    run_expecting 2 replay --quiet --state out.state --log out.log bad.trace
     [ "$(cat out.state)" = "old state" ] || fail "out.state was changed"
     [ "$(cat out.log)" = "old log" ] || fail "out.log was changed"
     no_temporaries
     ;;
   success_leaves_only_outputs)
-    "$bccmis" replay --quiet --state out.state --log out.log good.trace > stdout.txt 2> stderr.txt
-    rc=$?
-    [ $rc -eq 0 ] || fail "exit code $rc, expected 0: $(cat stderr.txt)"
+    run_expecting 0 replay --quiet --state out.state --log out.log good.trace
     [ "$(tail -n 1 out.state)" = "end 5 11" ] || fail "out.state is incomplete: $(tail -n 1 out.state)"
     [ "$(cat out.log)" = "refine 2 2 ok" ] || fail "out.log is wrong: $(cat out.log)"
     [ -s stdout.txt ] && fail "stdout is not empty with --state and --log"
     no_temporaries
     ;;
   missing_output_directory)
-    "$bccmis" replay --quiet --state no/such/dir/out.state good.trace > stdout.txt 2> stderr.txt
-    rc=$?
-    [ $rc -eq 2 ] || fail "exit code $rc, expected 2"
+    run_expecting 2 replay --quiet --state no/such/dir/out.state good.trace
     [ "$(wc -l < stderr.txt)" -eq 1 ] || fail "stderr is not one line: $(cat stderr.txt)"
     grep -q 'no/such/dir/out.state' stderr.txt || fail "stderr does not name the file: $(cat stderr.txt)"
     no_temporaries
@@ -73,18 +80,14 @@ case $case_name in
     ;;
   replay_outputs_all_or_nothing)
     # The log is fine, the state cannot be written: neither is.
-    "$bccmis" replay --quiet --log ok.log --state /proc/x good.trace > stdout.txt 2> stderr.txt
-    rc=$?
-    [ $rc -eq 2 ] || fail "exit code $rc, expected 2"
+    run_expecting 2 replay --quiet --log ok.log --state /proc/x good.trace
     [ -e ok.log ] && fail "ok.log was written although --state failed"
     grep -q '/proc/x' stderr.txt || fail "stderr does not name /proc/x: $(cat stderr.txt)"
     no_temporaries
     ;;
   replay_state_keeps_log_on_stdout)
     # --state without --log: the decision log still goes to stdout.
-    "$bccmis" replay --quiet --state out.state good.trace > stdout.txt 2> stderr.txt
-    rc=$?
-    [ $rc -eq 0 ] || fail "exit code $rc, expected 0: $(cat stderr.txt)"
+    run_expecting 0 replay --quiet --state out.state good.trace
     [ "$(cat stdout.txt)" = "refine 2 2 ok" ] || fail "stdout is not the decision log: $(cat stdout.txt)"
     [ "$(tail -n 1 out.state)" = "end 5 11" ] || fail "out.state is incomplete"
     no_temporaries
@@ -99,9 +102,7 @@ case $case_name in
     ;;
   heightfield_outputs_all_or_nothing)
     printf 'P2\n2 2\n255\n0 10\n20 30\n' > tiny.pgm
-    "$bccmis" heightfield tiny.pgm -q --obj a.obj --svg /proc/x.svg > stdout.txt 2> stderr.txt
-    rc=$?
-    [ $rc -eq 2 ] || fail "exit code $rc, expected 2"
+    run_expecting 2 heightfield tiny.pgm -q --obj a.obj --svg /proc/x.svg
     [ -e a.obj ] && fail "a.obj was written although --svg failed"
     no_temporaries
     ;;
@@ -111,9 +112,7 @@ case $case_name in
     printf 'P2\n2 2\n255\n0 10\n20 30\n' > tiny.pgm
     printf 'old\n' > a.obj
     ln a.obj old.obj
-    "$bccmis" heightfield tiny.pgm -q --obj a.obj --stats s.txt > stdout.txt 2> stderr.txt
-    rc=$?
-    [ $rc -eq 0 ] || fail "exit code $rc, expected 0: $(cat stderr.txt)"
+    run_expecting 0 heightfield tiny.pgm -q --obj a.obj --stats s.txt
     [ "$(cat old.obj)" = "old" ] || fail "the old a.obj was written in place, not replaced"
     grep -q '^v ' a.obj || fail "a.obj is not a mesh"
     no_temporaries
@@ -121,18 +120,14 @@ case $case_name in
   animate_outputs_all_or_nothing)
     # A failing --state: no frame is written either.
     mkdir frames
-    "$bccmis" animate -q --frames 3 --svg-dir frames --state /proc/x.state > stdout.txt 2> stderr.txt
-    rc=$?
-    [ $rc -eq 2 ] || fail "exit code $rc, expected 2"
+    run_expecting 2 animate -q --frames 3 --svg-dir frames --state /proc/x.state
     [ -z "$(ls frames)" ] || fail "frames were written although --state failed: $(ls frames | head -3)"
     no_temporaries
     ;;
   animate_replaces_atomically)
     printf 'old\n' > final.state
     ln final.state old.state
-    "$bccmis" animate -q --frames 2 --state final.state > stdout.txt 2> stderr.txt
-    rc=$?
-    [ $rc -eq 0 ] || fail "exit code $rc, expected 0: $(cat stderr.txt)"
+    run_expecting 0 animate -q --frames 2 --state final.state
     [ "$(cat old.state)" = "old" ] || fail "the old final.state was written in place, not replaced"
     [ "$(head -n 1 final.state)" = "bccmis-state 1" ] || fail "final.state is not a state"
     no_temporaries

@@ -30,6 +30,23 @@ function(bccmis_cli_test name exit)
   set_tests_properties(cli.${name} PROPERTIES LABELS ${T_LABEL})
 endfunction()
 
+# One test per case "name|counts|arg;arg;...": cli.<prefix>_<name> runs
+# tests/cli/check_svg3.py on `bccmis render <args>` and compares the SVG's
+# element counts by class. The cases are taken by index: a list would split
+# their arguments.
+function(bccmis_svg_count_tests prefix)
+  math(EXPR last "${ARGC} - 1")
+  foreach(i RANGE 1 ${last})
+    string(REPLACE "|" ";" parts "${ARGV${i}}")
+    list(GET parts 0 name)
+    list(GET parts 1 counts)
+    list(SUBLIST parts 2 -1 args)
+    add_test(NAME cli.${prefix}_${name}
+             COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${_cli}/check_svg3.py $<TARGET_FILE:bccmis> ${counts} ${args})
+    set_tests_properties(cli.${prefix}_${name} PROPERTIES LABELS cli)
+  endforeach()
+endfunction()
+
 # Golden traces: every spec/examples/*.trace against its .expected.
 file(GLOB _traces ${_examples}/*.trace)
 foreach(trace ${_traces})
@@ -365,7 +382,7 @@ set_tests_properties(cli.d3_mesh_readers PROPERTIES LABELS cli)
 # is on it; nodes on z = 4: the 9 of {0,4,8}^2; junctions among them:
 # (8,4,4) with |N| = 5, (8,0,4) and (8,8,4) with |N| = 3.
 set(_face3 ${_examples}/d3/face_refined.state)
-foreach(case
+bccmis_svg_count_tests(d3_render
     "face_z2|tri=46,green=29,slice-trace=2,leaf=5,center=4,node=0,junction=0,legend=2|${_face3};--slice;z=2"
     "face_default|tri=46,green=29,slice-trace=2,leaf=5,center=1,node=9,junction=3|${_face3}"
     # root refined (S = 4, box 4^3): each visible face has 4 quarter faces of
@@ -373,14 +390,6 @@ foreach(case
     # of the 3 edges shared by two visible faces: 36 - 6 = 30. The slice x = 1
     # cuts the 4 children with center x = 1, all 4 centers on it, no node.
     "root_x1|tri=48,green=30,slice-trace=2,leaf=4,center=4,node=0,junction=0,legend=1|--from-trace;${_examples}/d3/root.trace;--slice;x=1")
-  string(REPLACE "|" ";" parts "${case}")
-  list(GET parts 0 name)
-  list(GET parts 1 counts)
-  list(SUBLIST parts 2 -1 args)
-  add_test(NAME cli.d3_render_${name}
-           COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${_cli}/check_svg3.py $<TARGET_FILE:bccmis> ${counts} ${args})
-  set_tests_properties(cli.d3_render_${name} PROPERTIES LABELS cli)
-endforeach()
 bccmis_cli_test(d3_render_slice_outside 2 ARGS render ${_face3} --slice z=9 -o face.svg
                 STDERR_REGEX "--slice 'z=9': outside the box: z in \\[0, 8\\]")
 bccmis_cli_test(d3_render_slice_bad_axis 2 ARGS render ${_face3} --slice w=2 -o face.svg
@@ -401,18 +410,10 @@ set_tests_properties(cli.d3_render_docs_current PROPERTIES LABELS cli)
 # tetrahedron and leaves 2 facing triangles of the second; the 12 dihedral
 # angles are 8 of 60 degrees (bin 12) and 4 of 90 (bin 18): 2 bars.
 set(_two_tets ${PROJECT_SOURCE_DIR}/tests/stuff/two_tets.mesh)
-foreach(case
+bccmis_svg_count_tests(mesh_render
     "whole|tri=4,cut-tri=0,legend=2|${_two_tets}"
     "cut|tri=4,cut-tri=2,legend=2|${_two_tets};--slice;z=0.25"
     "histogram|bar=2,min=1,max=1,tri=0,legend=0|${_two_tets};--histogram")
-  string(REPLACE "|" ";" parts "${case}")
-  list(GET parts 0 name)
-  list(GET parts 1 counts)
-  list(SUBLIST parts 2 -1 args)
-  add_test(NAME cli.mesh_render_${name}
-           COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${_cli}/check_svg3.py $<TARGET_FILE:bccmis> ${counts} ${args})
-  set_tests_properties(cli.mesh_render_${name} PROPERTIES LABELS cli)
-endforeach()
 # The lattice's own mesh (bccmis mesh face_refined.state -o face.mesh): the
 # viewer sees exactly the box faces y = 0, z = 8 and x = 16 (outward normals
 # with a positive component along (1, -2, 1.5)), the 46 triangles counted
@@ -432,9 +433,9 @@ bccmis_cli_test(mesh_render_slice_not_a_number 2 ARGS render ${_two_tets} --slic
 bccmis_cli_test(mesh_render_histogram_and_slice 2 ARGS render ${_two_tets} --histogram --slice z=0 -o out.svg
                 STDERR_REGEX "--histogram draws no cut-away; drop --slice")
 bccmis_cli_test(mesh_render_histogram_of_a_state 2 ARGS render ${_face3} --histogram -o out.svg
-                STDERR_REGEX "face_refined.state: --histogram applies to a .mesh file")
+                STDERR_REGEX "face_refined.state: --histogram applies to a mesh file [(].mesh, .msh, .vtu[)]")
 bccmis_cli_test(mesh_render_from_trace 2 ARGS render --from-trace ${_two_tets} -o out.svg
-                STDERR_REGEX "two_tets.mesh: a .mesh file; --from-trace applies to traces")
+                STDERR_REGEX "two_tets.mesh: a mesh file; --from-trace applies to traces")
 # docs/stuff-sphere.svg and docs/stuff-sphere-angles.svg are the README's
 # commands' output as drawn now: the unit sphere stuffed at level 4 on 3
 # cells, levels 2 to 4 in the cut-away.

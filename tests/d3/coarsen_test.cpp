@@ -13,26 +13,19 @@ constexpr const char* kRefinedLeft = "lattice 2 1 1 2\nrefine 4 4 4\n";
 constexpr const char* kRefinedBoth = "lattice 2 1 1 2\nrefine 4 4 4\nrefine 12 4 4\n";
 const Point n{4, 4, 4};
 const PointSet kChildren = vs({{2, 2, 2}, {2, 2, 6}, {2, 6, 2}, {2, 6, 6}, {6, 2, 2}, {6, 2, 6}, {6, 6, 2}, {6, 6, 6}});
-// The 12 edge midpoints and 6 face centers of [0,8]^3.
-const PointSet kMidpoints = vs({{4, 0, 0},
-                                {4, 0, 8},
-                                {4, 8, 0},
-                                {4, 8, 8},
-                                {0, 4, 0},
-                                {0, 4, 8},
-                                {8, 4, 0},
-                                {8, 4, 8},
-                                {0, 0, 4},
-                                {0, 8, 4},
-                                {8, 0, 4},
-                                {8, 8, 4},
-                                {0, 4, 4},
-                                {8, 4, 4},
-                                {4, 0, 4},
-                                {4, 8, 4},
-                                {4, 4, 0},
-                                {4, 4, 8}});
+const PointSet kMidpoints = test::edge_midpoints_and_face_centers_of_cube_0_8();
 const PointSet kShared = vs({{8, 0, 4}, {8, 4, 0}, {8, 4, 4}, {8, 4, 8}, {8, 8, 4}});
+
+// Every vertex of `deleted` is gone from g: no center, no node, no
+// neighbor set, no level.
+void expect_deleted(const Graph& g, const PointSet& deleted) {
+  for (const Point& p : deleted) {
+    EXPECT_FALSE(g.is_center(p)) << to_string(p);
+    EXPECT_FALSE(g.is_node(p)) << to_string(p);
+    EXPECT_EQ(g.neighbors.count(p), 0u) << to_string(p);
+    EXPECT_EQ(g.level.count(p), 0u) << to_string(p);
+  }
+}
 
 TEST(D3Coarsen, K1_BoundaryIsTwentySixNodesClassifiedByChildren) {
   //= bccmis3d#eq-K1a type=test
@@ -68,12 +61,7 @@ TEST(D3Coarsen, K2_TheEightChildrenAreDeletedAndNBecomesACenter) {
   const CoarsenResult r = coarsen(g, n);
   ASSERT_TRUE(r.applied());
   EXPECT_EQ(r.Y, kChildren);
-  for (const Point& y : kChildren) {
-    EXPECT_FALSE(g.is_center(y));
-    EXPECT_FALSE(g.is_node(y));
-    EXPECT_EQ(g.neighbors.count(y), 0u);
-    EXPECT_EQ(g.level.count(y), 0u);
-  }
+  expect_deleted(g, kChildren);
   EXPECT_FALSE(g.is_node(n));
   EXPECT_TRUE(g.is_center(n));
   EXPECT_EQ(g.level_of(n), 0);
@@ -95,10 +83,7 @@ TEST(D3Coarsen, K3a_JMinusIsTheMidpointsNoRemainingCellHasAsCorner) {
   // All 18: 13 on the domain boundary keep no cell; the 5 on x = 8 keep only
   // the level-0 cube (12,4,4), for which they are not corners.
   EXPECT_EQ(r.J_minus, kMidpoints);
-  for (const Point& j : kMidpoints) {
-    EXPECT_FALSE(g.is_node(j));
-    EXPECT_EQ(g.neighbors.count(j), 0u);
-  }
+  expect_deleted(g, kMidpoints);
   // K3d: the cube beyond lost them; K4a: n has its 8 corners.
   EXPECT_EQ(g.nbr({12, 4, 4}).size(), 8u);
   EXPECT_EQ(g.nbr(n), vs({{0, 0, 0}, {0, 0, 8}, {0, 8, 0}, {0, 8, 8}, {8, 0, 0}, {8, 0, 8}, {8, 8, 0}, {8, 8, 8}}));

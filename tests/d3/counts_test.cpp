@@ -53,30 +53,29 @@ std::set<model::Leaves> enumerated(const LatticeSize& size) {
   return out;
 }
 
+// BFS over refine/coarsen reaches `count` states, and the same leaf sets
+// as the enumeration of balanced octree tilings.
+void expect_states(const LatticeSize& size, std::size_t count) {
+  const auto bfs = reachable(size);
+  EXPECT_EQ(bfs.size(), count);
+  EXPECT_EQ(bfs, enumerated(size));
+}
+
 TEST(D3Counts, Lattice1111HasTwoStates) {
   //= bccmis3d#fact-counts type=test
-  const LatticeSize size{1, 1, 1, 1};
-  const auto bfs = reachable(size);
-  EXPECT_EQ(bfs.size(), 2u);
-  EXPECT_EQ(bfs, enumerated(size));
+  expect_states(LatticeSize{1, 1, 1, 1}, 2u);
 }
 
 TEST(D3Counts, Lattice1112Has257States) {
   //= bccmis3d#fact-counts type=test
   // The root, or its 8 children with any subset of them refined: 1 + 2^8.
-  const LatticeSize size{1, 1, 1, 2};
-  const auto bfs = reachable(size);
-  EXPECT_EQ(bfs.size(), 257u);
-  EXPECT_EQ(bfs, enumerated(size));
+  expect_states(LatticeSize{1, 1, 1, 2}, 257u);
 }
 
 TEST(D3Counts, Lattice2211HasSixteenStates) {
   //= bccmis3d#fact-counts type=test
   // Four level-0 cubes, each refined or not: levels 0 and 1 are always balanced.
-  const LatticeSize size{2, 2, 1, 1};
-  const auto bfs = reachable(size);
-  EXPECT_EQ(bfs.size(), 16u);
-  EXPECT_EQ(bfs, enumerated(size));
+  expect_states(LatticeSize{2, 2, 1, 1}, 16u);
 }
 
 TEST(D3Counts, BalanceFiltersTheEnumeration) {

@@ -9,6 +9,7 @@
 #include <array>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <iterator>
 #include <optional>
 #include <random>
@@ -38,6 +39,26 @@ Graph refined(const LatticeSize& size, const std::vector<Point>& cells) {
 void link(Graph& g, const Point& a, const Point& b) {
   g.neighbors[a].insert(b);
   g.neighbors[b].insert(a);
+}
+
+// Adds the nodes `points`, each linked to every cell of `cells`.
+void add_linked_nodes(Graph& g, std::initializer_list<Point> cells, std::initializer_list<Point> points) {
+  for (const Point& p : points) {
+    g.N.insert(p);
+    for (const Point& c : cells) link(g, c, p);
+  }
+}
+
+// Adds the cell c of `level` and its 8 corners c +- h (as nodes), linked.
+void add_cube(Graph& g, const Point& c, int level, std::int64_t h) {
+  g.C.insert(c);
+  g.level[c] = level;
+  for (const std::int64_t x : {c.x - h, c.x + h})
+    for (const std::int64_t y : {c.y - h, c.y + h})
+      for (const std::int64_t z : {c.z - h, c.z + h}) {
+        g.N.insert({x, y, z});
+        link(g, c, {x, y, z});
+      }
 }
 
 void unlink(Graph& g, const Point& a, const Point& b) {
@@ -450,15 +471,7 @@ TEST(D3Layer2, NodeDegreeAboveEight) {
   // lattice 2 2 2 2 (S = 8): a level-2 cell [8, 10]^3 inside the level-0
   // cube (12, 12, 12) gives the interior node (8, 8, 8) a ninth cell.
   Graph g({2, 2, 2, 2});
-  const Point c{9, 9, 9};
-  g.C.insert(c);
-  g.level[c] = 2;
-  for (const std::int64_t x : {8, 10})
-    for (const std::int64_t y : {8, 10})
-      for (const std::int64_t z : {8, 10}) {
-        g.N.insert({x, y, z});
-        link(g, c, {x, y, z});
-      }
+  add_cube(g, {9, 9, 9}, 2, 1);
   const std::optional<Violation> v = find_violation(g);
   expect_violation(v, "node-degree", 2);
   EXPECT_EQ(v->message, "node-degree: node (8, 8, 8) has 9 cells; a node has at most 8");
@@ -466,8 +479,7 @@ TEST(D3Layer2, NodeDegreeAboveEight) {
 
 TEST(D3Layer2, BoundaryJunctionOnADomainEdge) {
   Graph g({1, 1, 1, 1});
-  g.N.insert({2, 0, 0});  // the midpoint of an edge on a domain edge
-  link(g, {2, 2, 2}, {2, 0, 0});
+  add_linked_nodes(g, {{2, 2, 2}}, {{2, 0, 0}});  // the midpoint of an edge on a domain edge
   const std::optional<Violation> v = find_violation(g);
   expect_violation(v, "boundary-junction", 2);
   EXPECT_EQ(v->where, std::vector<Point>({{2, 2, 2}, {2, 0, 0}}));
@@ -477,10 +489,7 @@ TEST(D3Layer2, BoundaryJunctionOnADomainFace) {
   // lattice 3 3 1 1: the middle cell lists the center of its bottom face,
   // which is in the domain boundary, with the face's four edge midpoints.
   Graph g({3, 3, 1, 1});
-  for (const Point& p : {Point{6, 6, 0}, Point{4, 6, 0}, Point{8, 6, 0}, Point{6, 4, 0}, Point{6, 8, 0}}) {
-    g.N.insert(p);
-    link(g, {6, 6, 2}, p);
-  }
+  add_linked_nodes(g, {{6, 6, 2}}, {{6, 6, 0}, {4, 6, 0}, {8, 6, 0}, {6, 4, 0}, {6, 8, 0}});
   const std::optional<Violation> v = find_violation(g);
   expect_violation(v, "boundary-junction", 2);
   EXPECT_EQ(v->where, std::vector<Point>({{6, 6, 2}, {6, 6, 0}}));
@@ -490,11 +499,7 @@ TEST(D3Layer2, JunctionDegree) {
   // lattice 2 1 1 1: both cells list the center of their shared face and its
   // edge midpoints, but no finer cell has them as corners.
   Graph g({2, 1, 1, 1});
-  for (const Point& p : {Point{4, 2, 2}, Point{4, 0, 2}, Point{4, 4, 2}, Point{4, 2, 0}, Point{4, 2, 4}}) {
-    g.N.insert(p);
-    link(g, {2, 2, 2}, p);
-    link(g, {6, 2, 2}, p);
-  }
+  add_linked_nodes(g, {{2, 2, 2}, {6, 2, 2}}, {{4, 2, 2}, {4, 0, 2}, {4, 4, 2}, {4, 2, 0}, {4, 2, 4}});
   const std::optional<Violation> v = find_violation(g);
   expect_violation(v, "junction-degree", 2);
   EXPECT_EQ(v->where, std::vector<Point>({{2, 2, 2}, {4, 0, 2}}));
@@ -530,15 +535,7 @@ TEST(D3Layer4, LevelRange) {
 TEST(D3Layer4, OutsideDomain) {
   // A second level-0 cube stacked on top of lattice 1 1 1 1 (S = 4).
   Graph g({1, 1, 1, 1});
-  const Point c{2, 2, 6};
-  g.C.insert(c);
-  g.level[c] = 0;
-  for (const std::int64_t x : {0, 4})
-    for (const std::int64_t y : {0, 4})
-      for (const std::int64_t z : {4, 8}) {
-        g.N.insert({x, y, z});
-        link(g, c, {x, y, z});
-      }
+  add_cube(g, {2, 2, 6}, 0, 2);
   const std::optional<Violation> v = find_violation(g);
   expect_violation(v, "outside-domain", 4);
   EXPECT_EQ(v->where, std::vector<Point>({{0, 0, 8}}));

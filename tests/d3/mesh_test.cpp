@@ -265,24 +265,28 @@ TEST(D3Mesh, FiveShapesAndTheirAngles) {
   EXPECT_NEAR(static_cast<double>(hi), 120.0, 1e-9);
 }
 
+// The mesh of g: `count` tetrahedra, 6 times their volumes summing to
+// `det6`, `cases` of each case (spec/mesh3d.md M3-M8), and no problem.
+void expect_mesh(const Graph& g, const Tets& tets, std::size_t count, std::int64_t det6,
+                 const std::map<Case, std::size_t>& cases) {
+  EXPECT_EQ(tets.size(), count);
+  EXPECT_EQ(total_det6(tets), det6);
+  EXPECT_EQ(case_counts(g, tets), cases);
+  EXPECT_EQ(mesh_problem(g, tets), "");
+}
+
 TEST(D3Mesh, OneCube) {
   // spec/mesh3d.md M15: 6 hull faces x 4 segments.
   const Graph g(LatticeSize{1, 1, 1, 0});
   const Tets tets = tetrahedra(g);
-  EXPECT_EQ(tets.size(), 24u);
-  EXPECT_EQ(total_det6(tets), 48);
-  EXPECT_EQ(case_counts(g, tets), (std::map<Case, std::size_t>{{Case::hull, 24}}));
-  EXPECT_EQ(mesh_problem(g, tets), "");
+  expect_mesh(g, tets, 24u, 48, std::map<Case, std::size_t>{{Case::hull, 24}});
 }
 
 TEST(D3Mesh, TwoCubes) {
   // spec/mesh3d.md M16: 4 on the equal face, 10 hull faces x 4.
   const Graph g(LatticeSize{2, 1, 1, 0});
   const Tets tets = tetrahedra(g);
-  EXPECT_EQ(tets.size(), 44u);
-  EXPECT_EQ(total_det6(tets), 96);
-  EXPECT_EQ(case_counts(g, tets), (std::map<Case, std::size_t>{{Case::equal, 4}, {Case::hull, 40}}));
-  EXPECT_EQ(mesh_problem(g, tets), "");
+  expect_mesh(g, tets, 44u, 96, std::map<Case, std::size_t>{{Case::equal, 4}, {Case::hull, 40}});
   // M5: the equal face's tetrahedra are whole BCC tetrahedra, emitted from (1,1,1).
   for (const Tet& t : tets)
     if (case_of(g, t) == Case::equal) {
@@ -297,10 +301,7 @@ TEST(D3Mesh, RefinedRoot) {
   Graph g(LatticeSize{1, 1, 1, 1});
   ASSERT_TRUE(refine(g, {2, 2, 2}).applied());
   const Tets tets = tetrahedra(g);
-  EXPECT_EQ(tets.size(), 144u);
-  EXPECT_EQ(total_det6(tets), 384);
-  EXPECT_EQ(case_counts(g, tets), (std::map<Case, std::size_t>{{Case::equal, 48}, {Case::hull, 96}}));
-  EXPECT_EQ(mesh_problem(g, tets), "");
+  expect_mesh(g, tets, 144u, 384, std::map<Case, std::size_t>{{Case::equal, 48}, {Case::hull, 96}});
 }
 
 TEST(D3Mesh, SplitFace) {
@@ -308,10 +309,8 @@ TEST(D3Mesh, SplitFace) {
   Graph g(LatticeSize{2, 1, 1, 2});
   ASSERT_TRUE(refine(g, {4, 4, 4}).applied());
   const Tets tets = tetrahedra(g);
-  EXPECT_EQ(tets.size(), 168u);
-  EXPECT_EQ(total_det6(tets), 6144);
-  EXPECT_EQ(case_counts(g, tets),
-            (std::map<Case, std::size_t>{{Case::equal, 48}, {Case::coarse, 8}, {Case::fine, 8}, {Case::hull, 104}}));
+  expect_mesh(g, tets, 168u, 6144,
+              std::map<Case, std::size_t>{{Case::equal, 48}, {Case::coarse, 8}, {Case::fine, 8}, {Case::hull, 104}});
   // M6: the coarse side, 8 tetrahedra with apex (8,4,4), one per half edge.
   // M7: 2 per quarter face, with apex (8,4,4) a corner of the fine leaf.
   std::map<Point, std::size_t> fine_per_leaf;
@@ -496,6 +495,14 @@ TetMesh split_face_mesh(Tets* tets) {
   return index_mesh(g, *tets);
 }
 
+// The text write(out, mesh) makes.
+template <class Write>
+std::string written(const TetMesh& mesh, Write write) {
+  std::ostringstream out;
+  write(out, mesh);
+  return out.str();
+}
+
 std::vector<std::int64_t> numbers(std::istream& in, std::size_t count) {
   std::vector<std::int64_t> out(count);
   for (std::int64_t& v : out) in >> v;
@@ -505,9 +512,7 @@ std::vector<std::int64_t> numbers(std::istream& in, std::size_t count) {
 TEST(D3MeshWriters, VtuReadsBack) {
   Tets tets;
   const TetMesh mesh = split_face_mesh(&tets);
-  std::ostringstream out;
-  io::write_vtu(out, mesh);
-  const std::string text = out.str();
+  const std::string text = written(mesh, [](std::ostream& out, const TetMesh& m) { io::write_vtu(out, m); });
   EXPECT_NE(text.find("<Piece NumberOfPoints=\"65\" NumberOfCells=\"168\">"), std::string::npos);
   // The six DataArrays in order: kind, level, points, connectivity, offsets, types.
   std::vector<std::vector<std::int64_t>> arrays;
@@ -539,12 +544,42 @@ TEST(D3MeshWriters, VtuReadsBack) {
   EXPECT_EQ(std::count(arrays[0].begin(), arrays[0].end(), 2), 25);
 }
 
+// The sign of det[b - a, c - a, d - a] on lattice points.
+int orientation_of(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const std::int64_t u[3] = {b.x - a.x, b.y - a.y, b.z - a.z}, v[3] = {c.x - a.x, c.y - a.y, c.z - a.z},
+                     w[3] = {d.x - a.x, d.y - a.y, d.z - a.z};
+  const std::int64_t det =
+      u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0]);
+  return (det > 0) - (det < 0);
+}
+
+// `tri` is a face of exactly one of `tets`, and that tetrahedron's fourth
+// vertex lies behind it (the triangle faces outward).
+void expect_outward_boundary(const Tets& tets, const std::array<Point, 3>& tri) {
+  int owners = 0;
+  for (const Tet& t : tets) {
+    int shared = 0;
+    const Point* other = nullptr;
+    for (const Point& p : t) {
+      if (p == tri[0] || p == tri[1] || p == tri[2])
+        ++shared;
+      else
+        other = &p;
+    }
+    if (shared != 3) continue;
+    ++owners;
+    EXPECT_LT(orientation_of(tri[0], tri[1], tri[2], *other), 0) << "a boundary triangle faces inward";
+  }
+  EXPECT_EQ(owners, 1);
+}
+
+// M21: the physical groups, entities, nodes, the tetrahedra in their order
+// and the boundary triangles (104 on the split state, mesh3d.md M18's
+// boundary_triangles) facing outward.
 TEST(D3MeshWriters, MshReadsBack) {
   Tets tets;
   const TetMesh mesh = split_face_mesh(&tets);
-  std::ostringstream out;
-  io::write_msh(out, mesh);
-  std::istringstream in(out.str());
+  std::istringstream in(written(mesh, [](std::ostream& out, const TetMesh& m) { io::write_msh(out, m); }));
   std::string word;
   in >> word;
   EXPECT_EQ(word, "$MeshFormat");
@@ -555,24 +590,45 @@ TEST(D3MeshWriters, MshReadsBack) {
   EXPECT_EQ(file_type, 0);
   EXPECT_EQ(data_size, 8);
   EXPECT_EQ(word, "$EndMeshFormat");
+  std::string line;
+  std::getline(in >> std::ws, line);
+  EXPECT_EQ(line, "$PhysicalNames");
+  for (const char* expected : {"2", "3 1 \"component_1\"", "2 2 \"boundary\"", "$EndPhysicalNames", "$Entities"}) {
+    std::getline(in, line);
+    EXPECT_EQ(line, expected);
+  }
+  // No points or curves; surface 1 (the boundary, physical 2), volume 1
+  // (physical 1, bounded by surface 1), both with the box [0,16]x[0,8]x[0,8].
+  EXPECT_EQ(numbers(in, 4), (std::vector<std::int64_t>{0, 0, 1, 1}));
+  EXPECT_EQ(numbers(in, 10), (std::vector<std::int64_t>{1, 0, 0, 0, 16, 8, 8, 1, 2, 0}));
+  EXPECT_EQ(numbers(in, 11), (std::vector<std::int64_t>{1, 0, 0, 0, 16, 8, 8, 1, 1, 1, 1}));
+  in >> word;
+  EXPECT_EQ(word, "$EndEntities");
   in >> word;
   EXPECT_EQ(word, "$Nodes");
   EXPECT_EQ(numbers(in, 8), (std::vector<std::int64_t>{1, 65, 1, 65, 3, 1, 0, 65}));
   const std::vector<std::int64_t> tags = numbers(in, 65);
   for (std::size_t i = 0; i < 65; ++i) EXPECT_EQ(tags[i], static_cast<std::int64_t>(i + 1));
   const std::vector<std::int64_t> xyz = numbers(in, 3 * 65);
+  const auto point = [&](std::int64_t tag) {
+    const auto v = static_cast<std::size_t>(tag - 1);
+    return Point{xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]};
+  };
   in >> word;
   EXPECT_EQ(word, "$EndNodes");
   in >> word;
   EXPECT_EQ(word, "$Elements");
-  EXPECT_EQ(numbers(in, 8), (std::vector<std::int64_t>{1, 168, 1, 168, 3, 1, 4, 168}));
+  EXPECT_EQ(numbers(in, 8), (std::vector<std::int64_t>{2, 272, 1, 272, 3, 1, 4, 168}));
   for (std::size_t i = 0; i < 168; ++i) {
     const std::vector<std::int64_t> e = numbers(in, 5);
     EXPECT_EQ(e[0], static_cast<std::int64_t>(i + 1));
-    for (std::size_t j = 0; j < 4; ++j) {
-      const auto v = static_cast<std::size_t>(e[j + 1] - 1);
-      EXPECT_EQ((Point{xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]}), tets[i][j]);
-    }
+    for (std::size_t j = 0; j < 4; ++j) EXPECT_EQ(point(e[j + 1]), tets[i][j]);
+  }
+  EXPECT_EQ(numbers(in, 4), (std::vector<std::int64_t>{2, 1, 2, 104}));
+  for (std::size_t i = 0; i < 104; ++i) {
+    const std::vector<std::int64_t> e = numbers(in, 4);
+    EXPECT_EQ(e[0], static_cast<std::int64_t>(168 + i + 1));
+    expect_outward_boundary(tets, {point(e[1]), point(e[2]), point(e[3])});
   }
   in >> word;
   EXPECT_EQ(word, "$EndElements");
@@ -595,8 +651,8 @@ TEST(D3MeshWriters, EmptyAndHandBuiltMeshes) {
   std::ostringstream msh;
   io::write_msh(msh, empty);
   EXPECT_EQ(msh.str(),
-            "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 0 0 0\n3 1 0 0\n$EndNodes\n"
-            "$Elements\n1 0 0 0\n3 1 4 0\n$EndElements\n");
+            "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PhysicalNames\n0\n$EndPhysicalNames\n$Entities\n0 0 0 0\n"
+            "$EndEntities\n$Nodes\n0 0 0 0\n$EndNodes\n$Elements\n0 0 0 0\n$EndElements\n");
   // One cube (lattice 1 1 1 0): a tetrahedron listed from a corner first.
   const Graph g(LatticeSize{1, 1, 1, 0});
   const Tet t{Point{0, 0, 0}, Point{2, 0, 0}, Point{0, 2, 0}, Point{0, 0, 2}};
@@ -614,9 +670,7 @@ TEST(D3MeshWriters, EmptyAndHandBuiltMeshes) {
 TEST(D3MeshWriters, MeditReadsBack) {
   Tets tets;
   const TetMesh mesh = split_face_mesh(&tets);
-  std::ostringstream out;
-  io::write_medit(out, mesh);
-  std::istringstream in(out.str());
+  std::istringstream in(written(mesh, [](std::ostream& out, const TetMesh& m) { io::write_medit(out, m); }));
   std::string a, b;
   in >> a >> b;
   EXPECT_EQ(a + ' ' + b, "MeshVersionFormatted 2");
@@ -640,6 +694,20 @@ TEST(D3MeshWriters, MeditReadsBack) {
       EXPECT_EQ((Point{v[4 * k], v[4 * k + 1], v[4 * k + 2]}), tets[i][j]);
       EXPECT_EQ(v[4 * k + 3], static_cast<std::int64_t>(mesh.kind[k]));
     }
+  }
+  // M22: the boundary triangles, outward, each with its component (1).
+  in >> a;
+  EXPECT_EQ(a, "Triangles");
+  EXPECT_EQ(numbers(in, 1).front(), 104);
+  for (std::size_t i = 0; i < 104; ++i) {
+    const std::vector<std::int64_t> e = numbers(in, 4);
+    std::array<Point, 3> tri;
+    for (std::size_t j = 0; j < 3; ++j) {
+      const auto k = static_cast<std::size_t>(e[j] - 1);
+      tri[j] = Point{v[4 * k], v[4 * k + 1], v[4 * k + 2]};
+    }
+    expect_outward_boundary(tets, tri);
+    EXPECT_EQ(e[3], 1);
   }
   in >> a;
   EXPECT_EQ(a, "End");

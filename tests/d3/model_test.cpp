@@ -28,6 +28,7 @@
 #include "bccmis/d3/mesh.h"
 #include "bccmis/invariants/d3/invariants.h"
 #include "check.h"
+#include "testing/decision.h"
 #include "util.h"
 
 namespace bccmis::d3 {
@@ -93,13 +94,7 @@ void run_and_compare(bool is_refine, const Point& at, const Model& before, Sut& 
   const std::string state_before = canonical_state(sut.g);
   std::string have;
   try {
-    if (is_refine) {
-      const RefineResult r = refine(sut.g, at);
-      have = r.refused ? std::string(code(*r.refused)) : "ok";
-    } else {
-      const CoarsenResult r = coarsen(sut.g, at);
-      have = r.refused ? std::string(code(*r.refused)) : "ok";
-    }
+    have = bccmis::testing::run_and_decide(sut.g, is_refine, at);
   } catch (const std::exception& e) {
     fail(what + " threw: " + e.what());
   }
@@ -117,6 +112,20 @@ void run_and_compare(bool is_refine, const Point& at, const Model& before, Sut& 
     fail("after " + what + ": the graph is not the geometric graph of its leaves: " + why);
 }
 
+// kind 0: one of `preferred`; kind 1: a corner of one of the leaves
+// (`centers`), which corner(box) of its cube says (a node); otherwise any
+// point in or around the domain.
+template <class Corner>
+Point pick_point(const Model& m, int kind, const std::vector<Point>& preferred, const std::vector<Point>& centers,
+                 Corner corner) {
+  if (kind == 0) return pick(preferred);
+  if (kind == 1) {
+    const Point c = pick(centers);
+    return corner(model::cube(m.size, c, m.leaves.at(c)));
+  }
+  return any_point(m.size);
+}
+
 struct Refine : Cmd {
   Point at;
   explicit Refine(const Model& m) {
@@ -124,15 +133,7 @@ struct Refine : Cmd {
     std::vector<Point> centers;
     for (const auto& [c, l] : m.leaves) centers.push_back(c);
     const int kind = *rc::gen::weightedElement<int>({{6, 0}, {1, 1}, {1, 2}});
-    if (kind == 0) {
-      at = pick(centers);
-    } else if (kind == 1) {
-      const Point c = pick(centers);
-      const model::Box b = model::cube(m.size, c, m.leaves.at(c));
-      at = Point{b.lo[0], b.hi[1], b.lo[2]};  // a corner of a leaf: a node
-    } else {
-      at = any_point(m.size);
-    }
+    at = pick_point(m, kind, centers, centers, [](const model::Box& b) { return Point{b.lo[0], b.hi[1], b.lo[2]}; });
   }
   void apply(Model& m) const override {
     if (model::refine_decision(m.size, m.leaves, at) == "ok") model::apply_refine(m.size, m.leaves, at);
@@ -154,15 +155,7 @@ struct Coarsen : Cmd {
       parents.push_back(Point{c.x / s * s + s / 2, c.y / s * s + s / 2, c.z / s * s + s / 2});
     }
     const int kind = *rc::gen::weightedElement<int>({{parents.empty() ? 0 : 6, 0}, {1, 1}, {1, 2}});
-    if (kind == 0) {
-      at = pick(parents);
-    } else if (kind == 1) {
-      const Point c = pick(centers);
-      const model::Box b = model::cube(m.size, c, m.leaves.at(c));
-      at = Point{b.hi[0], b.lo[1], b.hi[2]};
-    } else {
-      at = any_point(m.size);
-    }
+    at = pick_point(m, kind, parents, centers, [](const model::Box& b) { return Point{b.hi[0], b.lo[1], b.hi[2]}; });
   }
   void apply(Model& m) const override {
     if (model::coarsen_decision(m.size, m.leaves, at) == "ok") model::apply_coarsen(m.size, m.leaves, at);
@@ -274,6 +267,17 @@ RC_GTEST_PROP(D3Properties, CoarsenThenRefineIsTheIdentity, ()) {
   RC_ASSERT(h == g);
 }
 
+// If `refused`, the state `after` must still be `before` and the guard
+// must have given the same refusal; 1 if refused, else 0.
+template <class Refusal>
+int changed_nothing_if_refused(const std::optional<Refusal>& refused, const Graph& after, const std::string& before,
+                               const std::optional<Refusal>& guard) {
+  if (!refused) return 0;
+  RC_ASSERT(canonical_state(after) == before);
+  RC_ASSERT(guard == refused);
+  return 1;
+}
+
 RC_GTEST_PROP(D3Properties, RefusedCallsChangeNothing, ()) {
   const Graph g = random_state(some_size(), *rc::gen::inRange(0, 30));
   const std::string before = canonical_state(g);
@@ -285,18 +289,10 @@ RC_GTEST_PROP(D3Properties, RefusedCallsChangeNothing, ()) {
   for (const Point& p : targets) {
     Graph h = g;
     const RefineResult r = refine(h, p);
-    if (r.refused) {
-      ++refused;
-      RC_ASSERT(canonical_state(h) == before);
-      RC_ASSERT(can_refine(g, p) == r.refused);
-    }
+    refused += changed_nothing_if_refused(r.refused, h, before, can_refine(g, p));
     Graph k = g;
     const CoarsenResult c = coarsen(k, p);
-    if (c.refused) {
-      ++refused;
-      RC_ASSERT(canonical_state(k) == before);
-      RC_ASSERT(can_coarsen(g, p) == c.refused);
-    }
+    refused += changed_nothing_if_refused(c.refused, k, before, can_coarsen(g, p));
   }
   RC_ASSERT(refused > 0);
 }

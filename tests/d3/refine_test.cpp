@@ -105,24 +105,7 @@ TEST(D3Refine, R3a_JPlusIsTheMissingMidpointsAndFaceCenters) {
   const RefineResult first = refine(g, {4, 4, 4});
   ASSERT_TRUE(first.applied());
   // J = ∅: all 12 edge midpoints and 6 face centers of [0,8]^3 are new.
-  const PointSet left_new = vs({{4, 0, 0},
-                                {4, 0, 8},
-                                {4, 8, 0},
-                                {4, 8, 8},
-                                {0, 4, 0},
-                                {0, 4, 8},
-                                {8, 4, 0},
-                                {8, 4, 8},
-                                {0, 0, 4},
-                                {0, 8, 4},
-                                {8, 0, 4},
-                                {8, 8, 4},
-                                {0, 4, 4},
-                                {8, 4, 4},
-                                {4, 0, 4},
-                                {4, 8, 4},
-                                {4, 4, 0},
-                                {4, 4, 8}});
+  const PointSet left_new = test::edge_midpoints_and_face_centers_of_cube_0_8();
   EXPECT_EQ(first.J_plus, left_new);
   for (const Point& j : first.J_plus) EXPECT_TRUE(g.is_node(j));
   // Refining the right cube: the 5 nodes on x = 8 are old junctions (J), so

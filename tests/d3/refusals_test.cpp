@@ -7,26 +7,34 @@
 namespace bccmis::d3 {
 namespace {
 
-void expect_refine_refused(const std::string& trace, const Point& c, RefineRefusal why) {
+// The sets an operation created or deleted besides Y.
+const PointSet& junctions(const RefineResult& r) { return r.J_plus; }
+const PointSet& junctions(const CoarsenResult& r) { return r.J_minus; }
+
+// In the state `trace` builds, can(g, p) and op(g, p) refuse with `why`,
+// op returns empty sets, and the state is byte-identical after it.
+template <class Refusal, class Can, class Op>
+void expect_refused(const std::string& trace, const Point& p, Refusal why, const char* op_name, Can can, Op op) {
   Graph g = test::build(trace);
   const std::string before = canonical_state(g);
-  EXPECT_EQ(can_refine(g, c), why) << to_string(c);
-  const RefineResult r = refine(g, c);
-  EXPECT_EQ(r.refused, why) << to_string(c);
+  EXPECT_EQ(can(g, p), why) << to_string(p);
+  const auto r = op(g, p);
+  EXPECT_EQ(r.refused, why) << to_string(p);
   EXPECT_TRUE(r.Y.empty());
-  EXPECT_TRUE(r.J_plus.empty());
-  EXPECT_EQ(canonical_state(g), before) << "refine " << to_string(c) << " changed the state";
+  EXPECT_TRUE(junctions(r).empty());
+  EXPECT_EQ(canonical_state(g), before) << op_name << " " << to_string(p) << " changed the state";
+}
+
+void expect_refine_refused(const std::string& trace, const Point& c, RefineRefusal why) {
+  expect_refused(
+      trace, c, why, "refine", [](const Graph& g, const Point& p) { return can_refine(g, p); },
+      [](Graph& g, const Point& p) { return refine(g, p); });
 }
 
 void expect_coarsen_refused(const std::string& trace, const Point& n, CoarsenRefusal why) {
-  Graph g = test::build(trace);
-  const std::string before = canonical_state(g);
-  EXPECT_EQ(can_coarsen(g, n), why) << to_string(n);
-  const CoarsenResult r = coarsen(g, n);
-  EXPECT_EQ(r.refused, why) << to_string(n);
-  EXPECT_TRUE(r.Y.empty());
-  EXPECT_TRUE(r.J_minus.empty());
-  EXPECT_EQ(canonical_state(g), before) << "coarsen " << to_string(n) << " changed the state";
+  expect_refused(
+      trace, n, why, "coarsen", [](const Graph& g, const Point& p) { return can_coarsen(g, p); },
+      [](Graph& g, const Point& p) { return coarsen(g, p); });
 }
 
 constexpr const char* kTwo = "lattice 2 1 1 2\n";

@@ -45,6 +45,19 @@ bool has_hull_vertex(const Graph& g, const Tet& t) {
   return std::any_of(t.begin(), t.end(), [&](const Point& p) { return !g.N.count(p) && !g.C.count(p); });
 }
 
+// g's tetrahedra without the first one for which pred holds (a test failure
+// if there is none).
+template <class Pred>
+std::vector<Tet> tetrahedra_without_first(const Graph& g, Pred pred) {
+  std::vector<Tet> tets = tetrahedra(g);
+  const auto it = std::find_if(tets.begin(), tets.end(), pred);
+  if (it == tets.end())
+    ADD_FAILURE() << "no tetrahedron to remove";
+  else
+    tets.erase(it);
+  return tets;
+}
+
 // The uniform lattices of the issue, and the largest extent (2^62).
 TEST(D3Layer6, UniformLatticesPass) {
   const std::int64_t h = std::int64_t{1} << 61;
@@ -159,10 +172,7 @@ TEST(D3Layer6, DuplicatedTetIsCgalInvalid) {
 // shares a triangle with those closing the box and the loader refuses the soup.
 TEST(D3Layer6, RemovedInteriorTetIsCgalInvalid) {
   const Graph g = refined({1, 1, 1, 1}, {{2, 2, 2}});
-  std::vector<Tet> tets = tetrahedra(g);
-  const auto interior = std::find_if(tets.begin(), tets.end(), [&](const Tet& t) { return !has_hull_vertex(g, t); });
-  ASSERT_NE(interior, tets.end());
-  tets.erase(interior);
+  const std::vector<Tet> tets = tetrahedra_without_first(g, [&](const Tet& t) { return !has_hull_vertex(g, t); });
   const std::optional<Violation> v = layer6(g, tets);
   expect_code(v, "cgal-invalid");
   EXPECT_NE(v->message.find("the loader refused them"), std::string::npos) << v->message;
@@ -174,10 +184,7 @@ TEST(D3Layer6, RemovedInteriorTetIsCgalInvalid) {
 // (mesh-volume).
 TEST(D3Layer6, RemovedBoundaryTetIsLeftToLayer5) {
   const Graph g({2, 1, 1, 0});
-  std::vector<Tet> tets = tetrahedra(g);
-  const auto boundary = std::find_if(tets.begin(), tets.end(), [&](const Tet& t) { return has_hull_vertex(g, t); });
-  ASSERT_NE(boundary, tets.end());
-  tets.erase(boundary);
+  const std::vector<Tet> tets = tetrahedra_without_first(g, [&](const Tet& t) { return has_hull_vertex(g, t); });
   EXPECT_EQ(layer6(g, tets), std::nullopt);
   ASSERT_TRUE(check_mesh(g, tets).has_value());
   EXPECT_EQ(check_mesh(g, tets)->code, "mesh-volume");
@@ -189,12 +196,9 @@ TEST(D3Layer6, RemovedBoundaryTetIsLeftToLayer5) {
 // rejects it.
 TEST(D3Layer6, RemovedDeepTetIsCgalInvalid) {
   const Graph g({3, 3, 3, 0});
-  std::vector<Tet> tets = tetrahedra(g);
   const auto inside = [](const Point& p) { return p.x > 0 && p.x < 6 && p.y > 0 && p.y < 6 && p.z > 0 && p.z < 6; };
-  const auto deep =
-      std::find_if(tets.begin(), tets.end(), [&](const Tet& t) { return std::all_of(t.begin(), t.end(), inside); });
-  ASSERT_NE(deep, tets.end());
-  tets.erase(deep);
+  const std::vector<Tet> tets =
+      tetrahedra_without_first(g, [&](const Tet& t) { return std::all_of(t.begin(), t.end(), inside); });
   const std::optional<Violation> v = layer6(g, tets);
   expect_code(v, "cgal-invalid");
   EXPECT_NE(v->message.find("Triangulation_data_structure_3::is_valid fails"), std::string::npos) << v->message;
@@ -206,15 +210,12 @@ TEST(D3Layer6, RemovedDeepTetIsCgalInvalid) {
 // lattice 3 3 3 0.
 TEST(D3Layer6, RemovedTetTouchingTheBoundaryAtAVertex) {
   const Graph g({3, 3, 3, 0});
-  std::vector<Tet> tets = tetrahedra(g);
   const std::vector<Point> want{{1, 1, 1}, {1, 1, 3}, {2, 0, 2}, {2, 2, 2}};
-  const auto it = std::find_if(tets.begin(), tets.end(), [&](const Tet& t) {
+  const std::vector<Tet> tets = tetrahedra_without_first(g, [&](const Tet& t) {
     std::vector<Point> sorted(t.begin(), t.end());
     std::sort(sorted.begin(), sorted.end());
     return sorted == want;
   });
-  ASSERT_NE(it, tets.end());
-  tets.erase(it);
   const std::optional<Violation> v = layer6(g, tets);
   expect_code(v, "cgal-invalid");
   EXPECT_NE(v->message.find("Triangulation_data_structure_3::is_valid fails"), std::string::npos) << v->message;

@@ -27,6 +27,29 @@ namespace test {
 /// A vertex set written as {{x, y, z}, ...}.
 inline PointSet vs(std::initializer_list<Point> points) { return PointSet(points); }
 
+/// The 12 edge midpoints and 6 face centers of the cube [0,8]^3: the
+/// nodes refine((4, 4, 4)) adds to a lattice of level-0 side 8.
+inline PointSet edge_midpoints_and_face_centers_of_cube_0_8() {
+  return vs({{4, 0, 0},
+             {4, 0, 8},
+             {4, 8, 0},
+             {4, 8, 8},
+             {0, 4, 0},
+             {0, 4, 8},
+             {8, 4, 0},
+             {8, 4, 8},
+             {0, 0, 4},
+             {0, 8, 4},
+             {8, 0, 4},
+             {8, 8, 4},
+             {0, 4, 4},
+             {8, 4, 4},
+             {4, 0, 4},
+             {4, 8, 4},
+             {4, 4, 0},
+             {4, 4, 8}});
+}
+
 /// Replays a 3D trace (parse_trace, the one stepper): the final graph, and
 /// the decision log in `log`.
 inline Graph replay(const std::string& text, std::string* log = nullptr) {

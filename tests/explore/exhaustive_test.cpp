@@ -232,41 +232,47 @@ TEST(Explore, ReportsABrokenInverseWithAReproducer) {
   EXPECT_NE(to_json(r).find("\"trace\": \"lattice 1 1 1\\nrefine 2 2\\ncoarsen 2 2\\n\""), std::string::npos);
 }
 
-TEST(Explore, ReportsARefusalThatChangesTheState) {
+// Options whose refine is the real one followed by corrupt(g, c, result).
+ExploreOptions refine_then(void (*corrupt)(Graph&, const Point&, const RefineResult&)) {
   ExploreOptions options;
-  options.refine = [](Graph& g, const Point& c) {
+  options.refine = [corrupt](Graph& g, const Point& c) {
     RefineResult r = refine(g, c);
-    if (!r.applied() && g.is_node(c) && c == Point{0, 0}) g.neighbors[Point{0, 0}].insert(Point{9, 9});
+    corrupt(g, c, r);
     return r;
   };
-  const ExploreResult r = explore(LatticeSize{1, 1, 1}, options);
+  return options;
+}
+
+// The first failure explore() reports on `size` with `options`.
+void expect_first_failure(const LatticeSize& size, const ExploreOptions& options, const std::string& message,
+                          const std::string& trace) {
+  const ExploreResult r = explore(size, options);
   ASSERT_TRUE(r.first_failure.has_value());
-  EXPECT_EQ(r.first_failure->message, "refine (0, 0) was refused (no-such-cell) but changed the state");
-  EXPECT_EQ(r.first_failure->trace, "lattice 1 1 1\nrefine 0 0\n");
+  EXPECT_EQ(r.first_failure->message, message);
+  EXPECT_EQ(r.first_failure->trace, trace);
+}
+
+TEST(Explore, ReportsARefusalThatChangesTheState) {
+  expect_first_failure(LatticeSize{1, 1, 1}, refine_then([](Graph& g, const Point& c, const RefineResult& r) {
+                         if (!r.applied() && g.is_node(c) && c == Point{0, 0})
+                           g.neighbors[Point{0, 0}].insert(Point{9, 9});
+                       }),
+                       "refine (0, 0) was refused (no-such-cell) but changed the state", "lattice 1 1 1\nrefine 0 0\n");
 }
 
 TEST(Explore, ReportsARefusalThatChangesTheStateWithNothingAfterIt) {
   // 1 1 0 has no legal operation: the change is found by the comparison at
   // the end of the state and blamed on the call that made it.
-  ExploreOptions options;
-  options.refine = [](Graph& g, const Point& c) {
-    RefineResult r = refine(g, c);
-    if (r.refused == RefineRefusal::MaxLevel) g.level[c] = 1;
-    return r;
-  };
-  const ExploreResult r = explore(LatticeSize{1, 1, 0}, options);
-  ASSERT_TRUE(r.first_failure.has_value());
-  EXPECT_EQ(r.first_failure->message, "refine (1, 1) was refused (max-level) but changed the state");
-  EXPECT_EQ(r.first_failure->trace, "lattice 1 1 0\nrefine 1 1\n");
+  expect_first_failure(LatticeSize{1, 1, 0}, refine_then([](Graph& g, const Point& c, const RefineResult& r) {
+                         if (r.refused == RefineRefusal::MaxLevel) g.level[c] = 1;
+                       }),
+                       "refine (1, 1) was refused (max-level) but changed the state", "lattice 1 1 0\nrefine 1 1\n");
 }
 
 TEST(Explore, ReportsAnInvalidStateAndAThrowingOperation) {
-  ExploreOptions broken;
-  broken.refine = [](Graph& g, const Point& c) {
-    RefineResult r = refine(g, c);
+  ExploreOptions broken = refine_then([](Graph& g, const Point&, const RefineResult& r) {
     if (r.applied()) g.neighbors[Point{0, 0}].clear();  // a corner loses its cell
-    return r;
-  };
+  });
   broken.check_depth = 4;
   const ExploreResult r = explore(LatticeSize{1, 1, 1}, broken);
   ASSERT_TRUE(r.first_failure.has_value());

@@ -14,6 +14,7 @@
 #include "bccmis/format.h"
 #include "bccmis/invariants/checked.h"
 #include "bccmis/invariants/invariants.h"
+#include "invariants/two_level_jump.h"
 
 namespace bccmis {
 namespace {
@@ -343,30 +344,7 @@ TEST(Layer3, TwoLevelJumpIsCaughtByLayer2) {
   // The state an unguarded refine of (10, 2) would make next to the level-0
   // cell (4, 4) (lattice 2 1 2): eq. (6b) hands (4, 4) the new junction
   // (8, 2), a quarter point of its side. Exact node degrees already reject it.
-  Graph g = make_lattice({2, 1, 2});
-  ASSERT_TRUE(refine(g, {12, 4}).applied());
-  Graph jump = g;
-  // Split (10, 2) = [8, 12] x [0, 4] by hand, as the paper's equations do.
-  const Point c{10, 2};
-  jump.C.erase(c);
-  jump.level.erase(c);
-  jump.N.insert(c);
-  for (const Point p : jump.nbr(c)) jump.neighbors[p].erase(c);
-  jump.neighbors[c].clear();
-  const Point y[4] = {{9, 1}, {9, 3}, {11, 1}, {11, 3}};
-  for (const Point yi : y) {
-    jump.C.insert(yi);
-    jump.level[yi] = 2;
-    for (const std::int64_t dx : {-1, 1})
-      for (const std::int64_t dy : {-1, 1}) {
-        const Point p{yi.x + dx, yi.y + dy};
-        jump.N.insert(p);
-        link(jump, yi, p);
-      }
-  }
-  link(jump, {4, 4}, {8, 2});    // (6b): the coarse cell gets the new junction
-  link(jump, {14, 2}, {12, 2});  // (6b) on the right side
-  link(jump, {10, 6}, {10, 4});  // (6b) on the top side
+  const Graph jump = test::two_level_jump(true);
   const auto v = find_violation(jump);
   ASSERT_TRUE(v.has_value());
   EXPECT_EQ(v->code, "center-neighbor") << to_string(*v);

@@ -89,6 +89,16 @@ TEST(Brick3, RefusesInvalidOctantsAndSizes) {
   EXPECT_NO_THROW(Brick3({1, 1, 1, P8EST_QMAXLEVEL}));
 }
 
+// A random lattice W x H x D x L: L in [min_level, max_level], then W in
+// [1, 3], H in [1, 2], and D = 2 below level 3, else 1 (small enough for
+// the cascade).
+d3::LatticeSize random_size(std::mt19937_64& rng, int min_level, int max_level) {
+  const int L = std::uniform_int_distribution<int>(min_level, max_level)(rng);
+  const std::int64_t W = std::uniform_int_distribution<std::int64_t>(1, 3)(rng);
+  const std::int64_t H = std::uniform_int_distribution<std::int64_t>(1, 2)(rng);
+  return {W, H, L >= 3 ? 1 : 2, L};
+}
+
 // bccmis -> p8est -> bccmis: random lattices reached by the cascade (and
 // some coarsening) export to an edge-balanced forest with the same leaves
 // and import back to the same canonical state.
@@ -96,11 +106,9 @@ TEST(RoundTrip3, FromBccmisIsExact) {
   const std::uint64_t seed = 20091004;
   std::mt19937_64 rng(seed);
   for (int trial = 0; trial < 30; ++trial) {
-    const int L = std::uniform_int_distribution<int>(0, 3)(rng);
-    const d3::LatticeSize size{std::uniform_int_distribution<std::int64_t>(1, 3)(rng),
-                               std::uniform_int_distribution<std::int64_t>(1, 2)(rng), L == 3 ? 1 : 2, L};
+    const d3::LatticeSize size = random_size(rng, 0, 3);
     const auto targets =
-        L == 0 ? std::vector<testing::Target3>{} : d3::cascade_model::random_targets(size, rng, 1 + trial % 4);
+        size.L == 0 ? std::vector<testing::Target3>{} : d3::cascade_model::random_targets(size, rng, 1 + trial % 4);
     SCOPED_TRACE("seed " + std::to_string(seed) + " trial " + std::to_string(trial) + ": " +
                  d3::cascade_model::describe(size, targets));
     d3::Graph g = d3::cascade_model::refine_targets(size, targets, Balance::Edge);
@@ -122,9 +130,7 @@ TEST(RoundTrip3, FromP8estIsExact) {
   const std::uint64_t seed = 20091005;
   std::mt19937_64 rng(seed);
   for (int trial = 0; trial < 30; ++trial) {
-    const int L = std::uniform_int_distribution<int>(1, 4)(rng);
-    const d3::LatticeSize size{std::uniform_int_distribution<std::int64_t>(1, 3)(rng),
-                               std::uniform_int_distribution<std::int64_t>(1, 2)(rng), L >= 3 ? 1 : 2, L};
+    const d3::LatticeSize size = random_size(rng, 1, 4);
     const auto targets = d3::cascade_model::random_targets(size, rng, 1 + trial % 5);
     SCOPED_TRACE("seed " + std::to_string(seed) + " trial " + std::to_string(trial) + ": " +
                  d3::cascade_model::describe(size, targets));

@@ -84,15 +84,21 @@ TEST(Brick, RefusesInvalidQuadrantsAndSizes) {
   EXPECT_NO_THROW(Brick({1, 1, P4EST_QMAXLEVEL}));
 }
 
+// A random lattice W x H x L: W in [1, 4], H in [1, max_height], L in
+// [min_level, 6], drawn in that order.
+LatticeSize random_size(std::mt19937_64& rng, std::int64_t max_height, int min_level) {
+  const std::int64_t W = std::uniform_int_distribution<std::int64_t>(1, 4)(rng);
+  const std::int64_t H = std::uniform_int_distribution<std::int64_t>(1, max_height)(rng);
+  return {W, H, std::uniform_int_distribution<int>(min_level, 6)(rng)};
+}
+
 // bccmis -> p4est -> bccmis: random lattices reached by refine_balanced
 // export to a face-balanced forest with the same leaves and import back to
 // the same canonical state.
 TEST(RoundTrip, FromBccmisIsExact) {
   std::mt19937_64 rng(20090310);
   for (int trial = 0; trial < 40; ++trial) {
-    const LatticeSize size{std::uniform_int_distribution<std::int64_t>(1, 4)(rng),
-                           std::uniform_int_distribution<std::int64_t>(1, 4)(rng),
-                           std::uniform_int_distribution<int>(0, 6)(rng)};
+    const LatticeSize size = random_size(rng, 4, 0);
     const auto targets = size.L == 0 ? std::vector<testing::Target>{} : random_targets(size, rng, 1 + trial % 5);
     SCOPED_TRACE("trial " + std::to_string(trial) + ": " + testing::describe(size, targets));
     Graph g = refine_targets(size, targets, Balance::Edge);
@@ -112,9 +118,7 @@ TEST(RoundTrip, FromBccmisIsExact) {
 TEST(RoundTrip, FromP4estIsExact) {
   std::mt19937_64 rng(20090311);
   for (int trial = 0; trial < 40; ++trial) {
-    const LatticeSize size{std::uniform_int_distribution<std::int64_t>(1, 4)(rng),
-                           std::uniform_int_distribution<std::int64_t>(1, 3)(rng),
-                           std::uniform_int_distribution<int>(1, 6)(rng)};
+    const LatticeSize size = random_size(rng, 3, 1);
     const auto targets = random_targets(size, rng, 1 + trial % 6);
     SCOPED_TRACE("trial " + std::to_string(trial) + ": " + testing::describe(size, targets));
     const Brick brick(size);

@@ -23,3 +23,14 @@ def need_meshio():
     except ImportError as e:
         fail("meshio is not installed (scripts/setup.sh installs python3-meshio): %s" % e)
     return meshio
+
+
+def tetrahedra(mesh, path):
+    """The tetrahedra of a meshio mesh, its blocks of tetra joined (a .msh
+    has one block per component, spec/mesh3d.md M21); any block other than
+    tetra or triangle (the boundary of a .msh or .mesh) is a failure."""
+    import numpy
+    types = [c.type for c in mesh.cells]
+    if "tetra" not in types or set(types) - {"tetra", "triangle"}:
+        fail("%s: cell blocks %s" % (path, types))
+    return numpy.concatenate([c.data for c in mesh.cells if c.type == "tetra"])

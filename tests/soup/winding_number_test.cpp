@@ -14,6 +14,8 @@
 #include <utility>
 #include <vector>
 
+#include "testing/icosphere.h"
+
 namespace {
 
 using bccmis::soup::Triangle;
@@ -52,39 +54,14 @@ Soup reversed(Soup s) {
 // The icosahedron subdivided `levels` times, on the unit sphere, outward
 // (20 4^levels triangles).
 Soup icosphere(int levels) {
-  const double p = (1 + std::sqrt(5.0)) / 2;
   Soup s;
-  s.v = {{-1, p, 0},  {1, p, 0},  {-1, -p, 0}, {1, -p, 0}, {0, -1, p},  {0, 1, p},
-         {0, -1, -p}, {0, 1, -p}, {p, 0, -1},  {p, 0, 1},  {-p, 0, -1}, {-p, 0, 1}};
-  s.t = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-         {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-         {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
-  auto unit = [](Vec3 x) {
-    const double n = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
-    return Vec3{x[0] / n, x[1] / n, x[2] / n};
-  };
-  for (Vec3& x : s.v) x = unit(x);
-  for (int l = 0; l < levels; ++l) {
-    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> mid;
-    auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
-      const auto key = std::minmax(a, b);
-      const auto it = mid.find(key);
-      if (it != mid.end()) return it->second;
-      const auto i = static_cast<std::uint32_t>(s.v.size());
-      s.v.push_back(unit({s.v[a][0] + s.v[b][0], s.v[a][1] + s.v[b][1], s.v[a][2] + s.v[b][2]}));
-      mid.emplace(key, i);
-      return i;
-    };
-    std::vector<Triangle> next;
-    for (const Triangle& t : s.t) {
-      const std::uint32_t ab = midpoint(t[0], t[1]), bc = midpoint(t[1], t[2]), ca = midpoint(t[2], t[0]);
-      next.push_back({t[0], ab, ca});
-      next.push_back({t[1], bc, ab});
-      next.push_back({t[2], ca, bc});
-      next.push_back({ab, bc, ca});
-    }
-    s.t = std::move(next);
-  }
+  bccmis::testing::subdivided_icosahedron(
+      levels,
+      [](const Vec3& x) {
+        const double n = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+        return Vec3{x[0] / n, x[1] / n, x[2] / n};
+      },
+      s.v, s.t);
   return s;
 }
 

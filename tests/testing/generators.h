@@ -340,36 +340,35 @@ inline void prop_valid_after_every_op(const Ops& ops, const Scenario& sc) {
   }
 }
 
-/// §3: refine(c) then coarsen(c) gives back the byte-identical canonical state.
-inline void prop_refine_then_coarsen(const Ops& ops, const Scenario& sc) {
+/// §3: each applied `op` followed by `inverse` at the same position gives
+/// back the byte-identical canonical state.
+inline void prop_inverse_restores(const Ops& ops, const Scenario& sc, OpKind op, OpKind inverse) {
+  const std::string op_name = op == OpKind::Refine ? "refine" : "coarsen";
+  const std::string inverse_name = inverse == OpKind::Refine ? "refine" : "coarsen";
+  const std::string op_gerund = op == OpKind::Refine ? "refining" : "coarsening";
   Walk w(ops, sc.size);
   for (const Step& s : sc.steps) {
     const std::string before = canonical_state(w.graph());
     const Outcome o = w.run(s);
-    if (!o.applied || o.op != OpKind::Refine) continue;
-    Walk back = w;  // the walk goes on from the refined state
-    const Outcome c = back.run(OpKind::Coarsen, o.at);
-    back.require(c.applied, "coarsen " + point_text(o.at) + " right after refining it was refused (" + c.code + ")");
-    back.require(canonical_state(back.graph()) == before, "refine " + point_text(o.at) + " then coarsen " +
-                                                              point_text(o.at) +
+    if (!o.applied || o.op != op) continue;
+    Walk back = w;  // the walk goes on from the state after op
+    const Outcome u = back.run(inverse, o.at);
+    back.require(u.applied, inverse_name + " " + point_text(o.at) + " right after " + op_gerund + " it was refused (" +
+                                u.code + ")");
+    back.require(canonical_state(back.graph()) == before, op_name + " " + point_text(o.at) + " then " + inverse_name +
+                                                              " " + point_text(o.at) +
                                                               " does not give back the canonical state");
   }
 }
 
+/// §3: refine(c) then coarsen(c) gives back the byte-identical canonical state.
+inline void prop_refine_then_coarsen(const Ops& ops, const Scenario& sc) {
+  prop_inverse_restores(ops, sc, OpKind::Refine, OpKind::Coarsen);
+}
+
 /// §3: coarsen(n) then refine(n) gives back the byte-identical canonical state.
 inline void prop_coarsen_then_refine(const Ops& ops, const Scenario& sc) {
-  Walk w(ops, sc.size);
-  for (const Step& s : sc.steps) {
-    const std::string before = canonical_state(w.graph());
-    const Outcome o = w.run(s);
-    if (!o.applied || o.op != OpKind::Coarsen) continue;
-    Walk back = w;
-    const Outcome r = back.run(OpKind::Refine, o.at);
-    back.require(r.applied, "refine " + point_text(o.at) + " right after coarsening it was refused (" + r.code + ")");
-    back.require(canonical_state(back.graph()) == before, "coarsen " + point_text(o.at) + " then refine " +
-                                                              point_text(o.at) +
-                                                              " does not give back the canonical state");
-  }
+  prop_inverse_restores(ops, sc, OpKind::Coarsen, OpKind::Refine);
 }
 
 /// A refused operation leaves the canonical state byte-identical, and its code

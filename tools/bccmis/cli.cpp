@@ -173,6 +173,7 @@ CLI::App* add_mesh(CLI::App& app, MeshOptions& o) {
                 "Print vertices, tetrahedra, boundary triangles, min/max dihedral angle and a histogram");
   cmd->add_flag("--json", o.json, "Statistics as JSON (implies --stats)");
   cmd->add_flag("--check", o.check, "Also run the mesh layer of the checker on the tetrahedra (exit 1 on a violation)");
+  cmd->add_flag("--binary", o.binary, "Write .vtu (base64) and .msh (4.1 binary) with binary numbers; ASCII otherwise");
   cmd->add_flag("-q,--quiet", o.quiet, "No summary on stderr");
   cmd->footer("Example:\n  bccmis mesh spec/examples/d3/face_refined.state -o face.vtu -o face.msh --stats");
   return cmd;
@@ -223,6 +224,13 @@ CLI::App* add_stuff(CLI::App& app, StuffOptions& o) {
   cmd->add_flag("--strict", o.strict,
                 "Refuse a triangle mesh that is not closed, manifold, consistently oriented and free of "
                 "self-intersections, naming its first flaw (exit 2)");
+  cmd->add_flag("--binary", o.binary,
+                "Write .vtu (base64; also the --animate frames) and .msh (4.1 binary) with binary numbers; ASCII "
+                "otherwise");
+  cmd->add_option("--surface-vertices", o.surface_vertices,
+                  "The .off/.obj boundary: 'used' (its own vertices, default) or 'all' (every vertex of the "
+                  "volume mesh, numbered as in the .vtu/.msh/.mesh)")
+      ->check(CLI::IsMember({"used", "all"}));
   cmd->add_flag("-q,--quiet", o.quiet, "No progress or summary on stderr");
   cmd->footer(
       "Examples:\n  bccmis stuff --shape torus -L 4 -o torus.vtu --stats\n"

@@ -73,7 +73,7 @@ std::string summary(const d3::fast::Lattice& g);
 /// A mesh output path: '.vtu', '.msh' or '.mesh'; throws InputError otherwise.
 void check_mesh_path(const std::string& path);
 /// Stages `mesh` for `path` in the writer its extension names (mesh.cpp).
-void add_mesh_output(OutputSet& outputs, const std::string& path, const d3::TetMesh& mesh);
+void add_mesh_output(OutputSet& outputs, const std::string& path, const d3::TetMesh& mesh, bool binary = false);
 
 // ---- The subcommands ------------------------------------------------------------------
 
@@ -116,7 +116,8 @@ struct MeshOptions {
   std::vector<std::string> outputs;  ///< -o, repeatable; the extension names the format
   bool stats = false;
   bool json = false;
-  bool check = false;  ///< the mesh layer on the mesh before writing it
+  bool check = false;   ///< the mesh layer on the mesh before writing it
+  bool binary = false;  ///< .vtu and .msh with binary numbers (spec/cli.md)
   bool quiet = false;
 };
 int run(const MeshOptions& o);
@@ -138,6 +139,8 @@ struct StuffOptions {
   bool json = false;
   bool check = false;
   bool strict = false;  ///< refuse a triangle mesh at its first flaw (spec/stuffing.md S21)
+  bool binary = false;  ///< .vtu (also the --animate frames) and .msh with binary numbers (spec/cli.md)
+  std::string surface_vertices = "used";  ///< .off/.obj: "used" (compact) or "all" (the volume mesh's numbering)
   bool quiet = false;
 };
 int run(const StuffOptions& o);

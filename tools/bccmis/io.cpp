@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -16,6 +17,7 @@
 #include "bccmis/d3/lattice.h"
 #include "bccmis/io/parse_error.h"
 #include "bccmis/trace.h"
+#include "temporary_files.h"
 
 namespace bccmis::cli {
 
@@ -141,9 +143,12 @@ struct OutputSet::Staged {
   fs::path target;        // the file renamed over (symbolic links resolved)
   std::string temporary;  // removed on destruction unless renamed
   bool copied = false;    // copied to `path` at commit instead of renamed
+  bool written = false;   // add() has written the text
 
   ~Staged() {
-    if (!temporary.empty()) ::unlink(temporary.c_str());
+    if (temporary.empty()) return;
+    ::unlink(temporary.c_str());
+    untrack_temporary(temporary);
   }
 };
 
@@ -195,8 +200,29 @@ bool copy_file_to(const std::string& from, std::ostream& to) {
 
 }  // namespace
 
+void OutputSet::open(const std::string& path) {
+  if (path.empty() || path == "-" || opened_.count(path) > 0) return;
+  staged_.push_back(create(path));
+  opened_[path] = staged_.back().get();
+}
+
 void OutputSet::add(const std::string& path, const Writer& write) {
   if (path.empty()) return;
+  Staged* s = nullptr;
+  if (const auto it = opened_.find(path); it != opened_.end()) {
+    s = it->second;
+    opened_.erase(it);
+  } else {
+    staged_.push_back(create(path));
+    s = staged_.back().get();
+  }
+  errno = 0;
+  if (!write_file(s->temporary, write, !s->copied)) throw InputError(path + ": write error" + errno_text(errno));
+  if (!s->copied) ::chmod(s->temporary.c_str(), 0644);
+  s->written = true;
+}
+
+std::unique_ptr<OutputSet::Staged> OutputSet::create(const std::string& path) {
   auto s = std::make_unique<Staged>();
   s->path = path;
   s->copied = path == "-";
@@ -221,13 +247,11 @@ void OutputSet::add(const std::string& path, const Writer& write) {
     stem = "." + s->target.filename().string();
   }
   std::string tmpl = (dir / (stem + ".tmp-XXXXXX")).string();
-  const int fd = ::mkstemp(tmpl.data());
-  if (fd < 0) throw InputError(path + ": cannot create a temporary file in " + dir.string());
+  const int fd = make_temporary(tmpl);
+  if (fd < 0) throw InputError(path + ": cannot create a temporary file in " + dir.string() + errno_text(errno));
   ::close(fd);
   s->temporary = tmpl;
-  if (!write_file(s->temporary, write, !s->copied)) throw InputError(path + ": write error");
-  if (!s->copied) ::chmod(s->temporary.c_str(), 0644);
-  staged_.push_back(std::move(s));
+  return s;
 }
 
 void OutputSet::add(const std::string& path, std::string_view text) {
@@ -238,23 +262,27 @@ void OutputSet::commit() {
   // First the copies (standard output, special files): they can fail late
   // (a full disk, a closed pipe), and nothing has been renamed yet.
   for (const auto& s : staged_) {
-    if (!s->copied) continue;
+    if (!s->copied || !s->written) continue;
     if (s->path == "-") {
       std::cout.flush();
       copy_file_to(s->temporary, std::cout);
       flush_stdout();
       continue;
     }
+    errno = 0;
     std::ofstream out(s->path, std::ios::binary);
-    if (!copy_file_to(s->temporary, out) || !out.flush()) throw InputError(s->path + ": write error");
+    if (!copy_file_to(s->temporary, out) || !out.flush())
+      throw InputError(s->path + ": write error" + errno_text(errno));
   }
   for (const auto& s : staged_) {
-    if (s->copied) continue;
+    if (s->copied || !s->written) continue;
     if (std::rename(s->temporary.c_str(), s->target.c_str()) != 0)
-      throw InputError(s->path + ": cannot replace the file");
+      throw InputError(s->path + ": cannot replace the file" + errno_text(errno));
+    untrack_temporary(s->temporary);
     s->temporary.clear();
   }
   staged_.clear();
+  opened_.clear();
 }
 
 void write_atomically(const std::string& path, const Writer& write) {

@@ -7,7 +7,10 @@
 //   - a file that cannot be read is reported with the reason (errno);
 //   - outputs are staged: each is written to a temporary file beside its
 //     target and renamed over it only when the whole run has succeeded; on
-//     failure every temporary is removed and no target is touched;
+//     failure every temporary is removed and no target is touched, and so
+//     on SIGINT, SIGTERM or SIGHUP (temporary_files.h);
+//   - a command opens its outputs' temporaries before its long work, so that
+//     an unwritable output fails at once, with the reason (errno);
 //   - a target that exists and is not a regular file (/dev/null, a FIFO) is
 //     written directly, at commit; a symbolic link is followed;
 //   - a failed write to standard output is an error (exit 2).
@@ -19,6 +22,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "bccmis/d3/format.h"
@@ -91,9 +95,16 @@ class OutputSet {
   OutputSet(const OutputSet&) = delete;
   OutputSet& operator=(const OutputSet&) = delete;
 
-  /// Stages `write`'s text for `path` ("-": standard output). An empty path
+  /// Creates the temporary for `path` now, to be written by a later add()
+  /// of the same path: an output that cannot be created fails before the
+  /// work that makes its text. An empty path or "-" opens nothing. Throws
+  /// InputError ("PATH: cannot create a temporary file in DIR: REASON").
+  void open(const std::string& path);
+
+  /// Stages `write`'s text for `path` ("-": standard output), in the
+  /// temporary open() created for it or in a new one. An empty path
   /// stages nothing. Throws InputError when the temporary cannot be created
-  /// or written (the message names `path`).
+  /// or written (the message names `path` and the reason).
   void add(const std::string& path, const Writer& write);
   void add(const std::string& path, std::string_view text);
 
@@ -104,7 +115,10 @@ class OutputSet {
 
  private:
   struct Staged;
+  /// A new temporary for `path`.
+  std::unique_ptr<Staged> create(const std::string& path);
   std::vector<std::unique_ptr<Staged>> staged_;
+  std::unordered_map<std::string, Staged*> opened_;  ///< by path: created by open(), not yet written
 };
 
 /// One output, staged and committed (see OutputSet).

@@ -13,6 +13,8 @@
 #include <variant>
 
 #include "bccmis/io/medit.h"
+#include "bccmis/io/msh.h"
+#include "bccmis/io/vtu.h"
 #include "bccmis/oracle/oracle.h"
 #include "bccmis/stuff/render.h"
 #include "bccmis/stuff/stuff.h"
@@ -66,16 +68,27 @@ stuff::CutPlane parse_cut(const std::string& text, const d3::TetMeshF& mesh) {
   return c;
 }
 
-bool is_mesh_file(const std::string& path) {
-  const std::string ext = ".mesh";
+bool ends_with(const std::string& path, std::string_view ext) {
   return path.size() > ext.size() && path.compare(path.size() - ext.size(), ext.size(), ext) == 0;
+}
+
+// A tetrahedral mesh file, read by its extension: Medit, Gmsh or VTK.
+bool is_mesh_file(const std::string& path) {
+  return ends_with(path, ".mesh") || ends_with(path, ".msh") || ends_with(path, ".vtu");
+}
+
+d3::TetMeshF read_mesh_file(const std::string& path, const std::string& name) {
+  const std::string text = read_input(path);
+  if (ends_with(path, ".msh")) return io::read_msh(text, name, stuff::orientation);
+  if (ends_with(path, ".vtu")) return io::read_vtu(text, name, stuff::orientation);
+  return io::read_medit(text, name, stuff::orientation);
 }
 
 int run_mesh(const RenderOptions& o) {
   const std::string name = display_name(o.state);
-  if (o.from_trace) throw InputError(name + ": a .mesh file; --from-trace applies to traces");
+  if (o.from_trace) throw InputError(name + ": a mesh file; --from-trace applies to traces");
   if (o.histogram && !o.slice.empty()) throw InputError("--histogram draws no cut-away; drop --slice");
-  const d3::TetMeshF mesh = io::read_medit(read_input(o.state), name, stuff::orientation);
+  const d3::TetMeshF mesh = read_mesh_file(o.state, name);
   std::string svg;
   if (o.histogram) {
     svg = stuff::render_histogram_svg(mesh, name);
@@ -92,7 +105,7 @@ int run_mesh(const RenderOptions& o) {
 
 int run(const RenderOptions& o) {
   if (is_mesh_file(o.state)) return run_mesh(o);
-  if (o.histogram) throw InputError(display_name(o.state) + ": --histogram applies to a .mesh file");
+  if (o.histogram) throw InputError(display_name(o.state) + ": --histogram applies to a mesh file (.mesh, .msh, .vtu)");
   const AnyState state = read_any_state_or_trace(o.state, o.from_trace);
   const std::string svg = std::visit(
       [&](const auto& g) {

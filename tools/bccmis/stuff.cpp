@@ -35,6 +35,8 @@ bool ends_with(const std::string& s, std::string_view suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
+io::Encoding encoding(const StuffOptions& o) { return o.binary ? io::Encoding::binary : io::Encoding::ascii; }
+
 bool is_surface_path(const std::string& path) { return ends_with(path, ".off") || ends_with(path, ".obj"); }
 
 void check_stuff_path(const std::string& path) {
@@ -125,21 +127,35 @@ std::string stats_text(const std::string& shape, const stuff::Meshed& m, const s
                                                         {"warped", m.stuffed.warped},
                                                         {"vertices", s.vertices},
                                                         {"tetrahedra", s.tetrahedra},
-                                                        {"boundary_triangles", q.boundary_triangles}};
+                                                        {"boundary_triangles", q.boundary_triangles},
+                                                        {"boundary_components", m.topology.boundary_components},
+                                                        {"nonmanifold_edges", m.topology.nonmanifold_edges}};
   if (json) {
     JsonWriter w;
     w.begin_object().member("shape", shape);
     for (const auto& [name, n] : counts) w.member(name, n);
-    w.member("volume", q.volume)
-        .member("shape_volume", s.shape_volume)
-        .member("volume_rel_error", s.volume_rel_error());
+    // A volume that overflows a double (S24) is null.
+    const auto finite_or_null = [&](const char* key, double x) {
+      w.key(key);
+      std::isfinite(x) ? w.value(x) : w.null();
+    };
+    finite_or_null("volume", q.volume);
+    finite_or_null("shape_volume", s.shape_volume);
+    w.member("volume_rel_error", s.volume_rel_error());
     w.key("hausdorff").begin_object().member("from_boundary", h.from_boundary).key("from_surface");
     if (h.from_surface < 0)
       w.null();
     else
       w.value(h.from_surface);
-    w.member("max", h.max()).end_object();
+    w.member("max", h.max())
+        .member("sampled", true)
+        .member("boundary_points", h.boundary_points)
+        .member("surface_samples", h.surface_samples)
+        .end_object();
     w.member("min_dihedral", q.min_dihedral).member("max_dihedral", q.max_dihedral).member("below10", s.below10());
+    w.member("boundary_euler", m.topology.boundary_euler).key("warnings").begin_array();
+    for (const std::string& warning : m.warnings) w.value(warning);
+    w.end_array();
     if (m.soup) soup_json(w, *m.soup);
     w.key("dihedral_histogram").begin_object();
     for (std::size_t k = 0; k < q.histogram.size(); ++k) w.member(std::to_string(15 * k), q.histogram[k]);
@@ -157,10 +173,14 @@ std::string stats_text(const std::string& shape, const stuff::Meshed& m, const s
   out += "volume " + number(q.volume) + "\nshape_volume " + number(s.shape_volume) + "\nvolume_rel_error " +
          number(s.volume_rel_error()) + "\nhausdorff_from_boundary " + number(h.from_boundary) +
          "\nhausdorff_from_surface " + (h.from_surface < 0 ? std::string("-") : number(h.from_surface)) +
-         "\nhausdorff " + number(h.max()) + "\nmin_dihedral " + number(q.min_dihedral) + "\nmax_dihedral " +
-         number(q.max_dihedral) + "\nbelow10 " + number(s.below10()) + "\n";
+         "\nhausdorff " + number(h.max()) + "\nhausdorff_boundary_points " + std::to_string(h.boundary_points) +
+         "\nhausdorff_surface_samples " + std::to_string(h.surface_samples) + "\nmin_dihedral " +
+         number(q.min_dihedral) + "\nmax_dihedral " + number(q.max_dihedral) + "\nbelow10 " + number(s.below10()) +
+         "\n";
   for (std::size_t k = 0; k < q.histogram.size(); ++k)
     if (q.histogram[k] != 0) out += "dihedral_" + std::to_string(15 * k) + " " + std::to_string(q.histogram[k]) + "\n";
+  out += "boundary_euler " + std::to_string(m.topology.boundary_euler) + "\n";
+  for (const std::string& warning : m.warnings) out += "warning " + warning + "\n";
   if (m.soup) out += soup_text(*m.soup);
   for (const auto& [phase, t] : seconds) out += "seconds_" + phase + " " + number(t) + "\n";
   return out;
@@ -185,7 +205,8 @@ Vec3 parse_path(const std::string& text, const stuff::Shape& shape) {
 
 /// --animate N -o OUT.pvd: frames 0..N (frame 0 the shape where it is),
 /// written as OUT_0000.vtu ... beside the .pvd (spec/stuffing.md S15).
-int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>& shape, stuff::StuffOptions so) {
+int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>& shape, stuff::StuffOptions so,
+                OutputSet& outputs) {
   if (o.outputs.size() > 1 || (!o.outputs.empty() && !ends_with(o.outputs[0], ".pvd")))
     throw InputError("--animate writes one .pvd (ParaView's index) with its .vtu frames beside it: give -o FILE.pvd");
   if (o.outputs.empty() && !o.stats) throw InputError("nothing to do: give -o FILE.pvd or --stats");
@@ -203,7 +224,10 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
     std::snprintf(buf, sizeof buf, "_%04d.vtu", k);
     return std::string(buf);
   };
-  OutputSet outputs;
+  if (!pvd.empty()) {  // every file created before the first frame is made
+    for (int k = 0; k <= o.animate; ++k) outputs.open(stem + frame_name(k));
+    outputs.open(pvd);
+  }
   std::vector<std::pair<int, std::string>> frames;  // the .pvd index: timestep, file
   JsonWriter json;
   json.begin_object().key("frames").begin_array();
@@ -215,7 +239,7 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
     const stuff::FrameReport& r = f.report;
     const d3::TetMeshF& mesh = *f.mesh;
     if (!pvd.empty()) {
-      outputs.add(stem + frame_name(k), [&](std::ostream& out) { io::write_vtu(out, mesh); });
+      outputs.add(stem + frame_name(k), [&](std::ostream& out) { io::write_vtu(out, mesh, encoding(o)); });
       frames.emplace_back(k, base + frame_name(k));
     }
     json.begin_object()
@@ -241,6 +265,14 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
   };
   stuff::AnimationSummary summary;
   try {
+    // S14: the lattice is fitted to the swept box; say what that costs.
+    if (!o.quiet) {
+      const double moving = stuff::fit_moving(*shape, settings.path, so).h,
+                   still = stuff::fit_lattice(shape->bounds(), so).h;
+      if (moving > still)
+        std::cerr << "bccmis stuff: --animate fits the lattice to the swept box: finest side " << number(moving)
+                  << " against " << number(still) << " for the shape alone\n";
+    }
     summary = stuff::animate_shape(shape, settings, on_frame);
   } catch (const stuff::ShapeError& e) {  // S2, S14, S16: refused before any frame is made
     throw InputError(e.what());
@@ -270,6 +302,10 @@ int run(const StuffOptions& o) {
     if (o.outputs.empty() && !o.stats)
       throw InputError("nothing to do: give -o FILE (.vtu, .msh, .mesh, .off, .obj) or --stats");
   }
+  // The outputs' temporaries are created before the work (spec/cli.md).
+  OutputSet outputs;
+  if (o.animate == 0)
+    for (const std::string& path : o.outputs) outputs.open(path);
   const auto t0 = std::chrono::steady_clock::now();
   std::shared_ptr<const stuff::Shape> shape;
   try {
@@ -286,7 +322,7 @@ int run(const StuffOptions& o) {
   settings.lattice.min_level = o.min_level;
   settings.lattice.cells = o.cells;
   if (o.size > 0) settings.lattice.size = o.size;
-  if (o.animate > 0) return run_animate(o, shape, settings.lattice);
+  if (o.animate > 0) return run_animate(o, shape, settings.lattice, outputs);
   if (!o.path.empty() || o.compare) throw InputError("--path and --compare apply with --animate");
   settings.impl = o.impl == "reference" ? stuff::Impl::reference : stuff::Impl::fast;
   settings.statistics = o.stats;
@@ -304,16 +340,20 @@ int run(const StuffOptions& o) {
     throw CheckFailure(e.what());
   }
   seconds.insert(seconds.end(), m.seconds.begin(), m.seconds.end());
+  if (!o.quiet)
+    for (const std::string& warning : m.warnings) std::cerr << "bccmis stuff: warning: " << warning << "\n";
 
   const auto t = std::chrono::steady_clock::now();
   const d3::TetMeshF& mesh = m.stuffed.mesh;
-  OutputSet outputs;
   for (const std::string& path : o.outputs) {
-    if (ends_with(path, ".vtu")) outputs.add(path, [&](std::ostream& out) { io::write_vtu(out, mesh); });
-    if (ends_with(path, ".msh")) outputs.add(path, [&](std::ostream& out) { io::write_msh(out, mesh); });
+    const bool all = o.surface_vertices == "all";
+    if (ends_with(path, ".vtu")) outputs.add(path, [&](std::ostream& out) { io::write_vtu(out, mesh, encoding(o)); });
+    if (ends_with(path, ".msh")) outputs.add(path, [&](std::ostream& out) { io::write_msh(out, mesh, encoding(o)); });
     if (ends_with(path, ".mesh")) outputs.add(path, [&](std::ostream& out) { io::write_medit(out, mesh); });
-    if (ends_with(path, ".off")) outputs.add(path, [&](std::ostream& out) { io::write_off(out, mesh, m.boundary); });
-    if (ends_with(path, ".obj")) outputs.add(path, [&](std::ostream& out) { io::write_obj(out, mesh, m.boundary); });
+    if (ends_with(path, ".off"))
+      outputs.add(path, [&](std::ostream& out) { io::write_off(out, mesh, m.boundary, all); });
+    if (ends_with(path, ".obj"))
+      outputs.add(path, [&](std::ostream& out) { io::write_obj(out, mesh, m.boundary, all); });
   }
   seconds.emplace_back("write", seconds_since(t));
   if (o.stats) outputs.add("-", stats_text(shape->describe(), m, seconds, o.json));

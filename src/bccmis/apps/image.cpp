@@ -117,6 +117,20 @@ class Cursor {
   int col_ = 1;
 };
 
+#if BCCMIS_APPS_HAVE_STB
+// The PNG's samples decoded by `load` (stb's 8- or 16-bit loader, one
+// channel) into f.values as sample / maxval; its size must be f's.
+template <class Sample, class Load>
+void decode_png(Load load, const stbi_uc* data, int len, double maxval, const std::string& name, HeightField& f) {
+  int w = 0, h = 0, channels = 0;
+  std::unique_ptr<Sample, void (*)(void*)> px(load(data, len, &w, &h, &channels, 1), stbi_image_free);
+  if (!px || w != f.width || h != f.height)
+    throw ImageError(name +
+                     ": cannot decode the PNG: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown error"));
+  for (std::size_t i = 0; i < f.values.size(); ++i) f.values[i] = static_cast<double>(px.get()[i]) / maxval;
+}
+#endif
+
 }  // namespace
 
 HeightField parse_pgm(std::string_view bytes, std::string_view file, const ImageLimits& limits) {
@@ -238,22 +252,10 @@ HeightField parse_png(std::string_view bytes, std::string_view file, const Image
   f.maxval = sixteen ? 65535 : 255;
   const std::size_t count = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
   f.values.resize(count);
-  int w2 = 0, h2 = 0;
-  if (sixteen) {
-    std::unique_ptr<stbi_us, void (*)(void*)> px(stbi_load_16_from_memory(data, len, &w2, &h2, &channels, 1),
-                                                 stbi_image_free);
-    if (!px || w2 != w || h2 != h)
-      throw ImageError(name +
-                       ": cannot decode the PNG: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown error"));
-    for (std::size_t i = 0; i < count; ++i) f.values[i] = static_cast<double>(px.get()[i]) / 65535.0;
-  } else {
-    std::unique_ptr<stbi_uc, void (*)(void*)> px(stbi_load_from_memory(data, len, &w2, &h2, &channels, 1),
-                                                 stbi_image_free);
-    if (!px || w2 != w || h2 != h)
-      throw ImageError(name +
-                       ": cannot decode the PNG: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown error"));
-    for (std::size_t i = 0; i < count; ++i) f.values[i] = static_cast<double>(px.get()[i]) / 255.0;
-  }
+  if (sixteen)
+    decode_png<stbi_us>(stbi_load_16_from_memory, data, len, 65535.0, name, f);
+  else
+    decode_png<stbi_uc>(stbi_load_from_memory, data, len, 255.0, name, f);
   return f;
 #else
   (void)bytes;

@@ -11,21 +11,30 @@ namespace bccmis {
 
 namespace {
 
+// An empty mesh with room for `vertex_count` vertices.
+TriangleMesh with_room_for(std::size_t vertex_count) {
+  TriangleMesh m;
+  m.vertices.reserve(vertex_count);
+  m.vertex_position.reserve(vertex_count);
+  return m;
+}
+
+// Appends the vertex of lattice position p: (x / S, y / S, height(p)), S the
+// level-0 cell side.
+void add_vertex(TriangleMesh& m, const Point& p, double S, const std::function<double(const Point&)>& height) {
+  m.vertices.push_back({static_cast<double>(p.x) / S, static_cast<double>(p.y) / S, height(p)});
+  m.vertex_position.push_back(p);
+}
+
 // The fan triangulation from the sorted nodes and cells: vertices are the
 // nodes, then the centers; ring(c) is c's boundary in counter-clockwise
 // order, level(c) its level.
 template <class Nodes, class Cells, class Ring, class Level>
 TriangleMesh triangulate_sorted(const LatticeSize& size, const Nodes& nodes, const Cells& cells, const Ring& ring,
                                 const Level& level, const std::function<double(const Point&)>& height) {
-  TriangleMesh m;
+  TriangleMesh m = with_room_for(nodes.size() + cells.size());
   const double S = static_cast<double>(level0_side(size));
-  const std::size_t vertex_count = nodes.size() + cells.size();
-  m.vertices.reserve(vertex_count);
-  m.vertex_position.reserve(vertex_count);
-  auto add = [&](const Point& p) {
-    m.vertices.push_back({static_cast<double>(p.x) / S, static_cast<double>(p.y) / S, height(p)});
-    m.vertex_position.push_back(p);
-  };
+  auto add = [&](const Point& p) { add_vertex(m, p, S, height); };
   for (const Point& n : nodes) add(n);
   for (const Point& c : cells) add(c);
   // The index of a node: its rank among the sorted nodes.
@@ -71,15 +80,9 @@ TriangleMesh triangulate(const fast::Lattice& g, const std::function<double(cons
   // read from its record in angular order.
   const std::vector<fast::Lattice::Index> node_slots = g.sorted_node_slots();
   const std::vector<fast::Lattice::Index> cell_slots = g.sorted_center_slots();
-  TriangleMesh m;
+  TriangleMesh m = with_room_for(node_slots.size() + cell_slots.size());
   const double S = static_cast<double>(level0_side(g.size()));
-  const std::size_t vertex_count = node_slots.size() + cell_slots.size();
-  m.vertices.reserve(vertex_count);
-  m.vertex_position.reserve(vertex_count);
-  auto add = [&](const Point& p) {
-    m.vertices.push_back({static_cast<double>(p.x) / S, static_cast<double>(p.y) / S, height(p)});
-    m.vertex_position.push_back(p);
-  };
+  auto add = [&](const Point& p) { add_vertex(m, p, S, height); };
   std::vector<std::size_t> rank(g.node_pool().size());
   for (std::size_t i = 0; i < node_slots.size(); ++i) {
     rank[node_slots[i]] = i;

@@ -709,26 +709,33 @@ void Lattice::prefetch_record(const Point& p, bool node) const {
 namespace {
 constexpr std::size_t kSlotAhead = 16;   // operations between the table prefetch and the operation
 constexpr std::size_t kRecordAhead = 6;  // ... and between the record prefetch and the operation
-}  // namespace
 
-std::size_t Lattice::refine_each(std::span<const Point> cells) {
+// op(p) for each p in order, the table slot of the point kSlotAhead
+// operations ahead and its record kRecordAhead ahead prefetched; the count
+// of operations applied.
+template <class PrefetchSlot, class PrefetchRecord, class Op>
+std::size_t apply_each(std::span<const Point> points, PrefetchSlot prefetch_slot, PrefetchRecord prefetch_record,
+                       Op op) {
   std::size_t applied = 0;
-  for (std::size_t i = 0; i < cells.size(); ++i) {
-    if (i + kSlotAhead < cells.size()) prefetch_slot(cells[i + kSlotAhead]);
-    if (i + kRecordAhead < cells.size()) prefetch_record(cells[i + kRecordAhead], false);
-    applied += refine(cells[i]).applied();
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (i + kSlotAhead < points.size()) prefetch_slot(points[i + kSlotAhead]);
+    if (i + kRecordAhead < points.size()) prefetch_record(points[i + kRecordAhead]);
+    applied += op(points[i]).applied();
   }
   return applied;
 }
+}  // namespace
+
+std::size_t Lattice::refine_each(std::span<const Point> cells) {
+  return apply_each(
+      cells, [&](const Point& p) { prefetch_slot(p); }, [&](const Point& p) { prefetch_record(p, false); },
+      [&](const Point& c) { return refine(c); });
+}
 
 std::size_t Lattice::coarsen_each(std::span<const Point> nodes) {
-  std::size_t applied = 0;
-  for (std::size_t i = 0; i < nodes.size(); ++i) {
-    if (i + kSlotAhead < nodes.size()) prefetch_slot(nodes[i + kSlotAhead]);
-    if (i + kRecordAhead < nodes.size()) prefetch_record(nodes[i + kRecordAhead], true);
-    applied += coarsen(nodes[i]).applied();
-  }
-  return applied;
+  return apply_each(
+      nodes, [&](const Point& p) { prefetch_slot(p); }, [&](const Point& p) { prefetch_record(p, true); },
+      [&](const Point& n) { return coarsen(n); });
 }
 
 // ---- Queries -------------------------------------------------------------------------

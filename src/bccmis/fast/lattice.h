@@ -319,25 +319,20 @@ class Lattice {
   }
   void grow(std::size_t new_centers, std::size_t new_nodes, std::size_t new_keys);
   // Pop a free slot or append (capacity reserved by ensure_room); push a slot.
-  Index alloc_center() {
-    if (free_centers_ == kNone) {
-      centers_.emplace_back();
-      return static_cast<Index>(centers_.size() - 1);
+  Index alloc_center() { return pop_or_append(centers_, &Center::corner, free_centers_, free_center_count_); }
+  Index alloc_node() { return pop_or_append(nodes_, &Node::cell, free_nodes_, free_node_count_); }
+  // The head of a pool's free list, linked through the first entry of each
+  // free record's `link` array, or a new record at the pool's end.
+  template <class Pool, class Record>
+  static Index pop_or_append(Pool& pool, Index (Record::*link)[4], Index& free_head, std::size_t& free_count) {
+    if (free_head == kNone) {
+      pool.emplace_back();
+      return static_cast<Index>(pool.size() - 1);
     }
-    const Index c = free_centers_;
-    free_centers_ = centers_[c].corner[0];
-    --free_center_count_;
-    return c;
-  }
-  Index alloc_node() {
-    if (free_nodes_ == kNone) {
-      nodes_.emplace_back();
-      return static_cast<Index>(nodes_.size() - 1);
-    }
-    const Index n = free_nodes_;
-    free_nodes_ = nodes_[n].cell[0];
-    --free_node_count_;
-    return n;
+    const Index slot = free_head;
+    free_head = (pool[slot].*link)[0];
+    --free_count;
+    return slot;
   }
   void free_center(Index c) {
     Center& r = centers_[c];

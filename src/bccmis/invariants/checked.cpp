@@ -42,49 +42,58 @@ void expect_change(const PointSet& before, const PointSet& after, const PointSet
   throw ViolationError(inv::violation(0, code, points(plus, minus), text, section), "after " + op);
 }
 
-// The checks after an operation (defined below the wrappers, in call order).
-void check_refine_result(const Graph& before, const Graph& g, const RefineResult& r, const Point& c,
-                         const std::string& op);
-void check_coarsen_result(const Graph& before, const Graph& g, const CoarsenResult& r, const Point& n,
-                          const std::string& op);
+// The sets an operation returned: |Y| = 4 centers and 0..4 junctions
+// (`J_name`: J+ or J-), as `equations` give.
+void expect_counts(const PointSet& Y, const PointSet& J, const char* J_name, const std::string& op, const char* code,
+                   const char* equations, const char* section) {
+  if (Y.size() == 4 && J.size() <= 4) return;
+  throw ViolationError(inv::violation(0, code, points(Y, J),
+                                      op + " returned |Y| = " + std::to_string(Y.size()) + " and |" + J_name +
+                                          "| = " + std::to_string(J.size()) + "; " + equations + " give 4 and 0..4",
+                                      section),
+                       "after " + op);
+}
 
-}  // namespace
-
-RefineResult checked_refine(Graph& g, const Point& c) {
-  const std::string op = "refine " + inv::pos(c);
-  validate(g, "before " + op);
+// Runs op(g, at) between the checks: g must be valid before, and
+// check(before, g, result, at, text) passes after, `text` being "verb (x, y)".
+// Strong guarantee: whatever failed after the operation (a violation, an
+// allocation in the checker), the caller gets the graph it passed in.
+template <class Op, class Check>
+auto run_checked(Graph& g, const Point& at, const char* verb, Op op, Check check) {
+  const std::string text = verb + inv::pos(at);
+  validate(g, "before " + text);
   Graph before = g;
-  RefineResult r = refine(g, c);
+  auto r = op(g, at);
   try {
-    check_refine_result(before, g, r, c, op);
+    check(before, g, r, at, text);
   } catch (...) {
-    // Strong guarantee: whatever failed after the operation (a violation, an
-    // allocation in the checker), the caller gets the graph it passed in.
     g = std::move(before);  // a move of std::map/std::set members: no allocation
     throw;
   }
   return r;
 }
 
-namespace {
-
-void check_refine_result(const Graph& before, const Graph& g, const RefineResult& r, const Point& c,
-                         const std::string& op) {
+// A refused operation must leave the graph as it was (true: refused);
+// an applied one must leave it valid (false: go on checking).
+template <class Result>
+bool refused_unchanged(const Graph& before, const Graph& g, const Result& r, const Point& at, const std::string& op,
+                       const char* section) {
   if (!r.applied()) {
     if (!(g == before))
       throw ViolationError(
-          inv::violation(0, "refused-changed", {c},
-                         op + " was refused (" + std::string(code(*r.refused)) + ") but changed the state", "§2.1 ¶1"),
+          inv::violation(0, "refused-changed", {at},
+                         op + " was refused (" + std::string(code(*r.refused)) + ") but changed the state", section),
           "after " + op);
-    return;
+    return true;
   }
   validate(g, "after " + op);
-  if (r.Y.size() != 4 || r.J_plus.size() > 4)
-    throw ViolationError(inv::violation(0, "refine-count", points(r.Y, r.J_plus),
-                                        op + " returned |Y| = " + std::to_string(r.Y.size()) + " and |J+| = " +
-                                            std::to_string(r.J_plus.size()) + "; eq. (4a) and (5a) give 4 and 0..4",
-                                        "§2.1 eq. (4a), (5a)"),
-                         "after " + op);
+  return false;
+}
+
+void check_refine_result(const Graph& before, const Graph& g, const RefineResult& r, const Point& c,
+                         const std::string& op) {
+  if (refused_unchanged(before, g, r, c, op, "§2.1 ¶1")) return;
+  expect_counts(r.Y, r.J_plus, "J+", op, "refine-count", "eq. (4a) and (5a)", "§2.1 eq. (4a), (5a)");
   // eq. (4b), (4g): C = C ∪ Y \ {c}
   expect_change(before.C, g.C, r.Y, {c}, "C", op, "refine-count", "§2.1 eq. (4b), (4g)");
   // eq. (4h), (5b): N = N ∪ {c} ∪ J+
@@ -93,43 +102,10 @@ void check_refine_result(const Graph& before, const Graph& g, const RefineResult
   expect_change(before.N, g.N, gained, {}, "N", op, "refine-count", "§2.1 eq. (4h), (5b)");
 }
 
-}  // namespace
-
-CoarsenResult checked_coarsen(Graph& g, const Point& n) {
-  const std::string op = "coarsen " + inv::pos(n);
-  validate(g, "before " + op);
-  Graph before = g;
-  CoarsenResult r = coarsen(g, n);
-  try {
-    check_coarsen_result(before, g, r, n, op);
-  } catch (...) {
-    // Strong guarantee: whatever failed after the operation (a violation, an
-    // allocation in the checker), the caller gets the graph it passed in.
-    g = std::move(before);  // a move of std::map/std::set members: no allocation
-    throw;
-  }
-  return r;
-}
-
-namespace {
-
 void check_coarsen_result(const Graph& before, const Graph& g, const CoarsenResult& r, const Point& n,
                           const std::string& op) {
-  if (!r.applied()) {
-    if (!(g == before))
-      throw ViolationError(
-          inv::violation(0, "refused-changed", {n},
-                         op + " was refused (" + std::string(code(*r.refused)) + ") but changed the state", "§2.2 ¶1"),
-          "after " + op);
-    return;
-  }
-  validate(g, "after " + op);
-  if (r.Y.size() != 4 || r.J_minus.size() > 4)
-    throw ViolationError(inv::violation(0, "coarsen-count", points(r.Y, r.J_minus),
-                                        op + " returned |Y| = " + std::to_string(r.Y.size()) + " and |J-| = " +
-                                            std::to_string(r.J_minus.size()) + "; eq. (8a) and (10a) give 4 and 0..4",
-                                        "§2.2 eq. (8a), (10a)"),
-                         "after " + op);
+  if (refused_unchanged(before, g, r, n, op, "§2.2 ¶1")) return;
+  expect_counts(r.Y, r.J_minus, "J-", op, "coarsen-count", "eq. (8a) and (10a)", "§2.2 eq. (8a), (10a)");
   // eq. (9e), (9f): C = C ∪ {n} \ Y
   expect_change(before.C, g.C, {n}, r.Y, "C", op, "coarsen-count", "§2.2 eq. (9e), (9f)");
   // eq. (9d), (10c): N = N \ {n} \ J-
@@ -139,5 +115,15 @@ void check_coarsen_result(const Graph& before, const Graph& g, const CoarsenResu
 }
 
 }  // namespace
+
+RefineResult checked_refine(Graph& g, const Point& c) {
+  return run_checked(
+      g, c, "refine ", [](Graph& h, const Point& p) { return refine(h, p); }, check_refine_result);
+}
+
+CoarsenResult checked_coarsen(Graph& g, const Point& n) {
+  return run_checked(
+      g, n, "coarsen ", [](Graph& h, const Point& p) { return coarsen(h, p); }, check_coarsen_result);
+}
 
 }  // namespace bccmis

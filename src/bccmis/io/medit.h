@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "bccmis/d3/tet_mesh.h"
+#include "bccmis/io/orientation.h"
 
 namespace bccmis::io {
 
@@ -17,10 +18,6 @@ namespace bccmis::io {
 /// as reference (0 past the end of `level`), End.
 void write_medit(std::ostream& out, const d3::TetMesh& mesh);
 void write_medit(std::ostream& out, const d3::TetMeshF& mesh);
-
-/// The sign (-1, 0 or 1) of det[b - a, c - a, d - a], exactly: the test by
-/// which read_medit takes a tetrahedron as positively oriented.
-using Orientation = int (*)(const d3::Vec3& a, const d3::Vec3& b, const d3::Vec3& c, const d3::Vec3& d);
 
 /// The tetrahedral mesh in `text`: vertices with their reference as kind
 /// (0..255), tetrahedra (1-based indices in the file) with their reference as

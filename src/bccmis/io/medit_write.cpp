@@ -4,6 +4,7 @@
 
 #include "bccmis/io/detail/point_text.h"
 #include "bccmis/io/medit.h"
+#include "bccmis/io/regions.h"
 
 namespace bccmis::io {
 
@@ -21,6 +22,12 @@ void write_medit_impl(std::ostream& out, const d3::BasicTetMesh<P>& mesh) {
     const auto& t = mesh.tets[i];
     out << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << ' ' << t[3] + 1 << ' '
         << (i < mesh.level.size() ? mesh.level[i] : 0) << '\n';
+  }
+  const Regions r = regions_of(mesh.tets);
+  out << "\nTriangles\n" << r.boundary.size() << '\n';
+  for (std::size_t j = 0; j < r.boundary.size(); ++j) {
+    const auto& f = r.boundary[j];
+    out << f[0] + 1 << ' ' << f[1] + 1 << ' ' << f[2] + 1 << ' ' << r.boundary_component[j] + 1 << '\n';
   }
   out << "\nEnd\n";
 }

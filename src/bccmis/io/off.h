@@ -23,8 +23,11 @@ namespace bccmis::io {
 TriangleSoup read_off(const std::string& file, const std::string& data);
 
 /// The triangles `tris` of `mesh` as a surface: the vertices they use, in
-/// order of first use, each coordinate the shortest decimal that reads back
-/// to the same double (io/surface_write.cpp).
-void write_off(std::ostream& out, const d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& tris);
+/// order of first use, or with `all_vertices` every vertex of `mesh` in its
+/// order (the volume mesh's numbering, spec/stuffing.md S11); each
+/// coordinate the shortest decimal that reads back to the same double
+/// (io/surface_write.cpp).
+void write_off(std::ostream& out, const d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& tris,
+               bool all_vertices = false);
 
 }  // namespace bccmis::io

@@ -13,9 +13,15 @@ namespace bccmis::io {
 
 namespace {
 
-/// The vertices the triangles use, renumbered in order of first use.
+/// The vertices the triangles use, renumbered in order of first use; or
+/// with `all_vertices` every vertex, numbered as in `mesh`.
 std::pair<std::vector<std::uint32_t>, std::vector<std::array<std::uint32_t, 3>>> compact(
-    const d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& tris) {
+    const d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& tris, bool all_vertices) {
+  if (all_vertices) {
+    std::vector<std::uint32_t> every(mesh.vertices.size());
+    for (std::uint32_t v = 0; v < every.size(); ++v) every[v] = v;
+    return {every, tris};
+  }
   std::vector<std::uint32_t> used, renumber(mesh.vertices.size(), UINT32_MAX);
   std::vector<std::array<std::uint32_t, 3>> out;
   for (const auto& t : tris) {
@@ -41,15 +47,17 @@ void write_coordinates(std::ostream& out, const d3::Vec3& p) {
 
 }  // namespace
 
-void write_off(std::ostream& out, const d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& tris) {
-  const auto [used, faces] = compact(mesh, tris);
+void write_off(std::ostream& out, const d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& tris,
+               bool all_vertices) {
+  const auto [used, faces] = compact(mesh, tris, all_vertices);
   out << "OFF\n" << used.size() << ' ' << faces.size() << " 0\n";
   for (const std::uint32_t v : used) write_coordinates(out, mesh.vertices[v]);
   for (const auto& f : faces) out << "3 " << f[0] << ' ' << f[1] << ' ' << f[2] << '\n';
 }
 
-void write_obj(std::ostream& out, const d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& tris) {
-  const auto [used, faces] = compact(mesh, tris);
+void write_obj(std::ostream& out, const d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& tris,
+               bool all_vertices) {
+  const auto [used, faces] = compact(mesh, tris, all_vertices);
   for (const std::uint32_t v : used) {
     out << "v ";
     write_coordinates(out, mesh.vertices[v]);

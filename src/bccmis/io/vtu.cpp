@@ -1,11 +1,17 @@
 #include "bccmis/io/vtu.h"
 
+#include <bit>
+#include <charconv>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <ostream>
+#include <string>
 #include <string_view>
+#include <type_traits>
+#include <vector>
 
+#include "bccmis/io/detail/base64.h"
 #include "bccmis/io/detail/point_text.h"
 #include "bccmis/io/detail/triangle_text.h"
 #include "bccmis/text_writer.h"
@@ -21,39 +27,79 @@ using detail::write_xyz;
 
 namespace {
 
+/// The text of one number of a DataArray.
+template <class T>
+void write_number(std::ostream& out, T v) {
+  char buf[32];
+  if constexpr (sizeof(T) == 1)
+    out << static_cast<int>(v);
+  else
+    out.write(buf, std::to_chars(buf, buf + sizeof buf, v).ptr - buf);
+}
+
+/// One DataArray of `values` (per_line numbers a line in ASCII): ASCII text,
+/// or base64 of a UInt64 byte count followed by the little-endian values.
+template <class T>
+void write_data_array(std::ostream& out, const std::string& attributes, const std::vector<T>& values,
+                      std::size_t per_line, Encoding encoding) {
+  out << "        <DataArray " << attributes << " format=\"" << (encoding == Encoding::ascii ? "ascii" : "binary")
+      << "\">\n";
+  if (encoding == Encoding::ascii) {
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      write_number(out, values[i]);
+      out << ((i + 1) % per_line == 0 ? '\n' : ' ');
+    }
+  } else {
+    static_assert(std::endian::native == std::endian::little, "the binary .vtu is written little-endian");
+    const std::uint64_t bytes = values.size() * sizeof(T);
+    std::string raw(sizeof bytes + bytes, '\0');
+    std::memcpy(raw.data(), &bytes, sizeof bytes);
+    if (bytes > 0) std::memcpy(raw.data() + sizeof bytes, values.data(), bytes);
+    out << "          " << detail::base64(raw) << '\n';
+  }
+  out << "        </DataArray>\n";
+}
+
 template <class P>
-void write_vtu_impl(std::ostream& out, const d3::BasicTetMesh<P>& mesh) {
+void write_vtu_impl(std::ostream& out, const d3::BasicTetMesh<P>& mesh, Encoding encoding) {
+  using Coordinate = std::conditional_t<std::is_same_v<P, d3::Point>, std::int64_t, double>;
+  std::vector<Coordinate> xyz;
+  xyz.reserve(3 * mesh.vertices.size());
+  for (const P& p : mesh.vertices) {
+    if constexpr (std::is_same_v<P, d3::Point>)
+      xyz.insert(xyz.end(), {p.x, p.y, p.z});
+    else
+      xyz.insert(xyz.end(), p.begin(), p.end());
+  }
+  std::vector<std::int64_t> connectivity, offsets;
+  connectivity.reserve(4 * mesh.tets.size());
+  offsets.reserve(mesh.tets.size());
+  for (const auto& t : mesh.tets) {
+    connectivity.insert(connectivity.end(), t.begin(), t.end());
+    offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
+  }
+  const std::vector<std::int32_t> level(mesh.level.begin(), mesh.level.end());
+  const std::vector<std::uint8_t> types(mesh.tets.size(), 10);
   out << "<?xml version=\"1.0\"?>\n"
-      << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+      << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\""
+      << (encoding == Encoding::ascii ? "" : " header_type=\"UInt64\"") << ">\n"
       << "  <UnstructuredGrid>\n"
       << "    <Piece NumberOfPoints=\"" << mesh.vertices.size() << "\" NumberOfCells=\"" << mesh.tets.size() << "\">\n"
-      << "      <PointData Scalars=\"kind\">\n"
-      << "        <DataArray type=\"UInt8\" Name=\"kind\" format=\"ascii\">\n";
-  for (const std::uint8_t k : mesh.kind) out << static_cast<int>(k) << '\n';
-  out << "        </DataArray>\n"
-      << "      </PointData>\n"
-      << "      <CellData Scalars=\"level\">\n"
-      << "        <DataArray type=\"Int32\" Name=\"level\" format=\"ascii\">\n";
-  for (const int l : mesh.level) out << l << '\n';
-  out << "        </DataArray>\n"
-      << "      </CellData>\n"
-      << "      <Points>\n"
-      << "        <DataArray type=\"" << detail::coordinate_type<P>()
-      << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  for (const P& p : mesh.vertices) detail::write_point(out, p);
-  out << "        </DataArray>\n"
-      << "      </Points>\n"
-      << "      <Cells>\n"
-      << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (const auto& t : mesh.tets) out << t[0] << ' ' << t[1] << ' ' << t[2] << ' ' << t[3] << '\n';
-  out << "        </DataArray>\n"
-      << "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-  for (std::size_t i = 0; i < mesh.tets.size(); ++i) out << 4 * (i + 1) << '\n';
-  out << "        </DataArray>\n"
-      << "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-  for (std::size_t i = 0; i < mesh.tets.size(); ++i) out << "10\n";
-  out << "        </DataArray>\n"
-      << "      </Cells>\n"
+      << "      <PointData Scalars=\"kind\">\n";
+  write_data_array(out, "type=\"UInt8\" Name=\"kind\"", mesh.kind, 1, encoding);
+  out << "      </PointData>\n"
+      << "      <CellData Scalars=\"level\">\n";
+  write_data_array(out, "type=\"Int32\" Name=\"level\"", level, 1, encoding);
+  out << "      </CellData>\n"
+      << "      <Points>\n";
+  write_data_array(out, "type=\"" + std::string(detail::coordinate_type<P>()) + "\" NumberOfComponents=\"3\"", xyz, 3,
+                   encoding);
+  out << "      </Points>\n"
+      << "      <Cells>\n";
+  write_data_array(out, "type=\"Int64\" Name=\"connectivity\"", connectivity, 4, encoding);
+  write_data_array(out, "type=\"Int64\" Name=\"offsets\"", offsets, 1, encoding);
+  write_data_array(out, "type=\"UInt8\" Name=\"types\"", types, 1, encoding);
+  out << "      </Cells>\n"
       << "    </Piece>\n"
       << "  </UnstructuredGrid>\n"
       << "</VTKFile>\n";
@@ -61,8 +107,8 @@ void write_vtu_impl(std::ostream& out, const d3::BasicTetMesh<P>& mesh) {
 
 }  // namespace
 
-void write_vtu(std::ostream& out, const d3::TetMesh& mesh) { write_vtu_impl(out, mesh); }
-void write_vtu(std::ostream& out, const d3::TetMeshF& mesh) { write_vtu_impl(out, mesh); }
+void write_vtu(std::ostream& out, const d3::TetMesh& mesh, Encoding encoding) { write_vtu_impl(out, mesh, encoding); }
+void write_vtu(std::ostream& out, const d3::TetMeshF& mesh, Encoding encoding) { write_vtu_impl(out, mesh, encoding); }
 
 void write_vtu(std::ostream& out, const TriangleMesh& m) {
   constexpr std::string_view indent = "          ";

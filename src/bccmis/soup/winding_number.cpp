@@ -137,6 +137,12 @@ struct WindingNumber::Impl {
   std::uint32_t build(std::vector<std::uint32_t>& order, const std::vector<Vec3>& centroids, std::uint32_t b,
                       std::uint32_t e, int depth);
   void finish(Node& node) const;
+  template <class Add>
+  void each_solid_angle(std::uint32_t begin, std::uint32_t end, const Vec3& q, std::span<const std::uint32_t> excluded,
+                        Add add) const;
+  template <class Far, class Add>
+  void walk(std::uint32_t root, const Vec3& q, double qnorm, double beta, std::span<const std::uint32_t> excluded,
+            Far far, Add add) const;
   Estimate run(const Vec3& q, double beta, std::span<const std::uint32_t> excluded) const;
   Estimate exact(const Vec3& q, std::span<const std::uint32_t> excluded) const;
   bool at_least(const Vec3& q, std::span<const std::uint32_t> excluded, double threshold) const;
@@ -360,6 +366,46 @@ double gamma_of(double m) { return m * kU / (1 - m * kU); }
 
 }  // namespace
 
+// The solid angles (S17) at q of the triangles at tree positions [begin,
+// end), each to add(term): the degenerate ones (w = 0) and the excluded
+// input indices (sorted) left out.
+template <class Add>
+void WindingNumber::Impl::each_solid_angle(std::uint32_t begin, std::uint32_t end, const Vec3& q,
+                                           std::span<const std::uint32_t> excluded, Add add) const {
+  for (std::uint32_t i = begin; i < end; ++i) {
+    if (degenerate[i]) continue;
+    if (!excluded.empty() && std::binary_search(excluded.begin(), excluded.end(), ids[i])) continue;
+    add(solid_angle(points[i], q));
+  }
+}
+
+// The walk of the hierarchy from `root` (S17-S18): a node with
+// |q - c| (1 - 4u) > beta r gives its far-field term to far(index, term);
+// a leaf nearer than that its triangles' solid angles to add(term); an
+// inner node nearer than that is opened (left child first).
+template <class Far, class Add>
+void WindingNumber::Impl::walk(std::uint32_t root, const Vec3& q, double qnorm, double beta,
+                               std::span<const std::uint32_t> excluded, Far far, Add add) const {
+  std::uint32_t stack[2 * kMaxDepth + 8];
+  int top = 0;
+  stack[top++] = root;
+  while (top > 0) {
+    const std::uint32_t index = stack[--top];
+    const Node& node = nodes[index];
+    const Vec3 dx = sub(node.c, q);
+    const double d = norm(dx);
+    const double d_lo = d * (1 - 4 * kU);
+    if (d_lo > beta * node.r) {
+      far(index, far_term(node, q, qnorm, dx, d, d_lo));
+    } else if (node.right == 0) {
+      each_solid_angle(node.begin, node.end, q, excluded, add);
+    } else {
+      stack[top++] = node.right;
+      stack[top++] = index + 1;
+    }
+  }
+}
+
 // Nodes with |q - c| > beta r in the far field, the rest exactly (S17). The
 // sum's own rounding: gamma_m sum|terms| (m the terms).
 WindingNumber::Estimate WindingNumber::Impl::run(const Vec3& q, double beta,
@@ -368,51 +414,25 @@ WindingNumber::Estimate WindingNumber::Impl::run(const Vec3& q, double beta,
   double sum = 0, sum_abs = 0, error = 0;
   double terms = 0;
   if (nodes.empty()) return {};
-  const double qnorm = norm(q);
-  std::uint32_t stack[2 * kMaxDepth + 8];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const std::uint32_t index = stack[--top];
-    const Node& node = nodes[index];
-    const Vec3 dx = sub(node.c, q);
-    const double d = norm(dx);
-    const double d_lo = d * (1 - 4 * kU);
-    if (d_lo > beta * node.r) {
-      const Estimate t = far_term(node, q, qnorm, dx, d, d_lo);
-      sum += t.value;
-      sum_abs += std::abs(t.value);
-      error += t.error;
-      terms += 1;
-    } else if (node.right == 0) {
-      for (std::uint32_t i = node.begin; i < node.end; ++i) {
-        if (degenerate[i]) continue;
-        if (!excluded.empty() && std::binary_search(excluded.begin(), excluded.end(), ids[i])) continue;
-        const Estimate t = solid_angle(points[i], q);
-        sum += t.value;
-        sum_abs += std::abs(t.value);
-        error += t.error;
-        terms += 1;
-      }
-    } else {
-      stack[top++] = node.right;
-      stack[top++] = index + 1;
-    }
-  }
+  auto add = [&](const Estimate& t) {
+    sum += t.value;
+    sum_abs += std::abs(t.value);
+    error += t.error;
+    terms += 1;
+  };
+  walk(
+      0, q, norm(q), beta, excluded, [&](std::uint32_t, const Estimate& t) { add(t); }, add);
   const double g = gamma_of(terms);
   return {sum, (error * (1 + g) + g * sum_abs * (1 + 2 * g)) * (1 + 4 * kU)};
 }
 
 WindingNumber::Estimate WindingNumber::Impl::exact(const Vec3& q, std::span<const std::uint32_t> excluded) const {
   double sum = 0, sum_abs = 0, error = 0;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (degenerate[i]) continue;
-    if (!excluded.empty() && std::binary_search(excluded.begin(), excluded.end(), ids[i])) continue;
-    const Estimate t = solid_angle(points[i], q);
+  each_solid_angle(0, static_cast<std::uint32_t>(points.size()), q, excluded, [&](const Estimate& t) {
     sum += t.value;
     sum_abs += std::abs(t.value);
     error += t.error;
-  }
+  });
   const double g = gamma_of(static_cast<double>(points.size()));
   return {sum, (error * (1 + g) + g * sum_abs * (1 + 2 * g)) * (1 + 4 * kU)};
 }
@@ -445,44 +465,23 @@ bool WindingNumber::Impl::at_least(const Vec3& q, std::span<const std::uint32_t>
   double far_error = 0;  // >= the sum of the far nodes' bounds: rounded up at each step
   bool heap = false;     // far is a max-heap by bound (after the first pass)
   auto up = [](double x) { return x * (1 + 4 * kU); };
-  auto leaf = [&](const Node& node) {
-    for (std::uint32_t i = node.begin; i < node.end; ++i) {
-      if (degenerate[i]) continue;
-      if (!excluded.empty() && std::binary_search(excluded.begin(), excluded.end(), ids[i])) continue;
-      const Estimate t = solid_angle(points[i], q);
-      sum += t.value;
-      sum_abs += std::abs(t.value);
-      terms += 1;
-      exact_error += t.error;
-      exact_terms += 1;
-    }
+  auto add_exact = [&](const Estimate& t) {
+    sum += t.value;
+    sum_abs += std::abs(t.value);
+    terms += 1;
+    exact_error += t.error;
+    exact_terms += 1;
   };
-  std::uint32_t stack[2 * kMaxDepth + 8];
-  auto open = [&](std::uint32_t root) {
-    int top = 0;
-    stack[top++] = root;
-    while (top > 0) {
-      const std::uint32_t index = stack[--top];
-      const Node& node = nodes[index];
-      const Vec3 dx = sub(node.c, q);
-      const double d = norm(dx);
-      const double d_lo = d * (1 - 4 * kU);
-      if (d_lo > kSideBeta * node.r) {
-        const Estimate t = far_term(node, q, qnorm, dx, d, d_lo);
-        sum += t.value;
-        sum_abs += std::abs(t.value);
-        terms += 1;
-        far.push_back({t.error, t.value, index});
-        if (heap) std::push_heap(far.begin(), far.end(), by_bound);
-        far_error = up(far_error + t.error);
-      } else if (node.right == 0) {
-        leaf(node);
-      } else {
-        stack[top++] = node.right;
-        stack[top++] = index + 1;
-      }
-    }
+  auto add_far = [&](std::uint32_t index, const Estimate& t) {
+    sum += t.value;
+    sum_abs += std::abs(t.value);
+    terms += 1;
+    far.push_back({t.error, t.value, index});
+    if (heap) std::push_heap(far.begin(), far.end(), by_bound);
+    far_error = up(far_error + t.error);
   };
+  auto leaf = [&](const Node& node) { each_solid_angle(node.begin, node.end, q, excluded, add_exact); };
+  auto open = [&](std::uint32_t root) { walk(root, q, qnorm, kSideBeta, excluded, add_far, add_exact); };
   open(0);
   for (;;) {
     const double g = gamma_of(terms), ge = gamma_of(exact_terms);

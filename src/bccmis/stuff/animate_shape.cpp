@@ -63,6 +63,10 @@ AnimationSummary animate_shape(const std::shared_ptr<const Shape>& shape, const 
       }
     }
     frame.mesh = &moving.stuffed().mesh;
+    // S26: a frame without tetrahedra is bad input for this level.
+    if (frame.mesh->tets.empty())
+      throw ShapeError(shape->describe() + ": frame " + std::to_string(k) + ": " +
+                       "the mesh is empty: " + level_hint(shape->bounds(), fit));
     on_frame(frame);
   }
   summary.mean_step_seconds = step_total / n;

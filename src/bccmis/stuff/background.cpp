@@ -50,6 +50,15 @@ Fit fit_lattice(const Bounds& box, const StuffOptions& options) {
     counts[i] = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(need / S - 1e-12)));
     fit.origin[i] = 0.5 * (box.lo[i] + box.hi[i]) - 0.5 * static_cast<double>(counts[i]) * S;
   }
+  // S2: the fast lattice names its records by 31-bit ids (lattice3d.md).
+  constexpr double kLimit = 2147483648.0;  // 2^31
+  const double cubes = static_cast<double>(counts[0]) * static_cast<double>(counts[1]) * static_cast<double>(counts[2]);
+  const double nodes =
+      static_cast<double>(counts[0] + 1) * static_cast<double>(counts[1] + 1) * static_cast<double>(counts[2] + 1);
+  if (cubes >= kLimit || nodes >= kLimit)
+    throw ShapeError("the initial lattice of " + std::to_string(counts[0]) + " x " + std::to_string(counts[1]) + " x " +
+                     std::to_string(counts[2]) +
+                     " level-0 cubes has 2^31 or more cubes or nodes, the lattice's limit; use fewer --cells");
   fit.size = d3::LatticeSize{counts[0], counts[1], counts[2], L};
   fit.scale = std::ldexp(S, -(L + 1));
   return fit;

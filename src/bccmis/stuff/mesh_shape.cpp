@@ -1,10 +1,15 @@
 // The stuffing library's entry point (mesh_shape.h): S2-S13 in one call.
 #include "bccmis/stuff/mesh_shape.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "bccmis/fast/d3/lattice.h"
 #include "bccmis/invariants/d3/stuffed_mesh.h"
 #include "bccmis/json_writer.h"
 #include "bccmis/stuff/detail/stuffer.h"
+#include "bccmis/stuff/memory_estimate.h"
+#include "bccmis/stuff/normalisation.h"
 #if BCCMIS_HAVE_STUFF_SURFACE
 #include "bccmis/stuff/surface.h"
 #endif
@@ -15,7 +20,18 @@ namespace {
 using detail::Clock;
 using detail::seconds_since;
 std::string number(double x) { return JsonWriter::number(x); }
+
 }  // namespace
+
+std::string level_hint(const Bounds& box, const Fit& fit) {
+  double e = box.hi[0] - box.lo[0];
+  for (std::size_t i = 1; i < 3; ++i) e = std::min(e, box.hi[i] - box.lo[i]);
+  int level = fit.size.L;
+  for (double h = fit.h; h > e / 4 && level < 64; h /= 2) ++level;
+  return "bad input for this level (the finest cell side " + number(fit.h) +
+         " against the thinnest extent of the shape's box " + number(e) + "); -L " + std::to_string(level) +
+         " would resolve it";
+}
 
 std::unique_ptr<Shape> load_mesh_file(const std::string& path, bool strict, std::optional<io::SurfaceFormat> format) {
 #if BCCMIS_HAVE_STUFF_SURFACE
@@ -37,22 +53,33 @@ std::optional<std::string> find_stuffed_problem(const Shape& shape, const Fit& f
   return std::nullopt;
 }
 
-Meshed mesh_shape(const Shape& shape, const Settings& settings, const Progress& progress) {
+Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& progress) {
   const auto say = [&](const std::string& what) {
     if (progress) progress(what);
   };
   Meshed r;
-  if (const SoupReport* soup = shape.soup_report()) {
+  if (const SoupReport* soup = world.soup_report()) {
     r.soup = *soup;
     if (settings.strict && soup->flaw_count() > 0)
       throw ShapeError(soup->file + ": " + soup->summary() + " (strict: only a clean closed mesh is meshed)");
   }
+  // S24: mesh the shape in local coordinates, map the result back.
+  const Normalisation n = normalisation_of(world.bounds());
+  const std::unique_ptr<Shape> local = world.normalised(n);
+  const Shape& shape = *local;
   StuffOptions options = settings.lattice;
-  r.fit = fit_lattice(shape.bounds(), options);
-  options.max_level = r.fit.size.L;
-  say(shape.describe() + ": lattice " + std::to_string(r.fit.size.W) + " x " + std::to_string(r.fit.size.H) + " x " +
-      std::to_string(r.fit.size.D) + ", max level " + std::to_string(r.fit.size.L) + ", finest side " +
-      number(r.fit.h));
+  if (options.size) options.size = std::ldexp(*options.size, -n.exponent);
+  const Fit fit = fit_lattice(shape.bounds(), options);
+  options.max_level = fit.size.L;
+  // S25: refuse before building what will not fit.
+  if (const auto limit = settings.memory_limit ? settings.memory_limit : available_memory())
+    refuse_what_will_not_fit(shape, options, *limit);
+  r.fit = fit;
+  r.fit.origin = n.to_world(fit.origin);
+  r.fit.scale = std::ldexp(fit.scale, n.exponent);
+  r.fit.h = std::ldexp(fit.h, n.exponent);
+  say(world.describe() + ": lattice " + std::to_string(fit.size.W) + " x " + std::to_string(fit.size.H) + " x " +
+      std::to_string(fit.size.D) + ", max level " + std::to_string(fit.size.L) + ", finest side " + number(r.fit.h));
   // S3-S9 on the fast lattice, or on the reference.
   PhaseTimes times;
   const auto t0 = Clock::now();
@@ -60,13 +87,13 @@ Meshed mesh_shape(const Shape& shape, const Settings& settings, const Progress& 
     times.lattice = seconds_since(t0);
     r.leaves = leaves;
     say(std::to_string(leaves) + " leaves (" + number(times.lattice) + " s)");
-    return stuff(shape, r.fit, g, options, &times);
+    return stuff(shape, fit, g, options, &times);
   };
   if (settings.impl == Impl::reference) {
-    const d3::Graph g = background(shape, r.fit, options);
+    const d3::Graph g = background(shape, fit, options);
     r.stuffed = stuff_on(g, g.C.size());
   } else {
-    const d3::fast::Lattice g = background_fast(shape, r.fit, options);
+    const d3::fast::Lattice g = background_fast(shape, fit, options);
     r.stuffed = stuff_on(g, g.cell_count());
   }
   r.seconds = {{"lattice", times.lattice},
@@ -77,15 +104,54 @@ Meshed mesh_shape(const Shape& shape, const Settings& settings, const Progress& 
   say(std::to_string(r.stuffed.mesh.tets.size()) + " tetrahedra (" + number(times.total() - times.lattice) + " s)");
 
   // S21: a soup whose winding number is below 1/2 at every lattice vertex.
-  if (r.soup && r.stuffed.mesh.tets.empty())
+  if (r.soup && r.soup->flaw_count() > 0 && r.stuffed.mesh.tets.empty())
     throw ShapeError(r.soup->file + ": encloses no volume (the winding number is below 1/2 at every lattice vertex)");
+  // S26: an empty mesh is bad input for this level.
+  if (r.stuffed.mesh.tets.empty())
+    throw ShapeError(world.describe() + ": the mesh is empty: " + level_hint(world.bounds(), r.fit));
   const auto t1 = Clock::now();
   r.boundary = boundary_triangles(r.stuffed.mesh);
+  // S27: what the mesh is against what the shape is.
+  r.topology = topology(r.stuffed.mesh, r.boundary);
+  if (const auto want = shape.surface_components()) {
+    const std::size_t got = r.topology.boundary_components;
+    const std::string counts = "the mesh's boundary has " + std::to_string(got) + " component" + (got == 1 ? "" : "s") +
+                               " where the shape's surface has " + std::to_string(*want);
+    if (got < *want)
+      throw ShapeError(world.describe() + ": a component is lost: " + counts +
+                       ": bad input for this level (a part thinner than about 2 finest cell sides, 2 x " +
+                       number(r.fit.h) + ", may vanish; each level further halves that)");
+    if (got > *want) r.warnings.push_back(counts);
+  }
+  if (r.topology.nonmanifold_edges > 0)
+    r.warnings.push_back("the mesh's boundary has " + std::to_string(r.topology.nonmanifold_edges) +
+                         " non-manifold edges (parts meeting along a lattice edge; a finer level separates them)");
+  if (settings.check && !r.warnings.empty()) throw CheckError(world.describe() + ": " + r.warnings.front());
   if (settings.check)
-    if (auto why = find_stuffed_problem(shape, r.fit, r.stuffed.mesh)) throw CheckError(shape.describe() + ": " + *why);
-  if (settings.statistics) r.statistics = statistics(shape, r.stuffed.mesh, r.boundary);
+    if (auto why = find_stuffed_problem(shape, fit, r.stuffed.mesh)) throw CheckError(world.describe() + ": " + *why);
+  if (settings.statistics) r.statistics = to_world(statistics(shape, r.stuffed.mesh, r.boundary), n);
   r.seconds.emplace_back("statistics", seconds_since(t1));
+  to_world(r.stuffed.mesh, n, r.fit.h);
   return r;
+}
+
+void to_world(d3::TetMeshF& mesh, const Normalisation& n, double h) {
+  for (Vec3& v : mesh.vertices) {
+    v = n.to_world(v);
+    if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
+      throw ShapeError("the mesh's coordinates overflow a double (the lattice's margin reaches beyond 1.8e308)");
+  }
+  // S24: only a translation rounds the map back; what it rounds flat is refused.
+  if (!n.translates()) return;
+  for (const auto& t : mesh.tets)
+    if (orientation(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], mesh.vertices[t[3]]) <= 0) {
+      const Vec3& p = mesh.vertices[t[0]];
+      const double m = std::max({std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
+      throw ShapeError("a tetrahedron near (" + number(p[0]) + ", " + number(p[1]) + ", " + number(p[2]) +
+                       ") is flat once written: coordinates of magnitude " + number(m) + " are spaced " +
+                       number(std::nextafter(m, HUGE_VAL) - m) + " apart, too coarse for the finest side " + number(h) +
+                       "; use a coarser level or move the shape nearer the origin");
+    }
 }
 
 }  // namespace bccmis::stuff

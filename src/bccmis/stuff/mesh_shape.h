@@ -25,10 +25,12 @@
 #include <vector>
 
 #include "bccmis/io/surface_format.h"
+#include "bccmis/stuff/normalisation.h"
 #include "bccmis/stuff/shape.h"
 #include "bccmis/stuff/soup_report.h"
 #include "bccmis/stuff/statistics.h"
 #include "bccmis/stuff/stuff.h"
+#include "bccmis/stuff/topology.h"
 
 namespace bccmis::stuff {
 
@@ -42,6 +44,8 @@ struct Settings {
   /// counts flaws is refused with the first one's message, as
   /// load_mesh_file(path, true) refuses it when reading.
   bool strict = false;
+  /// The memory a run may take (S25); unset: MemAvailable of /proc/meminfo.
+  std::optional<double> memory_limit;
 };
 
 /// One line of news for a person watching ("12,345 leaves (0.5 s)").
@@ -59,6 +63,8 @@ struct Meshed {
   std::vector<std::array<std::uint32_t, 3>> boundary;  ///< S11, outward
   std::optional<Statistics> statistics;                ///< with Settings::statistics
   std::optional<SoupReport> soup;                      ///< the shape's soup report (S21), when it has one
+  MeshTopology topology;                               ///< S27: the boundary's components, Euler characteristic
+  std::vector<std::string> warnings;                   ///< S27: a changed topology, one line each
   PhaseSeconds seconds;
 };
 
@@ -69,11 +75,26 @@ class CheckError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// S2-S13 on `shape`. Throws ShapeError when the lattice cannot be fitted
+/// S2-S13 on `shape`, in the local coordinates of S24 (the mesh, the fit and
+/// the statistics reported in the shape's own). Throws ShapeError when the lattice cannot be fitted
 /// (S2's refusals), when a soup's mesh has no tetrahedron ("<file>: encloses
 /// no volume ...", S21) or, with Settings::strict, when the shape's soup
-/// report has flaws; CheckError when Settings::check finds a problem.
+/// report has flaws, when the coordinates cannot hold the result (S24), the
+/// run will not fit the memory (S25), the mesh is empty (S26) or lost a
+/// component of the surface (S27); CheckError when Settings::check finds a
+/// problem or a warning of S27.
 Meshed mesh_shape(const Shape& shape, const Settings& settings, const Progress& progress = {});
+
+/// S24's map back: every vertex of `mesh` (made in n's local coordinates)
+/// to world coordinates. Throws ShapeError when a coordinate overflows or,
+/// when n translates, a tetrahedron is no longer positively oriented once
+/// rounded (`h`, the finest side in world units, for the message).
+void to_world(d3::TetMeshF& mesh, const Normalisation& n, double h);
+
+/// S26's hint: "bad input for this level (the finest cell side of `fit`
+/// against the thinnest extent of `box`, both in world units); -L N would
+/// resolve it", N the first level whose finest side is at most a quarter of it.
+std::string level_hint(const Bounds& box, const Fit& fit);
 
 /// The shape a user names: a triangle mesh file (.off, .obj, .stl), read
 /// through CGAL (ShapeError naming the file when this build has no CGAL or

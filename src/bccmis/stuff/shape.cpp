@@ -9,6 +9,8 @@
 #include <numbers>
 #include <random>
 
+#include "bccmis/stuff/normalisation.h"
+
 namespace bccmis::stuff {
 namespace {
 
@@ -65,6 +67,10 @@ class Sphere final : public Shape {
     return out;
   }
   std::string describe() const override { return fmt("sphere", {{"r", r_}}); }
+  std::optional<std::size_t> surface_components() const override { return 1; }
+  std::unique_ptr<Shape> normalised(const Normalisation& n) const override {
+    return std::make_unique<Sphere>(n.to_local(c_), std::ldexp(r_, -n.exponent));
+  }
 
  private:
   Vec3 c_;
@@ -102,6 +108,10 @@ class Torus final : public Shape {
     return out;
   }
   std::string describe() const override { return fmt("torus", {{"R", R_}, {"r", r_}}); }
+  std::optional<std::size_t> surface_components() const override { return 1; }
+  std::unique_ptr<Shape> normalised(const Normalisation& n) const override {
+    return std::make_unique<Torus>(n.to_local(c_), std::ldexp(R_, -n.exponent), std::ldexp(r_, -n.exponent));
+  }
 
  private:
   Vec3 c_;
@@ -145,6 +155,10 @@ class Spheres final : public Shape {
     return out;
   }
   std::string describe() const override { return fmt("spheres", {{"r", r_}, {"d", norm(sub(ca_, cb_))}}); }
+  std::optional<std::size_t> surface_components() const override { return norm(sub(ca_, cb_)) > 2 * r_ ? 2 : 1; }
+  std::unique_ptr<Shape> normalised(const Normalisation& n) const override {
+    return std::make_unique<Spheres>(n.to_local(ca_), n.to_local(cb_), std::ldexp(r_, -n.exponent));
+  }
 
  private:
   Sphere a_, b_;
@@ -171,6 +185,11 @@ class Translated final : public Shape {
     return out;
   }
   std::string describe() const override { return s_->describe(); }
+  std::optional<std::size_t> surface_components() const override { return s_->surface_components(); }
+  // S24: (x - d) - (t - d) is x - t.
+  std::unique_ptr<Shape> normalised(const Normalisation& n) const override {
+    return s_->normalised({sub(n.translation, d_), n.exponent});
+  }
 
  private:
   std::shared_ptr<const Shape> s_;

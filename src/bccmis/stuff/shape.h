@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -20,7 +21,8 @@
 namespace bccmis::stuff {
 
 using Vec3 = std::array<double, 3>;
-struct SoupReport;  // soup_report.h
+struct SoupReport;     // soup_report.h
+struct Normalisation;  // normalisation.h
 
 /// An axis-aligned box, lo <= hi componentwise.
 struct Bounds {
@@ -55,6 +57,16 @@ class Shape {
   /// found and repaired (spec/stuffing.md S21-S22); nullptr for the other
   /// shapes and for --strict.
   virtual const SoupReport* soup_report() const { return nullptr; }
+  /// The same shape in the mesher's coordinates (spec/stuffing.md S24):
+  /// x' = (x - t) 2^-k, distances times 2^-k. By default a view that
+  /// evaluates this shape in its own coordinates (normalisation.h); shapes
+  /// that can, rebuild themselves in the local coordinates, so that no
+  /// computation sees a number far outside [2^-60, 2^60]. The result may
+  /// refer to this shape, which must outlive it.
+  virtual std::unique_ptr<Shape> normalised(const Normalisation& n) const;
+  /// The number of connected components of the surface, when the shape
+  /// knows it (S27): the built-in shapes and clean triangle meshes.
+  virtual std::optional<std::size_t> surface_components() const { return std::nullopt; }
   /// One line naming the shape for messages and --stats ("sphere r=1", "mesh elephant.off: 2775 triangles").
   virtual std::string describe() const = 0;
 };

@@ -35,14 +35,29 @@ Statistics statistics(const Shape& shape, const d3::TetMeshF& mesh,
   Statistics s;
   s.quality = quality(mesh);
   s.hausdorff.from_boundary = from_boundary(shape, mesh, boundary);
+  s.hausdorff.boundary_points = 7 * boundary.size();
 #if BCCMIS_HAVE_STUFF_SURFACE
   // S13: the surface's side, 20,000 samples (seed 1) to the boundary triangles.
-  if (!boundary.empty())
-    s.hausdorff.from_surface = max_distance_to_triangles(shape.sample_surface(20000, 1), mesh.vertices, boundary);
+  if (!boundary.empty()) {
+    s.hausdorff.surface_samples = 20000;
+    s.hausdorff.from_surface =
+        max_distance_to_triangles(shape.sample_surface(s.hausdorff.surface_samples, 1), mesh.vertices, boundary);
+  }
 #endif
   s.shape_volume = shape.volume();
   s.vertices = mesh.vertices.size();
   s.tetrahedra = mesh.tets.size();
+  s.relative_volume_error = (s.quality.volume - s.shape_volume) / s.shape_volume;
+  return s;
+}
+
+Statistics to_world(Statistics s, const Normalisation& n) {
+  const auto length = [&](double x) { return std::ldexp(x, n.exponent); };
+  const auto volume = [&](double x) { return std::ldexp(x, 3 * n.exponent); };
+  s.hausdorff.from_boundary = length(s.hausdorff.from_boundary);
+  if (s.hausdorff.from_surface >= 0) s.hausdorff.from_surface = length(s.hausdorff.from_surface);
+  s.quality.volume = volume(s.quality.volume);
+  s.shape_volume = volume(s.shape_volume);
   return s;
 }
 

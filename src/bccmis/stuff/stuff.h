@@ -40,7 +40,8 @@ struct Fit {
   }
 };
 
-/// S2. Throws ShapeError when N 2^L <= 10, the levels are out of range or the
+/// S2. Throws ShapeError when N 2^L <= 10, the levels are out of range, the
+/// initial lattice has 2^31 or more cubes or nodes, or the
 /// box is empty or not finite.
 Fit fit_lattice(const Bounds& box, const StuffOptions& options);
 

@@ -44,6 +44,7 @@
 #include "bccmis/io/stl.h"
 #include "bccmis/io/triangle_soup.h"
 #include "bccmis/soup/winding_number.h"
+#include "bccmis/stuff/normalisation.h"
 #include "bccmis/stuff/soup_report.h"
 
 namespace bccmis::stuff {
@@ -236,9 +237,33 @@ class Checker {
 // ---------------------------------------------------------------------------
 // The shape.
 
+// n points uniform on the triangles by area (area_sum: the running sums of
+// their areas), drawn from `seed`.
+std::vector<Vec3> sample_triangles(const std::vector<std::array<Point, 3>>& triangles,
+                                   const std::vector<double>& area_sum, std::size_t n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Vec3> out;
+  out.reserve(n);
+  const double total = area_sum.back();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double pick = u(rng) * total;
+    const auto it = std::upper_bound(area_sum.begin(), area_sum.end(), pick);
+    const std::size_t t = std::min<std::size_t>(static_cast<std::size_t>(it - area_sum.begin()), area_sum.size() - 1);
+    // Uniform on the triangle: sqrt of one variable, the other linear.
+    const double r = std::sqrt(u(rng)), w = u(rng);
+    const auto& [a, b, c] = triangles[t];
+    const double ca = 1 - r, cb = r * (1 - w), cc = r * w;
+    out.push_back({ca * a.x() + cb * b.x() + cc * c.x(), ca * a.y() + cb * b.y() + cc * c.y(),
+                   ca * a.z() + cb * b.z() + cc * c.z()});
+  }
+  return out;
+}
+
 class MeshShape final : public Shape {
  public:
-  MeshShape(const Soup& s, const std::string& name) : name_(basename_of(name)) {
+  MeshShape(const Soup& s, const std::string& name)
+      : name_(basename_of(name)), surface_components_(edge_components(s.triangles).count) {
     std::vector<Mesh::Vertex_index> vs;
     vs.reserve(s.vertices.size());
     for (const auto& p : s.vertices) vs.push_back(mesh_.add_vertex(Point(p[0], p[1], p[2])));
@@ -337,29 +362,13 @@ class MeshShape final : public Shape {
   double volume() const override { return volume_; }
 
   std::vector<Vec3> sample_surface(std::size_t n, std::uint64_t seed) const override {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> u(0, 1);
-    std::vector<Vec3> out;
-    out.reserve(n);
-    const double total = area_sum_.back();
-    for (std::size_t i = 0; i < n; ++i) {
-      const double pick = u(rng) * total;
-      const auto it = std::upper_bound(area_sum_.begin(), area_sum_.end(), pick);
-      const std::size_t t =
-          std::min<std::size_t>(static_cast<std::size_t>(it - area_sum_.begin()), area_sum_.size() - 1);
-      // Uniform on the triangle: sqrt of one variable, the other linear.
-      const double r = std::sqrt(u(rng)), w = u(rng);
-      const auto& [a, b, c] = triangles_[t];
-      const double ca = 1 - r, cb = r * (1 - w), cc = r * w;
-      out.push_back({ca * a.x() + cb * b.x() + cc * c.x(), ca * a.y() + cb * b.y() + cc * c.y(),
-                     ca * a.z() + cb * b.z() + cc * c.z()});
-    }
-    return out;
+    return sample_triangles(triangles_, area_sum_, n, seed);
   }
 
   std::string describe() const override {
     return "mesh " + name_ + ": " + std::to_string(triangles_.size()) + " triangles";
   }
+  std::optional<std::size_t> surface_components() const override { return surface_components_; }
 
   const SoupReport* soup_report() const override { return report_ ? &*report_ : nullptr; }
   /// The default path's report of a clean file (S21): its notes filled here.
@@ -385,6 +394,7 @@ class MeshShape final : public Shape {
  private:
   std::optional<SoupReport> report_;
   std::string name_;
+  std::size_t surface_components_ = 0;
   Mesh mesh_;
   Tree tree_;
   std::optional<Side> side_;
@@ -802,23 +812,7 @@ class SoupShape final : public Shape {
   }
 
   std::vector<Vec3> sample_surface(std::size_t n, std::uint64_t seed) const override {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> u(0, 1);
-    std::vector<Vec3> out;
-    out.reserve(n);
-    const double total = area_sum_.back();
-    for (std::size_t i = 0; i < n; ++i) {
-      const double pick = u(rng) * total;
-      const auto it = std::upper_bound(area_sum_.begin(), area_sum_.end(), pick);
-      const std::size_t t =
-          std::min<std::size_t>(static_cast<std::size_t>(it - area_sum_.begin()), area_sum_.size() - 1);
-      const double r = std::sqrt(u(rng)), w = u(rng);
-      const auto& [a, b, c] = triangles_[t];
-      const double ca = 1 - r, cb = r * (1 - w), cc = r * w;
-      out.push_back({ca * a.x() + cb * b.x() + cc * c.x(), ca * a.y() + cb * b.y() + cc * c.y(),
-                     ca * a.z() + cb * b.z() + cc * c.z()});
-    }
-    return out;
+    return sample_triangles(triangles_, area_sum_, n, seed);
   }
 
   std::string describe() const override {
@@ -900,11 +894,47 @@ class SoupShape final : public Shape {
   std::vector<double> area_sum_;
 };
 
+/// S24: the normalisation of the box of the vertices the faces use (the
+/// box both shapes report), after Checker::basics.
+Normalisation normalisation_of_soup(const Soup& s, const std::string& name) {
+  Bounds box{s.vertices[s.triangles.at(0)[0]], s.vertices[s.triangles.at(0)[0]]};
+  for (const Tri& t : s.triangles)
+    for (auto v : t)
+      for (std::size_t k = 0; k < 3; ++k) {
+        box.lo[k] = std::min(box.lo[k], s.vertices[v][k]);
+        box.hi[k] = std::max(box.hi[k], s.vertices[v][k]);
+      }
+  try {
+    return normalisation_of(box);
+  } catch (const ShapeError& e) {
+    throw ShapeError(name + ": " + e.what());
+  }
+}
+
+/// The soup in S24's local coordinates; a local coordinate below 2^-500 in
+/// magnitude (of a box of extent [1, 2)) is flushed to 0, so that no square
+/// of a coordinate difference underflows in CGAL's constructions.
+Soup normalised_soup(Soup s, const Normalisation& n) {
+  for (Vec3& v : s.vertices) {
+    v = n.to_local(v);
+    for (double& x : v)
+      if (std::abs(x) < 0x1p-500) x = 0;
+  }
+  return s;
+}
+
+std::unique_ptr<Shape> local_soup_shape_of(const Soup& s, const std::string& name, bool force_soup);
+
 /// The default path (S21): the refusals of both modes, then today's shape
 /// when today's checks pass, else the soup's.
-std::unique_ptr<Shape> soup_shape_of(const Soup& s, const std::string& name, bool force_soup) {
+std::unique_ptr<Shape> soup_shape_of(const Soup& world, const std::string& name, bool force_soup) {
+  Checker(world, name).basics();
+  const Normalisation n = normalisation_of_soup(world, name);
+  return placed(local_soup_shape_of(normalised_soup(world, n), name, force_soup), n);
+}
+
+std::unique_ptr<Shape> local_soup_shape_of(const Soup& s, const std::string& name, bool force_soup) {
   const Checker checker(s, name);
-  checker.basics();
   if (!force_soup) {
     try {
       checker.run();
@@ -922,9 +952,12 @@ std::unique_ptr<Shape> soup_shape_of(const Soup& s, const std::string& name, boo
   return std::make_unique<SoupShape>(s, inspect(s, name), name);
 }
 
-std::unique_ptr<Shape> shape_of(const Soup& s, const std::string& name) {
+std::unique_ptr<Shape> shape_of(const Soup& world, const std::string& name) {
+  Checker(world, name).basics();
+  const Normalisation n = normalisation_of_soup(world, name);
+  const Soup s = normalised_soup(world, n);
   Checker(s, name).run();
-  return std::make_unique<MeshShape>(s, name);
+  return placed(std::make_unique<MeshShape>(s, name), n);
 }
 
 }  // namespace

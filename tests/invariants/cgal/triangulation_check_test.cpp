@@ -12,6 +12,7 @@
 #include "bccmis/invariants/cgal/triangulation_check.h"
 #include "bccmis/invariants/invariants.h"
 #include "bccmis/ops.h"
+#include "invariants/two_level_jump.h"
 
 namespace bccmis {
 namespace {
@@ -109,33 +110,7 @@ TEST(TriangulationCheck, AgreesWithLayers1To4OnAllSmallStates) {
   }
 }
 
-// lattice 2 1 2, the right cell refined, then its child (10, 2) split by hand
-// into four level-2 cells: the level-0 cell (4, 4) is next to cells two
-// levels finer along (8, 0)-(8, 4). `coarse_lists_quarter` says whether
-// (4, 4) was handed the quarter point (8, 2) as the paper's (6b) would.
-Graph two_level_jump(bool coarse_lists_quarter) {
-  Graph g = make_lattice({2, 1, 2});
-  EXPECT_TRUE(refine(g, {12, 4}).applied());
-  const Point c{10, 2};
-  for (const Point p : PointSet(g.nbr(c))) unlink(g, c, p);
-  g.C.erase(c);
-  g.level.erase(c);
-  g.N.insert(c);
-  for (const Point yi : {Point{9, 1}, Point{9, 3}, Point{11, 1}, Point{11, 3}}) {
-    g.C.insert(yi);
-    g.level[yi] = 2;
-    for (const std::int64_t dx : {-1, 1})
-      for (const std::int64_t dy : {-1, 1}) {
-        const Point p{yi.x + dx, yi.y + dy};
-        g.N.insert(p);
-        link(g, yi, p);
-      }
-  }
-  link(g, {14, 2}, {12, 2});  // junctions on the sides with level-1 cells
-  link(g, {10, 6}, {10, 4});
-  if (coarse_lists_quarter) link(g, {4, 4}, {8, 2});
-  return g;
-}
+using test::two_level_jump;
 
 TEST(TriangulationCheck, RejectsCoarseCellNextToCellsTwoLevelsFiner) {
   const Graph g = two_level_jump(false);

@@ -1,0 +1,76 @@
+// S25's estimate of a run's memory (memory_estimate.h).
+#include "bccmis/stuff/memory_estimate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+namespace bccmis::stuff {
+
+namespace {
+
+/// The level-L cubes of the fitted lattice: an upper bound of the leaves.
+double all_cubes(const Fit& fit) {
+  return static_cast<double>(fit.size.W) * static_cast<double>(fit.size.H) * static_cast<double>(fit.size.D) *
+         std::ldexp(1.0, 3 * fit.size.L);
+}
+
+std::string gigabytes(double bytes) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g GB", bytes / 1e9);
+  return buf;
+}
+
+}  // namespace
+
+MemoryEstimate estimate_memory(const Shape& shape, const StuffOptions& options, double available_bytes) {
+  const Fit fit = fit_lattice(shape.bounds(), options);
+  MemoryEstimate e;
+  e.leaves = all_cubes(fit);
+  if (e.leaves * kBytesPerLeaf <= available_bytes) return e;
+  // S25: the probe, at the smallest level P >= 2 with N 2^P > 10, when below L.
+  int P = 2;
+  while (std::ldexp(static_cast<double>(options.cells), P) <= 10) ++P;
+  if (P >= fit.size.L) return e;
+  StuffOptions probe = options;
+  probe.size.reset();
+  probe.max_level = P;
+  probe.min_level = std::min(options.min_level, P);
+  const Fit coarse = fit_lattice(shape.bounds(), probe);
+  const double probe_leaves = static_cast<double>(background_fast(shape, coarse, probe).cell_count());
+  // Every leaf at least --min-level deep: the initial cubes times 8^min-level.
+  const double floor = static_cast<double>(fit.size.W) * static_cast<double>(fit.size.H) *
+                       static_cast<double>(fit.size.D) * std::ldexp(1.0, 3 * options.min_level);
+  e.leaves = std::min(e.leaves, std::max(floor, probe_leaves * std::ldexp(1.0, 2 * (fit.size.L - P))));
+  return e;
+}
+
+std::optional<double> available_memory() {
+  std::ifstream in("/proc/meminfo");
+  std::string key;
+  double kb = 0;
+  std::string unit;
+  while (in >> key >> kb >> unit)
+    if (key == "MemAvailable:") return kb * 1024;
+  return std::nullopt;
+}
+
+void refuse_what_will_not_fit(const Shape& shape, const StuffOptions& options, double available_bytes) {
+  const Fit fit = fit_lattice(shape.bounds(), options);
+  const MemoryEstimate e = estimate_memory(shape, options, available_bytes);
+  if (e.bytes() <= available_bytes) return;
+  // The finest level that fits: the estimate falls by 4 (at least) a level.
+  int fits = fit.size.L;
+  double bytes = e.bytes();
+  while (fits > 0 && bytes > available_bytes) --fits, bytes /= 4;
+  char leaves[32];
+  std::snprintf(leaves, sizeof leaves, "%.3g", e.leaves);
+  throw ShapeError("max level " + std::to_string(fit.size.L) + " needs about " + leaves + " leaves, " +
+                   gigabytes(e.bytes()) + " by S25's estimate (" + std::to_string(static_cast<int>(kBytesPerLeaf)) +
+                   " bytes a leaf), more than the " + gigabytes(available_bytes) + " of memory available; -L " +
+                   std::to_string(fits) + " would fit");
+}
+
+}  // namespace bccmis::stuff

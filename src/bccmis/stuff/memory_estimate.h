@@ -1,0 +1,35 @@
+// bccmis::stuff::memory_estimate: what a run will need, estimated from the
+// fitted lattice before it is built (spec/stuffing.md S25), and the memory
+// the machine has for it.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "bccmis/stuff/shape.h"
+#include "bccmis/stuff/stuff.h"
+
+namespace bccmis::stuff {
+
+/// S25: the bytes a run's peak holds per leaf of its background lattice
+/// (measured on the sphere at levels 3-5: 2.2-2.5 KB).
+inline constexpr double kBytesPerLeaf = 2200;
+
+/// S25: an estimate of the leaves S3 makes for `shape` at options.max_level
+/// (the shape in S24's local coordinates, as the run sees it): every cube of
+/// the lattice when that is affordable, else a probe lattice at a coarse
+/// level P whose leaves grow by 4 a level, as a surface's do.
+struct MemoryEstimate {
+  double leaves = 0;
+  double bytes() const { return leaves * kBytesPerLeaf; }
+};
+MemoryEstimate estimate_memory(const Shape& shape, const StuffOptions& options, double available_bytes);
+
+/// MemAvailable of /proc/meminfo in bytes, or nothing when it cannot be read.
+std::optional<double> available_memory();
+
+/// S25: throws ShapeError, with the estimate and the finest level that would
+/// fit, when the estimate for `options` exceeds `available_bytes`.
+void refuse_what_will_not_fit(const Shape& shape, const StuffOptions& options, double available_bytes);
+
+}  // namespace bccmis::stuff
