@@ -108,7 +108,7 @@ if(TARGET bccmis::stuff_surface)
                   STDIN_FILE ${PROJECT_SOURCE_DIR}/tests/stuff/good/cube_quads.obj
                   STDERR_REGEX "^bccmis stuff: mesh stdin: 12 triangles: .* tetrahedra written to 1 file\n$")
   bccmis_cli_test(stuff_stdin_unknown 2 ARGS stuff - --stats STDIN_FILE ${_cli}/words.stl
-                  STDERR_REGEX "^bccmis: stdin: cannot tell the format of the content \\(text\\): expected OFF, OBJ or STL")
+                  STDERR_REGEX "^bccmis: stdin: cannot tell the format of the content \\(text\\): expected OFF, OBJ, PLY or STL")
   bccmis_cli_test(stuff_stdin_wrong_format 2 ARGS stuff - --format stl --stats
                   STDIN_FILE ${_cli}/tetrahedron_off_text.stl
                   STDERR_REGEX "^bccmis: stdin: the content is OFF text, not STL \\(to read it as OFF: --format off\\)\n")
@@ -119,6 +119,27 @@ if(TARGET bccmis::stuff_surface)
   bccmis_cli_test(stuff_text_stl 2 ARGS stuff ${_cli}/words.stl --stats
                   STDERR_REGEX "words.stl:1:1: expected 'solid', found 'a'\n")
   bccmis_cli_test(stuff_directory 2 ARGS stuff ${_cli} --stats STDERR_REGEX "cli: is a directory, expected a file\n")
+
+  # PLY (spec/formats.md, "PLY input"): cube.off's vertices and triangles as
+  # ASCII PLY (6 quads whose fans are cube.off's triangles, normals and colours
+  # skipped) and as binary big-endian PLY give cube.off's mesh, byte for byte;
+  # binary PLY on standard input is told by its first line.
+  set(_good ${PROJECT_SOURCE_DIR}/tests/stuff/good)
+  foreach(_in cube.off cube.ply cube_big_endian.ply)
+    bccmis_cli_test(stuff_ply_same_mesh.${_in} 0 ARGS stuff ${_good}/${_in} -L 2 --cells 4 -q -o cube.vtu)
+    set_tests_properties(cli.stuff_ply_same_mesh.${_in} PROPERTIES FIXTURES_SETUP cli_stuff_ply_same_mesh)
+  endforeach()
+  foreach(_in cube.ply cube_big_endian.ply)
+    add_test(NAME cli.stuff_ply_same_mesh_as_off.${_in}
+             COMMAND ${CMAKE_COMMAND} -E compare_files ${CMAKE_CURRENT_BINARY_DIR}/cli_work/stuff_ply_same_mesh.cube.off/cube.vtu
+                     ${CMAKE_CURRENT_BINARY_DIR}/cli_work/stuff_ply_same_mesh.${_in}/cube.vtu)
+    set_tests_properties(cli.stuff_ply_same_mesh_as_off.${_in} PROPERTIES FIXTURES_REQUIRED cli_stuff_ply_same_mesh
+                                                                          LABELS cli)
+  endforeach()
+  bccmis_cli_test(stuff_ply_point_cloud 2 ARGS stuff ${_cli}/point_cloud.ply --stats
+                  STDERR_REGEX "point_cloud.ply:8:1: no element 'face' in the header \\(a point cloud is no surface\\)\n$")
+  bccmis_cli_test(stuff_ply_stdin_sniffed 0 ARGS stuff - -L 1 --cells 6 -o cube.mesh STDIN_FILE ${_good}/cube_big_endian.ply
+                  STDERR_REGEX "^bccmis stuff: mesh stdin: 12 triangles: .* tetrahedra written to 1 file\n$")
 endif()
 
 # Bad input: exit 2 with file:line:column.

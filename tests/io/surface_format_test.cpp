@@ -23,7 +23,8 @@ TEST(SurfaceFormat, ByExtensionCaseInsensitive) {
   EXPECT_EQ(format_of_extension("a/b.OFF"), SurfaceFormat::off);
   EXPECT_EQ(format_of_extension("b.obj"), SurfaceFormat::obj);
   EXPECT_EQ(format_of_extension("b.Stl"), SurfaceFormat::stl);
-  EXPECT_EQ(format_of_extension("b.ply"), std::nullopt);
+  EXPECT_EQ(format_of_extension("b.PLY"), SurfaceFormat::ply);
+  EXPECT_EQ(format_of_extension("b.xyz"), std::nullopt);
   EXPECT_EQ(format_of_extension("dir.off/b"), std::nullopt);
   EXPECT_EQ(format_of_extension("-"), std::nullopt);
 }
@@ -32,6 +33,10 @@ TEST(SurfaceFormat, SniffedByFirstWordOfText) {
   EXPECT_EQ(sniff_format("# a comment\n\nCOFF\n0 0 0\n"), SurfaceFormat::off);
   EXPECT_EQ(sniff_format("# exported\nmtllib a.mtl\nv 0 0 0\n"), SurfaceFormat::obj);
   EXPECT_EQ(sniff_format("  solid cube\nendsolid cube\n"), SurfaceFormat::stl);
+  EXPECT_EQ(sniff_format("ply\nformat ascii 1.0\n"), SurfaceFormat::ply);
+  EXPECT_EQ(sniff_format(std::string("ply\r\nformat binary_little_endian 1.0\r\nend_header\r\n") + '\0' + '\1'),
+            SurfaceFormat::ply);  // binary: not text, still PLY by its first line
+  EXPECT_EQ(sniff_format("plywood\n"), std::nullopt);
   EXPECT_EQ(sniff_format("OFFICE 1 2 3\n"), std::nullopt);  // a word that does not end in OFF
   EXPECT_EQ(sniff_format("hello\n"), std::nullopt);
   EXPECT_EQ(sniff_format(""), std::nullopt);
@@ -51,27 +56,31 @@ TEST(SurfaceFormat, ContentInWords) {
   EXPECT_EQ(describe_content("OFF\n"), "OFF text");
   EXPECT_EQ(describe_content("v 1 2 3\n"), "OBJ text");
   EXPECT_EQ(describe_content("solid x\n"), "ASCII STL");
+  EXPECT_EQ(describe_content("ply\nformat binary_big_endian 1.0\n"), "PLY");
   EXPECT_EQ(describe_content(""), "empty");
   EXPECT_EQ(describe_content("three vertices\n"), "text");
   EXPECT_FALSE(is_text(std::string("a\0b", 3)));
   EXPECT_TRUE(is_text("a\tb\r\n\f\v"));
 }
 
+/// What read_surface throws on `data` named `file` in `format`, or "" when it reads.
+std::string refusal(const std::string& file, const std::string& data, std::optional<SurfaceFormat> format) {
+  try {
+    read_surface(file, data, format);
+  } catch (const ReadError& e) {
+    return e.what();
+  }
+  return "";
+}
+
 TEST(SurfaceFormat, ContentOfAnotherFormatIsRefusedNamingBoth) {
-  try {
-    read_surface("t.stl", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", SurfaceFormat::stl);
-    FAIL() << "read";
-  } catch (const ReadError& e) {
-    EXPECT_STREQ(e.what(), "t.stl: the content is OFF text, not STL (to read it as OFF: --format off)");
-  }
-  try {
-    read_surface("stdin", "three vertices\n", std::nullopt);
-    FAIL() << "read";
-  } catch (const ReadError& e) {
-    EXPECT_STREQ(e.what(),
-                 "stdin: cannot tell the format of the content (text): expected OFF, OBJ or STL (--format off, obj or "
-                 "stl says which)");
-  }
+  EXPECT_EQ(refusal("t.stl", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", SurfaceFormat::stl),
+            "t.stl: the content is OFF text, not STL (to read it as OFF: --format off)");
+  EXPECT_EQ(refusal("t.off", "ply\nformat ascii 1.0\n", SurfaceFormat::off),
+            "t.off: the content is PLY, not OFF (to read it as PLY: --format ply)");
+  EXPECT_EQ(refusal("stdin", "three vertices\n", std::nullopt),
+            "stdin: cannot tell the format of the content (text): expected OFF, OBJ, PLY or STL (--format off, "
+            "obj, ply or stl says which)");
 }
 
 TEST(SurfaceFormat, SniffedContentIsRead) {

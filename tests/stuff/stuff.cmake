@@ -9,7 +9,7 @@ if(TARGET bccmis::stuff_surface)
       "data.tar.gz of libcgal-demo, CGAL's sample meshes")
   set(bccmis_cgal_meshes elephant.off double-torus-example.off icosahedron.off corner_poly.off prim.off
                          # flawed files for cli.stuff_wild_files (below)
-                         bones.off blob.off mpi.off cube4-shuffled.off)
+                         bones.off blob.off mpi.off cube4-shuffled.off colored_tetra.ply)
   set(bccmis_cgal_data ${CMAKE_CURRENT_BINARY_DIR}/cgal_data)
   set(bccmis_cgal_missing "")
   foreach(m ${bccmis_cgal_meshes})

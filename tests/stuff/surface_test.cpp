@@ -292,8 +292,9 @@ TEST(SurfaceFiles, Refusals) {
   EXPECT_EQ(load_message(bad + "truncated.stl"),
             bad + "truncated.stl: byte 134: binary STL truncated in triangle 1 of 2 (184 bytes expected, 144 present)");
   EXPECT_EQ(load_message(bad + "absent.off"), bad + "absent.off: cannot open: No such file or directory");
-  EXPECT_EQ(load_message(bad + "mesh.ply"), bad + "mesh.ply: unknown extension '.ply' (expected .off, .obj or .stl)");
-  EXPECT_EQ(load_message(bad + "mesh"), bad + "mesh: unknown extension '' (expected .off, .obj or .stl)");
+  EXPECT_EQ(load_message(bad + "mesh.xyz"),
+            bad + "mesh.xyz: unknown extension '.xyz' (expected .off, .obj, .ply or .stl)");
+  EXPECT_EQ(load_message(bad + "mesh"), bad + "mesh: unknown extension '' (expected .off, .obj, .ply or .stl)");
 }
 
 /// The checks of a closed sample mesh: positive volume, samples on the

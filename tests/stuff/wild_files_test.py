@@ -41,6 +41,7 @@ FILES = {
     "mpi.off": "zero-area faces (2; face 20 on line 114 first); 180 triangles, closed",
     "cube4-shuffled.off": "inconsistently oriented (4 edges traversed twice the same way); 12 triangles",
     "double-torus-example.off": "clean: closed, oriented, genus 2; 466 triangles (meshed today too)",
+    "colored_tetra.ply": "clean: ASCII PLY with normals, colours, per-face labels and an edge element; 4 triangles (refused before PLY was read: unknown extension)",
 }
 LEVEL = 3
 SAMPLES = 8000  # at most; fewer for large files (points x triangles <= 1e7)

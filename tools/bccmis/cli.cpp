@@ -183,12 +183,13 @@ CLI::App* add_stuff(CLI::App& app, StuffOptions& o) {
   CLI::App* cmd = app.add_subcommand(
       "stuff", "Mesh a closed shape with tetrahedra by isosurface stuffing on the graded BCC mesh (spec/stuffing.md).");
   cmd->add_option("input", o.input,
-                  "Triangle mesh: .off, .obj or .stl (ASCII or binary), '-' for stdin; open, self-intersecting or "
+                  "Triangle mesh: .off, .obj, .ply or .stl (PLY and STL ASCII or binary), '-' for stdin; open, "
+                  "self-intersecting or "
                   "otherwise flawed meshes are repaired and meshed as the solid where the winding number >= 1/2");
   cmd->add_option("--format", o.format,
-                  "Read the input as off, obj or stl whatever its name (default: the extension; for stdin, "
+                  "Read the input as off, obj, ply or stl whatever its name (default: the extension; for stdin, "
                   "what the content is)")
-      ->check(CLI::IsMember({"off", "obj", "stl"}));
+      ->check(CLI::IsMember({"off", "obj", "ply", "stl"}));
   cmd->add_option("--shape", o.shape,
                   "A built-in shape instead: sphere[:r=R], torus[:R=A,r=B], spheres[:r=R,d=D] (defaults r=1; R=1, "
                   "r=0.4; r=0.7, d=1)");

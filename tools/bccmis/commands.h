@@ -123,8 +123,8 @@ struct MeshOptions {
 int run(const MeshOptions& o);
 
 struct StuffOptions {
-  std::string input;                 ///< a triangle mesh (.off, .obj, .stl); "-" standard input
-  std::string format;                ///< "off", "obj", "stl": the input's format, whatever its name; "": by name
+  std::string input;                 ///< a triangle mesh (.off, .obj, .ply, .stl); "-" standard input
+  std::string format;                ///< "off", "obj", "ply", "stl": the input's format, whatever its name; "": by name
   std::string shape;                 ///< or a built-in shape, NAME[:KEY=VALUE,...]
   std::vector<std::string> outputs;  ///< -o, repeatable; the extension names the format
   int max_level = 4;

@@ -50,11 +50,12 @@ void check_stuff_path(const std::string& path) {
 std::shared_ptr<const stuff::Shape> load_shape(const StuffOptions& o) {
   if (!o.shape.empty() && !o.input.empty()) throw InputError("give either an input mesh or --shape, not both");
   if (o.shape.empty() && o.input.empty())
-    throw InputError("nothing to mesh: give an input mesh (.off, .obj, .stl) or --shape NAME");
+    throw InputError("nothing to mesh: give an input mesh (.off, .obj, .ply, .stl) or --shape NAME");
   if (!o.shape.empty()) return stuff::make_builtin(o.shape);
   std::optional<io::SurfaceFormat> format;
   if (o.format == "off") format = io::SurfaceFormat::off;
   if (o.format == "obj") format = io::SurfaceFormat::obj;
+  if (o.format == "ply") format = io::SurfaceFormat::ply;
   if (o.format == "stl") format = io::SurfaceFormat::stl;
   return stuff::load_mesh_file(o.input, o.strict, format);
 }

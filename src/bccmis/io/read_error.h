@@ -1,7 +1,7 @@
-// bccmis::io::ReadError: what the surface readers (.off, .obj, .stl) throw
-// on a malformed or truncated file. what() names the file and the place:
-// `file:line:column: message` in a text, `file: byte N: message` in a binary
-// STL.
+// bccmis::io::ReadError: what the surface readers (.off, .obj, .ply, .stl)
+// throw on a malformed or truncated file. what() names the file and the
+// place: `file:line:column: message` in a text, `file: byte N: message` in a
+// binary STL or PLY body.
 #pragma once
 
 #include <stdexcept>

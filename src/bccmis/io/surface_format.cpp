@@ -7,6 +7,7 @@
 
 #include "bccmis/io/obj.h"
 #include "bccmis/io/off.h"
+#include "bccmis/io/ply.h"
 #include "bccmis/io/read_error.h"
 #include "bccmis/io/stl.h"
 
@@ -37,6 +38,9 @@ bool binary_stl_size(std::string_view data) {
   return data.size() == 84 + 50 * n;
 }
 
+/// The first line is `ply` (spec/formats.md, "PLY input").
+bool ply_magic(std::string_view data) { return data.starts_with("ply\n") || data.starts_with("ply\r\n"); }
+
 bool off_header(std::string_view w) {
   return w.size() >= 3 && w.substr(w.size() - 3) == "OFF" &&
          w.substr(0, w.size() - 3).find_first_not_of("STCN") == std::string_view::npos;
@@ -61,6 +65,7 @@ std::string_view format_name(SurfaceFormat f) {
   switch (f) {
     case SurfaceFormat::off: return "OFF";
     case SurfaceFormat::obj: return "OBJ";
+    case SurfaceFormat::ply: return "PLY";
     case SurfaceFormat::stl: return "STL";
   }
   return "?";
@@ -74,11 +79,13 @@ std::optional<SurfaceFormat> format_of_extension(std::string_view path) {
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (ext == "off") return SurfaceFormat::off;
   if (ext == "obj") return SurfaceFormat::obj;
+  if (ext == "ply") return SurfaceFormat::ply;
   if (ext == "stl") return SurfaceFormat::stl;
   return std::nullopt;
 }
 
 std::optional<SurfaceFormat> sniff_format(std::string_view data) {
+  if (ply_magic(data)) return SurfaceFormat::ply;
   if (binary_stl_size(data)) return SurfaceFormat::stl;
   if (!is_text(data)) return std::nullopt;
   const std::string_view w = first_word(data);
@@ -92,6 +99,7 @@ std::string describe_content(std::string_view data) {
   if (data.empty()) return "empty";
   if (const auto f = sniff_format(data)) {
     if (*f == SurfaceFormat::stl) return binary_stl_size(data) ? "binary STL" : "ASCII STL";
+    if (*f == SurfaceFormat::ply) return "PLY";
     return std::string(format_name(*f)) + " text";
   }
   return is_text(data) ? "text" : "binary data";
@@ -101,7 +109,7 @@ TriangleSoup read_surface(const std::string& file, const std::string& data, std:
   const std::optional<SurfaceFormat> seen = sniff_format(data);
   if (!format && !seen)
     throw ReadError(file + ": cannot tell the format of the content (" + describe_content(data) +
-                    "): expected OFF, OBJ or STL (--format off, obj or stl says which)");
+                    "): expected OFF, OBJ, PLY or STL (--format off, obj, ply or stl says which)");
   if (format && seen && *seen != *format) {
     std::string seen_name(format_name(*seen));
     for (char& c : seen_name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -111,6 +119,7 @@ TriangleSoup read_surface(const std::string& file, const std::string& data, std:
   switch (format.value_or(*seen)) {
     case SurfaceFormat::off: return read_off(file, data);
     case SurfaceFormat::obj: return read_obj(file, data);
+    case SurfaceFormat::ply: return read_ply(file, data);
     case SurfaceFormat::stl: return read_stl(file, data);
   }
   return {};

@@ -1,5 +1,5 @@
-// bccmis::io: a triangle soup as the surface readers (.off, .obj, .stl) give
-// it, with what messages about it need.
+// bccmis::io: a triangle soup as the surface readers (.off, .obj, .ply, .stl)
+// give it, with what messages about it need.
 #pragma once
 
 #include <array>
@@ -13,7 +13,7 @@ namespace bccmis::io {
 
 /// Vertices and triangles as read; for each triangle the face of the input
 /// it comes from (a polygon is fanned into several) and that face's line (0
-/// when there is none), and the number the input gives its first vertex (1
+/// when there is none: binary STL and PLY), and the number the input gives its first vertex (1
 /// for OBJ, 0 otherwise).
 struct TriangleSoup {
   std::vector<d3::Vec3> vertices;

@@ -983,7 +983,7 @@ Soup read_file(const std::string& path, std::optional<io::SurfaceFormat> format)
                                   ? std::string()
                                   : lower(path.substr(dot + 1));
       throw ShapeError(path + ": unknown extension '" + (ext.empty() ? std::string() : "." + ext) +
-                       "' (expected .off, .obj or .stl)");
+                       "' (expected .off, .obj, .ply or .stl)");
     }
   }
   std::ostringstream buf;

@@ -51,6 +51,9 @@ class LineScanner {
     return blank;
   }
   std::size_t line() const { return line_no_; }
+  /// The byte offset of the line after the current one (where a binary body
+  /// that follows a text header starts).
+  std::size_t offset() const { return pos_; }
   /// file:line:col of the last token (or of the end of the line when it was empty).
   [[noreturn]] void fail(const std::string& what) const {
     throw ReadError(file_ + ":" + std::to_string(line_no_) + ":" + std::to_string(tok_start_ - line_start_ + 1) + ": " +
@@ -59,6 +62,9 @@ class LineScanner {
   double number(std::string_view what) {
     const std::string_view t = token();
     if (t.empty()) fail("expected " + std::string(what) + ", found the end of the line");
+    return number(t, what);
+  }
+  double number(std::string_view t, std::string_view what) const {
     double x = 0;
     const char* first = t.data();
     if (*first == '+') ++first;
