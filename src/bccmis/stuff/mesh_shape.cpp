@@ -110,6 +110,9 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
   if (r.stuffed.mesh.tets.empty())
     throw ShapeError(world.describe() + ": the mesh is empty: " + level_hint(world.bounds(), r.fit));
   const auto t1 = Clock::now();
+  // S11 first, so that S27's topology errors below come from meshes that pass it.
+  if (settings.check)
+    if (auto why = find_stuffed_problem(shape, fit, r.stuffed.mesh)) throw CheckError(world.describe() + ": " + *why);
   r.boundary = boundary_triangles(r.stuffed.mesh);
   // S27: what the mesh is against what the shape is.
   r.topology = topology(r.stuffed.mesh, r.boundary);
@@ -133,8 +136,6 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
                          " non-manifold edges (parts meeting along a lattice edge; a finer level separates them)");
     if (settings.check && input_manifold) throw CheckError(world.describe() + ": " + r.warnings.back());
   }
-  if (settings.check)
-    if (auto why = find_stuffed_problem(shape, fit, r.stuffed.mesh)) throw CheckError(world.describe() + ": " + *why);
   if (settings.statistics) r.statistics = to_world(statistics(shape, r.stuffed.mesh, r.boundary), n);
   r.seconds.emplace_back("statistics", seconds_since(t1));
   to_world(r.stuffed.mesh, n, r.fit.h);
