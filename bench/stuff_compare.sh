@@ -34,8 +34,13 @@ peers=${2:?usage: bench/stuff_compare.sh BCCMIS STUFF_PEERS [--max-level L] [--t
 shift 2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+BENCH_DIR=$(cd "$(dirname "$0")" && pwd)
+export BENCH_DIR
 exec python3 - "$bccmis" "$peers" "$work" "$@" <<'PYTHON'
-import json, math, subprocess, sys, tarfile, time
+import math, os, subprocess, sys, tarfile, time
+
+sys.path.insert(0, os.environ["BENCH_DIR"])
+from json_tail import last_json  # noqa: E402
 
 bccmis, peers, work = sys.argv[1:4]
 args = sys.argv[4:]
@@ -76,16 +81,7 @@ def run_json(cmd):
         return None
     # The last JSON object on stdout (one line or pretty-printed; other
     # output around it is skipped).
-    decoder, found, text = json.JSONDecoder(), None, p.stdout
-    i = text.find("{")
-    while i >= 0:
-        try:
-            obj, end = decoder.raw_decode(text, i)
-            if isinstance(obj, dict):
-                found = obj
-            i = text.find("{", end)
-        except json.JSONDecodeError:
-            i = text.find("{", i + 1)
+    found = last_json(p.stdout)
     if found is None:
         print(f"stuff_compare: {' '.join(cmd)}: no JSON object on stdout", file=sys.stderr)
     return found

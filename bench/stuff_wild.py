@@ -99,6 +99,7 @@ try:
 except ImportError:
     sys.exit("stuff_wild: needs numpy; run with /usr/bin/python3 (Debian's python3-numpy)")
 import wildmesh as W  # noqa: E402
+from json_tail import last_json  # noqa: E402
 
 ARCHIVE = "/usr/share/doc/libcgal-dev/data.tar.gz"
 MESH_EXT = (".off", ".stl", ".ply", ".obj")
@@ -133,18 +134,6 @@ def run(cmd, timeout, memory_gb, cwd=None):
     return status, out, err, time.monotonic() - start
 
 
-def last_json(text):
-    decoder, found = json.JSONDecoder(), None
-    i = text.find("{")
-    while i >= 0:
-        try:
-            obj, end = decoder.raw_decode(text, i)
-            if isinstance(obj, dict):
-                found = obj
-            i = text.find("{", end)
-        except json.JSONDecodeError:
-            i = text.find("{", i + 1)
-    return found
 
 
 def first_line(text, drop=()):
@@ -467,18 +456,13 @@ def main():
     if not args.no_peers and not shutil.which("tetgen"):
         sys.exit("stuff_wild: no tetgen (apt-get install tetgen) ; or --no-peers")
 
-    reused = {}
-    if args.reuse:
-        with open(args.reuse) as f:
-            for line in f:
-                r = json.loads(line)
-                reused[r["file"]] = r
-    peers_from = {}
+    def runs_by_file(path):
+        with open(path) as f:
+            return {r["file"]: r for r in map(json.loads, f)}
+
+    reused = runs_by_file(args.reuse) if args.reuse else {}
+    peers_from = runs_by_file(args.peers_from) if args.peers_from else {}
     if args.peers_from:
-        with open(args.peers_from) as f:
-            for line in f:
-                r = json.loads(line)
-                peers_from[r["file"]] = r
         args.no_peers = False
     data = tempfile.mkdtemp(prefix="stuff_wild_data.")
     try:
