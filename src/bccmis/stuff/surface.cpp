@@ -841,7 +841,7 @@ class SoupShape final : public Shape {
 
   /// S20: where w passes 1/2 on [a, b] away from the triangles: regula falsi
   /// (Illinois) on g(t) = s (w - 1/2), s = 1 when a (side sa) is inside,
-  /// with a halving every fourth step; every sign certified by its bound.
+  /// with a halving every fourth step, down to 2^-30 of the segment.
   double level_crossing(const Vec3& a, const Vec3& b, int sa) const {
     const double s = sa < 0 ? 1 : -1;
     // The ends' sides are certified; an end whose bound does not decide
@@ -858,8 +858,10 @@ class SoupShape final : public Shape {
       double t = (lo * ghi - hi * glo) / (ghi - glo);
       if (step % 4 == 3 || !(t > lo && t < hi)) t = (lo + hi) / 2;
       const auto e = excess(at(a, b, t));
-      if (std::abs(e.value) <= e.error) return t;
+      // Where no bound decides (|w - 1/2| <= the bound), the estimate's own
+      // sign steers: the bracket stays in that zone around {w = 1/2}.
       const double g = s * e.value;
+      if (g == 0) return t;
       if (g > 0) {
         lo = t, glo = g;
         if (kept == -1) ghi /= 2;
