@@ -231,6 +231,10 @@ CLI::App* add_stuff(CLI::App& app, StuffOptions& o) {
                   "The .off/.obj boundary: 'used' (its own vertices, default) or 'all' (every vertex of the "
                   "volume mesh, numbered as in the .vtu/.msh/.mesh)")
       ->check(CLI::IsMember({"used", "all"}));
+  cmd->add_option("--memory-limit", o.memory_limit_gb,
+                  "Refuse before building when the run's memory estimate exceeds this many GB (10^9 bytes; "
+                  "default: the memory available, MemAvailable)")
+      ->check(positive_finite());
   cmd->add_flag("-q,--quiet", o.quiet, "No progress or summary on stderr");
   cmd->footer(
       "Examples:\n  bccmis stuff --shape torus -L 4 -o torus.vtu --stats\n"

@@ -141,6 +141,7 @@ struct StuffOptions {
   bool strict = false;  ///< refuse a triangle mesh at its first flaw (spec/stuffing.md S21)
   bool binary = false;  ///< .vtu (also the --animate frames) and .msh with binary numbers (spec/cli.md)
   std::string surface_vertices = "used";  ///< .off/.obj: "used" (compact) or "all" (the volume mesh's numbering)
+  double memory_limit_gb = 0;             ///< > 0: the memory a run may take (spec/stuffing.md S25), else MemAvailable
   bool quiet = false;
 };
 int run(const StuffOptions& o);

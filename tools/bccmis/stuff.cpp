@@ -328,6 +328,7 @@ int run(const StuffOptions& o) {
   settings.statistics = o.stats;
   settings.check = o.check;
   settings.strict = o.strict;
+  if (o.memory_limit_gb > 0) settings.memory_limit = o.memory_limit_gb * 1e9;
   const auto progress = [&](std::string_view what) {
     if (!o.quiet) std::cerr << "bccmis stuff: " << what << std::endl;
   };
