@@ -1,7 +1,5 @@
 # The readers and writers of bccmis::io (src/bccmis/io/), format by format.
-add_executable(io_tests io/ply_read_test.cpp io/pvd_test.cpp io/surface_format_test.cpp)
-target_link_libraries(io_tests PRIVATE bccmis::io GTest::gtest_main bccmis::warnings)
-gtest_discover_tests(io_tests DISCOVERY_MODE PRE_TEST PROPERTIES LABELS unit)
+bccmis_add_gtest(io_tests SOURCES ply_read_test.cpp pvd_test.cpp surface_format_test.cpp LIBS bccmis::io LABELS unit)
 
 # The FEM files used as FEM codes use them (spec/mesh3d.md M20-M23): gmsh
 # lists the .msh's physical groups, meshio reads every format in ASCII and

@@ -1,3 +1,6 @@
+// bccmis::d3 explore: the 3D exhaustive explorer declared in explore.h (this
+// folder holds the 3D counterpart of src/bccmis/explore/), over the 2D
+// explorer's machinery in explore/detail/explorer.h.
 #include "bccmis/explore/d3/explore.h"
 
 #include <array>
