@@ -913,14 +913,14 @@ Normalisation normalisation_of_soup(const Soup& s, const std::string& name) {
   }
 }
 
-/// The soup in S24's local coordinates; a local coordinate below 2^-500 in
-/// magnitude (of a box of extent [1, 2)) is flushed to 0, so that no square
-/// of a coordinate difference underflows in CGAL's constructions.
+/// The soup in S24's local coordinates; a local coordinate below 2^-200 in
+/// magnitude (of a box of extent [1, 2)) is flushed to 0, so that no
+/// product of up to four coordinates underflows in CGAL's constructions.
 Soup normalised_soup(Soup s, const Normalisation& n) {
   for (Vec3& v : s.vertices) {
     v = n.to_local(v);
     for (double& x : v)
-      if (std::abs(x) < 0x1p-500) x = 0;
+      if (std::abs(x) < 0x1p-200) x = 0;
   }
   return s;
 }
