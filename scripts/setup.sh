@@ -13,6 +13,9 @@ packages=(
   python3-meshio gmsh
   # the winding-number volume of tests/stuff/wild_files_test.py and bench/stuff_wild.py
   python3-numpy
+  # the Python module (python/, spec/python.md) and its tests (tests/python/, pytest; matplotlib for
+  # the README's example)
+  pybind11-dev python3-pybind11 python3-dev python3-pytest python3-matplotlib
   # the peers of `bccmis stuff` in the comparison benchmark (bench/stuff_peers.cpp)
   tetgen
   # optional components: the p4est bridge (p4est is built with OpenMPI, whose

@@ -22,6 +22,7 @@
 #include "bccmis/json_writer.h"
 #include "bccmis/stuff/animate_shape.h"
 #include "bccmis/stuff/mesh_shape.h"
+#include "bccmis/stuff/statistics_json.h"
 #include "commands.h"
 #include "io.h"
 
@@ -66,7 +67,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 std::string number(double x) { return JsonWriter::number(x); }
 
-/// The faces of the first few instances of a flaw: "3+4 7+9" or [[3,4],[7,9]].
+/// The faces of the first few instances of a flaw: "3+4 7+9".
 std::string instances_text(const stuff::SoupFlaw& f) {
   std::string out;
   for (const auto& faces : f.first) {
@@ -74,31 +75,6 @@ std::string instances_text(const stuff::SoupFlaw& f) {
     for (std::size_t i = 0; i < faces.size(); ++i) out += (i == 0 ? "" : "+") + std::to_string(faces[i]);
   }
   return out;
-}
-void instances_json(JsonWriter& w, const stuff::SoupFlaw& f) {
-  w.begin_object().member("count", f.count).key("first").begin_array();
-  for (const auto& faces : f.first) {
-    w.begin_array();
-    for (std::size_t face : faces) w.value(face);
-    w.end_array();
-  }
-  w.end_array().end_object();
-}
-
-/// S21's report of a triangle-mesh file: `soup_...` lines, or the "soup" member.
-void soup_json(JsonWriter& w, const stuff::SoupReport& r) {
-  w.key("soup").begin_object().member("file", r.file).member("faces", r.faces).member("flaws", r.flaw_count());
-  for (std::size_t k = 0; k < stuff::SoupReport::kKinds; ++k) {
-    w.key(stuff::SoupReport::key(static_cast<stuff::SoupReport::Kind>(k)));
-    instances_json(w, r.flaws[k]);
-  }
-  w.member("components", r.components)
-      .member("inward_components", r.inward_components)
-      .member("flipped_faces", r.flipped_faces)
-      .member("dropped_faces", r.dropped_faces)
-      .key("bad_normals");
-  instances_json(w, r.bad_normals);
-  w.end_object();
 }
 std::string soup_text(const stuff::SoupReport& r) {
   std::string out = "soup_faces " + std::to_string(r.faces) + "\nsoup_flaws " + std::to_string(r.flaw_count()) + "\n";
@@ -121,55 +97,9 @@ std::string stats_text(const std::string& shape, const stuff::Meshed& m, const s
   const stuff::Statistics& s = *m.statistics;
   const stuff::StuffQuality& q = s.quality;
   const stuff::Hausdorff& h = s.hausdorff;
-  const std::pair<const char*, std::size_t> counts[] = {{"leaves", m.leaves},
-                                                        {"lattice_tetrahedra", m.stuffed.lattice_tetrahedra},
-                                                        {"cut_points", m.stuffed.cut_points},
-                                                        {"warped", m.stuffed.warped},
-                                                        {"vertices", s.vertices},
-                                                        {"tetrahedra", s.tetrahedra},
-                                                        {"boundary_triangles", q.boundary_triangles},
-                                                        {"boundary_components", m.topology.boundary_components},
-                                                        {"nonmanifold_edges", m.topology.nonmanifold_edges}};
-  if (json) {
-    JsonWriter w;
-    w.begin_object().member("shape", shape);
-    for (const auto& [name, n] : counts) w.member(name, n);
-    // A volume that overflows a double (S24) is null.
-    const auto finite_or_null = [&](const char* key, double x) {
-      w.key(key);
-      std::isfinite(x) ? w.value(x) : w.null();
-    };
-    finite_or_null("volume", q.volume);
-    finite_or_null("shape_volume", s.shape_volume);
-    w.member("volume_rel_error", s.volume_rel_error());
-    w.key("hausdorff").begin_object().member("from_boundary", h.from_boundary).key("from_surface");
-    if (h.from_surface < 0)
-      w.null();
-    else
-      w.value(h.from_surface);
-    w.member("max", h.max())
-        .member("sampled", true)
-        .member("boundary_points", h.boundary_points)
-        .member("surface_samples", h.surface_samples)
-        .end_object();
-    w.member("min_dihedral", q.min_dihedral).member("max_dihedral", q.max_dihedral).member("below10", s.below10());
-    w.member("boundary_euler", m.topology.boundary_euler).key("warnings").begin_array();
-    for (const std::string& warning : m.warnings) w.value(warning);
-    w.end_array();
-    if (m.soup) soup_json(w, *m.soup);
-    w.key("dihedral_histogram").begin_object();
-    for (std::size_t k = 0; k < q.histogram.size(); ++k) w.member(std::to_string(15 * k), q.histogram[k]);
-    w.end_object().key("seconds").begin_object();
-    double total = 0, meshing = 0;
-    for (const auto& [phase, t] : seconds) {
-      w.member(phase, t), total += t;
-      if (phase != "statistics" && phase != "write") meshing += t;
-    }
-    w.member("meshing", meshing).member("total", total).end_object().end_object();
-    return w.str() + "\n";
-  }
+  if (json) return stuff::statistics_json(shape, m, seconds) + "\n";
   std::string out = "shape " + shape + "\n";
-  for (const auto& [name, n] : counts) out += std::string(name) + " " + std::to_string(n) + "\n";
+  for (const auto& [name, n] : stuff::statistics_counts(m)) out += std::string(name) + " " + std::to_string(n) + "\n";
   out += "volume " + number(q.volume) + "\nshape_volume " + number(s.shape_volume) + "\nvolume_rel_error " +
          number(s.volume_rel_error()) + "\nhausdorff_from_boundary " + number(h.from_boundary) +
          "\nhausdorff_from_surface " + (h.from_surface < 0 ? std::string("-") : number(h.from_surface)) +

@@ -1,0 +1,22 @@
+"""Shared fixtures of the Python module's tests (spec/python.md): the built
+CLI, the source tree, and the module itself from the build tree."""
+import os
+import pathlib
+
+import pytest
+
+SOURCE = pathlib.Path(__file__).resolve().parents[2]
+
+
+@pytest.fixture(scope="session")
+def cli():
+    """The bccmis binary of the same build (BCCMIS_CLI, set by ctest)."""
+    path = os.environ.get("BCCMIS_CLI")
+    if not path:
+        pytest.fail("BCCMIS_CLI is not set: run these tests through ctest (label python)")
+    return path
+
+
+@pytest.fixture(scope="session")
+def source():
+    return SOURCE
