@@ -2,7 +2,7 @@
 
 Type stubs of the compiled module (spec/python.md).
 """
-from typing import Any, Callable, Literal, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Literal, Optional, Sequence, Tuple, Union, type_check_only
 
 import numpy as np
 import numpy.typing as npt
@@ -108,9 +108,9 @@ def stuff_file(
 ) -> TetMesh:
     """A tetrahedral mesh of a triangle mesh file. mesh = bccmis.stuff_file('bunny.off', max_level=5)"""
 
-class Lattice:
-    """A 2D adaptive BCC lattice (spec/formats.md). bccmis.Lattice(2, 2, 3)"""
-    def __init__(self, W: int, H: int, L: int, impl: Impl = "reference") -> None: ...
+@type_check_only
+class _AdaptiveLattice:
+    """What Lattice and Lattice3 both offer; a point is 2 or 3 integers."""
     @property
     def impl(self) -> Impl: ...
     def refine(self, c: Point) -> Optional[str]:
@@ -122,45 +122,30 @@ class Lattice:
     def can_coarsen(self, n: Point) -> Optional[str]:
         """The refusal code coarsen(n) would give, or None. l.can_coarsen((4, 4))"""
     def cells(self) -> npt.NDArray[np.int64]:
-        """The cell centers, sorted: int64 (k, 2). l.cells()"""
+        """The cell centers, sorted: int64 (k, 2 or 3). l.cells()"""
     def nodes(self) -> npt.NDArray[np.int64]:
-        """The nodes, sorted: int64 (k, 2). l.nodes()"""
+        """The nodes, sorted: int64 (k, 2 or 3). l.nodes()"""
     def levels(self) -> npt.NDArray[np.int32]:
         """The level of each of cells(). l.levels()"""
     def neighbors(self, v: Point) -> npt.NDArray[np.int64]:
-        """N(v), sorted: int64 (k, 2). l.neighbors((0, 0))"""
+        """N(v), sorted: int64 (k, 2 or 3). l.neighbors((0, 0))"""
     def canonical_state(self) -> str:
         """The canonical state (spec/formats.md). print(l.canonical_state())"""
     def check(self) -> None:
         """Raises InvariantError when an invariant is violated. l.check()"""
 
-class Lattice3:
+class Lattice(_AdaptiveLattice):
+    """A 2D adaptive BCC lattice (spec/formats.md). bccmis.Lattice(2, 2, 3)"""
+    def __init__(self, W: int, H: int, L: int, impl: Impl = "reference") -> None: ...
+
+class Lattice3(_AdaptiveLattice):
     """A 3D adaptive BCC lattice (spec/lattice3d.md). bccmis.Lattice3(1, 1, 1, 2)"""
     def __init__(self, W: int, H: int, D: int, L: int, impl: Impl = "reference") -> None: ...
-    @property
-    def impl(self) -> Impl: ...
-    def refine(self, c: Point) -> Optional[str]:
-        """None when applied, else the refusal code. l.refine((4, 4, 4))"""
-    def coarsen(self, n: Point) -> Optional[str]:
-        """None when applied, else the refusal code. l.coarsen((4, 4, 4))"""
-    def can_refine(self, c: Point) -> Optional[str]:
-        """The refusal code refine(c) would give, or None. l.can_refine((4, 4, 4))"""
-    def can_coarsen(self, n: Point) -> Optional[str]:
-        """The refusal code coarsen(n) would give, or None. l.can_coarsen((4, 4, 4))"""
-    def cells(self) -> npt.NDArray[np.int64]:
-        """The cell centers, sorted: int64 (k, 3). l.cells()"""
-    def nodes(self) -> npt.NDArray[np.int64]:
-        """The nodes, sorted: int64 (k, 3). l.nodes()"""
-    def levels(self) -> npt.NDArray[np.int32]:
-        """The level of each of cells(). l.levels()"""
-    def neighbors(self, v: Point) -> npt.NDArray[np.int64]:
-        """N(v), sorted: int64 (k, 3). l.neighbors((0, 0, 0))"""
-    def canonical_state(self) -> str:
-        """The canonical state (spec/formats.md). print(l.canonical_state())"""
-    def check(self) -> None:
-        """Raises InvariantError when an invariant is violated. l.check()"""
     def tetrahedra(self) -> npt.NDArray[np.int64]:
         """The graded mesh's tetrahedra by vertex position: int64 (t, 4, 3). l.tetrahedra().shape"""
 
 def replay(trace: str, impl: Impl = "reference") -> Tuple[Union[Lattice, Lattice3], str]:
     """Replays a trace: (the final lattice, the decision log). g, log = bccmis.replay(open('fig2.trace').read())"""
+
+def parse_state(text: str) -> Union[Lattice, Lattice3]:
+    """A canonical state as a reference lattice, unchecked. g = bccmis.parse_state(open('run.state').read())"""

@@ -180,6 +180,20 @@ py::array view(const T* data, std::size_t count, std::size_t columns, const py::
   return a;
 }
 
+/// A property's getter: the read-only view of the vector `get(mesh)` (of
+/// numbers, or of rows std::array<T, k>), kept alive by the Python TetMesh.
+template <class Get>
+auto member_view(Get get) {
+  return [get](const py::object& self) {
+    const auto& v = get(self.cast<const TetMesh&>());
+    using Element = typename std::decay_t<decltype(v)>::value_type;
+    if constexpr (std::is_arithmetic_v<Element>)
+      return view(v.data(), v.size(), 1, self);
+    else
+      return view(v.empty() ? nullptr : v[0].data(), v.size(), std::tuple_size_v<Element>, self);
+  };
+}
+
 bool ends_with(const std::string& s, std::string_view suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
@@ -421,9 +435,19 @@ Lattice<Ref, Fast> make_lattice(const typename Ref::size_type& size, const std::
   value_error("impl: expected 'reference' or 'fast', got '" + impl + "'");
 }
 
-py::object refusal(std::optional<std::string_view> code) {
-  if (!code) return py::none();
-  return py::str(code->data(), code->size());
+/// A refusal's code as Python gives it: a str, or None when there is none.
+template <class Refusal>
+py::object code_of(const std::optional<Refusal>& refused) {
+  if (!refused) return py::none();
+  const std::string_view code = bccmis::code(*refused);
+  return py::str(code.data(), code.size());
+}
+
+/// `decision(g, p)` (refine, coarsen or their guards) at the point `at`, on whichever lattice l holds.
+template <class L, class Decision>
+py::object decide(L& l, const py::handle& at, const Decision& decision) {
+  const auto p = point_of<typename L::P>(at);
+  return l.visit([&](auto& g) { return decision(g, p); });
 }
 
 py::object invariant_error;  // bccmis.InvariantError
@@ -443,43 +467,25 @@ py::class_<Lattice<Ref, Fast>> bind_lattice(py::module_& m, const char* name, co
       .def(
           "refine",
           [](L& l, const py::handle& c) {
-            const P p = point_of<P>(c);
-            return refusal(l.visit([&](auto& g) -> std::optional<std::string_view> {
-              const auto r = refine(g, p);
-              if (r.refused) return bccmis::code(*r.refused);
-              return std::nullopt;
-            }));
+            return decide(l, c, [](auto& g, const P& p) { return code_of(refine(g, p).refused); });
           },
           "c"_a, "Refines cell c; None when applied, else the refusal code. l.refine((4, 4))")
       .def(
           "coarsen",
           [](L& l, const py::handle& n) {
-            const P p = point_of<P>(n);
-            return refusal(l.visit([&](auto& g) -> std::optional<std::string_view> {
-              const auto r = coarsen(g, p);
-              if (r.refused) return bccmis::code(*r.refused);
-              return std::nullopt;
-            }));
+            return decide(l, n, [](auto& g, const P& p) { return code_of(coarsen(g, p).refused); });
           },
           "n"_a, "Coarsens around node n; None when applied, else the refusal code. l.coarsen((4, 4))")
       .def(
           "can_refine",
-          [](const L& l, const py::handle& c) {
-            const P p = point_of<P>(c);
-            return refusal(l.visit([&](const auto& g) -> std::optional<std::string_view> {
-              if (const auto r = can_refine(g, p)) return bccmis::code(*r);
-              return std::nullopt;
-            }));
+          [](L& l, const py::handle& c) {
+            return decide(l, c, [](auto& g, const P& p) { return code_of(can_refine(g, p)); });
           },
           "c"_a, "The refusal code refine(c) would give, or None. l.can_refine((4, 4))")
       .def(
           "can_coarsen",
-          [](const L& l, const py::handle& n) {
-            const P p = point_of<P>(n);
-            return refusal(l.visit([&](const auto& g) -> std::optional<std::string_view> {
-              if (const auto r = can_coarsen(g, p)) return bccmis::code(*r);
-              return std::nullopt;
-            }));
+          [](L& l, const py::handle& n) {
+            return decide(l, n, [](auto& g, const P& p) { return code_of(can_coarsen(g, p)); });
           },
           "n"_a, "The refusal code coarsen(n) would give, or None. l.can_coarsen((4, 4))")
       .def(
@@ -613,40 +619,20 @@ PYBIND11_MODULE(bccmis, m) {
 
   py::class_<TetMesh>(m, "TetMesh", "A tetrahedral mesh made by bccmis.stuff (spec/python.md P4).")
       .def_property_readonly(
-          "points",
-          [](const py::object& self) {
-            const auto& v = self.cast<const TetMesh&>().meshed.stuffed.mesh.vertices;
-            return view(v.empty() ? nullptr : v[0].data(), v.size(), 3, self);
-          },
+          "points", member_view([](const TetMesh& t) -> const auto& { return t.meshed.stuffed.mesh.vertices; }),
           "float64 (n, 3), a read-only view. mesh.points[:3]")
-      .def_property_readonly(
-          "tets",
-          [](const py::object& self) {
-            const auto& t = self.cast<const TetMesh&>().meshed.stuffed.mesh.tets;
-            return view(t.empty() ? nullptr : t[0].data(), t.size(), 4, self);
-          },
-          "uint32 (m, 4), positively oriented, a read-only view. mesh.tets.shape")
-      .def_property_readonly(
-          "levels",
-          [](const py::object& self) {
-            const auto& l = self.cast<const TetMesh&>().meshed.stuffed.mesh.level;
-            return view(l.data(), l.size(), 1, self);
-          },
-          "int32 (m,): each tetrahedron's lattice level. mesh.levels.max()")
-      .def_property_readonly(
-          "kinds",
-          [](const py::object& self) {
-            const auto& k = self.cast<const TetMesh&>().meshed.stuffed.mesh.kind;
-            return view(k.data(), k.size(), 1, self);
-          },
-          "uint8 (n,): 0 lattice vertex, 1 warped, 2 cut point. (mesh.kinds == 2).sum()")
-      .def_property_readonly(
-          "boundary_faces",
-          [](const py::object& self) {
-            const auto& b = self.cast<const TetMesh&>().meshed.boundary;
-            return view(b.empty() ? nullptr : b[0].data(), b.size(), 3, self);
-          },
-          "uint32 (b, 3): the boundary triangles, outward. mesh.boundary_faces.shape")
+      .def_property_readonly("tets",
+                             member_view([](const TetMesh& t) -> const auto& { return t.meshed.stuffed.mesh.tets; }),
+                             "uint32 (m, 4), positively oriented, a read-only view. mesh.tets.shape")
+      .def_property_readonly("levels",
+                             member_view([](const TetMesh& t) -> const auto& { return t.meshed.stuffed.mesh.level; }),
+                             "int32 (m,): each tetrahedron's lattice level. mesh.levels.max()")
+      .def_property_readonly("kinds",
+                             member_view([](const TetMesh& t) -> const auto& { return t.meshed.stuffed.mesh.kind; }),
+                             "uint8 (n,): 0 lattice vertex, 1 warped, 2 cut point. (mesh.kinds == 2).sum()")
+      .def_property_readonly("boundary_faces",
+                             member_view([](const TetMesh& t) -> const auto& { return t.meshed.boundary; }),
+                             "uint32 (b, 3): the boundary triangles, outward. mesh.boundary_faces.shape")
       .def_readonly("stats", &TetMesh::stats, "With stats=True: bccmis stuff --json's object. mesh.stats['tetrahedra']")
       .def_readonly("shape", &TetMesh::shape, "The shape's description. mesh.shape")
       .def("dihedral_angles", &dihedral_angles, "float64 (m, 6), degrees. mesh.dihedral_angles().min()")
