@@ -7,6 +7,10 @@ import pytest
 
 SOURCE = pathlib.Path(__file__).resolve().parents[2]
 
+# Under AddressSanitizer ctest preloads its runtime for this interpreter
+# (tests/python/python.cmake); the CLI run from here links its own.
+os.environ.pop("LD_PRELOAD", None)
+
 
 @pytest.fixture(scope="session")
 def cli():
