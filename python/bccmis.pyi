@@ -108,6 +108,25 @@ def stuff_file(
 ) -> TetMesh:
     """A tetrahedral mesh of a triangle mesh file. mesh = bccmis.stuff_file('bunny.off', max_level=5)"""
 
+class MovingShape:
+    """A shape moving through one lattice, its mesh updated locally. m = bccmis.MovingShape(bccmis.shapes.sphere(), (1, 0, 0))"""
+    def __init__(
+        self,
+        shape: Union[npt.ArrayLike, Shape, Callable[[npt.NDArray[np.float64]], npt.ArrayLike]],
+        path: Optional[Sequence[float]] = None,
+        faces: Optional[npt.ArrayLike] = None,
+        *,
+        max_level: int = 4,
+        min_level: int = 0,
+        cells: int = 4,
+        bounds: Optional[BoundsLike] = None,
+    ) -> None: ...
+    @property
+    def mesh(self) -> TetMesh:
+        """The mesh where the shape is now. m.mesh"""
+    def move(self, offset: Sequence[float]) -> Tuple[TetMesh, dict]:
+        """Moves the shape to offset: (the new mesh, what changed). mesh, report = m.move((0.5, 0, 0))"""
+
 @type_check_only
 class _AdaptiveLattice:
     """What Lattice and Lattice3 both offer; a point is 2 or 3 integers."""

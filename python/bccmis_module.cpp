@@ -39,6 +39,7 @@
 #include "bccmis/io/parse_error.h"
 #include "bccmis/io/vtu.h"
 #include "bccmis/lattice.h"
+#include "bccmis/stuff/animate_shape.h"
 #include "bccmis/stuff/mesh_shape.h"
 #include "bccmis/stuff/statistics_json.h"
 #include "bccmis/stuff/surface.h"
@@ -315,27 +316,99 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-py::object stuff_shape(const py::object& shape, const py::object& faces, const py::object& bounds,
-                       const RunOptions& o) {
-  const auto t0 = std::chrono::steady_clock::now();
-  std::shared_ptr<const bccmis::stuff::Shape> s;
+/// P1, P3: the shape a call names: vertices and faces, a Shape, or a callable with its bounds.
+std::shared_ptr<const bccmis::stuff::Shape> shape_of(const py::object& shape, const py::object& faces,
+                                                     const py::object& bounds, bool strict) {
   if (py::isinstance<bccmis::stuff::Shape>(shape)) {
     if (!faces.is_none()) value_error("faces: a Shape takes no faces");
-    s = shape.cast<std::shared_ptr<bccmis::stuff::Shape>>();
-  } else if (!faces.is_none()) {
+    return shape.cast<std::shared_ptr<bccmis::stuff::Shape>>();
+  }
+  if (!faces.is_none()) {
     const std::vector<Vec3> vertices = vertices_of(shape);
     const std::vector<Tri> triangles = faces_of(faces, vertices.size());
     py::gil_scoped_release nogil;
-    s = o.strict ? bccmis::stuff::make_mesh_shape(vertices, triangles, "<array>")
-                 : bccmis::stuff::make_soup_shape(vertices, triangles, "<array>");
-  } else if (PyCallable_Check(shape.ptr())) {
-    if (bounds.is_none()) value_error("bounds: a Python shape needs bounds=((x0, y0, z0), (x1, y1, z1))");
-    s = std::make_shared<PythonShape>(shape.cast<py::function>(), bounds_of(bounds));
-  } else {
-    value_error("shape: expected vertices and faces, a bccmis Shape or a callable f(points) -> values");
+    if (strict) return bccmis::stuff::make_mesh_shape(vertices, triangles, "<array>");
+    return bccmis::stuff::make_soup_shape(vertices, triangles, "<array>");
   }
+  if (PyCallable_Check(shape.ptr())) {
+    if (bounds.is_none()) value_error("bounds: a Python shape needs bounds=((x0, y0, z0), (x1, y1, z1))");
+    return std::make_shared<PythonShape>(shape.cast<py::function>(), bounds_of(bounds));
+  }
+  value_error("shape: expected vertices and faces, a bccmis Shape or a callable f(points) -> values");
+}
+
+py::object stuff_shape(const py::object& shape, const py::object& faces, const py::object& bounds,
+                       const RunOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  std::shared_ptr<const bccmis::stuff::Shape> s = shape_of(shape, faces, bounds, o.strict);
   return make_run(std::move(s), o, seconds_since(t0));
 }
+
+// ---- P9: a moving shape -------------------------------------------------------
+
+Vec3 vec3_of(const py::handle& object, const char* what) {
+  const auto a = py::array_t<double, py::array::forcecast>::ensure(object);
+  if (!a || a.ndim() != 1 || a.shape(0) != 3) value_error(std::string(what) + ": expected (dx, dy, dz)");
+  const Vec3 v{a.at(0), a.at(1), a.at(2)};
+  for (double x : v)
+    if (!std::isfinite(x)) value_error(std::string(what) + ": every component must be finite");
+  return v;
+}
+
+/// S14-S16: the lattice fitted to the box the shape sweeps along `path`,
+/// and its mesh, kept up to date by move().
+class MovingShape {
+ public:
+  MovingShape(std::shared_ptr<const bccmis::stuff::Shape> shape, const Vec3& path,
+              const bccmis::stuff::StuffOptions& options)
+      : shape_(std::move(shape)), path_(path) {
+    py::gil_scoped_release nogil;
+    const bccmis::stuff::Fit fit = bccmis::stuff::fit_moving(*shape_, path_, options);
+    moving_ = std::make_unique<bccmis::stuff::MovingLattice>(shape_, fit, options);
+    fit_ = fit;
+  }
+  ~MovingShape() {
+    py::gil_scoped_release nogil;  // a Python shape's destructor takes the GIL itself
+    moving_.reset();
+    shape_.reset();
+  }
+  /// The mesh of the current position (S26: an empty one is refused).
+  py::object mesh() const {
+    auto mesh = std::make_unique<TetMesh>();
+    mesh->shape = shape_->describe();
+    mesh->meshed.fit = fit_;
+    mesh->meshed.leaves = moving_->lattice().cell_count();
+    mesh->meshed.stuffed = moving_->stuffed();
+    if (mesh->meshed.stuffed.mesh.tets.empty())
+      throw bccmis::stuff::ShapeError(mesh->shape +
+                                      ": the mesh is empty: " + bccmis::stuff::level_hint(shape_->bounds(), fit_));
+    mesh->meshed.boundary = bccmis::stuff::boundary_triangles(mesh->meshed.stuffed.mesh);
+    return py::cast(std::move(mesh));
+  }
+  /// The shape moved to `offset` from its own position (within the box the
+  /// path sweeps): the new mesh and what the step did.
+  py::tuple move(const py::handle& object) {
+    const Vec3 offset = vec3_of(object, "offset");
+    for (std::size_t k = 0; k < 3; ++k)
+      if (offset[k] < std::min(0.0, path_[k]) || offset[k] > std::max(0.0, path_[k]))
+        value_error("offset: outside the box the path sweeps (the lattice is fitted to it, S14)");
+    bccmis::stuff::FrameReport r;
+    {
+      py::gil_scoped_release nogil;
+      r = moving_->step(offset);
+    }
+    py::dict report("refines"_a = r.refines, "coarsens"_a = r.coarsens, "leaves"_a = r.leaves,
+                    "restuffed_leaves"_a = r.restuffed_leaves, "restuffed_tetrahedra"_a = r.restuffed_tetrahedra,
+                    "lattice_seconds"_a = r.lattice_seconds, "stuff_seconds"_a = r.stuff_seconds);
+    return py::make_tuple(mesh(), report);
+  }
+
+ private:
+  std::shared_ptr<const bccmis::stuff::Shape> shape_;
+  Vec3 path_;
+  bccmis::stuff::Fit fit_;
+  std::unique_ptr<bccmis::stuff::MovingLattice> moving_;
+};
 
 py::object stuff_file(const std::string& path, const std::optional<std::string>& format, const RunOptions& o) {
   std::optional<bccmis::io::SurfaceFormat> f;
@@ -686,6 +759,25 @@ PYBIND11_MODULE(bccmis, m) {
       "progress"_a = py::none(),
       "A tetrahedral mesh of a triangle mesh file (.off, .obj, .ply, .stl; spec/python.md P2).\n"
       "mesh = bccmis.stuff_file('bunny.off', max_level=5)");
+
+  // P9: a moving shape.
+  py::class_<MovingShape>(m, "MovingShape",
+                          "A shape moving through one lattice, its mesh updated locally (spec/python.md P9).")
+      .def(py::init([](const py::object& shape, const py::object& path, const py::object& faces, int max_level,
+                       int min_level, int cells, const py::object& bounds) {
+             std::shared_ptr<const bccmis::stuff::Shape> s = shape_of(shape, faces, bounds, false);
+             bccmis::stuff::StuffOptions options;
+             options.max_level = max_level, options.min_level = min_level, options.cells = cells;
+             const Vec3 p = path.is_none() ? bccmis::stuff::default_path(*s) : vec3_of(path, "path");
+             return std::make_unique<MovingShape>(std::move(s), p, options);
+           }),
+           "shape"_a, "path"_a = py::none(), "faces"_a = py::none(), py::kw_only(), "max_level"_a = 4,
+           "min_level"_a = 0, "cells"_a = 4, "bounds"_a = py::none(),
+           "The lattice fitted to the box the shape sweeps along path. m = bccmis.MovingShape(bccmis.shapes.sphere(), "
+           "(1, 0, 0))")
+      .def_property_readonly("mesh", &MovingShape::mesh, "The mesh where the shape is now. m.mesh")
+      .def("move", &MovingShape::move, "offset"_a,
+           "Moves the shape to offset: (the new TetMesh, what changed). mesh, report = m.move((0.5, 0, 0))");
 
   // P8: the lattices.
   using L3 = Lattice<bccmis::d3::Graph, bccmis::d3::fast::Lattice>;
