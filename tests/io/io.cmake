@@ -1,5 +1,7 @@
 # The readers and writers of bccmis::io (src/bccmis/io/), format by format.
-bccmis_add_gtest(io_tests SOURCES ply_read_test.cpp pvd_test.cpp surface_format_test.cpp LIBS bccmis::io LABELS unit)
+find_package(ZLIB REQUIRED)
+bccmis_add_gtest(io_tests SOURCES ply_read_test.cpp pvd_test.cpp surface_format_test.cpp vtu_compressed_test.cpp
+                 LIBS bccmis::io ZLIB::ZLIB LABELS unit)
 
 # The FEM files used as FEM codes use them (spec/mesh3d.md M20-M23): gmsh
 # lists the .msh's physical groups, meshio reads every format in ASCII and
