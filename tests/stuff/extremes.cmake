@@ -61,6 +61,13 @@ if(TARGET bccmis::stuff_surface)
                   STDOUT_REGEX "boundary_components 3\n.*warning the mesh's boundary has 3 components where the shape's surface has 1\n")
   bccmis_cli_test(stuff_changed_topology_check 1 ARGS stuff ${bccmis_cgal_data}/data/meshes/elephant.off -L 3 --check -o x.vtu
                   STDERR_REGEX "the mesh's boundary has 3 components where the shape's surface has 1")
+  # A clean input whose mesh changes only by non-manifold edges (CGAL's
+  # 3torus.off at -L 3: one, and as many components as the surface): a
+  # warning, and under --check an error.
+  bccmis_cli_test(stuff_nonmanifold_warning 0 ARGS stuff ${bccmis_cgal_data}/data/meshes/3torus.off -L 3 -o x.vtu
+                  STDERR_REGEX "warning: the mesh's boundary has 1 non-manifold edges")
+  bccmis_cli_test(stuff_nonmanifold_check 1 ARGS stuff ${bccmis_cgal_data}/data/meshes/3torus.off -L 3 --check -q -o x.vtu
+                  STDERR_REGEX "^bccmis: mesh 3torus.off: 46 triangles: the mesh's boundary has 1 non-manifold edges \\(parts meeting along a lattice edge; a finer level separates them\\)\n$")
 endif()
 
 # S24's map: exactness of the translation, the scale, and a tiny sphere as
