@@ -31,7 +31,7 @@ function(bccmis_cli_test name exit)
 endfunction()
 
 # One test per case "name|counts|arg;arg;...": cli.<prefix>_<name> runs
-# tests/cli/check_svg3.py on `bccmis render <args>` and compares the SVG's
+# tests/cli/d3/check_svg.py on `bccmis render <args>` and compares the SVG's
 # element counts by class. The cases are taken by index: a list would split
 # their arguments.
 function(bccmis_svg_count_tests prefix)
@@ -42,7 +42,7 @@ function(bccmis_svg_count_tests prefix)
     list(GET parts 1 counts)
     list(SUBLIST parts 2 -1 args)
     add_test(NAME cli.${prefix}_${name}
-             COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${_cli}/check_svg3.py $<TARGET_FILE:bccmis> ${counts} ${args})
+             COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${_cli}/d3/check_svg.py $<TARGET_FILE:bccmis> ${counts} ${args})
     set_tests_properties(cli.${prefix}_${name} PROPERTIES LABELS cli)
   endforeach()
 endfunction()
@@ -365,7 +365,7 @@ add_test(NAME cli.d3_mesh_readers
 set_tests_properties(cli.d3_mesh_readers PROPERTIES LABELS cli)
 
 # bccmis render on 3D states (spec/cli.md, render): the SVG parsed as XML and
-# its elements counted by class (tests/cli/check_svg3.py). The box panel draws
+# its elements counted by class (tests/cli/d3/check_svg.py). The box panel draws
 # the boundary triangles on the three visible faces y = 0, z = max, x = max.
 # face_refined by hand (S = 8, box 16 x 8 x 8; spec/mesh3d.md M18): on y = 0
 # and on z = 8 the 4 children's faces have 4 triangles each and the coarse
@@ -424,7 +424,7 @@ add_test(NAME cli.mesh_render_lattice_mesh
                         \"$1\" \"$5\" \"$2\" tri=46,legend=2 face.mesh &&
                         \"$1\" \"$5\" \"$2\" bar=4,min=1,max=1 face.mesh --histogram"
                  sh ${BCCMIS_SYSTEM_PYTHON3} $<TARGET_FILE:bccmis> ${_face3} ${CMAKE_CURRENT_BINARY_DIR}/cli_work/mesh_render_lattice
-                 ${_cli}/check_svg3.py)
+                 ${_cli}/d3/check_svg.py)
 set_tests_properties(cli.mesh_render_lattice_mesh PROPERTIES LABELS cli)
 bccmis_cli_test(mesh_render_slice_outside 2 ARGS render ${_two_tets} --slice z=1.5 -o out.svg
                 STDERR_REGEX "--slice 'z=1.5': outside the mesh: z in \\[-1, 1\\]")

@@ -8,8 +8,10 @@ endif()
 
 # One variable only: gtest_discover_tests flattens list-valued properties.
 set(_bccmis_p4est_env "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1")
-foreach(name bridge_test differential_test bridge3_test differential3_test)
-  bccmis_add_gtest(p4est_${name} SOURCES ${name}.cpp OWN_MAIN
+# One target per file: tests/p4est/d3/bridge_test.cpp is p4est_d3_bridge_test.
+foreach(file bridge_test differential_test d3/bridge_test d3/differential_test)
+  string(REPLACE "/" "_" name ${file})
+  bccmis_add_gtest(p4est_${name} SOURCES ${file}.cpp OWN_MAIN
     LIBS bccmis::p4est bccmis::apps bccmis::invariants bccmis::invariants_d3 bccmis::core
     PREFIX p4est. LABELS p4est ENVIRONMENT "${_bccmis_p4est_env}")
 endforeach()
