@@ -30,10 +30,10 @@ bccmis_add_gtest(fast_differential_test SOURCES differential_test.cpp
 # The conformance harness (src/bccmis/oracle, `bccmis conformance`) against the fast
 # implementation: the bundled traces, then random traces with shrinking (2D:
 # the fast lattice is 2D).
-add_test(NAME fast.conformance
+bccmis_add_test(fast.conformance
          COMMAND bccmis conformance --impl $<TARGET_FILE:bccmis_fast_replay>
-                 --traces ${PROJECT_SOURCE_DIR}/spec/examples --random 300 --seed 20090303 --max-ops 40 --dim 2)
-set_tests_properties(fast.conformance PROPERTIES LABELS conformance TIMEOUT 300)
+                 --traces ${PROJECT_SOURCE_DIR}/spec/examples --random 300 --seed 20090303 --max-ops 40 --dim 2
+         LABELS conformance TIMEOUT 300)
 
 # The fast 3D lattice (bccmis::d3::fast::Lattice) against the 3D reference
 # (issue "3D at scale"): random sequences in lock-step with fixed seeds
