@@ -39,10 +39,10 @@ if(TARGET bccmis::stuff_surface)
   # oriented, and one clean; checked by --check and against the volume of the
   # winding number's solid estimated independently in numpy
   # (tests/stuff/wild_files_test.py; by hand: wild_files_test.py BCCMIS).
-  add_test(NAME cli.stuff_wild_files
+  bccmis_add_test(cli.stuff_wild_files
            COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/stuff/wild_files_test.py $<TARGET_FILE:bccmis>
-                   ${bccmis_cgal_data}/data/meshes)
-  set_tests_properties(cli.stuff_wild_files PROPERTIES LABELS "cgal;stuff" TIMEOUT 600)
+                   ${bccmis_cgal_data}/data/meshes
+           LABELS cgal stuff TIMEOUT 600)
 
   bccmis_add_gtest(stuff_surface_tests SOURCES surface_test.cpp LIBS bccmis::stuff_surface
                    DEFINITIONS BCCMIS_STUFF_TEST_DIR="${CMAKE_CURRENT_LIST_DIR}"
