@@ -7,6 +7,8 @@ packages=(
   cmake ninja-build g++ clang-14 clang-format-14 libclang-rt-14-dev llvm-14 pkg-config python3 git
   libgtest-dev libgmock-dev googletest librapidcheck-dev libbenchmark-dev
   libcgal-dev libgmp-dev libmpfr-dev libcli11-dev libstb-dev
+  # the zlib-compressed .vtu (spec/mesh3d.md M20)
+  zlib1g-dev
   # CGAL's sample meshes (data.tar.gz) for the surface loader's tests (tests/stuff/stuff.cmake)
   libcgal-demo
   # outside readers of the 3D mesh writers (tests/d3/mesh_readers_test.py)

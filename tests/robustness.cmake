@@ -26,10 +26,10 @@ endif()
 
 function(bccmis_bad_input_test name mode input expect)
   string(REPLACE ";" "." expect "${expect}")
-  add_test(NAME robustness.bad_input.${name}
+  bccmis_add_test(robustness.bad_input.${name}
            COMMAND ${CMAKE_COMMAND} -DBCCMIS=$<TARGET_FILE:bccmis> -DMODE=${mode} -DINPUT=${input}
-                   "-DEXPECT=${expect}" -DWORKDIR=${_bad_work}/${name} ${_bad_limits} ${ARGN} -P ${_bad_run})
-  set_tests_properties(robustness.bad_input.${name} PROPERTIES LABELS robustness TIMEOUT 60)
+                   "-DEXPECT=${expect}" -DWORKDIR=${_bad_work}/${name} ${_bad_limits} ${ARGN} -P ${_bad_run}
+           LABELS robustness TIMEOUT 60)
 endfunction()
 
 # The manifest: <file> TAB <line>:<column>: <message regex>.
@@ -82,9 +82,9 @@ foreach(case parse_error_keeps_outputs success_leaves_only_outputs missing_outpu
              replay_outputs_all_or_nothing replay_state_keeps_log_on_stdout stdout_full
              heightfield_outputs_all_or_nothing heightfield_replaces_atomically
              animate_outputs_all_or_nothing animate_replaces_atomically)
-  add_test(NAME robustness.outputs.${case}
-           COMMAND sh ${_bad}/outputs.sh $<TARGET_FILE:bccmis> ${case} ${CMAKE_CURRENT_BINARY_DIR}/outputs_work/${case})
-  set_tests_properties(robustness.outputs.${case} PROPERTIES LABELS robustness TIMEOUT 60)
+  bccmis_add_test(robustness.outputs.${case}
+           COMMAND sh ${_bad}/outputs.sh $<TARGET_FILE:bccmis> ${case} ${CMAKE_CURRENT_BINARY_DIR}/outputs_work/${case}
+           LABELS robustness TIMEOUT 60)
 endforeach()
 # output_is_a_fifo: an output that exists and is not a regular file (a FIFO,
 # /dev/null) is written in place, never renamed over.

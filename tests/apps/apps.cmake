@@ -12,14 +12,14 @@ bccmis_discover_gtests(apps_tests FILTER "*Exhaustive.*" TEST_LIST apps_tests_EX
 # The committed sample is what its generator script writes.
 find_package(Python3 COMPONENTS Interpreter QUIET)
 if(Python3_FOUND)
-  add_test(NAME apps.sample_terrain_reproducible
+  bccmis_add_test(apps.sample_terrain_reproducible
            COMMAND Python3::Interpreter ${PROJECT_SOURCE_DIR}/apps/samples/make_terrain.py terrain --size 128 --bits 16
-                   --check ${PROJECT_SOURCE_DIR}/apps/samples/terrain128.pgm)
-  add_test(NAME apps.sample_terrain256_reproducible
+                   --check ${PROJECT_SOURCE_DIR}/apps/samples/terrain128.pgm
+           LABELS unit apps)
+  bccmis_add_test(apps.sample_terrain256_reproducible
            COMMAND Python3::Interpreter ${PROJECT_SOURCE_DIR}/apps/samples/make_terrain.py terrain --size 256 --bits 16
-                   --check ${PROJECT_SOURCE_DIR}/apps/samples/terrain256.pgm)
-  set_tests_properties(apps.sample_terrain_reproducible apps.sample_terrain256_reproducible
-                       PROPERTIES LABELS "unit;apps")
+                   --check ${PROJECT_SOURCE_DIR}/apps/samples/terrain256.pgm
+           LABELS unit apps)
 endif()
 
 # The height field's streamed writers and fast-lattice mesh paths against the
@@ -45,9 +45,9 @@ foreach(impl reference fast)
   set_tests_properties(cli.heightfield.${impl} PROPERTIES FIXTURES_SETUP heightfield_impls)
 endforeach()
 foreach(ext state obj)
-  add_test(NAME cli.heightfield.fast_same_${ext}
-           COMMAND ${CMAKE_COMMAND} -E compare_files ${_apps_work}/heightfield.reference/h.${ext} ${_apps_work}/heightfield.fast/h.${ext})
-  set_tests_properties(cli.heightfield.fast_same_${ext} PROPERTIES FIXTURES_REQUIRED heightfield_impls LABELS "cli;apps")
+  bccmis_add_test(cli.heightfield.fast_same_${ext}
+           COMMAND ${CMAKE_COMMAND} -E compare_files ${_apps_work}/heightfield.reference/h.${ext} ${_apps_work}/heightfield.fast/h.${ext}
+           LABELS cli apps PROPERTIES FIXTURES_REQUIRED heightfield_impls)
 endforeach()
 bccmis_cli_test(heightfield.no_input 2 LABEL apps ARGS heightfield STDERR_REGEX "input")
 bccmis_cli_test(heightfield.two_stdouts 2 LABEL apps ARGS heightfield ${_samples}/terrain128.pgm --obj -

@@ -26,12 +26,11 @@ function(bccmis_cli_test name exit)
   if(NOT T_LABEL)
     set(T_LABEL cli)
   endif()
-  add_test(NAME cli.${name} COMMAND ${CMAKE_COMMAND} "-DCMD=${cmd}" ${defs} -P ${_run})
-  set_tests_properties(cli.${name} PROPERTIES LABELS ${T_LABEL})
+  bccmis_add_test(cli.${name} COMMAND ${CMAKE_COMMAND} "-DCMD=${cmd}" ${defs} -P ${_run} LABELS ${T_LABEL})
 endfunction()
 
 # One test per case "name|counts|arg;arg;...": cli.<prefix>_<name> runs
-# tests/cli/check_svg3.py on `bccmis render <args>` and compares the SVG's
+# tests/cli/d3/check_svg.py on `bccmis render <args>` and compares the SVG's
 # element counts by class. The cases are taken by index: a list would split
 # their arguments.
 function(bccmis_svg_count_tests prefix)
@@ -41,9 +40,9 @@ function(bccmis_svg_count_tests prefix)
     list(GET parts 0 name)
     list(GET parts 1 counts)
     list(SUBLIST parts 2 -1 args)
-    add_test(NAME cli.${prefix}_${name}
-             COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${_cli}/check_svg3.py $<TARGET_FILE:bccmis> ${counts} ${args})
-    set_tests_properties(cli.${prefix}_${name} PROPERTIES LABELS cli)
+    bccmis_add_test(cli.${prefix}_${name}
+             COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${_cli}/d3/check_svg.py $<TARGET_FILE:bccmis> ${counts} ${args}
+             LABELS cli)
   endforeach()
 endfunction()
 
@@ -130,11 +129,10 @@ if(TARGET bccmis::stuff_surface)
     set_tests_properties(cli.stuff_ply_same_mesh.${_in} PROPERTIES FIXTURES_SETUP cli_stuff_ply_same_mesh)
   endforeach()
   foreach(_in cube.ply cube_big_endian.ply)
-    add_test(NAME cli.stuff_ply_same_mesh_as_off.${_in}
+    bccmis_add_test(cli.stuff_ply_same_mesh_as_off.${_in}
              COMMAND ${CMAKE_COMMAND} -E compare_files ${CMAKE_CURRENT_BINARY_DIR}/cli_work/stuff_ply_same_mesh.cube.off/cube.vtu
-                     ${CMAKE_CURRENT_BINARY_DIR}/cli_work/stuff_ply_same_mesh.${_in}/cube.vtu)
-    set_tests_properties(cli.stuff_ply_same_mesh_as_off.${_in} PROPERTIES FIXTURES_REQUIRED cli_stuff_ply_same_mesh
-                                                                          LABELS cli)
+                     ${CMAKE_CURRENT_BINARY_DIR}/cli_work/stuff_ply_same_mesh.${_in}/cube.vtu
+             LABELS cli PROPERTIES FIXTURES_REQUIRED cli_stuff_ply_same_mesh)
   endforeach()
   bccmis_cli_test(stuff_ply_point_cloud 2 ARGS stuff ${_cli}/point_cloud.ply --stats
                   STDERR_REGEX "point_cloud.ply:8:1: no element 'face' in the header \\(a point cloud is no surface\\)\n$")
@@ -157,11 +155,11 @@ bccmis_cli_test(check_violation 1 ARGS check ${_cli}/broken.state STDERR_REGEX "
 
 # Output files are written (atomically: no temporary left behind).
 bccmis_cli_test(output_files 0 ARGS replay --quiet --log out.log --state out.state ${_examples}/fig2.trace)
-add_test(NAME cli.output_files_content
+bccmis_add_test(cli.output_files_content
          COMMAND ${CMAKE_COMMAND} -E compare_files ${CMAKE_CURRENT_BINARY_DIR}/cli_work/output_files/out.log
-                 ${_cli}/fig2.log)
+                 ${_cli}/fig2.log
+         LABELS cli PROPERTIES FIXTURES_REQUIRED cli_output_files)
 set_tests_properties(cli.output_files PROPERTIES FIXTURES_SETUP cli_output_files)
-set_tests_properties(cli.output_files_content PROPERTIES FIXTURES_REQUIRED cli_output_files LABELS cli)
 
 # Conformance harness: the reference against itself agrees; each deliberately
 # wrong implementation (tests/conformance/*.sh) is caught and shrunk to <= 5
@@ -205,17 +203,17 @@ bccmis_cli_test(conformance.d3_coarsen_keeps_face_center 1
   STDOUT_REGEX "${_minimal}:\nlattice [0-9]+ [0-9]+ [0-9]+ [0-9]+\n.*only in B: node ${_point3}.*files of the 3D disagreement: d3.trace")
 # --view on a 3D disagreement: the minimal trace and both states, as files
 # that the CLI reads back (the states differ by the kept face center).
-add_test(NAME cli.conformance.d3_view_files
+bccmis_add_test(cli.conformance.d3_view_files
          COMMAND ${CMAKE_COMMAND} "-DCMD=$<TARGET_FILE:bccmis>|diff|../conformance.d3_coarsen_keeps_face_center/d3.reference.state|../conformance.d3_coarsen_keeps_face_center/d3.impl.state"
                  -DEXPECT_EXIT=1 "-DEXPECT_STDOUT_REGEX=only in B: node ${_point3}"
-                 -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/cli_work/d3_view_files -P ${_run})
-add_test(NAME cli.conformance.d3_view_trace
+                 -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/cli_work/d3_view_files -P ${_run}
+         LABELS cli PROPERTIES FIXTURES_REQUIRED cli_d3_disagreement)
+bccmis_add_test(cli.conformance.d3_view_trace
          COMMAND ${CMAKE_COMMAND} "-DCMD=$<TARGET_FILE:bccmis>|replay|--quiet|--log|d3.log|../conformance.d3_coarsen_keeps_face_center/d3.trace"
                  -DEXPECT_EXIT=0 -DEXPECT_STDOUT_FILE=${CMAKE_CURRENT_BINARY_DIR}/cli_work/conformance.d3_coarsen_keeps_face_center/d3.reference.state
-                 -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/cli_work/d3_view_trace -P ${_run})
+                 -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/cli_work/d3_view_trace -P ${_run}
+         LABELS cli PROPERTIES FIXTURES_REQUIRED cli_d3_disagreement)
 set_tests_properties(cli.conformance.d3_coarsen_keeps_face_center PROPERTIES FIXTURES_SETUP cli_d3_disagreement)
-set_tests_properties(cli.conformance.d3_view_files cli.conformance.d3_view_trace PROPERTIES
-                     FIXTURES_REQUIRED cli_d3_disagreement LABELS cli)
 bccmis_cli_test(conformance.bad_dim 2 ARGS conformance --impl true --dim 4 STDERR_REGEX "--dim")
 bccmis_cli_test(view_3d_trace 2 ARGS view ${_examples}/d3/face.trace -o face.html
                 STDERR_REGEX "face.trace:7:1: a 3D trace \\('lattice W H D L'\\): the viewer draws 2D lattices only")
@@ -231,10 +229,10 @@ bccmis_cli_test(diff_different 1 ARGS diff ${_examples}/initial_1_1_0.state ${_c
 bccmis_cli_test(stats_fig2 0 ARGS stats --from-trace ${_examples}/fig2.trace
                 STDOUT_REGEX "cells 9\ncells_level_0 1\ncells_level_1 8\nnodes 17\njunctions 1\ngraph_edges 37\nhull_edges 25\ntriangles 37\n")
 bccmis_cli_test(render_fig2 0 ARGS render --from-trace ${_examples}/fig2.trace -o fig2.svg)
-add_test(NAME cli.render_fig2_content
-         COMMAND ${CMAKE_COMMAND} -DFILE=${CMAKE_CURRENT_BINARY_DIR}/cli_work/render_fig2/fig2.svg -P ${_cli}/check_svg.cmake)
+bccmis_add_test(cli.render_fig2_content
+         COMMAND ${CMAKE_COMMAND} -DFILE=${CMAKE_CURRENT_BINARY_DIR}/cli_work/render_fig2/fig2.svg -P ${_cli}/check_svg.cmake
+         LABELS cli PROPERTIES FIXTURES_REQUIRED cli_render_fig2)
 set_tests_properties(cli.render_fig2 PROPERTIES FIXTURES_SETUP cli_render_fig2)
-set_tests_properties(cli.render_fig2_content PROPERTIES FIXTURES_REQUIRED cli_render_fig2 LABELS cli)
 
 # explore: the counts are known independently (tests/model: 1 + 2^4 = 17 for
 # one cell two levels deep, 2^4 = 16 for four cells one level deep).
@@ -284,20 +282,21 @@ bccmis_cli_test(conformance.not_executable 2 ARGS conformance --impl ${_cli}/fig
 # The README's example, as written, with bccmis on the PATH. Half of its 500
 # random traces are 3D: about 15 s in Debug, several times that under the
 # sanitizers (228 s on a loaded machine), so the run may take up to 600 s.
-add_test(NAME cli.conformance.readme_example
+bccmis_add_test(cli.conformance.readme_example
          COMMAND ${CMAKE_COMMAND} "-DCMD=env|PATH=$<TARGET_FILE_DIR:bccmis>:$ENV{PATH}|bccmis|conformance|--impl|bccmis replay --quiet --check=none|--random|500|--seed|7"
                  -DEXPECT_EXIT=0 "-DEXPECT_STDOUT_REGEX=all 500 traces agree" -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/cli_work/readme_example
-                 -DRUN_TIMEOUT=600 -P ${_run})
-set_tests_properties(cli.conformance.readme_example PROPERTIES LABELS cli TIMEOUT 700)
+                 -DRUN_TIMEOUT=600 -P ${_run}
+         LABELS cli TIMEOUT 700)
 
 # spec/cli.md names exactly the options of every subcommand's --help; the
 # self-test plants mismatches and requires that they are caught.
 find_package(Python3 COMPONENTS Interpreter QUIET)
 if(Python3_FOUND)
-  add_test(NAME cli.spec COMMAND Python3::Interpreter ${_cli}/check_cli_spec.py $<TARGET_FILE:bccmis> ${PROJECT_SOURCE_DIR}/spec/cli.md)
-  add_test(NAME cli.spec_self_test
-           COMMAND Python3::Interpreter ${_cli}/check_cli_spec.py $<TARGET_FILE:bccmis> ${PROJECT_SOURCE_DIR}/spec/cli.md --self-test)
-  set_tests_properties(cli.spec cli.spec_self_test PROPERTIES LABELS "cli;spec")
+  bccmis_add_test(cli.spec COMMAND Python3::Interpreter ${_cli}/check_cli_spec.py $<TARGET_FILE:bccmis> ${PROJECT_SOURCE_DIR}/spec/cli.md
+    LABELS cli spec)
+  bccmis_add_test(cli.spec_self_test
+           COMMAND Python3::Interpreter ${_cli}/check_cli_spec.py $<TARGET_FILE:bccmis> ${PROJECT_SOURCE_DIR}/spec/cli.md --self-test
+           LABELS cli spec)
 endif()
 
 # 3D (spec/formats.md, "3D extension"): the hand-derived examples of
@@ -360,12 +359,12 @@ bccmis_cli_test(d3_replay_mesh_2d_refused 2 ARGS replay --mesh fig2.vtu ${_examp
                 STDERR_REGEX "--mesh writes the tetrahedra of 3D lattices; this trace is 2D")
 # The CLI's mesh files read by meshio and gmsh (counts, kinds, levels and the
 # exact volume 6 * W*H*D*S^3; spec/mesh3d.md M10, M20-M22).
-add_test(NAME cli.d3_mesh_readers
-         COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${_cli}/mesh_cli_readers.py $<TARGET_FILE:bccmis> ${_examples}/d3/face_refined.state)
-set_tests_properties(cli.d3_mesh_readers PROPERTIES LABELS cli)
+bccmis_add_test(cli.d3_mesh_readers
+         COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${_cli}/mesh_cli_readers.py $<TARGET_FILE:bccmis> ${_examples}/d3/face_refined.state
+         LABELS cli)
 
 # bccmis render on 3D states (spec/cli.md, render): the SVG parsed as XML and
-# its elements counted by class (tests/cli/check_svg3.py). The box panel draws
+# its elements counted by class (tests/cli/d3/check_svg.py). The box panel draws
 # the boundary triangles on the three visible faces y = 0, z = max, x = max.
 # face_refined by hand (S = 8, box 16 x 8 x 8; spec/mesh3d.md M18): on y = 0
 # and on z = 8 the 4 children's faces have 4 triangles each and the coarse
@@ -397,11 +396,11 @@ bccmis_cli_test(d3_render_slice_bad_axis 2 ARGS render ${_face3} --slice w=2 -o 
 bccmis_cli_test(d3_render_slice_2d 2 ARGS render --from-trace ${_examples}/fig2.trace --slice z=1 -o fig2.svg
                 STDERR_REGEX "fig2.trace: a 2D lattice; --slice applies to 3D states")
 # docs/d3-face-refined.svg is the README's command's output as drawn now.
-add_test(NAME cli.d3_render_docs_current
+bccmis_add_test(cli.d3_render_docs_current
          COMMAND sh -c "\"$1\" render spec/examples/d3/face_refined.state -o - | cmp - docs/d3-face-refined.svg" sh
                  $<TARGET_FILE:bccmis>
-         WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
-set_tests_properties(cli.d3_render_docs_current PROPERTIES LABELS cli)
+         WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
+         LABELS cli)
 
 # bccmis render on a tetrahedral Medit mesh (spec/cli.md, render), counted as
 # above. tests/stuff/two_tets.mesh by hand (tests/stuff/render_test.cpp): 4 of
@@ -419,13 +418,13 @@ bccmis_svg_count_tests(mesh_render
 # with a positive component along (1, -2, 1.5)), the 46 triangles counted
 # above; its angles are the lattice shapes' 45, 60, 90 and 120 degrees
 # (spec/mesh3d.md): 4 bars.
-add_test(NAME cli.mesh_render_lattice_mesh
+bccmis_add_test(cli.mesh_render_lattice_mesh
          COMMAND sh -c "mkdir -p \"$4\" && cd \"$4\" && \"$2\" mesh \"$3\" -o face.mesh -q &&
                         \"$1\" \"$5\" \"$2\" tri=46,legend=2 face.mesh &&
                         \"$1\" \"$5\" \"$2\" bar=4,min=1,max=1 face.mesh --histogram"
                  sh ${BCCMIS_SYSTEM_PYTHON3} $<TARGET_FILE:bccmis> ${_face3} ${CMAKE_CURRENT_BINARY_DIR}/cli_work/mesh_render_lattice
-                 ${_cli}/check_svg3.py)
-set_tests_properties(cli.mesh_render_lattice_mesh PROPERTIES LABELS cli)
+                 ${_cli}/d3/check_svg.py
+         LABELS cli)
 bccmis_cli_test(mesh_render_slice_outside 2 ARGS render ${_two_tets} --slice z=1.5 -o out.svg
                 STDERR_REGEX "--slice 'z=1.5': outside the mesh: z in \\[-1, 1\\]")
 bccmis_cli_test(mesh_render_slice_not_a_number 2 ARGS render ${_two_tets} --slice x=half -o out.svg
@@ -439,9 +438,9 @@ bccmis_cli_test(mesh_render_from_trace 2 ARGS render --from-trace ${_two_tets} -
 # docs/stuff-sphere.svg and docs/stuff-sphere-angles.svg are the README's
 # commands' output as drawn now: the unit sphere stuffed at level 4 on 3
 # cells, levels 2 to 4 in the cut-away.
-add_test(NAME cli.mesh_render_docs_current
+bccmis_add_test(cli.mesh_render_docs_current
          COMMAND sh -c "mkdir -p \"$2\" && cd \"$2\" && \"$1\" stuff --shape sphere -L 4 --cells 3 -o sphere.mesh -q &&
                         \"$1\" render sphere.mesh --slice z=0 -o - | cmp - \"$3/docs/stuff-sphere.svg\" &&
                         \"$1\" render sphere.mesh --histogram -o - | cmp - \"$3/docs/stuff-sphere-angles.svg\""
-                 sh $<TARGET_FILE:bccmis> ${CMAKE_CURRENT_BINARY_DIR}/cli_work/mesh_render_docs ${PROJECT_SOURCE_DIR})
-set_tests_properties(cli.mesh_render_docs_current PROPERTIES LABELS cli)
+                 sh $<TARGET_FILE:bccmis> ${CMAKE_CURRENT_BINARY_DIR}/cli_work/mesh_render_docs ${PROJECT_SOURCE_DIR}
+         LABELS cli)

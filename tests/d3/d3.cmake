@@ -31,9 +31,9 @@ bccmis_add_gtest(d3_mesh_tests SOURCES mesh_test.cpp LIBS bccmis::d3 bccmis::io 
 # missing meshio or gmsh fails the test (scripts/setup.sh installs both).
 add_executable(d3_mesh_write d3/mesh_write_files.cpp)
 target_link_libraries(d3_mesh_write PRIVATE bccmis::d3 bccmis::io bccmis::warnings)
-add_test(NAME d3.mesh_readers
-         COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/d3/mesh_readers_test.py $<TARGET_FILE:d3_mesh_write>)
-set_tests_properties(d3.mesh_readers PROPERTIES LABELS unit)
+bccmis_add_test(d3.mesh_readers
+         COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/d3/mesh_readers_test.py $<TARGET_FILE:d3_mesh_write>
+         LABELS unit)
 
 # The independent 3D checker (src/bccmis/invariants/d3/): every code planted,
 # random states valid, random mutations caught, the mesh layer on hand-built

@@ -30,25 +30,25 @@ bccmis_add_gtest(fast_differential_test SOURCES differential_test.cpp
 # The conformance harness (src/bccmis/oracle, `bccmis conformance`) against the fast
 # implementation: the bundled traces, then random traces with shrinking (2D:
 # the fast lattice is 2D).
-add_test(NAME fast.conformance
+bccmis_add_test(fast.conformance
          COMMAND bccmis conformance --impl $<TARGET_FILE:bccmis_fast_replay>
-                 --traces ${PROJECT_SOURCE_DIR}/spec/examples --random 300 --seed 20090303 --max-ops 40 --dim 2)
-set_tests_properties(fast.conformance PROPERTIES LABELS conformance TIMEOUT 300)
+                 --traces ${PROJECT_SOURCE_DIR}/spec/examples --random 300 --seed 20090303 --max-ops 40 --dim 2
+         LABELS conformance TIMEOUT 300)
 
 # The fast 3D lattice (bccmis::d3::fast::Lattice) against the 3D reference
 # (issue "3D at scale"): random sequences in lock-step with fixed seeds
 # (label property), the spec/examples/d3 traces byte for byte (label unit),
 # and no allocation per operation in steady state (label unit).
-bccmis_add_gtest(fast3_differential_test SOURCES d3/differential_test.cpp LIBS bccmis::fast bccmis::d3
+bccmis_add_gtest(fast_d3_differential_test SOURCES d3/differential_test.cpp LIBS bccmis::fast bccmis::d3
   DEFINITIONS BCCMIS_SPEC_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/spec/examples"
   FILTER "Fast3Differential.Random*" LABELS property)
-bccmis_discover_gtests(fast3_differential_test FILTER "-Fast3Differential.Random*" LABELS unit)
+bccmis_discover_gtests(fast_d3_differential_test FILTER "-Fast3Differential.Random*" LABELS unit)
 
 # No allocation per operation in steady state; strong guarantee when growth
 # fails (replaces the global operator new: testing/counting_allocator.h, so its
 # own executable).
-bccmis_add_gtest(fast3_alloc_test SOURCES d3/alloc_test.cpp LIBS bccmis::fast bccmis::d3 LABELS unit)
+bccmis_add_gtest(fast_d3_alloc_test SOURCES d3/alloc_test.cpp LIBS bccmis::fast bccmis::d3 LABELS unit)
 
 # Bulk construction: from_graph of reference states, refine_each /
 # coarsen_each against single reference calls.
-bccmis_add_gtest(fast3_bulk_test SOURCES d3/bulk_test.cpp LIBS bccmis::fast bccmis::d3 LABELS unit)
+bccmis_add_gtest(fast_d3_bulk_test SOURCES d3/bulk_test.cpp LIBS bccmis::fast bccmis::d3 LABELS unit)

@@ -62,6 +62,7 @@ def check_stuff(meshio, bccmis, d):
         fail("bccmis stuff: exit %d: %s" % (run.returncode, run.stderr))
     stats = json.loads(run.stdout)
     subprocess.run([bccmis, "stuff"] + shape + ["--binary", "-o", stem + "-b.msh", "-o", stem + "-b.vtu"], check=True)
+    subprocess.run([bccmis, "stuff"] + shape + ["--compress", "-o", stem + "-z.vtu", "-o", stem + "-z.msh"], check=True)
 
     want = [("2", "3", '"boundary"'), ("3", "1", '"component_1"'), ("3", "2", '"component_2"')]
     for path in (stem + ".msh", stem + "-b.msh"):
@@ -88,14 +89,22 @@ def check_stuff(meshio, bccmis, d):
     if set(tri_group) != {3}:
         fail(".msh: boundary triangles in the physical groups %s" % set(tri_group))
 
-    va, vb = meshio.read(stem + ".vtu"), meshio.read(stem + "-b.vtu")
-    if not (np.array_equal(va.points, vb.points) and np.array_equal(blocks(va, "tetra"), blocks(vb, "tetra"))
-            and np.array_equal(va.point_data["kind"], vb.point_data["kind"])
-            and np.array_equal(va.cell_data["level"][0], vb.cell_data["level"][0])):
-        fail("the ASCII and binary .vtu differ")
-    if "format=\"binary\"" not in open(stem + "-b.vtu").read() or len(vb.points) != stats["vertices"]:
-        fail("the binary .vtu is not binary or has %d points" % len(vb.points))
-    print(".vtu: ASCII and binary read the same (%d points, %d tetrahedra)" % (len(vb.points), len(tets)))
+    va = meshio.read(stem + ".vtu")
+    for suffix in ("-b", "-z"):
+        vb = meshio.read(stem + suffix + ".vtu")
+        if not (np.array_equal(va.points, vb.points) and np.array_equal(blocks(va, "tetra"), blocks(vb, "tetra"))
+                and np.array_equal(va.point_data["kind"], vb.point_data["kind"])
+                and np.array_equal(va.cell_data["level"][0], vb.cell_data["level"][0])):
+            fail("the ASCII and %s .vtu differ" % suffix)
+        if "format=\"binary\"" not in open(stem + suffix + ".vtu").read() or len(vb.points) != stats["vertices"]:
+            fail("the %s .vtu is not binary or has %d points" % (suffix, len(vb.points)))
+    # --compress: VTK's zlib compressor, and smaller than the uncompressed binary file.
+    z = open(stem + "-z.vtu").read()
+    if 'compressor="vtkZLibDataCompressor"' not in z or len(z) * 2 > os.path.getsize(stem + "-b.vtu"):
+        fail("the --compress .vtu is not zlib-compressed to under half the binary file")
+    if open(stem + "-z.msh", "rb").read() != open(stem + "-b.msh", "rb").read():
+        fail("--compress: the .msh is not the binary .msh")
+    print(".vtu: ASCII, binary and zlib-compressed read the same (%d points, %d tetrahedra)" % (len(vb.points), len(tets)))
 
     medit = meshio.read(stem + ".mesh")
     mtris = blocks(medit, "triangle")
@@ -118,6 +127,13 @@ def check_mesh(meshio, bccmis, state, d):
     ascii_msh, binary_msh = os.path.join(d, "face.msh"), os.path.join(d, "face-b.msh")
     subprocess.run([bccmis, "mesh", state, "--quiet", "-o", ascii_msh], check=True)
     subprocess.run([bccmis, "mesh", state, "--quiet", "--binary", "-o", binary_msh], check=True)
+    ascii_vtu, zlib_vtu = os.path.join(d, "face.vtu"), os.path.join(d, "face-z.vtu")
+    subprocess.run([bccmis, "mesh", state, "--quiet", "-o", ascii_vtu], check=True)
+    subprocess.run([bccmis, "mesh", state, "--quiet", "--compress", "-o", zlib_vtu], check=True)
+    va, vz = meshio.read(ascii_vtu), meshio.read(zlib_vtu)
+    if not (np.array_equal(va.points, vz.points) and np.array_equal(blocks(va, "tetra"), blocks(vz, "tetra"))
+            and 'compressor="vtkZLibDataCompressor"' in open(zlib_vtu).read()):
+        fail("bccmis mesh --compress: the .vtu differs from the ASCII one or is not compressed")
     a, b = meshio.read(ascii_msh), meshio.read(binary_msh)
     if not (np.array_equal(a.points, b.points) and np.array_equal(blocks(a, "tetra"), blocks(b, "tetra"))
             and np.array_equal(blocks(a, "triangle"), blocks(b, "triangle"))):

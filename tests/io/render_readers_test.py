@@ -42,10 +42,11 @@ def main():
         shape = [bccmis, "stuff", "--shape", "torus", "-L", "3", "--cells", "2", "--quiet"]
         subprocess.run(shape + ["-o", s + ".mesh", "-o", s + ".vtu", "-o", s + ".msh"], check=True)
         subprocess.run(shape + ["--binary", "-o", s + "-b.vtu", "-o", s + "-b.msh"], check=True)
+        subprocess.run(shape + ["--compress", "-o", s + "-z.vtu"], check=True)
         medit = render(bccmis, s + ".mesh", d)
         if medit.count('class="tri"') < 100:
             fail("the .mesh picture has %d triangles" % medit.count('class="tri"'))
-        for vtu in (s + ".vtu", s + "-b.vtu"):
+        for vtu in (s + ".vtu", s + "-b.vtu", s + "-z.vtu"):
             if render(bccmis, vtu, d) != medit:
                 fail("%s is drawn differently from the .mesh" % vtu)
 
@@ -54,7 +55,7 @@ def main():
         for msh in (s + ".msh", s + "-b.msh"):
             if places(render(bccmis, msh, d)) != places(medit):
                 fail("%s's triangles are drawn elsewhere than the .mesh's" % msh)
-        print("render: .mesh, .vtu and .msh (ASCII, binary) drawn alike")
+        print("render: .mesh, .vtu (ASCII, binary, zlib) and .msh (ASCII, binary) drawn alike")
 
         text = open(s + ".msh").read()
         bad = os.path.join(d, "truncated.msh")
@@ -70,7 +71,18 @@ def main():
         flipped = os.path.join(d, "flipped.vtu")
         open(flipped, "w").write(vtu[:conn] + " ".join([first[1], first[0]] + first[2:]) + vtu[vtu.index("\n", conn):])
         refused(bccmis, flipped, r"flipped\.vtu:\d+:\d+: cell 0 is negatively oriented")
-        print("render: malformed .msh and .vtu refused with their place")
+        z = open(s + "-z.vtu").read()
+        lz4 = os.path.join(d, "lz4.vtu")
+        open(lz4, "w").write(z.replace("vtkZLibDataCompressor", "vtkLZ4DataCompressor"))
+        refused(bccmis, lz4, r"lz4\.vtu:2:1: compressor 'vtkLZ4DataCompressor': read uncompressed files and "
+                             r"vtkZLibDataCompressor")
+        # One base64 digit of the compressed connectivity changed: zlib's checksum fails.
+        body = z.index("\n", z.index('Name="connectivity" format="binary">')) + 1
+        at = (body + z.index("\n", body)) // 2  # inside the compressed blocks, past the short header
+        spoilt = os.path.join(d, "spoilt.vtu")
+        open(spoilt, "w").write(z[:at] + ("A" if z[at] != "A" else "B") + z[at + 1:])
+        refused(bccmis, spoilt, r"spoilt\.vtu:\d+:\d+: compressed block \d+ does not inflate to \d+ bytes")
+        print("render: malformed .msh and .vtu (also compressed) refused with their place")
     print("ok")
 
 

@@ -8,8 +8,10 @@ endif()
 
 # One variable only: gtest_discover_tests flattens list-valued properties.
 set(_bccmis_p4est_env "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1")
-foreach(name bridge_test differential_test bridge3_test differential3_test)
-  bccmis_add_gtest(p4est_${name} SOURCES ${name}.cpp OWN_MAIN
+# One target per file: tests/p4est/d3/bridge_test.cpp is p4est_d3_bridge_test.
+foreach(file bridge_test differential_test d3/bridge_test d3/differential_test)
+  string(REPLACE "/" "_" name ${file})
+  bccmis_add_gtest(p4est_${name} SOURCES ${file}.cpp OWN_MAIN
     LIBS bccmis::p4est bccmis::apps bccmis::invariants bccmis::invariants_d3 bccmis::core
     PREFIX p4est. LABELS p4est ENVIRONMENT "${_bccmis_p4est_env}")
 endforeach()
@@ -17,17 +19,17 @@ endforeach()
 # The distributed run on two ranks, when mpirun exists; on one rank (a
 # singleton, no mpirun) otherwise, which still gathers, imports and checks.
 find_program(BCCMIS_MPIRUN NAMES mpirun mpiexec HINTS ${MPIEXEC_EXECUTABLE})
+set(_bccmis_p4est_dist LABELS p4est TIMEOUT 120
+                       PROPERTIES ENVIRONMENT "${_bccmis_p4est_env}" FAIL_REGULAR_EXPRESSION "FAIL")
 if(BCCMIS_MPIRUN)
-  set(_bccmis_p4est_dist p4est.distributed_2_ranks p4est.distributed3_2_ranks)
-  add_test(NAME p4est.distributed_2_ranks
-           COMMAND ${BCCMIS_MPIRUN} -np 2 --allow-run-as-root --oversubscribe $<TARGET_FILE:bccmis_p4est_distributed> --expect-ranks 2)
-  add_test(NAME p4est.distributed3_2_ranks
-           COMMAND ${BCCMIS_MPIRUN} -np 2 --allow-run-as-root --oversubscribe $<TARGET_FILE:bccmis_p8est_distributed> --expect-ranks 2)
+  bccmis_add_test(p4est.distributed_2_ranks
+           COMMAND ${BCCMIS_MPIRUN} -np 2 --allow-run-as-root --oversubscribe $<TARGET_FILE:bccmis_p4est_distributed> --expect-ranks 2
+           ${_bccmis_p4est_dist})
+  bccmis_add_test(p4est.distributed3_2_ranks
+           COMMAND ${BCCMIS_MPIRUN} -np 2 --allow-run-as-root --oversubscribe $<TARGET_FILE:bccmis_p8est_distributed> --expect-ranks 2
+           ${_bccmis_p4est_dist})
 else()
   message(STATUS "bccmis: mpirun not found, the p4est distributed runs use one rank")
-  set(_bccmis_p4est_dist p4est.distributed_1_rank p4est.distributed3_1_rank)
-  add_test(NAME p4est.distributed_1_rank COMMAND bccmis_p4est_distributed)
-  add_test(NAME p4est.distributed3_1_rank COMMAND bccmis_p8est_distributed)
+  bccmis_add_test(p4est.distributed_1_rank COMMAND bccmis_p4est_distributed ${_bccmis_p4est_dist})
+  bccmis_add_test(p4est.distributed3_1_rank COMMAND bccmis_p8est_distributed ${_bccmis_p4est_dist})
 endif()
-set_tests_properties(${_bccmis_p4est_dist} PROPERTIES LABELS p4est TIMEOUT 120
-                     ENVIRONMENT "${_bccmis_p4est_env}" FAIL_REGULAR_EXPRESSION "FAIL")

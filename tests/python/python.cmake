@@ -23,7 +23,8 @@ if(TARGET bccmis_python)
     list(APPEND _bccmis_python_env "LD_PRELOAD=${_bccmis_asan_runtime}" "ASAN_OPTIONS=detect_leaks=0")
     set(_bccmis_pytest_select -k "not test_rss_stays_flat")
   endif()
-  add_test(NAME python.module
-           COMMAND ${Python_EXECUTABLE} -m pytest -q -p no:cacheprovider ${_bccmis_pytest_select} ${CMAKE_CURRENT_LIST_DIR})
-  set_tests_properties(python.module PROPERTIES LABELS python TIMEOUT 300 ENVIRONMENT "${_bccmis_python_env}")
+  bccmis_add_test(python.module
+    COMMAND ${Python_EXECUTABLE} -m pytest -q -p no:cacheprovider ${_bccmis_pytest_select} ${CMAKE_CURRENT_LIST_DIR}
+    LABELS python TIMEOUT 300
+    PROPERTIES ENVIRONMENT "${_bccmis_python_env}")
 endif()

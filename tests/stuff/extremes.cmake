@@ -55,12 +55,19 @@ if(TARGET bccmis::stuff_surface)
   # under --check). CGAL's elephant (one closed surface) gives 3 boundary
   # components at -L 3.
   bccmis_cli_test(stuff_lost_component 2 ARGS stuff ${_extreme}/two_octahedra.off -L 3 -o x.vtu
-                  STDERR_REGEX "two_octahedra.off: 16 triangles: a component is lost: the mesh's boundary has 1 component where the shape's surface has 2: bad input for this level")
+                  STDERR_REGEX "two_octahedra.off: 16 triangles: a component is lost: the mesh's boundary has 1 component where the shape's surface has 2: bad input for this level \\(the finest cell side 0\\.184090909 against the thinnest extent of the thinnest component's box 0\\.1\\); -L 6 would resolve it")
   bccmis_cli_test(stuff_changed_topology 0 ARGS stuff ${bccmis_cgal_data}/data/meshes/elephant.off -L 3 --stats
                   STDERR_REGEX "warning: the mesh's boundary has 3 components where the shape's surface has 1"
                   STDOUT_REGEX "boundary_components 3\n.*warning the mesh's boundary has 3 components where the shape's surface has 1\n")
   bccmis_cli_test(stuff_changed_topology_check 1 ARGS stuff ${bccmis_cgal_data}/data/meshes/elephant.off -L 3 --check -o x.vtu
                   STDERR_REGEX "the mesh's boundary has 3 components where the shape's surface has 1")
+  # A clean input whose mesh changes only by non-manifold edges (CGAL's
+  # 3torus.off at -L 3: one, and as many components as the surface): a
+  # warning, and under --check an error.
+  bccmis_cli_test(stuff_nonmanifold_warning 0 ARGS stuff ${bccmis_cgal_data}/data/meshes/3torus.off -L 3 -o x.vtu
+                  STDERR_REGEX "warning: the mesh's boundary has 1 non-manifold edges")
+  bccmis_cli_test(stuff_nonmanifold_check 1 ARGS stuff ${bccmis_cgal_data}/data/meshes/3torus.off -L 3 --check -q -o x.vtu
+                  STDERR_REGEX "^bccmis: mesh 3torus.off: 46 triangles: the mesh's boundary has 1 non-manifold edges \\(parts meeting along a lattice edge; a finer level separates them\\)\n$")
 endif()
 
 # S24's map: exactness of the translation, the scale, and a tiny sphere as

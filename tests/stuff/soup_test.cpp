@@ -224,6 +224,25 @@ void meshes_to(const std::vector<Vec3>& v, const Tris& t, const std::string& nam
   }
 }
 
+TEST(SoupNormalisation, LocalCoordinatesBelowTwoToTheMinus200AreFlushed) {
+  // spec/stuffing.md S24: the unit cube's box (extent 1, centre near the
+  // origin) is its own local frame; its face x = 0 moved to x = c. At c =
+  // 2^-200 the coordinate is kept (the box starts at c); one ulp below, it
+  // is flushed to 0. Both paths (the clean mesh's shape and the soup's).
+  for (const double c : {0x1p-200, std::nextafter(0x1p-200, 0.0)}) {
+    std::vector<Vec3> v = cube_vertices();
+    for (Vec3& p : v)
+      for (double& x : p) x /= 2;
+    for (Vec3& p : v)
+      if (p[0] == 0) p[0] = c;
+    for (const SoupPath path : {SoupPath::dispatch, SoupPath::always}) {
+      const auto shape = make_soup_shape(v, cube_triangles(), "cube", path);
+      EXPECT_EQ(shape->bounds().lo[0], c == 0x1p-200 ? c : 0.0) << "c = " << c;
+      EXPECT_EQ(shape->bounds().hi[0], 1.0);
+    }
+  }
+}
+
 TEST(SoupMeshing, OpenCube) {
   // w = 1/2 exactly on the missing face's square (the closed cube's w minus
   // that face's, each 1/2 there): the solid is the whole cube.

@@ -7,7 +7,7 @@ if(TARGET bccmis::stuff_surface)
   # the few the tests read are extracted into the build tree.
   set(BCCMIS_CGAL_DATA_TAR /usr/share/doc/libcgal-dev/data.tar.gz CACHE FILEPATH
       "data.tar.gz of libcgal-demo, CGAL's sample meshes")
-  set(bccmis_cgal_meshes elephant.off double-torus-example.off icosahedron.off corner_poly.off prim.off
+  set(bccmis_cgal_meshes elephant.off double-torus-example.off icosahedron.off corner_poly.off prim.off 3torus.off
                          # flawed files for cli.stuff_wild_files (below)
                          bones.off blob.off mpi.off cube4-shuffled.off colored_tetra.ply)
   set(bccmis_cgal_data ${CMAKE_CURRENT_BINARY_DIR}/cgal_data)
@@ -39,10 +39,10 @@ if(TARGET bccmis::stuff_surface)
   # oriented, and one clean; checked by --check and against the volume of the
   # winding number's solid estimated independently in numpy
   # (tests/stuff/wild_files_test.py; by hand: wild_files_test.py BCCMIS).
-  add_test(NAME cli.stuff_wild_files
+  bccmis_add_test(cli.stuff_wild_files
            COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/stuff/wild_files_test.py $<TARGET_FILE:bccmis>
-                   ${bccmis_cgal_data}/data/meshes)
-  set_tests_properties(cli.stuff_wild_files PROPERTIES LABELS "cgal;stuff" TIMEOUT 600)
+                   ${bccmis_cgal_data}/data/meshes
+           LABELS cgal stuff TIMEOUT 600)
 
   bccmis_add_gtest(stuff_surface_tests SOURCES surface_test.cpp LIBS bccmis::stuff_surface
                    DEFINITIONS BCCMIS_STUFF_TEST_DIR="${CMAKE_CURRENT_LIST_DIR}"

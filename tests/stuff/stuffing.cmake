@@ -11,20 +11,20 @@ bccmis_add_gtest(stuffing_tests SOURCES stuffing_test.cpp stuffed_mesh_check_tes
 if(TARGET bccmis::stuff_surface)
   set(_stuff_meshes ${bccmis_cgal_data}/data/meshes)
 endif()
-add_test(NAME cli.stuff_readers
+bccmis_add_test(cli.stuff_readers
          COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/stuff/stuff_cli_readers.py $<TARGET_FILE:bccmis>
-                 ${_stuff_meshes})
-set_tests_properties(cli.stuff_readers PROPERTIES LABELS cli TIMEOUT 900)
+                 ${_stuff_meshes}
+         LABELS cli TIMEOUT 900)
 
 # A triangle mesh moved rigidly (--animate with an input file, S14 and S15):
 # the cube [0,2]^3 (tests/stuff/good/cube.off) in 3 steps; the .pvd's frames
 # read by meshio, each the cube moved by its share of the path
 # (tests/stuff/stuff_cli_animate_mesh.py).
 if(TARGET bccmis::stuff_surface)
-  add_test(NAME cli.stuff_animate_mesh
+  bccmis_add_test(cli.stuff_animate_mesh
            COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/stuff/stuff_cli_animate_mesh.py
-                   $<TARGET_FILE:bccmis> ${CMAKE_CURRENT_SOURCE_DIR}/stuff/good/cube.off)
-  set_tests_properties(cli.stuff_animate_mesh PROPERTIES LABELS cli)
+                   $<TARGET_FILE:bccmis> ${CMAKE_CURRENT_SOURCE_DIR}/stuff/good/cube.off
+           LABELS cli)
 endif()
 
 # bccmis stuff refusals: exit 2 (spec/cli.md), the message naming what is

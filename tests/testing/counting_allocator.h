@@ -13,7 +13,7 @@
 // inclusion in the same executable fails to link (multiple definition).
 // Users: tests/fast/alloc_test.cpp, tests/fast/d3/alloc_test.cpp,
 // tests/robustness_alloc_test.cpp, tests/testing/fault_injection.h (the
-// exception-safety tests), bench/bench_memory.cpp, bench/bench_memory3.cpp.
+// exception-safety tests), bench/bench_memory.cpp, bench/d3/bench_memory.cpp.
 #pragma once
 
 #include <malloc.h>

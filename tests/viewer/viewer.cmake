@@ -9,31 +9,32 @@ set(_viewer_work ${CMAKE_CURRENT_BINARY_DIR}/viewer_work)
 if(Python3_FOUND)
   # The embedded model, step by step, against bccmis replay and stats.
   foreach(stem fig2 fig3 refusals)
-    add_test(NAME viewer.model.${stem}
+    bccmis_add_test(viewer.model.${stem}
              COMMAND Python3::Interpreter ${_viewer}/check_model.py $<TARGET_FILE:bccmis>
-                     ${PROJECT_SOURCE_DIR}/spec/examples/${stem}.trace ${_viewer_work}/model_${stem})
+                     ${PROJECT_SOURCE_DIR}/spec/examples/${stem}.trace ${_viewer_work}/model_${stem}
+             LABELS viewer TIMEOUT 300)
   endforeach()
   # A random trace of 300 operations (many refusals, some checks).
-  add_test(NAME viewer.model.random
+  bccmis_add_test(viewer.model.random
            COMMAND ${CMAKE_COMMAND} -DPYTHON=${Python3_EXECUTABLE} -DGEN=${_viewer}/make_trace.py
                    "-DGEN_ARGS=6;6;3;300;2" -DTRACE=${_viewer_work}/random300.trace
                    "-DCMD=${Python3_EXECUTABLE};${_viewer}/check_model.py;$<TARGET_FILE:bccmis>;${_viewer_work}/random300.trace;${_viewer_work}/model_random"
-                   -P ${_viewer}/with_trace.cmake)
+                   -P ${_viewer}/with_trace.cmake
+           LABELS viewer TIMEOUT 300)
   # Size: 1,000 operations on a 40 x 40 lattice of maximum level 3 (1,600 cells
   # at first, about 2,600 at the end) must stay below 2 MB.
-  add_test(NAME viewer.size_budget
+  bccmis_add_test(viewer.size_budget
            COMMAND ${CMAKE_COMMAND} -DPYTHON=${Python3_EXECUTABLE} -DGEN=${_viewer}/make_trace.py
                    "-DGEN_ARGS=40;40;3;1000;1" -DTRACE=${_viewer_work}/big.trace
                    "-DCMD=${Python3_EXECUTABLE};${_viewer}/check_model.py;$<TARGET_FILE:bccmis>;${_viewer_work}/big.trace;${_viewer_work}/size_budget;--check=end;--budget;2000000"
-                   -P ${_viewer}/with_trace.cmake)
-  set_tests_properties(viewer.model.fig2 viewer.model.fig3 viewer.model.refusals viewer.model.random
-                       viewer.size_budget PROPERTIES LABELS viewer TIMEOUT 300)
+                   -P ${_viewer}/with_trace.cmake
+           LABELS viewer TIMEOUT 300)
 
   # In a real browser; exit 77 (skipped) without Chromium.
-  add_test(NAME viewer.browser
+  bccmis_add_test(viewer.browser
            COMMAND Python3::Interpreter ${_viewer}/browser_test.py $<TARGET_FILE:bccmis> ${PROJECT_SOURCE_DIR}
-                   ${_viewer_work}/browser)
-  set_tests_properties(viewer.browser PROPERTIES LABELS browser SKIP_RETURN_CODE 77 TIMEOUT 600)
+                   ${_viewer_work}/browser
+           LABELS browser TIMEOUT 600 PROPERTIES SKIP_RETURN_CODE 77)
 endif()
 
 # The CLI: page written, exit codes, messages (tests/cli/run_cli.cmake).

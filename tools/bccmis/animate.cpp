@@ -11,6 +11,7 @@
 #include "bccmis/apps/animate.h"
 #include "bccmis/apps/apps.h"
 #include "bccmis/fast/lattice.h"
+#include "bccmis/io/svg.h"
 #include "bccmis/oracle/oracle.h"
 #include "commands.h"
 #include "io.h"
@@ -21,21 +22,15 @@ namespace {
 
 constexpr const char* kTool = "bccmis animate";
 
-// The feature as an SVG circle in render_svg's coordinates (760 px for the
-// longer side, a 20 px margin, y up), inserted before `</svg>`.
+// The frame's picture with the feature drawn over it as a circle in
+// render_svg's coordinates (760 px for the longer side, a 20 px margin, y up).
 std::string frame_svg(const Graph& g, const FrameReport& fr, double radius, const std::string& title) {
-  std::string svg = render_svg(g, title);
-  if (fr.lifted) return svg;
+  if (fr.lifted) return render_svg(g, title);
   const double w = static_cast<double>(g.size.W), h = static_cast<double>(g.size.H);
   const double scale = 760.0 / std::max(w, h), margin = 20.0;
-  char buf[256];
-  std::snprintf(buf, sizeof buf,
-                "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\" fill=\"#e07020\" fill-opacity=\"0.25\" stroke=\"#e07020\" "
-                "stroke-width=\"2\"/>\n",
-                margin + fr.x * scale, margin + (h - fr.y) * scale, std::max(radius * scale, 3.0));
-  const std::size_t end = svg.rfind("</svg>");
-  if (end != std::string::npos) svg.insert(end, buf);
-  return svg;
+  return render_svg(g, title,
+                    io::circle(margin + fr.x * scale, margin + (h - fr.y) * scale, std::max(radius * scale, 3.0),
+                               "fill=\"#e07020\" fill-opacity=\"0.25\" stroke=\"#e07020\" stroke-width=\"2\""));
 }
 
 std::string frame_title(const FrameReport& fr) {

@@ -174,6 +174,8 @@ CLI::App* add_mesh(CLI::App& app, MeshOptions& o) {
   cmd->add_flag("--json", o.json, "Statistics as JSON (implies --stats)");
   cmd->add_flag("--check", o.check, "Also run the mesh layer of the checker on the tetrahedra (exit 1 on a violation)");
   cmd->add_flag("--binary", o.binary, "Write .vtu (base64) and .msh (4.1 binary) with binary numbers; ASCII otherwise");
+  cmd->add_flag("--compress", o.compress,
+                "Binary, and the .vtu's arrays zlib-compressed (vtkZLibDataCompressor); .msh has no compression");
   cmd->add_flag("-q,--quiet", o.quiet, "No summary on stderr");
   cmd->footer("Example:\n  bccmis mesh spec/examples/d3/face_refined.state -o face.vtu -o face.msh --stats");
   return cmd;
@@ -227,6 +229,9 @@ CLI::App* add_stuff(CLI::App& app, StuffOptions& o) {
   cmd->add_flag("--binary", o.binary,
                 "Write .vtu (base64; also the --animate frames) and .msh (4.1 binary) with binary numbers; ASCII "
                 "otherwise");
+  cmd->add_flag("--compress", o.compress,
+                "Binary, and the .vtu's arrays (also the --animate frames) zlib-compressed "
+                "(vtkZLibDataCompressor); .msh has no compression");
   cmd->add_option("--surface-vertices", o.surface_vertices,
                   "The .off/.obj boundary: 'used' (its own vertices, default) or 'all' (every vertex of the "
                   "volume mesh, numbered as in the .vtu/.msh/.mesh)")

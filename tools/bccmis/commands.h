@@ -17,6 +17,7 @@
 #include "bccmis/format.h"
 #include "bccmis/graph.h"
 #include "bccmis/invariants/invariants.h"
+#include "bccmis/io/encoding.h"
 
 namespace bccmis::fast {
 class Lattice;
@@ -73,7 +74,12 @@ std::string summary(const d3::fast::Lattice& g);
 /// A mesh output path: '.vtu', '.msh' or '.mesh'; throws InputError otherwise.
 void check_mesh_path(const std::string& path);
 /// Stages `mesh` for `path` in the writer its extension names (mesh.cpp).
-void add_mesh_output(OutputSet& outputs, const std::string& path, const d3::TetMesh& mesh, bool binary = false);
+void add_mesh_output(OutputSet& outputs, const std::string& path, const d3::TetMesh& mesh,
+                     io::Encoding encoding = io::Encoding::ascii);
+/// --binary and --compress as the writers' encoding (spec/cli.md).
+inline io::Encoding output_encoding(bool binary, bool compress) {
+  return compress ? io::Encoding::zlib : binary ? io::Encoding::binary : io::Encoding::ascii;
+}
 
 // ---- The subcommands ------------------------------------------------------------------
 
@@ -116,8 +122,9 @@ struct MeshOptions {
   std::vector<std::string> outputs;  ///< -o, repeatable; the extension names the format
   bool stats = false;
   bool json = false;
-  bool check = false;   ///< the mesh layer on the mesh before writing it
-  bool binary = false;  ///< .vtu and .msh with binary numbers (spec/cli.md)
+  bool check = false;     ///< the mesh layer on the mesh before writing it
+  bool binary = false;    ///< .vtu and .msh with binary numbers (spec/cli.md)
+  bool compress = false;  ///< binary, and .vtu zlib-compressed (spec/cli.md)
   bool quiet = false;
 };
 int run(const MeshOptions& o);
@@ -138,8 +145,9 @@ struct StuffOptions {
   bool stats = false;
   bool json = false;
   bool check = false;
-  bool strict = false;  ///< refuse a triangle mesh at its first flaw (spec/stuffing.md S21)
-  bool binary = false;  ///< .vtu (also the --animate frames) and .msh with binary numbers (spec/cli.md)
+  bool strict = false;    ///< refuse a triangle mesh at its first flaw (spec/stuffing.md S21)
+  bool binary = false;    ///< .vtu (also the --animate frames) and .msh with binary numbers (spec/cli.md)
+  bool compress = false;  ///< binary, and .vtu zlib-compressed (spec/cli.md)
   std::string surface_vertices = "used";  ///< .off/.obj: "used" (compact) or "all" (the volume mesh's numbering)
   double memory_limit_gb = 0;             ///< > 0: the memory a run may take (spec/stuffing.md S25), else MemAvailable
   bool quiet = false;

@@ -62,9 +62,8 @@ void check_mesh_path(const std::string& path) {
                      "': unknown format; the extension names it: .vtu (VTK XML), .msh (Gmsh 4.1), .mesh (Medit)");
 }
 
-void add_mesh_output(OutputSet& outputs, const std::string& path, const d3::TetMesh& mesh, bool binary) {
+void add_mesh_output(OutputSet& outputs, const std::string& path, const d3::TetMesh& mesh, io::Encoding encoding) {
   check_mesh_path(path);
-  const io::Encoding encoding = binary ? io::Encoding::binary : io::Encoding::ascii;
   if (ends_with(path, ".vtu")) outputs.add(path, [&](std::ostream& out) { io::write_vtu(out, mesh, encoding); });
   if (ends_with(path, ".msh")) outputs.add(path, [&](std::ostream& out) { io::write_msh(out, mesh, encoding); });
   if (ends_with(path, ".mesh")) outputs.add(path, [&](std::ostream& out) { io::write_medit(out, mesh); });
@@ -92,7 +91,7 @@ int run(const MeshOptions& o) {
   const std::vector<d3::Tet> tets = d3::tetrahedra(*g);
   const d3::TetMesh mesh = d3::index_mesh(*g, tets);
   OutputSet outputs;
-  for (const std::string& path : o.outputs) add_mesh_output(outputs, path, mesh, o.binary);
+  for (const std::string& path : o.outputs) add_mesh_output(outputs, path, mesh, output_encoding(o.binary, o.compress));
   if (o.stats) outputs.add("-", stats_text(d3::mesh_quality(tets), o.json));
   outputs.commit();
   if (!o.quiet && !o.outputs.empty())

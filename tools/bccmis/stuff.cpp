@@ -36,7 +36,7 @@ bool ends_with(const std::string& s, std::string_view suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-io::Encoding encoding(const StuffOptions& o) { return o.binary ? io::Encoding::binary : io::Encoding::ascii; }
+io::Encoding encoding(const StuffOptions& o) { return output_encoding(o.binary, o.compress); }
 
 bool is_surface_path(const std::string& path) { return ends_with(path, ".off") || ends_with(path, ".obj"); }
 

@@ -27,7 +27,7 @@ double coordinate(const d3::Vec3& p, std::size_t i) { return p[i]; }
 /// float64; end_line writes nothing).
 class MshNumbers {
  public:
-  MshNumbers(std::ostream& out, Encoding encoding) : out_(out), binary_(encoding == Encoding::binary) {}
+  MshNumbers(std::ostream& out, Encoding encoding) : out_(out), binary_(encoding != Encoding::ascii) {}
   void integer(int v) {
     if (binary_) return raw(static_cast<std::int32_t>(v));
     text(std::to_string(v));
@@ -74,7 +74,7 @@ void write_msh_impl(std::ostream& out, const d3::BasicTetMesh<P>& mesh, Encoding
   const std::size_t components = r.count;
   // Nodes need an entity even without tetrahedra.
   const std::size_t volumes = std::max<std::size_t>(components, n > 0 ? 1 : 0);
-  const bool binary = encoding == Encoding::binary;
+  const bool binary = encoding != Encoding::ascii;
   MshNumbers w(out, encoding);
 
   out << "$MeshFormat\n4.1 " << (binary ? 1 : 0) << " 8\n";

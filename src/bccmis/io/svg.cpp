@@ -48,6 +48,12 @@ std::string text_start(double x, double baseline, std::string_view attributes) {
   return buf + std::string(attributes) + ">";
 }
 
+std::string circle(double cx, double cy, double radius, std::string_view attributes) {
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\" ", cx, cy, radius);
+  return buf + std::string(attributes) + "/>\n";
+}
+
 std::string legend_entry(double x, double baseline, std::string_view fill, std::string_view label,
                          std::string_view font) {
   char swatch[128], at[128];

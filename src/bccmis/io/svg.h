@@ -1,7 +1,8 @@
 // bccmis::io: the pieces every SVG picture of bccmis is made of (the 2D and
 // 3D lattice pictures of `bccmis render`, the stuffed-mesh view and the
 // angle histogram): escaping, the document's start and end, colours, text
-// and legend entries. Coordinates are written rounded to whole pixels.
+// and legend entries, circles. Coordinates are written rounded to whole pixels,
+// a circle's to hundredths.
 #pragma once
 
 #include <string>
@@ -26,6 +27,10 @@ std::string hex_colour(int red, int green, int blue);
 
 /// The start tag <text x=".." y=".." ATTRIBUTES> (no newline).
 std::string text_start(double x, double baseline, std::string_view attributes);
+
+/// A circle on one line: <circle cx=".." cy=".." r=".." ATTRIBUTES/> with
+/// the centre and radius to hundredths of a pixel (%.2f).
+std::string circle(double cx, double cy, double radius, std::string_view attributes);
 
 /// A legend entry on one line: a 12 x 12 swatch of `fill` at x whose bottom
 /// is 2 below `baseline`, and `label` (not escaped) 16 to its right, in `font`.

@@ -14,6 +14,7 @@
 #include "bccmis/io/detail/base64.h"
 #include "bccmis/io/detail/point_text.h"
 #include "bccmis/io/detail/triangle_text.h"
+#include "bccmis/io/detail/zlib_blocks.h"
 #include "bccmis/text_writer.h"
 
 namespace bccmis::io {
@@ -38,7 +39,8 @@ void write_number(std::ostream& out, T v) {
 }
 
 /// One DataArray of `values` (per_line numbers a line in ASCII): ASCII text,
-/// or base64 of a UInt64 byte count followed by the little-endian values.
+/// base64 of a UInt64 byte count followed by the little-endian values, or
+/// the values compressed in blocks (detail/zlib_blocks.h).
 template <class T>
 void write_data_array(std::ostream& out, const std::string& attributes, const std::vector<T>& values,
                       std::size_t per_line, Encoding encoding) {
@@ -55,7 +57,8 @@ void write_data_array(std::ostream& out, const std::string& attributes, const st
     std::string raw(sizeof bytes + bytes, '\0');
     std::memcpy(raw.data(), &bytes, sizeof bytes);
     if (bytes > 0) std::memcpy(raw.data() + sizeof bytes, values.data(), bytes);
-    out << "          " << detail::base64(raw) << '\n';
+    const std::string_view data = std::string_view(raw).substr(sizeof bytes);
+    out << "          " << (encoding == Encoding::zlib ? detail::zlib_base64(data) : detail::base64(raw)) << '\n';
   }
   out << "        </DataArray>\n";
 }
@@ -82,7 +85,8 @@ void write_vtu_impl(std::ostream& out, const d3::BasicTetMesh<P>& mesh, Encoding
   const std::vector<std::uint8_t> types(mesh.tets.size(), 10);
   out << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\""
-      << (encoding == Encoding::ascii ? "" : " header_type=\"UInt64\"") << ">\n"
+      << (encoding == Encoding::ascii ? "" : " header_type=\"UInt64\"")
+      << (encoding == Encoding::zlib ? " compressor=\"vtkZLibDataCompressor\"" : "") << ">\n"
       << "  <UnstructuredGrid>\n"
       << "    <Piece NumberOfPoints=\"" << mesh.vertices.size() << "\" NumberOfCells=\"" << mesh.tets.size() << "\">\n"
       << "      <PointData Scalars=\"kind\">\n";

@@ -15,14 +15,15 @@
 namespace bccmis::io {
 
 /// Int64 points, VTK_TETRA (10) cells, the point data array "kind" and the
-/// cell data array "level"; ASCII, or binary (base64 inline, a UInt64 byte
-/// count before each array's values; spec/mesh3d.md M20).
+/// cell data array "level"; ASCII, binary (base64 inline, a UInt64 byte
+/// count before each array's values) or zlib (binary, each array compressed
+/// in blocks: vtkZLibDataCompressor); spec/mesh3d.md M20.
 void write_vtu(std::ostream& out, const d3::TetMesh& mesh, Encoding encoding = Encoding::ascii);
 /// The same with Float64 points.
 void write_vtu(std::ostream& out, const d3::TetMeshF& mesh, Encoding encoding = Encoding::ascii);
 
 /// The tetrahedral mesh of a .vtu as write_vtu writes it (ASCII or base64
-/// binary, UInt32 or UInt64 byte counts, uncompressed): Points, Cells of
+/// binary, UInt32 or UInt64 headers, raw or zlib-compressed): Points, Cells of
 /// VTK_TETRA only, the point data "kind" and the cell data "level" when
 /// present (0 otherwise). Throws ParseError (file `name`, the line and
 /// column of the offending element) on anything else, and on a tetrahedron

@@ -1,14 +1,16 @@
 // The .vtu reader of tetrahedral meshes (vtu.h): the DataArrays found by
-// their section and name, ASCII or base64 binary.
+// their section and name, ASCII or base64 binary, raw or zlib-compressed.
 #include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <string>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 #include "bccmis/io/detail/base64.h"
+#include "bccmis/io/detail/zlib_blocks.h"
 #include "bccmis/io/parse_error.h"
 #include "bccmis/io/vtu.h"
 
@@ -76,13 +78,23 @@ class VtuText {
     if (format != "binary") fail(tag, "DataArray format '" + format + "': read ascii and binary (base64)");
     std::string bytes;
     if (!detail::from_base64(body, bytes)) fail(open_end + 1, "not base64");
-    const bool wide = attribute(text_.find("<VTKFile"), "header_type") == "UInt64";
-    const std::size_t header = wide ? 8 : 4;
-    if (bytes.size() < header) fail(open_end + 1, "no byte count");
+    const std::size_t vtk_file = text_.find("<VTKFile");
+    const std::size_t header = attribute(vtk_file, "header_type") == "UInt64" ? 8 : 4;
     std::uint64_t count = 0;
-    std::memcpy(&count, bytes.data(), header);
-    if (count > bytes.size() - header) fail(open_end + 1, "the byte count exceeds the data");
-    const char* p = bytes.data() + header;
+    const char* p = nullptr;
+    if (!attribute(vtk_file, "compressor").empty()) {
+      std::string why;
+      auto raw = detail::zlib_inflate_blocks(bytes, header, why);
+      if (!raw) fail(open_end + 1, why);
+      bytes = std::move(*raw);
+      count = bytes.size();
+      p = bytes.data();
+    } else {
+      if (bytes.size() < header) fail(open_end + 1, "no byte count");
+      std::memcpy(&count, bytes.data(), header);
+      if (count > bytes.size() - header) fail(open_end + 1, "the byte count exceeds the data");
+      p = bytes.data() + header;
+    }
     const auto read = [&]<class T>(T) {
       if (count % sizeof(T) != 0) fail(open_end + 1, "the byte count is not a multiple of the type's size");
       for (std::size_t i = 0; i < count / sizeof(T); ++i) {
@@ -114,7 +126,9 @@ d3::TetMeshF read_vtu(std::string_view text, const std::string& name, Orientatio
   if (text.find("<VTKFile") == std::string_view::npos ||
       text.find("type=\"UnstructuredGrid\"") == std::string_view::npos)
     vtu.fail(0, "not a VTK UnstructuredGrid (.vtu) file");
-  if (text.find("compressor=") != std::string_view::npos) vtu.fail(0, "a compressed .vtu: read uncompressed files");
+  if (const std::string c = vtu.attribute(text.find("<VTKFile"), "compressor");
+      !c.empty() && c != "vtkZLibDataCompressor")
+    vtu.fail(text.find("<VTKFile"), "compressor '" + c + "': read uncompressed files and vtkZLibDataCompressor");
   const std::vector<double> xyz = vtu.array("Points", "", true);
   const std::vector<double> connectivity = vtu.array("Cells", "connectivity", true);
   const std::vector<double> offsets = vtu.array("Cells", "offsets", true);

@@ -228,7 +228,7 @@ std::string format_stats(const d3::Stats& s, bool json) {
                        counts);
 }
 
-std::string render_svg(const Graph& g, const std::string& title) {
+std::string render_svg(const Graph& g, const std::string& title, std::string_view overlay) {
   const double S = static_cast<double>(level0_side(g.size));
   const double w = static_cast<double>(g.size.W) * S, h = static_cast<double>(g.size.H) * S;
   const double scale = 760.0 / std::max(w, h), margin = 20.0;
@@ -284,15 +284,10 @@ std::string render_svg(const Graph& g, const std::string& title) {
   out += "<g>\n";
   for (const Point& n : g.N) {
     const bool junction = g.nbr(n).size() == 3;
-    std::snprintf(buf, sizeof buf, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\" fill=\"#2a7a2a\"/>\n", X(n.x), Y(n.y),
-                  r_node);
-    out += buf;
+    out += io::circle(X(n.x), Y(n.y), r_node, "fill=\"#2a7a2a\"");
     if (junction) {
-      std::snprintf(
-          buf, sizeof buf,
-          "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\" fill=\"none\" stroke=\"#d02020\" stroke-width=\"%.2f\"/>\n",
-          X(n.x), Y(n.y), r_ring, r_ring / 3);
-      out += buf;
+      std::snprintf(buf, sizeof buf, "fill=\"none\" stroke=\"#d02020\" stroke-width=\"%.2f\"", r_ring / 3);
+      out += io::circle(X(n.x), Y(n.y), r_ring, buf);
     }
   }
   for (const Point& c : g.C) {
@@ -306,6 +301,7 @@ std::string render_svg(const Graph& g, const std::string& title) {
          " cells, " + std::to_string(g.N.size()) + " nodes.</text>\n";
   out += io::text_start(margin, height - 6, font) +
          "Solid: stored edges; dashed: hull edges of eq. (1); red rings: junctions.</text>\n";
+  out += overlay;
   out += io::svg_end();
   return out;
 }

@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -59,8 +60,10 @@ std::string format_stats(const d3::Stats& s, bool json);
 std::set<std::pair<d3::Point, d3::Point>> green_edges(const d3::Graph& g);
 
 /// An SVG picture: cells shaded by level, graph edges (solid), hull edges of
-/// eq. (1) (dashed), nodes (dots) and junctions (rings).
-std::string render_svg(const Graph& g, const std::string& title);
+/// eq. (1) (dashed), nodes (dots) and junctions (rings). `overlay`, SVG
+/// elements in the picture's coordinates (760 px for the longer side of the
+/// domain, a 20 px margin, y up), is drawn last, over everything.
+std::string render_svg(const Graph& g, const std::string& title, std::string_view overlay = {});
 
 /// An axis-aligned plane through a 3D lattice: coordinate `axis` (0 x, 1 y,
 /// 2 z) equal to `value`.

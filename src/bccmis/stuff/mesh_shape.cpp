@@ -23,14 +23,24 @@ std::string number(double x) { return JsonWriter::number(x); }
 
 }  // namespace
 
+namespace {
+
+/// S26/S27's hint for a part whose thinnest extent is `e` (`what` names
+/// it): the first level whose finest cell side is at most e/4, and at
+/// least one level finer than `fit`'s.
+std::string level_hint(double e, const std::string& what, const Fit& fit) {
+  int level = fit.size.L;
+  for (double h = fit.h; h > e / 4 && level < 64; h /= 2) ++level;
+  return "bad input for this level (the finest cell side " + number(fit.h) + " against the thinnest extent of " + what +
+         " " + number(e) + "); -L " + std::to_string(std::max(level, fit.size.L + 1)) + " would resolve it";
+}
+
+}  // namespace
+
 std::string level_hint(const Bounds& box, const Fit& fit) {
   double e = box.hi[0] - box.lo[0];
   for (std::size_t i = 1; i < 3; ++i) e = std::min(e, box.hi[i] - box.lo[i]);
-  int level = fit.size.L;
-  for (double h = fit.h; h > e / 4 && level < 64; h /= 2) ++level;
-  return "bad input for this level (the finest cell side " + number(fit.h) +
-         " against the thinnest extent of the shape's box " + number(e) + "); -L " + std::to_string(level) +
-         " would resolve it";
+  return level_hint(e, "the shape's box", fit);
 }
 
 std::unique_ptr<Shape> load_mesh_file(const std::string& path, bool strict, std::optional<io::SurfaceFormat> format) {
@@ -116,15 +126,14 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
   r.boundary = boundary_triangles(r.stuffed.mesh);
   // S27: what the mesh is against what the shape is.
   r.topology = topology(r.stuffed.mesh, r.boundary);
-  if (const auto want = shape.surface_components()) {
+  if (const auto want = world.surface_components()) {
     const std::size_t got = r.topology.boundary_components;
     const std::string counts = "the mesh's boundary has " + std::to_string(got) + " component" + (got == 1 ? "" : "s") +
-                               " where the shape's surface has " + std::to_string(*want);
-    if (got < *want)
-      throw ShapeError(world.describe() + ": a component is lost: " + counts +
-                       ": bad input for this level (a part thinner than about 2 finest cell sides, 2 x " +
-                       number(r.fit.h) + ", may vanish; each level further halves that)");
-    if (got > *want) r.warnings.push_back(counts);
+                               " where the shape's surface has " + std::to_string(want->count);
+    if (got < want->count)
+      throw ShapeError(world.describe() + ": a component is lost: " + counts + ": " +
+                       level_hint(want->thinnest, "the thinnest component's box", r.fit));
+    if (got > want->count) r.warnings.push_back(counts);
   }
   // A repaired soup's own surface may be non-manifold (overlapping parts
   // meet along curves): there its non-manifold edges are no change, so

@@ -72,7 +72,11 @@ class NormalisedView final : public Shape {
   }
   const SoupReport* soup_report() const override { return s_.soup_report(); }
   std::string describe() const override { return s_.describe(); }
-  std::optional<std::size_t> surface_components() const override { return s_.surface_components(); }
+  std::optional<SurfaceComponents> surface_components() const override {
+    auto c = s_.surface_components();
+    if (c) c->thinnest = down(c->thinnest);
+    return c;
+  }
 
  private:
   double down(double d) const { return std::ldexp(d, -n_.exponent); }
@@ -102,7 +106,11 @@ class Placed final : public Shape {
   }
   const SoupReport* soup_report() const override { return local_->soup_report(); }
   std::string describe() const override { return local_->describe(); }
-  std::optional<std::size_t> surface_components() const override { return local_->surface_components(); }
+  std::optional<SurfaceComponents> surface_components() const override {
+    auto c = local_->surface_components();
+    if (c) c->thinnest = up(c->thinnest);
+    return c;
+  }
   std::unique_ptr<Shape> normalised(const Normalisation& n) const override {
     return n == n_ ? view_normalised(*local_, Normalisation{}) : view_normalised(*this, n);
   }

@@ -67,7 +67,7 @@ class Sphere final : public Shape {
     return out;
   }
   std::string describe() const override { return fmt("sphere", {{"r", r_}}); }
-  std::optional<std::size_t> surface_components() const override { return 1; }
+  std::optional<SurfaceComponents> surface_components() const override { return SurfaceComponents{1, 2 * r_}; }
   std::unique_ptr<Shape> normalised(const Normalisation& n) const override {
     return std::make_unique<Sphere>(n.to_local(c_), std::ldexp(r_, -n.exponent));
   }
@@ -108,7 +108,8 @@ class Torus final : public Shape {
     return out;
   }
   std::string describe() const override { return fmt("torus", {{"R", R_}, {"r", r_}}); }
-  std::optional<std::size_t> surface_components() const override { return 1; }
+  // The box is 2(R + r) wide and 2r high.
+  std::optional<SurfaceComponents> surface_components() const override { return SurfaceComponents{1, 2 * r_}; }
   std::unique_ptr<Shape> normalised(const Normalisation& n) const override {
     return std::make_unique<Torus>(n.to_local(c_), std::ldexp(R_, -n.exponent), std::ldexp(r_, -n.exponent));
   }
@@ -155,7 +156,9 @@ class Spheres final : public Shape {
     return out;
   }
   std::string describe() const override { return fmt("spheres", {{"r", r_}, {"d", norm(sub(ca_, cb_))}}); }
-  std::optional<std::size_t> surface_components() const override { return norm(sub(ca_, cb_)) > 2 * r_ ? 2 : 1; }
+  std::optional<SurfaceComponents> surface_components() const override {
+    return SurfaceComponents{norm(sub(ca_, cb_)) > 2 * r_ ? 2u : 1u, 2 * r_};
+  }
   std::unique_ptr<Shape> normalised(const Normalisation& n) const override {
     return std::make_unique<Spheres>(n.to_local(ca_), n.to_local(cb_), std::ldexp(r_, -n.exponent));
   }
@@ -185,7 +188,7 @@ class Translated final : public Shape {
     return out;
   }
   std::string describe() const override { return s_->describe(); }
-  std::optional<std::size_t> surface_components() const override { return s_->surface_components(); }
+  std::optional<SurfaceComponents> surface_components() const override { return s_->surface_components(); }
   // S24: (x - d) - (t - d) is x - t.
   std::unique_ptr<Shape> normalised(const Normalisation& n) const override {
     return s_->normalised({sub(n.translation, d_), n.exponent});

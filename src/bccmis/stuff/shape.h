@@ -29,6 +29,15 @@ struct Bounds {
   Vec3 lo{}, hi{};
 };
 
+/// What S27 compares the mesh's boundary with: the number of connected
+/// components of a shape's surface, and the smallest over them of the
+/// thinnest extent of the component's bounding box (the size S27's hint
+/// names a level for).
+struct SurfaceComponents {
+  std::size_t count = 0;
+  double thinnest = 0;
+};
+
 class Shape {
  public:
   virtual ~Shape() = default;
@@ -64,9 +73,9 @@ class Shape {
   /// computation sees a number far outside [2^-60, 2^60]. The result may
   /// refer to this shape, which must outlive it.
   virtual std::unique_ptr<Shape> normalised(const Normalisation& n) const;
-  /// The number of connected components of the surface, when the shape
-  /// knows it (S27): the built-in shapes and clean triangle meshes.
-  virtual std::optional<std::size_t> surface_components() const { return std::nullopt; }
+  /// The connected components of the surface, when the shape knows them
+  /// (S27): the built-in shapes and clean triangle meshes.
+  virtual std::optional<SurfaceComponents> surface_components() const { return std::nullopt; }
   /// One line naming the shape for messages and --stats ("sphere r=1", "mesh elephant.off: 2775 triangles").
   virtual std::string describe() const = 0;
 };

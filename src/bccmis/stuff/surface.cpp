@@ -100,6 +100,23 @@ Components edge_components(const std::vector<Tri>& T) {
   return c;
 }
 
+/// S27's view of a soup's surface: its edge-connected components and the
+/// smallest thinnest extent of their bounding boxes.
+SurfaceComponents components_of(const Soup& s) {
+  const Components c = edge_components(s.triangles);
+  std::vector<Bounds> box(c.count, Bounds{{HUGE_VAL, HUGE_VAL, HUGE_VAL}, {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}});
+  for (std::size_t t = 0; t < s.triangles.size(); ++t)
+    for (const std::uint32_t v : s.triangles[t])
+      for (std::size_t k = 0; k < 3; ++k) {
+        box[c.of[t]].lo[k] = std::min(box[c.of[t]].lo[k], s.vertices[v][k]);
+        box[c.of[t]].hi[k] = std::max(box[c.of[t]].hi[k], s.vertices[v][k]);
+      }
+  SurfaceComponents out{c.count, HUGE_VAL};
+  for (const Bounds& b : box)
+    for (std::size_t k = 0; k < 3; ++k) out.thinnest = std::min(out.thinnest, b.hi[k] - b.lo[k]);
+  return out;
+}
+
 // ---------------------------------------------------------------------------
 // The checks.
 
@@ -262,8 +279,7 @@ std::vector<Vec3> sample_triangles(const std::vector<std::array<Point, 3>>& tria
 
 class MeshShape final : public Shape {
  public:
-  MeshShape(const Soup& s, const std::string& name)
-      : name_(basename_of(name)), surface_components_(edge_components(s.triangles).count) {
+  MeshShape(const Soup& s, const std::string& name) : name_(basename_of(name)), surface_components_(components_of(s)) {
     std::vector<Mesh::Vertex_index> vs;
     vs.reserve(s.vertices.size());
     for (const auto& p : s.vertices) vs.push_back(mesh_.add_vertex(Point(p[0], p[1], p[2])));
@@ -368,7 +384,7 @@ class MeshShape final : public Shape {
   std::string describe() const override {
     return "mesh " + name_ + ": " + std::to_string(triangles_.size()) + " triangles";
   }
-  std::optional<std::size_t> surface_components() const override { return surface_components_; }
+  std::optional<SurfaceComponents> surface_components() const override { return surface_components_; }
 
   const SoupReport* soup_report() const override { return report_ ? &*report_ : nullptr; }
   /// The default path's report of a clean file (S21): its notes filled here.
@@ -394,7 +410,7 @@ class MeshShape final : public Shape {
  private:
   std::optional<SoupReport> report_;
   std::string name_;
-  std::size_t surface_components_ = 0;
+  SurfaceComponents surface_components_;
   Mesh mesh_;
   Tree tree_;
   std::optional<Side> side_;

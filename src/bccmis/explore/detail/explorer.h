@@ -33,6 +33,7 @@
 
 #include "bccmis/explore/explore.h"
 #include "bccmis/format.h"
+#include "bccmis/json_writer.h"
 #include "bccmis/lattice.h"
 #include "bccmis/trace.h"
 
@@ -613,21 +614,26 @@ template <class G>
 std::string json_of(const BasicExploreResult<size_of_t<G>>& r) {
   char secs[32];
   std::snprintf(secs, sizeof secs, "%.3f", r.seconds);
-  std::string out = "{";
-  for (const auto& [name, value] : ExploreTraits<G>::size_fields(r.size))
-    out += std::string("\"") + name + "\": " + std::to_string(value) + ", ";
-  out += "\"states\": " + std::to_string(r.states) + ", \"refine_edges\": " + std::to_string(r.refine_edges) +
-         ", \"coarsen_edges\": " + std::to_string(r.coarsen_edges) + ", \"ops_tried\": " + std::to_string(r.ops_tried) +
-         ", \"refused\": " + std::to_string(r.refused) + ", \"failures\": " + std::to_string(r.failures) +
-         ", \"max_vertices\": " + std::to_string(r.max_vertices) +
-         ", \"complete\": " + (r.complete ? "true" : "false") + ", \"ok\": " + (r.ok() ? "true" : "false") +
-         ", \"seconds\": " + secs;
+  JsonWriter out;
+  out.begin_object();
+  for (const auto& [name, value] : ExploreTraits<G>::size_fields(r.size)) out.member(name, value);
+  out.member("states", r.states)
+      .member("refine_edges", r.refine_edges)
+      .member("coarsen_edges", r.coarsen_edges)
+      .member("ops_tried", r.ops_tried)
+      .member("refused", r.refused)
+      .member("failures", r.failures)
+      .member("max_vertices", r.max_vertices)
+      .member("complete", r.complete)
+      .member("ok", r.ok())
+      .key("seconds")
+      .json_value(secs)
+      .key("failure");
   if (r.first_failure)
-    out += ", \"failure\": {\"message\": " + json_string(r.first_failure->message) +
-           ", \"trace\": " + json_string(r.first_failure->trace) + "}";
+    out.begin_object().member("message", r.first_failure->message).member("trace", r.first_failure->trace).end_object();
   else
-    out += ", \"failure\": null";
-  return out + "}";
+    out.null();
+  return out.end_object().str();
 }
 
 }  // namespace bccmis::explore_detail

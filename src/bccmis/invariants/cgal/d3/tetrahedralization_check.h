@@ -33,7 +33,7 @@ std::optional<Violation> find_tetrahedralization_violation(const Graph& g, std::
 /// Loads `tets` into a CGAL Triangulation_3 with the loader of cgal-invalid
 /// (exact kernel, Epeck) and calls held(finite cells) while the triangulation
 /// is alive and every temporary of the load is freed, so that a caller can
-/// measure what the triangulation holds (bench_memory3). Returns the finite
+/// measure what the triangulation holds (d3_bench_memory). Returns the finite
 /// cell count, or nothing when the loader refuses the tets.
 std::optional<std::size_t> hold_triangulation(std::span<const Tet> tets, const std::function<void(std::size_t)>& held);
 

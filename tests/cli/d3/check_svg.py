@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Checks a 3D picture of `bccmis render` (spec/cli.md, render).
 
-  check_svg3.py BCCMIS COUNTS RENDER_ARGS...
+  d3/check_svg.py BCCMIS COUNTS RENDER_ARGS...
 
 runs `BCCMIS render RENDER_ARGS... -o -`, parses its standard output as XML
 (xml.etree: the SVG must be well-formed, with an <svg> root in the SVG

@@ -13,7 +13,7 @@
 // the coarsens, and the coarsens must end at the initial lattice (exit 1
 // otherwise).
 //
-//   bench_fast3 W H D L [reference|fast|both] [--random] [--verify]
+//   d3_bench_fast W H D L [reference|fast|both] [--random] [--verify]
 //
 // Numbers and the commands that produced them: bench/RESULTS.md, "3D refine"
 // and "3D coarsen".
@@ -56,7 +56,7 @@ double timed_all(const char* name, const char* what, const std::vector<d3::Point
   const double start = thread_ns();
   for (const d3::Point& p : points)
     if (!op(p)) {
-      std::fprintf(stderr, "bench_fast3: %s refused %s %s\n", name, what, d3::to_string(p).c_str());
+      std::fprintf(stderr, "d3_bench_fast: %s refused %s %s\n", name, what, d3::to_string(p).c_str());
       std::exit(1);
     }
   return thread_ns() - start;
@@ -103,7 +103,7 @@ Totals sweep(const char* name, L& g, bool random, bool verify, const State& stat
 
 int main(int argc, char** argv) {
   if (argc < 5) {
-    std::fprintf(stderr, "usage: bench_fast3 W H D L [reference|fast|both] [--random] [--verify]\n");
+    std::fprintf(stderr, "usage: d3_bench_fast W H D L [reference|fast|both] [--random] [--verify]\n");
     return 2;
   }
   const d3::LatticeSize size{std::atoll(argv[1]), std::atoll(argv[2]), std::atoll(argv[3]), std::atoi(argv[4])};
@@ -133,11 +133,11 @@ int main(int argc, char** argv) {
     const std::string initial = d3::canonical_state(d3::Graph(size));
     const Totals& t = which == "reference" ? reference : fast;
     if (which == "both" && reference.refined_state != fast.refined_state) {
-      std::fprintf(stderr, "bench_fast3: the canonical states after the refines differ\n");
+      std::fprintf(stderr, "d3_bench_fast: the canonical states after the refines differ\n");
       return 1;
     }
     if (t.coarsened_state != initial || (which == "both" && reference.coarsened_state != initial)) {
-      std::fprintf(stderr, "bench_fast3: the coarsens did not end at the initial lattice\n");
+      std::fprintf(stderr, "d3_bench_fast: the coarsens did not end at the initial lattice\n");
       return 1;
     }
     std::printf("verify: same canonical states after the refines; back to the initial lattice after the coarsens\n");

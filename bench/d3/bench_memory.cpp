@@ -21,7 +21,7 @@
 // A plain program, one run. Exit 1 when the triangulation does not load with
 // one cell per tet, or a count is empty (checked on every state).
 //
-//   bench_memory3 [--smoke]
+//   d3_bench_memory [--smoke]
 //
 // Numbers and the command: bench/RESULTS.md, "3D memory".
 #include <malloc.h>
@@ -36,7 +36,7 @@
 #include "bccmis/d3/mesh.h"
 #include "bccmis/fast/d3/lattice.h"
 #include "bccmis/invariants/cgal/d3/tetrahedralization_check.h"
-#include "d3/local_feature.h"
+#include "local_feature.h"
 #include "testing/counting_allocator.h"
 
 namespace {
