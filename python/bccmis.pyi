@@ -2,7 +2,9 @@
 
 Type stubs of the compiled module (spec/python.md).
 """
-from typing import Any, Callable, Literal, Optional, Sequence, Tuple, Union, type_check_only
+from typing import Any, Callable, Literal, Optional, Sequence, Tuple, TypedDict, Union, type_check_only
+
+from typing_extensions import Unpack
 
 import numpy as np
 import numpy.typing as npt
@@ -75,36 +77,30 @@ class TetMesh:
         """A meshio.Mesh: tetra cells, point data kind, cell data level. mesh.to_meshio().write('out.vtk')"""
     def __len__(self) -> int: ...
 
+@type_check_only
+class _RunOptions(TypedDict, total=False):
+    """The keywords of stuff and stuff_file: the CLI's options of the same names (spec/python.md P1)."""
+    max_level: int  # 4
+    min_level: int  # 0
+    cells: int  # 4
+    size: Optional[float]
+    impl: Impl  # "fast"
+    check: bool
+    strict: bool
+    stats: bool
+    progress: Optional[Callable[[str], None]]
+
 def stuff(
     shape: Union[npt.ArrayLike, Shape, Callable[[npt.NDArray[np.float64]], npt.ArrayLike]],
     faces: Optional[npt.ArrayLike] = None,
     *,
-    max_level: int = 4,
-    min_level: int = 0,
-    cells: int = 4,
-    size: Optional[float] = None,
-    impl: Impl = "fast",
-    check: bool = False,
-    strict: bool = False,
-    stats: bool = False,
     bounds: Optional[BoundsLike] = None,
-    progress: Optional[Callable[[str], None]] = None,
+    **options: Unpack[_RunOptions],
 ) -> TetMesh:
     """A tetrahedral mesh of (vertices, faces), a Shape or a callable. mesh = bccmis.stuff(bccmis.shapes.torus(), max_level=3)"""
 
 def stuff_file(
-    path: str,
-    *,
-    format: Optional[Literal["off", "obj", "ply", "stl"]] = None,
-    max_level: int = 4,
-    min_level: int = 0,
-    cells: int = 4,
-    size: Optional[float] = None,
-    impl: Impl = "fast",
-    check: bool = False,
-    strict: bool = False,
-    stats: bool = False,
-    progress: Optional[Callable[[str], None]] = None,
+    path: str, *, format: Optional[Literal["off", "obj", "ply", "stl"]] = None, **options: Unpack[_RunOptions]
 ) -> TetMesh:
     """A tetrahedral mesh of a triangle mesh file. mesh = bccmis.stuff_file('bunny.off', max_level=5)"""
 
