@@ -71,8 +71,8 @@ class TetMesh:
         """The shape's description. mesh.shape"""
     def dihedral_angles(self) -> npt.NDArray[np.float64]:
         """float64 (m, 6), degrees. mesh.dihedral_angles().min()"""
-    def write(self, path: str, binary: bool = False) -> None:
-        """Writes .vtu, .msh, .mesh (tetrahedra), .off or .obj (boundary). mesh.write('out.vtu')"""
+    def write(self, path: str, binary: bool = False, compress: bool = False) -> None:
+        """Writes .vtu, .msh, .mesh (tetrahedra), .off or .obj (boundary); compress: a zlib-compressed .vtu. mesh.write('out.vtu', compress=True)"""
     def to_meshio(self) -> Any:
         """A meshio.Mesh: tetra cells, point data kind, cell data level. mesh.to_meshio().write('out.vtk')"""
     def __len__(self) -> int: ...

@@ -201,10 +201,12 @@ bool ends_with(const std::string& s, std::string_view suffix) {
 
 /// P4: `path` in the format its extension names, through a temporary file
 /// beside it renamed over it when complete.
-void write_mesh(const TetMesh& t, const std::string& path, bool binary) {
+void write_mesh(const TetMesh& t, const std::string& path, bool binary, bool compress) {
   const auto& mesh = t.meshed.stuffed.mesh;
   const auto& boundary = t.meshed.boundary;
-  const auto encoding = binary ? bccmis::io::Encoding::binary : bccmis::io::Encoding::ascii;
+  const auto encoding = compress ? bccmis::io::Encoding::zlib
+                        : binary ? bccmis::io::Encoding::binary
+                                 : bccmis::io::Encoding::ascii;
   std::function<void(std::ostream&)> writer;
   if (ends_with(path, ".vtu")) writer = [&](std::ostream& out) { bccmis::io::write_vtu(out, mesh, encoding); };
   if (ends_with(path, ".msh")) writer = [&](std::ostream& out) { bccmis::io::write_msh(out, mesh, encoding); };
@@ -709,8 +711,9 @@ PYBIND11_MODULE(bccmis, m) {
       .def_readonly("stats", &TetMesh::stats, "With stats=True: bccmis stuff --json's object. mesh.stats['tetrahedra']")
       .def_readonly("shape", &TetMesh::shape, "The shape's description. mesh.shape")
       .def("dihedral_angles", &dihedral_angles, "float64 (m, 6), degrees. mesh.dihedral_angles().min()")
-      .def("write", &write_mesh, "path"_a, "binary"_a = false,
-           "Writes .vtu, .msh, .mesh (tetrahedra), .off or .obj (boundary). mesh.write('out.vtu')")
+      .def("write", &write_mesh, "path"_a, "binary"_a = false, "compress"_a = false,
+           "Writes .vtu, .msh, .mesh (tetrahedra), .off or .obj (boundary); compress: a zlib-compressed .vtu. "
+           "mesh.write('out.vtu', compress=True)")
       .def(
           "to_meshio",
           [](const py::object& self) {

@@ -80,6 +80,10 @@ def test_meshio_round_trip(tmp_path):
         written = meshio.read(tmp_path / f"b.{ext}")
         assert np.array_equal(written.points, mesh.points), ext
         assert np.array_equal(written.cells_dict["tetra"], mesh.tets), ext
+    mesh.write(str(tmp_path / "z.vtu"), compress=True)
+    assert 'compressor="vtkZLibDataCompressor"' in (tmp_path / "z.vtu").read_text()
+    written = meshio.read(tmp_path / "z.vtu")
+    assert np.array_equal(written.points, mesh.points) and np.array_equal(written.cells_dict["tetra"], mesh.tets)
     mesh.write(str(tmp_path / "b.off"))
     surface = meshio.read(tmp_path / "b.off")
     assert len(surface.cells_dict["triangle"]) == len(mesh.boundary_faces)
