@@ -16,7 +16,7 @@
 //   stray-level        only centers have a level
 #include <optional>
 
-#include "bccmis/invariants/d3/detail/lattice.h"
+#include "bccmis/invariants/d3/detail/lattice_geometry.h"
 #include "bccmis/invariants/detail/combinatorial.h"
 
 namespace bccmis::d3::inv {
