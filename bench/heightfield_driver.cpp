@@ -19,7 +19,7 @@
 
 #include "bccmis/apps/heightfield.h"
 #include "bccmis/apps/image.h"
-#include "bccmis/apps/mesh.h"
+#include "bccmis/apps/triangulate.h"
 #include "bccmis/fast/lattice.h"
 #include "bccmis/io/obj.h"
 

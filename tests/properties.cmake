@@ -17,14 +17,6 @@ bccmis_add_gtest(model_test SOURCES model_test.cpp
   LIBS rapidcheck_gtest bccmis::testing bccmis::core bccmis::invariants
   LABELS property ENVIRONMENT "RC_PARAMS=seed=${BCCMIS_RC_SEED} max_success=300")
 
-# Exhaustive exploration: lattices of up to 512 states run with the properties;
-# 3 1 2, 2 2 2 and 1 1 3 (4250, 66641, 66642 states) under the `exhaustive`
-# label, which the test presets exclude. Run them in the release build:
-#   ctest --test-dir build/release -L exhaustive      (about 70 s CPU each for the two large ones)
-bccmis_add_gtest(exhaustive_test SOURCES explore/exhaustive_test.cpp LIBS bccmis::explore bccmis::core bccmis::invariants
-  NO_PRETTY_VALUES FILTER "-*ExhaustiveLarge.*" LABELS property)
-bccmis_discover_gtests(exhaustive_test NO_PRETTY_VALUES FILTER "*ExhaustiveLarge.*" LABELS exhaustive TIMEOUT 1800)
-
 # Planted-bug mutants: every property suite must be able to fail.
 bccmis_add_gtest(mutants_property_test SOURCES mutants/mutant_ops.cpp mutants/mutants_test.cpp
   LIBS rapidcheck_gtest bccmis::testing bccmis::explore bccmis::core bccmis::invariants

@@ -1,7 +1,9 @@
-// bccmis: balanced refinement, the core's third verb beside refine and
-// coarsen (spec/apps.md "Balanced refinement", spec/lattice3d.md §8), written
-// once over every lattice of every dimension: the reference Graph and
-// fast::Lattice in 2D, d3::Graph and d3::fast::Lattice in 3D.
+// bccmis (this folder holds the reference core: points and sizes, the graph,
+// refine, coarsen and balance, the formats): balanced refinement, the core's
+// third verb beside refine and coarsen (spec/apps.md "Balanced refinement",
+// spec/lattice3d.md §8), written once over every lattice of every dimension:
+// the reference Graph and fast::Lattice in 2D, d3::Graph and
+// d3::fast::Lattice in 3D.
 //
 // The paper (§2.1 ¶1) refuses to refine a cell that has a coarser edge-
 // neighbor and leaves the cascade to the user; refine_balanced is that

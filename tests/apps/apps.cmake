@@ -2,7 +2,7 @@
 # The 66k-state corner-balance counts run under `exhaustive` (release build,
 # excluded from the default test presets), like tests/explore/exhaustive_test.cpp.
 bccmis_add_gtest(apps_tests
-  SOURCES balance_test.cpp image_test.cpp heightfield_test.cpp animate_test.cpp fast_test.cpp
+  SOURCES balance_test.cpp image_test.cpp heightfield_test.cpp moving_disk_test.cpp fast_test.cpp
   LIBS bccmis::apps bccmis::fast bccmis::core bccmis::invariants bccmis::oracle
   DEFINITIONS BCCMIS_APPS_SAMPLES="${PROJECT_SOURCE_DIR}/apps/samples"
   FILTER "-*Exhaustive.*" TEST_LIST apps_tests_UNIT LABELS unit apps)

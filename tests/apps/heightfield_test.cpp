@@ -17,7 +17,7 @@
 #include <unistd.h>
 
 #include "bccmis/apps/heightfield.h"
-#include "bccmis/apps/mesh.h"
+#include "bccmis/apps/triangulate.h"
 #include "bccmis/format.h"
 #include "bccmis/invariants/invariants.h"
 #include "bccmis/io/obj.h"

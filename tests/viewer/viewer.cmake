@@ -14,21 +14,25 @@ if(Python3_FOUND)
                      ${PROJECT_SOURCE_DIR}/spec/examples/${stem}.trace ${_viewer_work}/model_${stem}
              LABELS viewer TIMEOUT 300)
   endforeach()
+  # check_model.py on a trace that make_trace.py writes first
+  # (tests/viewer/with_trace.cmake): make_trace.py's arguments, the trace's
+  # file name and the model's folder in viewer_work/, then check_model.py's
+  # further arguments.
+  function(bccmis_viewer_random_trace_test name make_trace_args trace model)
+    set(check "${Python3_EXECUTABLE};${_viewer}/check_model.py;$<TARGET_FILE:bccmis>;${_viewer_work}/${trace}")
+    list(APPEND check ${_viewer_work}/${model} ${ARGN})
+    bccmis_add_test(${name}
+             COMMAND ${CMAKE_COMMAND} -DPYTHON=${Python3_EXECUTABLE} -DGEN=${_viewer}/make_trace.py
+                     "-DGEN_ARGS=${make_trace_args}" -DTRACE=${_viewer_work}/${trace} "-DCMD=${check}"
+                     -P ${_viewer}/with_trace.cmake
+             LABELS viewer TIMEOUT 300)
+  endfunction()
   # A random trace of 300 operations (many refusals, some checks).
-  bccmis_add_test(viewer.model.random
-           COMMAND ${CMAKE_COMMAND} -DPYTHON=${Python3_EXECUTABLE} -DGEN=${_viewer}/make_trace.py
-                   "-DGEN_ARGS=6;6;3;300;2" -DTRACE=${_viewer_work}/random300.trace
-                   "-DCMD=${Python3_EXECUTABLE};${_viewer}/check_model.py;$<TARGET_FILE:bccmis>;${_viewer_work}/random300.trace;${_viewer_work}/model_random"
-                   -P ${_viewer}/with_trace.cmake
-           LABELS viewer TIMEOUT 300)
+  bccmis_viewer_random_trace_test(viewer.model.random "6;6;3;300;2" random300.trace model_random)
   # Size: 1,000 operations on a 40 x 40 lattice of maximum level 3 (1,600 cells
   # at first, about 2,600 at the end) must stay below 2 MB.
-  bccmis_add_test(viewer.size_budget
-           COMMAND ${CMAKE_COMMAND} -DPYTHON=${Python3_EXECUTABLE} -DGEN=${_viewer}/make_trace.py
-                   "-DGEN_ARGS=40;40;3;1000;1" -DTRACE=${_viewer_work}/big.trace
-                   "-DCMD=${Python3_EXECUTABLE};${_viewer}/check_model.py;$<TARGET_FILE:bccmis>;${_viewer_work}/big.trace;${_viewer_work}/size_budget;--check=end;--budget;2000000"
-                   -P ${_viewer}/with_trace.cmake
-           LABELS viewer TIMEOUT 300)
+  bccmis_viewer_random_trace_test(viewer.size_budget "40;40;3;1000;1" big.trace size_budget
+                                  --check=end --budget 2000000)
 
   # In a real browser; exit 77 (skipped) without Chromium.
   bccmis_add_test(viewer.browser

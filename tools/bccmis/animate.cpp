@@ -8,8 +8,8 @@
 #include <iostream>
 
 #include "app_support.h"
-#include "bccmis/apps/animate.h"
 #include "bccmis/apps/apps.h"
+#include "bccmis/apps/moving_disk.h"
 #include "bccmis/fast/lattice.h"
 #include "bccmis/io/svg.h"
 #include "bccmis/oracle/oracle.h"

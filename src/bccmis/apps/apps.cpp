@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "bccmis/apps/animate.h"
+#include "bccmis/apps/moving_disk.h"
 #include "bccmis/fast/lattice.h"
 #include "bccmis/lattice.h"
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <iterator>
 
-#include "bccmis/invariants/detail/lattice.h"
+#include "bccmis/invariants/detail/lattice_geometry.h"
 #include "bccmis/invariants/detail/layers.h"
 
 namespace bccmis {

@@ -17,7 +17,7 @@
 #include <optional>
 
 #include "bccmis/invariants/detail/combinatorial.h"
-#include "bccmis/invariants/detail/lattice.h"
+#include "bccmis/invariants/detail/lattice_geometry.h"
 #include "bccmis/invariants/detail/layers.h"
 
 namespace bccmis::inv {

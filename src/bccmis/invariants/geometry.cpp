@@ -21,7 +21,7 @@
 #include <set>
 #include <vector>
 
-#include "bccmis/invariants/detail/lattice.h"
+#include "bccmis/invariants/detail/lattice_geometry.h"
 #include "bccmis/invariants/detail/layers.h"
 
 namespace bccmis::inv {

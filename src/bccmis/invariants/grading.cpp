@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-#include "bccmis/invariants/detail/lattice.h"
+#include "bccmis/invariants/detail/lattice_geometry.h"
 #include "bccmis/invariants/detail/layers.h"
 
 namespace bccmis::inv {

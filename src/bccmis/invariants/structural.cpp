@@ -21,7 +21,7 @@
 //                      have it as a corner                                 §2.1 ¶2
 #include <optional>
 
-#include "bccmis/invariants/detail/lattice.h"
+#include "bccmis/invariants/detail/lattice_geometry.h"
 #include "bccmis/invariants/detail/layers.h"
 
 namespace bccmis::inv {

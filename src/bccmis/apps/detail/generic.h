@@ -24,9 +24,9 @@
 #include <utility>
 #include <vector>
 
-#include "bccmis/apps/animate.h"
 #include "bccmis/apps/balance.h"
 #include "bccmis/apps/heightfield.h"
+#include "bccmis/apps/moving_disk.h"
 #include "bccmis/balance.h"
 #include "bccmis/fast/lattice.h"
 #include "bccmis/geometry.h"

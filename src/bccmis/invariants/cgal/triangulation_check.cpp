@@ -1,3 +1,4 @@
+// The checker's CGAL layer (this folder: layer 5 in 2D, layer 6 in d3/).
 // The only translation unit that includes CGAL (compile cost ~10-15 s).
 #include "bccmis/invariants/cgal/triangulation_check.h"
 

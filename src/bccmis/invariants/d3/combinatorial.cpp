@@ -1,6 +1,8 @@
-// 3D layer 1, combinatorial (spec/lattice3d.md §1): N and C and the neighbour
-// sets form a symmetric bipartite graph over existing vertices, and exactly
-// the centers carry a level.
+// The 3D checker (this folder holds the 3D counterpart of
+// src/bccmis/invariants/: layers 1-4 one per file, the mesh layer and the
+// stuffed-mesh layer). 3D layer 1, combinatorial (spec/lattice3d.md §1): N
+// and C and the neighbour sets form a symmetric bipartite graph over existing
+// vertices, and exactly the centers carry a level.
 //
 // The lattice size is checked here; the rest, shared with the 2D checker, is
 // ../detail/combinatorial.h. The first failing check in this order is reported:
@@ -16,7 +18,7 @@
 //   stray-level        only centers have a level
 #include <optional>
 
-#include "bccmis/invariants/d3/detail/lattice.h"
+#include "bccmis/invariants/d3/detail/lattice_geometry.h"
 #include "bccmis/invariants/detail/combinatorial.h"
 
 namespace bccmis::d3::inv {

@@ -20,7 +20,7 @@
 #include <set>
 #include <vector>
 
-#include "bccmis/invariants/d3/detail/lattice.h"
+#include "bccmis/invariants/d3/detail/lattice_geometry.h"
 
 namespace bccmis::d3::inv {
 

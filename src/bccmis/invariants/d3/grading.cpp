@@ -13,7 +13,7 @@
 #include <map>
 #include <optional>
 
-#include "bccmis/invariants/d3/detail/lattice.h"
+#include "bccmis/invariants/d3/detail/lattice_geometry.h"
 
 namespace bccmis::d3::inv {
 

@@ -4,7 +4,7 @@
 
 #include <stdexcept>
 
-#include "bccmis/invariants/d3/detail/lattice.h"
+#include "bccmis/invariants/d3/detail/lattice_geometry.h"
 
 namespace bccmis::d3 {
 

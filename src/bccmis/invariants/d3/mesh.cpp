@@ -26,7 +26,7 @@
 #include <utility>
 #include <vector>
 
-#include "bccmis/invariants/d3/detail/lattice.h"
+#include "bccmis/invariants/d3/detail/lattice_geometry.h"
 
 namespace bccmis::d3 {
 

@@ -18,7 +18,7 @@
 #include <optional>
 #include <vector>
 
-#include "bccmis/invariants/d3/detail/lattice.h"
+#include "bccmis/invariants/d3/detail/lattice_geometry.h"
 
 namespace bccmis::d3::inv {
 

@@ -10,7 +10,7 @@
 
 #include "bccmis/d3/format.h"
 #include "bccmis/oracle/oracle.h"
-#include "util.h"
+#include "d3/util.h"
 
 namespace bccmis::d3 {
 namespace {

@@ -1,4 +1,4 @@
-#include "bccmis/apps/mesh.h"
+#include "bccmis/apps/triangulate.h"
 
 #include <algorithm>
 #include <stdexcept>

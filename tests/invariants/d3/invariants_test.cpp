@@ -20,8 +20,8 @@
 #include "bccmis/d3/mesh.h"
 #include "bccmis/d3/ops.h"
 #include "bccmis/invariants/d3/invariants.h"
-#include "check.h"
-#include "util.h"  // PrintTo(Point)
+#include "d3/check.h"
+#include "d3/util.h"  // PrintTo(Point)
 
 namespace bccmis::d3 {
 namespace {

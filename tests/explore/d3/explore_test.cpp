@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "bccmis/explore/d3/explore.h"
-#include "leaf_model.h"
+#include "d3/leaf_model.h"
 
 namespace bccmis::d3 {
 namespace {

@@ -1,4 +1,4 @@
-#include "bccmis/apps/animate.h"
+#include "bccmis/apps/moving_disk.h"
 
 #include <algorithm>
 #include <charconv>

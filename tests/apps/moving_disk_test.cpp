@@ -1,4 +1,4 @@
-// Moving-feature adaptivity (src/bccmis/apps/animate.h, apps.h): the checker
+// Moving-feature adaptivity (src/bccmis/apps/moving_disk.h, apps.h): the checker
 // after every frame, history independence, the lattice far from the feature
 // back at level 0, the lift back to the initial lattice, both implementations.
 // The CLI's outputs (`bccmis animate`) are tested in tests/apps/apps.cmake.
@@ -13,8 +13,8 @@
 
 #include <unistd.h>
 
-#include "bccmis/apps/animate.h"
 #include "bccmis/apps/apps.h"
+#include "bccmis/apps/moving_disk.h"
 #include "bccmis/fast/lattice.h"
 #include "bccmis/format.h"
 #include "bccmis/invariants/invariants.h"

@@ -17,7 +17,7 @@
 #include "bccmis/d3/ops.h"
 #include "bccmis/invariants/cgal/d3/tetrahedralization_check.h"
 #include "bccmis/invariants/d3/invariants.h"
-#include "util.h"  // PrintTo(Point)
+#include "d3/util.h"  // PrintTo(Point)
 
 namespace bccmis::d3 {
 namespace {
