@@ -137,6 +137,7 @@ struct StuffOptions {
   std::string impl = "fast";  ///< fast (d3::fast::Lattice) or reference (d3::Graph)
   bool stats = false;
   bool json = false;
+  bool hausdorff = false;  ///< --stats also reports S13's sampled Hausdorff distance
   bool check = false;
   bool strict = false;  ///< refuse a triangle mesh at its first flaw (spec/stuffing.md S21)
   bool binary = false;  ///< .vtu (also the --animate frames) and .msh with binary numbers (spec/cli.md)
