@@ -82,8 +82,8 @@ class EdgeTable {
 /// through the vocabulary: is_center, level_of). The lattice's vertices are
 /// numbered in position order and every per-vertex datum is an array.
 template <class G>
-class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey> {
-  using Stencils = detail::Stencils<Stuffer<G>, std::uint32_t, VKey>;
+class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t> {
+  using Stencils = detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>;
 
  public:
   Stuffer(const Shape& shape, const Fit& fit, const G& g, const StuffOptions& options)
@@ -146,6 +146,13 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey> {
   d3::Point point_of(VKey k) const { return points_[first(k)]; }
   double value(std::uint32_t i) const { return value_[i]; }
   Vec3 pos(VKey k) const { return is_cut(k) ? cuts_[cut_index_.find(k)].pos : pos_[first(k)]; }
+  // An output vertex as the stencils keep it: lattice vertex i as i, cut
+  // point c as points_.size() + c (16 bytes an output tetrahedron, renumbered
+  // in place by finish()).
+  std::uint32_t store(VKey k) const {
+    return is_cut(k) ? static_cast<std::uint32_t>(points_.size()) + cut_index_.find(k) : first(k);
+  }
+  Vec3 stored_pos(std::uint32_t x) const { return x < points_.size() ? pos_[x] : cuts_[x - points_.size()].pos; }
 
   // The lattice vertices of the mesh in position order, the tetrahedra on
   // them: ids in order of first use through a hash table (the one position
@@ -289,13 +296,15 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey> {
   Stuffed finish() {
     // S8: the output vertices in key order: the lattice vertices used (keys
     // (i, i), in order of i) merged with the cut points used (in key order).
-    std::vector<std::uint8_t> used_vertex(points_.size(), 0), used_cut(cuts_.size(), 0);
+    ids_ = {};  // the lattice's tetrahedra are done with
+    const std::size_t n = points_.size();
+    std::vector<std::uint8_t> used_vertex(n, 0), used_cut(cuts_.size(), 0);
     for (const auto& t : this->tets_out_)
-      for (const VKey k : t) {
-        if (is_cut(k))
-          used_cut[cut_index_.find(k)] = 1;
+      for (const std::uint32_t x : t) {
+        if (x >= n)
+          used_cut[x - n] = 1;
         else
-          used_vertex[first(k)] = 1;
+          used_vertex[x] = 1;
       }
     std::vector<VKey> cut_keys;
     for (std::size_t c = 0; c < cuts_.size(); ++c)
@@ -324,9 +333,9 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey> {
       add(k);
     }
     for (; next_cut < cut_keys.size(); ++next_cut) add(cut_keys[next_cut]);
-    const auto index = [&](VKey k) { return is_cut(k) ? cut_index[cut_index_.find(k)] : vertex_index[first(k)]; };
-    m.tets.reserve(this->tets_out_.size());
-    for (const auto& t : this->tets_out_) m.tets.push_back({index(t[0]), index(t[1]), index(t[2]), index(t[3])});
+    for (auto& t : this->tets_out_)
+      for (std::uint32_t& x : t) x = x >= n ? cut_index[x - n] : vertex_index[x];
+    m.tets = std::move(this->tets_out_);
     m.level = std::move(this->levels_out_);
     return std::move(out_);
   }
