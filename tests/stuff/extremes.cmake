@@ -35,8 +35,16 @@ bccmis_cli_test(stuff_animate_far 2 ARGS stuff --shape sphere -L 3 --animate 3 -
                 STDERR_REGEX "sphere r=1: frame 0: the mesh is empty: bad input for this level")
 bccmis_cli_test(stuff_animate_notice 0 ARGS stuff --shape sphere -L 2 --animate 1 --stats
                 STDERR_REGEX "--animate fits the lattice to the swept box: finest side 0\\.833333333 against 0\\.333333333")
-bccmis_cli_test(stuff_hausdorff_sampled 0 ARGS stuff --shape sphere -L 2 --stats -q
-                STDOUT_REGEX "hausdorff_boundary_points [1-9][0-9]*\nhausdorff_surface_samples 20000\n")
+# S13: the sampled Hausdorff distance only with --hausdorff (which implies
+# --stats); without it the statistics have no hausdorff line; not with --animate.
+bccmis_cli_test(stuff_hausdorff_sampled 0 ARGS stuff --shape sphere -L 2 --hausdorff -q
+                STDOUT_REGEX "volume_rel_error [^\n]*\nhausdorff_from_boundary [^\n]*\nhausdorff_from_surface [^\n]*\nhausdorff [^\n]*\nhausdorff_boundary_points [1-9][0-9]*\nhausdorff_surface_samples 20000\nmin_dihedral ")
+bccmis_cli_test(stuff_stats_without_hausdorff 0 ARGS stuff --shape sphere -L 2 --stats -q
+                STDOUT_REGEX "volume_rel_error [^\n]*\nmin_dihedral ")
+bccmis_cli_test(stuff_json_without_hausdorff 0 ARGS stuff --shape sphere -L 2 --json -q
+                STDOUT_REGEX "\"volume_rel_error\": [^,]*, \"min_dihedral\"")
+bccmis_cli_test(stuff_hausdorff_animate 2 ARGS stuff --shape sphere -L 2 --animate 1 --hausdorff
+                STDERR_REGEX "--hausdorff applies without --animate")
 if(TARGET bccmis::stuff_surface)
   bccmis_cli_test(stuff_octahedron_x1e150 0 ARGS stuff ${_extreme}/octahedron_x1e150.off -L 2 --stats -q
                   STDOUT_REGEX "${_small_error}")

@@ -2,7 +2,7 @@
 """bccmis stuff's files against outside readers and independent geometry
 (spec/stuffing.md S11, S13).
 
-For each case, `bccmis stuff ... --stats --json --check` writes .vtu, .msh,
+For each case, `bccmis stuff ... --hausdorff --json --check` writes .vtu, .msh,
 .mesh, .off and .obj; then:
 - meshio reads every tetrahedral file and finds the JSON's vertex and
   tetrahedron counts, one block of tetras, every tetrahedron positively
@@ -39,7 +39,7 @@ def check_case(bccmis, d, name, args, euler, exact_volume, tolerance, on_unit_sp
     import meshio
     stem = os.path.join(d, name)
     outs = {ext: stem + "." + ext for ext in ("vtu", "msh", "mesh", "off", "obj")}
-    cmd = [bccmis, "stuff"] + args + ["--stats", "--json", "--check", "--quiet"]
+    cmd = [bccmis, "stuff"] + args + ["--hausdorff", "--json", "--check", "--quiet"]
     for path in outs.values():
         cmd += ["-o", path]
     run = subprocess.run(cmd, capture_output=True, text=True)

@@ -216,10 +216,14 @@ CLI::App* add_stuff(CLI::App& app, StuffOptions& o) {
   cmd->add_option("--impl", o.impl,
                   "The lattice: fast (d3::fast::Lattice, default) or reference (d3::Graph); the same mesh")
       ->check(CLI::IsMember({"fast", "reference"}));
-  cmd->add_flag(
-      "--stats", o.stats,
-      "Print counts, volume and its error, sampled Hausdorff distance, dihedral angles and seconds per phase");
+  cmd->add_option("--threads", o.threads,
+                  "Threads extracting the lattice's tetrahedra (default 0: every core); the same mesh on any number")
+      ->check(integer_in(0, 256));
+  cmd->add_flag("--stats", o.stats, "Print counts, volume and its error, dihedral angles and seconds per phase");
   cmd->add_flag("--json", o.json, "Statistics as JSON (implies --stats)");
+  cmd->add_flag("--hausdorff", o.hausdorff,
+                "Statistics also with the Hausdorff distance between the boundary and the surface, sampled both ways "
+                "(implies --stats; not with --animate)");
   cmd->add_flag("--check", o.check,
                 "Check the mesh before writing: exact positive orientation, conformity, a closed boundary on the "
                 "surface (exit 1 on a violation)");
@@ -520,13 +524,13 @@ std::variant<int, Command> parse_command_line(int argc, char** argv) {
     return kExitInput;
   }
   // spec/cli.md, stuff: --size chooses the max level, so it and -L exclude
-  // each other; --json implies --stats (stuff, mesh).
+  // each other; --json implies --stats (stuff, mesh), and so does --hausdorff (stuff).
   if (*stuff_cmd && stuff_cmd->count("--size") > 0 && stuff_cmd->count("--max-level") > 0) {
     std::cerr << "bccmis: --size and -L,--max-level both choose the finest level: give one\n"
               << "Run 'bccmis stuff --help' for usage.\n";
     return kExitInput;
   }
-  stuff.stats = stuff.stats || stuff.json;
+  stuff.stats = stuff.stats || stuff.json || stuff.hausdorff;
   mesh.stats = mesh.stats || mesh.json;
   for (const auto& [cmd, options] : commands)
     if (*cmd) return options();

@@ -142,8 +142,10 @@ struct StuffOptions {
   std::string path;           ///< "DX,DY,DZ": the whole motion (default: 1.5 times the shape's x extent along x)
   bool compare = false;       ///< --animate: also build every frame from scratch and time it
   std::string impl = "fast";  ///< fast (d3::fast::Lattice) or reference (d3::Graph)
+  int threads = 0;            ///< spec/stuffing.md S28: 0 every core
   bool stats = false;
   bool json = false;
+  bool hausdorff = false;  ///< --stats also reports S13's sampled Hausdorff distance
   bool check = false;
   bool strict = false;    ///< refuse a triangle mesh at its first flaw (spec/stuffing.md S21)
   bool binary = false;    ///< .vtu (also the --animate frames) and .msh with binary numbers (spec/cli.md)

@@ -1,11 +1,11 @@
 // bccmis stuff INPUT|--shape NAME -o FILE...: a tetrahedral mesh of a closed
 // shape by isosurface stuffing (spec/stuffing.md), written as .vtu, .msh or
 // .mesh (the tetrahedra) and .off or .obj (the boundary surface), with
-// --stats for counts, volume, Hausdorff distance and dihedral angles. The
+// --stats for counts, volume and dihedral angles (--hausdorff: also the
+// sampled Hausdorff distance). The
 // library does the work (bccmis/stuff/mesh_shape.h, animate_shape.h); this
 // file parses, calls and prints.
 #include <charconv>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -61,11 +61,13 @@ std::shared_ptr<const stuff::Shape> load_shape(const StuffOptions& o) {
   return stuff::load_mesh_file(o.input, o.strict, format);
 }
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 std::string number(double x) { return JsonWriter::number(x); }
+
+/// The library's progress lines on stderr, unless --quiet.
+stuff::Progress progress_of(const StuffOptions& o) {
+  if (o.quiet) return {};
+  return [](std::string_view what) { std::cerr << "bccmis stuff: " << what << std::endl; };
+}
 
 /// The faces of the first few instances of a flaw: "3+4 7+9".
 std::string instances_text(const stuff::SoupFlaw& f) {
@@ -101,12 +103,14 @@ std::string stats_text(const std::string& shape, const stuff::Meshed& m, const s
   std::string out = "shape " + shape + "\n";
   for (const auto& [name, n] : stuff::statistics_counts(m)) out += std::string(name) + " " + std::to_string(n) + "\n";
   out += "volume " + number(q.volume) + "\nshape_volume " + number(s.shape_volume) + "\nvolume_rel_error " +
-         number(s.volume_rel_error()) + "\nhausdorff_from_boundary " + number(h.from_boundary) +
-         "\nhausdorff_from_surface " + (h.from_surface < 0 ? std::string("-") : number(h.from_surface)) +
-         "\nhausdorff " + number(h.max()) + "\nhausdorff_boundary_points " + std::to_string(h.boundary_points) +
-         "\nhausdorff_surface_samples " + std::to_string(h.surface_samples) + "\nmin_dihedral " +
-         number(q.min_dihedral) + "\nmax_dihedral " + number(q.max_dihedral) + "\nbelow10 " + number(s.below10()) +
-         "\n";
+         number(s.volume_rel_error()) + "\n";
+  if (h.computed)  // --hausdorff
+    out += "hausdorff_from_boundary " + number(h.from_boundary) + "\nhausdorff_from_surface " +
+           (h.from_surface < 0 ? std::string("-") : number(h.from_surface)) + "\nhausdorff " + number(h.max()) +
+           "\nhausdorff_boundary_points " + std::to_string(h.boundary_points) + "\nhausdorff_surface_samples " +
+           std::to_string(h.surface_samples) + "\n";
+  out += "min_dihedral " + number(q.min_dihedral) + "\nmax_dihedral " + number(q.max_dihedral) + "\nbelow10 " +
+         number(s.below10()) + "\n";
   for (std::size_t k = 0; k < q.histogram.size(); ++k)
     if (q.histogram[k] != 0) out += "dihedral_" + std::to_string(15 * k) + " " + std::to_string(q.histogram[k]) + "\n";
   out += "boundary_euler " + std::to_string(m.topology.boundary_euler) + "\n";
@@ -140,6 +144,7 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
   if (o.outputs.size() > 1 || (!o.outputs.empty() && !ends_with(o.outputs[0], ".pvd")))
     throw InputError("--animate writes one .pvd (ParaView's index) with its .vtu frames beside it: give -o FILE.pvd");
   if (o.outputs.empty() && !o.stats) throw InputError("nothing to do: give -o FILE.pvd or --stats");
+  if (o.hausdorff) throw InputError("--hausdorff applies without --animate (a frame's statistics have no distance)");
   stuff::AnimateSettings settings;
   settings.lattice = so;
   settings.frames = o.animate;
@@ -195,15 +200,7 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
   };
   stuff::AnimationSummary summary;
   try {
-    // S14: the lattice is fitted to the swept box; say what that costs.
-    if (!o.quiet) {
-      const double moving = stuff::fit_moving(*shape, settings.path, so).h,
-                   still = stuff::fit_lattice(shape->bounds(), so).h;
-      if (moving > still)
-        std::cerr << "bccmis stuff: --animate fits the lattice to the swept box: finest side " << number(moving)
-                  << " against " << number(still) << " for the shape alone\n";
-    }
-    summary = stuff::animate_shape(shape, settings, on_frame);
+    summary = stuff::animate_shape(shape, settings, on_frame, progress_of(o));
   } catch (const stuff::ShapeError& e) {  // S2, S14, S16: refused before any frame is made
     throw InputError(e.what());
   } catch (const stuff::CheckError& e) {
@@ -236,14 +233,14 @@ int run(const StuffOptions& o) {
   OutputSet outputs;
   if (o.animate == 0)
     for (const std::string& path : o.outputs) outputs.open(path);
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = stuff::Clock::now();
   std::shared_ptr<const stuff::Shape> shape;
   try {
     shape = load_shape(o);
   } catch (const stuff::ShapeError& e) {
     throw InputError(e.what());
   }
-  stuff::PhaseSeconds seconds{{"input", seconds_since(t0)}};
+  stuff::PhaseSeconds seconds{{"input", stuff::seconds_since(t0)}};
   if (const stuff::SoupReport* r = shape->soup_report(); r && r->flaw_count() > 0 && !o.stats && !o.quiet)
     std::cerr << "bccmis stuff: " << r->file << ": " << r->summary()
               << ": meshed as the solid where the winding number >= 1/2; --strict refuses\n";
@@ -252,19 +249,18 @@ int run(const StuffOptions& o) {
   settings.lattice.min_level = o.min_level;
   settings.lattice.cells = o.cells;
   if (o.size > 0) settings.lattice.size = o.size;
+  settings.lattice.threads = o.threads;
   if (o.animate > 0) return run_animate(o, shape, settings.lattice, outputs);
   if (!o.path.empty() || o.compare) throw InputError("--path and --compare apply with --animate");
   settings.impl = o.impl == "reference" ? stuff::Impl::reference : stuff::Impl::fast;
   settings.statistics = o.stats;
+  settings.hausdorff = o.hausdorff;
   settings.check = o.check;
   settings.strict = o.strict;
   if (o.memory_limit_gb > 0) settings.memory_limit = o.memory_limit_gb * 1e9;
-  const auto progress = [&](std::string_view what) {
-    if (!o.quiet) std::cerr << "bccmis stuff: " << what << std::endl;
-  };
   stuff::Meshed m;
   try {
-    m = stuff::mesh_shape(*shape, settings, progress);
+    m = stuff::mesh_shape(*shape, settings, progress_of(o));
   } catch (const stuff::ShapeError& e) {
     throw InputError(e.what());
   } catch (const stuff::CheckError& e) {
@@ -274,7 +270,7 @@ int run(const StuffOptions& o) {
   if (!o.quiet)
     for (const std::string& warning : m.warnings) std::cerr << "bccmis stuff: warning: " << warning << "\n";
 
-  const auto t = std::chrono::steady_clock::now();
+  const auto t = stuff::Clock::now();
   const d3::TetMeshF& mesh = m.stuffed.mesh;
   for (const std::string& path : o.outputs) {
     const bool all = o.surface_vertices == "all";
@@ -286,7 +282,7 @@ int run(const StuffOptions& o) {
     if (ends_with(path, ".obj"))
       outputs.add(path, [&](std::ostream& out) { io::write_obj(out, mesh, m.boundary, all); });
   }
-  seconds.emplace_back("write", seconds_since(t));
+  seconds.emplace_back("write", stuff::seconds_since(t));
   if (o.stats) outputs.add("-", stats_text(shape->describe(), m, seconds, o.json));
   outputs.commit();
   if (!o.quiet && !o.outputs.empty())

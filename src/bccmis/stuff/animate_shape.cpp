@@ -3,15 +3,11 @@
 
 #include <string>
 
-#include "bccmis/stuff/detail/stuffer.h"
+#include "bccmis/json_writer.h"
 #include "bccmis/stuff/mesh_shape.h"
+#include "bccmis/stuff/stopwatch.h"
 
 namespace bccmis::stuff {
-
-namespace {
-using detail::Clock;
-using detail::seconds_since;
-}  // namespace
 
 Vec3 default_path(const Shape& shape) {
   const Bounds b = shape.bounds();
@@ -25,8 +21,13 @@ Fit fit_moving(const Shape& shape, const Vec3& path, const StuffOptions& options
 }
 
 AnimationSummary animate_shape(const std::shared_ptr<const Shape>& shape, const AnimateSettings& settings,
-                               const std::function<void(const Frame&)>& on_frame) {
+                               const std::function<void(const Frame&)>& on_frame, const Progress& progress) {
   const Fit fit = fit_moving(*shape, settings.path, settings.lattice);
+  // S14: the lattice is fitted to the swept box; say what that costs.
+  if (progress)
+    if (const double still = fit_lattice(shape->bounds(), settings.lattice).h; fit.h > still)
+      progress("--animate fits the lattice to the swept box: finest side " + JsonWriter::number(fit.h) + " against " +
+               JsonWriter::number(still) + " for the shape alone");
   const StuffOptions& options = settings.lattice;
   const int n = settings.frames;
   const auto t0 = Clock::now();

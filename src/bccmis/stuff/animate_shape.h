@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "bccmis/stuff/animate.h"
+#include "bccmis/stuff/mesh_shape.h"
 #include "bccmis/stuff/stuff.h"
 
 namespace bccmis::stuff {
@@ -43,11 +44,13 @@ Vec3 default_path(const Shape& shape);
 /// as fit_lattice() does, and when the moving lattice cannot hold it (S16).
 Fit fit_moving(const Shape& shape, const Vec3& path, const StuffOptions& options);
 
-/// Frames 0..frames, each handed to `on_frame` as it is made. Throws
+/// Frames 0..frames, each handed to `on_frame` as it is made; `progress`,
+/// when given, hears when the lattice fitted to the swept box is coarser
+/// than the shape's own (S14). Throws
 /// ShapeError as fit_moving() does, and CheckError (mesh_shape.h) when
 /// `check` finds a frame that differs from the one made from scratch or
 /// fails the checker's stuffed-mesh layer.
 AnimationSummary animate_shape(const std::shared_ptr<const Shape>& shape, const AnimateSettings& settings,
-                               const std::function<void(const Frame&)>& on_frame);
+                               const std::function<void(const Frame&)>& on_frame, const Progress& progress = {});
 
 }  // namespace bccmis::stuff

@@ -12,7 +12,8 @@
 #include <vector>
 
 #include "bccmis/d3/point.h"
-#include "bccmis/fast/d3/mesh.h"
+#include "bccmis/fast/d3/lattice.h"
+#include "bccmis/stuff/detail/leaf_blocks.h"
 #include "bccmis/stuff/detail/stencils.h"
 #include "bccmis/stuff/detail/stuffer.h"
 #include "bccmis/stuff/stuff.h"
@@ -81,8 +82,8 @@ class EdgeTable {
 /// through the vocabulary: is_center, level_of). The lattice's vertices are
 /// numbered in position order and every per-vertex datum is an array.
 template <class G>
-class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey> {
-  using Stencils = detail::Stencils<Stuffer<G>, std::uint32_t, VKey>;
+class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t> {
+  using Stencils = detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>;
 
  public:
   Stuffer(const Shape& shape, const Fit& fit, const G& g, const StuffOptions& options)
@@ -95,24 +96,37 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey> {
     begin_ = begin;
   }
 
-  Stuffed run(std::vector<d3::Tet> tets, PhaseTimes* times) {
-    owned_ = std::move(tets);
-    return run(std::span<const d3::Tet>(owned_), times);
+  /// S5-S9 on every tetrahedron of the graded mesh of g, extracted leaf by
+  /// leaf in blocks (`threads` at a time) and numbered as they come: no
+  /// array of the lattice's tetrahedra.
+  Stuffed run_whole(int threads, PhaseTimes* times) {
+    detail::PhaseClock clock(times);
+    begin_numbering(2 * cell_count(g_) + node_count(g_));
+    detail::for_each_block(g_, threads, [this](std::span<const d3::Tet> block) { number(block); });
+    end_numbering();
+    clock.lap(&PhaseTimes::mesh);
+    return stuff(times);
   }
 
-  /// The same on tetrahedra the caller keeps.
+  /// S5-S9 on the tetrahedra `tets` of the graded mesh of g.
   Stuffed run(std::span<const d3::Tet> tets, PhaseTimes* times) {
+    begin_numbering(std::min(2 * cell_count(g_) + node_count(g_), 4 * tets.size()));
+    number(tets);
+    end_numbering();
+    return stuff(times);
+  }
+
+ private:
+  Stuffed stuff(PhaseTimes* times) {
     detail::PhaseClock clock(times);
-    tets_ = tets;
-    out_.lattice_tetrahedra = tets_.size();
-    number();
+    out_.lattice_tetrahedra = ids_.size();
     evaluate();
     cut();
     clock.lap(&PhaseTimes::cut);
     warp();
     clock.lap(&PhaseTimes::warp);
-    if (begin_) begin_->reserve(tets_.size() + 1);
-    for (std::size_t i = 0; i < tets_.size(); ++i) {
+    if (begin_) begin_->reserve(ids_.size() + 1);
+    for (std::size_t i = 0; i < ids_.size(); ++i) {
       if (begin_) begin_->push_back(static_cast<std::uint32_t>(this->tets_out_.size()));
       fill(i);
     }
@@ -122,7 +136,6 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey> {
     return s;
   }
 
- private:
   friend Stencils;
   using Ids = std::array<std::uint32_t, 4>;
 
@@ -133,37 +146,48 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey> {
   d3::Point point_of(VKey k) const { return points_[first(k)]; }
   double value(std::uint32_t i) const { return value_[i]; }
   Vec3 pos(VKey k) const { return is_cut(k) ? cuts_[cut_index_.find(k)].pos : pos_[first(k)]; }
+  // An output vertex as the stencils keep it: lattice vertex i as i, cut
+  // point c as points_.size() + c (16 bytes an output tetrahedron, renumbered
+  // in place by finish()).
+  std::uint32_t store(VKey k) const {
+    return is_cut(k) ? static_cast<std::uint32_t>(points_.size()) + cut_index_.find(k) : first(k);
+  }
+  Vec3 stored_pos(std::uint32_t x) const { return x < points_.size() ? pos_[x] : cuts_[x - points_.size()].pos; }
 
   // The lattice vertices of the mesh in position order, the tetrahedra on
-  // them: ids in order of first use through a hash table, then renumbered by
-  // rank of position.
-  void number() {
+  // them: ids in order of first use through a hash table (the one position
+  // table), then renumbered by rank of position.
+  void begin_numbering(std::size_t most) {
     // The vertices are centers, nodes and hull points (centers of the
     // domain's faces, at most one per leaf): load at most 1/2.
-    const std::size_t most = std::min(2 * cell_count(g_) + node_count(g_), 4 * tets_.size());
     std::size_t slots = 16;
     while (slots < 2 * most) slots *= 2;
-    std::vector<std::uint32_t> table(slots, EdgeTable::kNone);
+    table_.assign(slots, EdgeTable::kNone);
+  }
+  void number(std::span<const d3::Tet> tets) {
+    const std::size_t mask = table_.size() - 1;
     const auto hash = [&](const d3::Point& p) {
       const std::uint64_t h = static_cast<std::uint64_t>(p.x) * 0x9E3779B97F4A7C15ull ^
                               static_cast<std::uint64_t>(p.y) * 0xC2B2AE3D27D4EB4Full ^
                               static_cast<std::uint64_t>(p.z) * 0x165667B19E3779F9ull;
-      return static_cast<std::size_t>(h ^ (h >> 29)) & (slots - 1);
+      return static_cast<std::size_t>(h ^ (h >> 29)) & mask;
     };
-    ids_.reserve(tets_.size());
-    for (const d3::Tet& t : tets_) {
+    for (const d3::Tet& t : tets) {
       Ids ids{};
       for (std::size_t i = 0; i < 4; ++i) {
         std::size_t k = hash(t[i]);
-        while (table[k] != EdgeTable::kNone && !(points_[table[k]] == t[i])) k = (k + 1) & (slots - 1);
-        if (table[k] == EdgeTable::kNone) {
-          table[k] = static_cast<std::uint32_t>(points_.size());
+        while (table_[k] != EdgeTable::kNone && !(points_[table_[k]] == t[i])) k = (k + 1) & mask;
+        if (table_[k] == EdgeTable::kNone) {
+          table_[k] = static_cast<std::uint32_t>(points_.size());
           points_.push_back(t[i]);
         }
-        ids[i] = table[k];
+        ids[i] = table_[k];
       }
       ids_.push_back(ids);
     }
+  }
+  void end_numbering() {
+    table_ = {};
     std::vector<std::uint32_t> order(points_.size());
     for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
     std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return points_[a] < points_[b]; });
@@ -188,7 +212,7 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey> {
   // S5
   void cut() {
     cut_index_.reserve(points_.size() / 4);
-    for (std::size_t ti = 0; ti < tets_.size(); ++ti) {
+    for (std::size_t ti = 0; ti < ids_.size(); ++ti) {
       const Ids& t = ids_[ti];
       bool has_cut = false;
       for (std::size_t i = 0; i < 4; ++i)
@@ -210,7 +234,7 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey> {
           ends_.push_back({x, y});
           ends_.push_back({y, x});
         }
-      if (has_cut) detail::check_regular(tets_[ti], fit_.size.L);
+      if (has_cut) detail::check_regular(lattice_tet(ti), fit_.size.L);
     }
   }
 
@@ -251,7 +275,7 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey> {
   void fill(std::size_t ti) {
     bool warped = false;
     for (const std::uint32_t p : ids_[ti]) warped = warped || warped_[p];
-    if (warped) detail::check_regular(tets_[ti], fit_.size.L);
+    if (warped) detail::check_regular(lattice_tet(ti), fit_.size.L);
     Stencils::fill(ids_[ti], [this, ti] { return level(ti); });
   }
 
@@ -259,20 +283,28 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey> {
   /// asked of the lattice once per leaf.
   int level(std::size_t ti) {
     int& l = level_[ids_[ti][0]];
-    if (l < 0) l = level_of(g_, tets_[ti][0]);
+    if (l < 0) l = level_of(g_, points_[ids_[ti][0]]);
     return l;
+  }
+
+  /// Lattice tetrahedron ti as points.
+  d3::Tet lattice_tet(std::size_t ti) const {
+    const Ids& t = ids_[ti];
+    return {points_[t[0]], points_[t[1]], points_[t[2]], points_[t[3]]};
   }
 
   Stuffed finish() {
     // S8: the output vertices in key order: the lattice vertices used (keys
     // (i, i), in order of i) merged with the cut points used (in key order).
-    std::vector<std::uint8_t> used_vertex(points_.size(), 0), used_cut(cuts_.size(), 0);
+    ids_ = {};  // the lattice's tetrahedra are done with
+    const std::size_t n = points_.size();
+    std::vector<std::uint8_t> used_vertex(n, 0), used_cut(cuts_.size(), 0);
     for (const auto& t : this->tets_out_)
-      for (const VKey k : t) {
-        if (is_cut(k))
-          used_cut[cut_index_.find(k)] = 1;
+      for (const std::uint32_t x : t) {
+        if (x >= n)
+          used_cut[x - n] = 1;
         else
-          used_vertex[first(k)] = 1;
+          used_vertex[x] = 1;
       }
     std::vector<VKey> cut_keys;
     for (std::size_t c = 0; c < cuts_.size(); ++c)
@@ -301,9 +333,9 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey> {
       add(k);
     }
     for (; next_cut < cut_keys.size(); ++next_cut) add(cut_keys[next_cut]);
-    const auto index = [&](VKey k) { return is_cut(k) ? cut_index[cut_index_.find(k)] : vertex_index[first(k)]; };
-    m.tets.reserve(this->tets_out_.size());
-    for (const auto& t : this->tets_out_) m.tets.push_back({index(t[0]), index(t[1]), index(t[2]), index(t[3])});
+    for (auto& t : this->tets_out_)
+      for (std::uint32_t& x : t) x = x >= n ? cut_index[x - n] : vertex_index[x];
+    m.tets = std::move(this->tets_out_);
     m.level = std::move(this->levels_out_);
     return std::move(out_);
   }
@@ -312,12 +344,11 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey> {
   const Fit& fit_;
   const G& g_;
   const StuffOptions& options_;
-  std::vector<d3::Tet> owned_;
-  std::span<const d3::Tet> tets_;
-  std::vector<d3::Point> points_;  ///< the lattice vertices of the mesh, sorted
-  std::vector<Ids> ids_;           ///< tets_ on points_
-  std::vector<double> value_;      ///< the sign of f (-1, 0, 1), 0 once warped
-  std::vector<Vec3> pos_;          ///< in space, warped or not
+  std::vector<std::uint32_t> table_;  ///< points_ by hash of position, while numbering
+  std::vector<d3::Point> points_;     ///< the lattice vertices of the mesh, sorted
+  std::vector<Ids> ids_;              ///< the lattice tetrahedra on points_, in order
+  std::vector<double> value_;         ///< the sign of f (-1, 0, 1), 0 once warped
+  std::vector<Vec3> pos_;             ///< in space, warped or not
   std::vector<std::uint8_t> warped_;
   std::vector<int> level_;  ///< of the leaves, -1 until asked
   std::vector<detail::Cut> cuts_;
@@ -333,10 +364,7 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey> {
 
 Stuffed stuff(const Shape& shape, const Fit& fit, const d3::fast::Lattice& g, const StuffOptions& options,
               PhaseTimes* times) {
-  detail::PhaseClock clock(times);
-  std::vector<d3::Tet> tets = d3::fast::tetrahedra(g);
-  clock.lap(&PhaseTimes::mesh);
-  return Stuffer<d3::fast::Lattice>(shape, fit, g, options).run(std::move(tets), times);
+  return Stuffer<d3::fast::Lattice>(shape, fit, g, options).run_whole(options.threads, times);
 }
 
 StuffedPart stuff_part(const Shape& shape, const Fit& fit, const d3::fast::Lattice& g, const StuffOptions& options,

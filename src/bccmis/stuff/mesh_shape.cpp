@@ -4,12 +4,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "bccmis/fast/d3/lattice.h"
 #include "bccmis/invariants/d3/stuffed_mesh.h"
 #include "bccmis/json_writer.h"
-#include "bccmis/stuff/detail/stuffer.h"
 #include "bccmis/stuff/memory_estimate.h"
 #include "bccmis/stuff/normalisation.h"
+#include "bccmis/stuff/stopwatch.h"
 #if BCCMIS_HAVE_STUFF_SURFACE
 #include "bccmis/stuff/surface.h"
 #endif
@@ -17,8 +16,6 @@
 namespace bccmis::stuff {
 
 namespace {
-using detail::Clock;
-using detail::seconds_since;
 std::string number(double x) { return JsonWriter::number(x); }
 
 }  // namespace
@@ -92,20 +89,10 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
       std::to_string(fit.size.D) + ", max level " + std::to_string(fit.size.L) + ", finest side " + number(r.fit.h));
   // S3-S9 on the fast lattice, or on the reference.
   PhaseTimes times;
-  const auto t0 = Clock::now();
-  const auto stuff_on = [&](const auto& g, std::size_t leaves) {
-    times.lattice = seconds_since(t0);
+  r.stuffed = stuff_fitted(shape, fit, options, settings.impl, &times, [&](std::size_t leaves, double seconds) {
     r.leaves = leaves;
-    say(std::to_string(leaves) + " leaves (" + number(times.lattice) + " s)");
-    return stuff(shape, fit, g, options, &times);
-  };
-  if (settings.impl == Impl::reference) {
-    const d3::Graph g = background(shape, fit, options);
-    r.stuffed = stuff_on(g, g.C.size());
-  } else {
-    const d3::fast::Lattice g = background_fast(shape, fit, options);
-    r.stuffed = stuff_on(g, g.cell_count());
-  }
+    say(std::to_string(leaves) + " leaves (" + number(seconds) + " s)");
+  });
   r.seconds = {{"lattice", times.lattice},
                {"mesh", times.mesh},
                {"cut", times.cut},
@@ -145,10 +132,24 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
                          " non-manifold edges (parts meeting along a lattice edge; a finer level separates them)");
     if (settings.check && input_manifold) throw CheckError(world.describe() + ": " + r.warnings.back());
   }
-  if (settings.statistics) r.statistics = to_world(statistics(shape, r.stuffed.mesh, r.boundary), n);
+  if (settings.statistics)
+    r.statistics = to_world(statistics(shape, r.stuffed.mesh, r.boundary, settings.hausdorff), n);
   r.seconds.emplace_back("statistics", seconds_since(t1));
   to_world(r.stuffed.mesh, n, r.fit.h);
   return r;
+}
+
+double meshing_seconds(const PhaseSeconds& seconds) {
+  double s = 0;
+  for (const auto& [phase, t] : seconds)
+    if (phase != "statistics" && phase != "write") s += t;
+  return s;
+}
+
+double total_seconds(const PhaseSeconds& seconds) {
+  double s = 0;
+  for (const auto& [phase, t] : seconds) s += t;
+  return s;
 }
 
 void to_world(d3::TetMeshF& mesh, const Normalisation& n, double h) {

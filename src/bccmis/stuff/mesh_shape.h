@@ -29,6 +29,7 @@
 #include "bccmis/stuff/shape.h"
 #include "bccmis/stuff/soup_report.h"
 #include "bccmis/stuff/statistics.h"
+#include "bccmis/stuff/stopwatch.h"
 #include "bccmis/stuff/stuff.h"
 #include "bccmis/stuff/topology.h"
 
@@ -38,7 +39,8 @@ namespace bccmis::stuff {
 struct Settings {
   StuffOptions lattice;     ///< S2, S3, S6: levels, cells, size, the alphas
   Impl impl = Impl::fast;   ///< the fast lattice, or the reference (its oracle)
-  bool statistics = false;  ///< compute S13's statistics (quality, Hausdorff)
+  bool statistics = false;  ///< compute S13's statistics (counts, volume, angles)
+  bool hausdorff = false;   ///< with statistics, also S13's sampled Hausdorff distance
   bool check = false;       ///< run the checker's stuffed-mesh layer on the result
   /// Refuse a triangle mesh with any flaw (S21): a shape whose soup report
   /// counts flaws is refused with the first one's message, as
@@ -54,6 +56,11 @@ using Progress = std::function<void(std::string_view)>;
 /// Seconds per phase, in the order they ran (S13's names: lattice, mesh,
 /// cut, warp, stencils, statistics).
 using PhaseSeconds = std::vector<std::pair<std::string, double>>;
+
+/// S13's sums of a run's phases: `meshing`, every phase but "statistics"
+/// and "write" (what the comparison with other meshers times), and `total`.
+double meshing_seconds(const PhaseSeconds& seconds);
+double total_seconds(const PhaseSeconds& seconds);
 
 /// What a run made.
 struct Meshed {

@@ -28,22 +28,29 @@ double from_boundary(const Shape& shape, const d3::TetMeshF& mesh,
   return d;
 }
 
-}  // namespace
-
-Statistics statistics(const Shape& shape, const d3::TetMeshF& mesh,
-                      const std::vector<std::array<std::uint32_t, 3>>& boundary) {
-  Statistics s;
-  s.quality = quality(mesh);
-  s.hausdorff.from_boundary = from_boundary(shape, mesh, boundary);
-  s.hausdorff.boundary_points = 7 * boundary.size();
+Hausdorff hausdorff(const Shape& shape, const d3::TetMeshF& mesh,
+                    const std::vector<std::array<std::uint32_t, 3>>& boundary) {
+  Hausdorff h;
+  h.computed = true;
+  h.from_boundary = from_boundary(shape, mesh, boundary);
+  h.boundary_points = 7 * boundary.size();
 #if BCCMIS_HAVE_STUFF_SURFACE
   // S13: the surface's side, 20,000 samples (seed 1) to the boundary triangles.
   if (!boundary.empty()) {
-    s.hausdorff.surface_samples = 20000;
-    s.hausdorff.from_surface =
-        max_distance_to_triangles(shape.sample_surface(s.hausdorff.surface_samples, 1), mesh.vertices, boundary);
+    h.surface_samples = 20000;
+    h.from_surface = max_distance_to_triangles(shape.sample_surface(h.surface_samples, 1), mesh.vertices, boundary);
   }
 #endif
+  return h;
+}
+
+}  // namespace
+
+Statistics statistics(const Shape& shape, const d3::TetMeshF& mesh,
+                      const std::vector<std::array<std::uint32_t, 3>>& boundary, bool with_hausdorff) {
+  Statistics s;
+  s.quality = quality(mesh, boundary.size());
+  if (with_hausdorff) s.hausdorff = hausdorff(shape, mesh, boundary);
   s.shape_volume = shape.volume();
   s.vertices = mesh.vertices.size();
   s.tetrahedra = mesh.tets.size();

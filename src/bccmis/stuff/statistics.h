@@ -16,8 +16,10 @@
 
 namespace bccmis::stuff {
 
-/// S13: the Hausdorff distance, sampled both ways (a lower bound of the exact one).
+/// S13: the Hausdorff distance, sampled both ways (a lower bound of the exact
+/// one), computed only when asked (Settings::hausdorff, --hausdorff).
 struct Hausdorff {
+  bool computed = false;            ///< false: not asked for, every field below as it starts
   double from_boundary = 0;         ///< max |f| over 7 points of every boundary triangle
   double from_surface = -1;         ///< max distance of 20,000 surface samples to the boundary (-1: not computed)
   std::size_t boundary_points = 0;  ///< the points of the boundary sampled (7 a triangle)
@@ -40,11 +42,12 @@ struct Statistics {
   }
 };
 
-/// S13 on `mesh`, a mesh of `shape` whose boundary is `boundary`. The
-/// distance from the surface needs CGAL's triangle distances: without CGAL
-/// in the build it is not computed (from_surface stays -1).
+/// S13 on `mesh`, a mesh of `shape` whose boundary is `boundary`; the
+/// sampled Hausdorff distance only with `hausdorff`. The distance from the
+/// surface needs CGAL's triangle distances: without CGAL in the build it is
+/// not computed (from_surface stays -1).
 Statistics statistics(const Shape& shape, const d3::TetMeshF& mesh,
-                      const std::vector<std::array<std::uint32_t, 3>>& boundary);
+                      const std::vector<std::array<std::uint32_t, 3>>& boundary, bool hausdorff = true);
 
 /// S24: statistics computed in local coordinates, in world units: lengths
 /// times 2^k, volumes times 2^3k (infinite when they overflow a double).

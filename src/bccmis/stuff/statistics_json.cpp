@@ -70,16 +70,18 @@ std::string statistics_json(const std::string& shape, const Meshed& m, const Pha
   finite_or_null("volume", q.volume);
   finite_or_null("shape_volume", s.shape_volume);
   finite_or_null("volume_rel_error", s.volume_rel_error());
-  w.key("hausdorff").begin_object().member("from_boundary", h.from_boundary).key("from_surface");
-  if (h.from_surface < 0)
-    w.null();
-  else
-    w.value(h.from_surface);
-  w.member("max", h.max())
-      .member("sampled", true)
-      .member("boundary_points", h.boundary_points)
-      .member("surface_samples", h.surface_samples)
-      .end_object();
+  if (h.computed) {  // Settings::hausdorff (--hausdorff)
+    w.key("hausdorff").begin_object().member("from_boundary", h.from_boundary).key("from_surface");
+    if (h.from_surface < 0)
+      w.null();
+    else
+      w.value(h.from_surface);
+    w.member("max", h.max())
+        .member("sampled", true)
+        .member("boundary_points", h.boundary_points)
+        .member("surface_samples", h.surface_samples)
+        .end_object();
+  }
   w.member("min_dihedral", q.min_dihedral).member("max_dihedral", q.max_dihedral).member("below10", s.below10());
   w.member("boundary_euler", m.topology.boundary_euler).key("warnings").begin_array();
   for (const std::string& warning : m.warnings) w.value(warning);
@@ -88,12 +90,8 @@ std::string statistics_json(const std::string& shape, const Meshed& m, const Pha
   w.key("dihedral_histogram").begin_object();
   for (std::size_t k = 0; k < q.histogram.size(); ++k) w.member(std::to_string(15 * k), q.histogram[k]);
   w.end_object().key("seconds").begin_object();
-  double total = 0, meshing = 0;
-  for (const auto& [phase, t] : seconds) {
-    w.member(phase, t), total += t;
-    if (phase != "statistics" && phase != "write") meshing += t;
-  }
-  w.member("meshing", meshing).member("total", total).end_object().end_object();
+  for (const auto& [phase, t] : seconds) w.member(phase, t);
+  w.member("meshing", meshing_seconds(seconds)).member("total", total_seconds(seconds)).end_object().end_object();
   return w.str();
 }
 

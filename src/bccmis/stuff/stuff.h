@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -26,6 +27,7 @@ struct StuffOptions {
   std::optional<double> size;   ///< the finest edge length asked for (--size): chooses L
   double alpha_long = 0.24999;  ///< S6
   double alpha_short = 0.41189;
+  int threads = 0;  ///< S28: the threads extracting the lattice's tetrahedra (--threads); 0: every core
 };
 
 /// Where the lattice sits in space (S2): lattice point p is origin + scale p.
@@ -101,8 +103,16 @@ StuffedPart stuff_part(const Shape& shape, const Fit& fit, const d3::fast::Latti
 /// d3::Graph (--impl reference).
 enum class Impl { fast, reference };
 
-/// S2-S9 in one call: fit_lattice, background (or background_fast) and
-/// stuff. `times`, when given, receives every phase.
+/// S3-S9 on a fitted lattice: background (or background_fast) and stuff,
+/// the one place that dispatches on `impl`. `times`, when given, receives
+/// every phase; `on_lattice`, when given, hears the lattice's leaf count
+/// and seconds once it is built.
+Stuffed stuff_fitted(const Shape& shape, const Fit& fit, const StuffOptions& options, Impl impl = Impl::fast,
+                     PhaseTimes* times = nullptr,
+                     const std::function<void(std::size_t leaves, double seconds)>& on_lattice = {});
+
+/// S2-S9 in one call: fit_lattice and stuff_fitted. `times`, when given,
+/// receives every phase.
 Stuffed stuff_shape(const Shape& shape, const StuffOptions& options, Impl impl = Impl::fast,
                     PhaseTimes* times = nullptr);
 
@@ -127,5 +137,8 @@ struct StuffQuality {
   std::size_t boundary_triangles = 0;
 };
 StuffQuality quality(const d3::TetMeshF& mesh);
+/// The same when the boundary is already counted (`boundary_triangles`
+/// triangles).
+StuffQuality quality(const d3::TetMeshF& mesh, std::size_t boundary_triangles);
 
 }  // namespace bccmis::stuff

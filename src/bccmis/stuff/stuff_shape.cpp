@@ -6,17 +6,25 @@
 
 namespace bccmis::stuff {
 
-Stuffed stuff_shape(const Shape& shape, const StuffOptions& options, Impl impl, PhaseTimes* times) {
-  const Fit fit = fit_lattice(shape.bounds(), options);
-  detail::PhaseClock clock(times);
+Stuffed stuff_fitted(const Shape& shape, const Fit& fit, const StuffOptions& options, Impl impl, PhaseTimes* times,
+                     const std::function<void(std::size_t, double)>& on_lattice) {
+  const auto t0 = Clock::now();
+  const auto stuff_on = [&](const auto& g, std::size_t leaves) {
+    const double seconds = seconds_since(t0);
+    if (times) times->lattice = seconds;
+    if (on_lattice) on_lattice(leaves, seconds);
+    return stuff(shape, fit, g, options, times);
+  };
   if (impl == Impl::reference) {
     const d3::Graph g = background(shape, fit, options);
-    clock.lap(&PhaseTimes::lattice);
-    return stuff(shape, fit, g, options, times);
+    return stuff_on(g, g.C.size());
   }
   const d3::fast::Lattice g = background_fast(shape, fit, options);
-  clock.lap(&PhaseTimes::lattice);
-  return stuff(shape, fit, g, options, times);
+  return stuff_on(g, g.cell_count());
+}
+
+Stuffed stuff_shape(const Shape& shape, const StuffOptions& options, Impl impl, PhaseTimes* times) {
+  return stuff_fitted(shape, fit_lattice(shape.bounds(), options), options, impl, times);
 }
 
 }  // namespace bccmis::stuff

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -29,8 +30,10 @@ namespace bccmis::stuff::detail {
 ///   Vec3 pos(Key): the output vertex in space;
 ///   d3::Point point_of(Key): the lattice point a key names first.
 /// The output tetrahedra, positively oriented (S12), and their levels
-/// collect in tets_out_ and levels_out_ in order of emission.
-template <class Derived, class Vertex, class Key>
+/// collect in tets_out_ and levels_out_ in order of emission. A stuffer may
+/// keep its output vertices as something smaller than keys (`Stored`); it
+/// then also supplies Stored store(Key) and Vec3 stored_pos(Stored).
+template <class Derived, class Vertex, class Key, class Stored = Key>
 class Stencils {
  protected:
   /// S7: fills the lattice tetrahedron t, whose leaf has level `level()`
@@ -108,7 +111,7 @@ class Stencils {
     }
   }
 
-  std::vector<std::array<Key, 4>> tets_out_;
+  std::vector<std::array<Stored, 4>> tets_out_;
   std::vector<int> levels_out_;
 
  private:
@@ -149,7 +152,10 @@ class Stencils {
     const int o = orientation(s.pos(v[0]), s.pos(v[1]), s.pos(v[2]), s.pos(v[3]));
     if (o == 0) throw std::logic_error("stuff: a flat output tetrahedron near " + d3::to_string(s.point_of(v[0])));
     if (o < 0) std::swap(v[2], v[3]);
-    tets_out_.push_back(v);
+    if constexpr (std::is_same_v<Stored, Key>)
+      tets_out_.push_back(v);
+    else
+      tets_out_.push_back({s.store(v[0]), s.store(v[1]), s.store(v[2]), s.store(v[3])});
     levels_out_.push_back(level);
   }
 
@@ -199,8 +205,13 @@ class Stencils {
     double m = 180;
     for (std::size_t i = from; i < tets_out_.size(); ++i) {
       const auto& t = tets_out_[i];
-      for (const double a :
-           d3::dihedral_angles(std::array<Vec3, 4>{s.pos(t[0]), s.pos(t[1]), s.pos(t[2]), s.pos(t[3])}))
+      const auto pos = [&s](const Stored& x) {
+        if constexpr (std::is_same_v<Stored, Key>)
+          return s.pos(x);
+        else
+          return s.stored_pos(x);
+      };
+      for (const double a : d3::dihedral_angles(std::array<Vec3, 4>{pos(t[0]), pos(t[1]), pos(t[2]), pos(t[3])}))
         m = std::min(m, a);
     }
     return m;

@@ -2,13 +2,13 @@
 // cut point record of S5, the regularity check of S4 and the phase clock.
 #pragma once
 
-#include <chrono>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
 
 #include "bccmis/d3/mesh.h"
 #include "bccmis/d3/point.h"
+#include "bccmis/stuff/stopwatch.h"
 #include "bccmis/stuff/stuff.h"
 
 namespace bccmis::stuff::detail {
@@ -42,8 +42,8 @@ struct Cut {
   bool removed = false;
 };
 
-using Clock = std::chrono::steady_clock;
-inline double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+using stuff::Clock;
+using stuff::seconds_since;
 
 /// Times consecutive phases into a PhaseTimes, when one is given.
 class PhaseClock {
