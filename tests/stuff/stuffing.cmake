@@ -18,9 +18,9 @@ bccmis_add_test(cli.stuff_readers
 
 # S28: the same mesh, byte for byte, on 1, 2 and 3 threads
 # (tests/stuff/stuff_threads.py).
-add_test(NAME cli.stuff_threads
-         COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/stuff/stuff_threads.py $<TARGET_FILE:bccmis>)
-set_tests_properties(cli.stuff_threads PROPERTIES LABELS cli TIMEOUT 120)
+bccmis_add_test(cli.stuff_threads
+                COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/stuff/stuff_threads.py $<TARGET_FILE:bccmis>
+                LABELS cli TIMEOUT 120)
 
 # A triangle mesh moved rigidly (--animate with an input file, S14 and S15):
 # the cube [0,2]^3 (tests/stuff/good/cube.off) in 3 steps; the .pvd's frames
