@@ -131,6 +131,15 @@ TEST(VtuCompressed, ReadsVtkHeaderConventions) {
     // Line 3 holds <Points><DataArray ...>: the body starts at column 74.
     EXPECT_STREQ(e.what(), "d.vtu:3:74: compressed block 0 does not inflate to 49 bytes");
   }
+  // A last block promising 8 GiB from a few dozen compressed bytes:
+  // refused by deflate's largest ratio (about 1032 to 1), before any
+  // allocation, as the block that cannot inflate to its size that it is.
+  try {
+    read_vtu(hand_vtu<std::uint64_t>(std::uint64_t{1} << 33), "e.vtu", sign);
+    FAIL() << "a last block of 8 GiB was read";
+  } catch (const ParseError& e) {
+    EXPECT_STREQ(e.what(), "e.vtu:3:74: compressed block 0 does not inflate to 8589934592 bytes");
+  }
 }
 
 }  // namespace

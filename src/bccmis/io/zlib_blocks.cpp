@@ -56,8 +56,14 @@ std::optional<std::string> zlib_inflate_blocks(std::string_view bytes, std::size
     const std::uint64_t compressed = integer(3 + b);
     // A last block of size 0 is a full block (VTK's convention).
     const std::uint64_t size = b + 1 == blocks && last != 0 ? last : block_size;
-    if (compressed > bytes.size() - at || size > (std::uint64_t{1} << 32)) {
+    if (compressed > bytes.size() - at) {
       why = "compressed block " + std::to_string(b) + " runs past the data";
+      return std::nullopt;
+    }
+    // Deflate's largest expansion is about 1032 to 1 (zlib's technical
+    // details): a header promising more is refused before any allocation.
+    if (size > 1032 * compressed + 1032) {
+      why = "compressed block " + std::to_string(b) + " does not inflate to " + std::to_string(size) + " bytes";
       return std::nullopt;
     }
     const std::size_t from = raw.size();
