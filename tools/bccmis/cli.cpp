@@ -13,56 +13,14 @@
 #include <vector>
 
 #include "io.h"
+#include "stuff_command_line.h"
+#include "validators.h"
 
 namespace bccmis::cli {
 
 namespace {
 
 // ---- Option groups and checks that several subcommands share ----------------
-
-/// Whether all of `text` reads as one number (std::from_chars: no sign for
-/// an unsigned type, no leading '+' or white space).
-template <class Number>
-bool read_whole(const std::string& text, Number& value) {
-  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  return !text.empty() && ec == std::errc() && ptr == text.data() + text.size();
-}
-
-/// An integer from `lo` to `hi`; CLI11 prefixes the option's name to the
-/// message, which names the value as given: "--max-level: '3.5' is not an
-/// integer from 0 to 20".
-CLI::Validator integer_in(std::int64_t lo, std::int64_t hi) {
-  const std::string range = std::to_string(lo) + " to " + std::to_string(hi);
-  return CLI::Validator(
-      [lo, hi, range](std::string& text) -> std::string {
-        std::int64_t v = 0;
-        return read_whole(text, v) && v >= lo && v <= hi ? std::string()
-                                                         : "'" + text + "' is not an integer from " + range;
-      },
-      "INT in [" + std::to_string(lo) + " - " + std::to_string(hi) + "]");
-}
-
-/// A whole number >= 0 (seeds, counts): "--threads: '-1' is not a
-/// non-negative integer".
-CLI::Validator non_negative_integer() {
-  return CLI::Validator(
-      [](std::string& text) -> std::string {
-        std::uint64_t v = 0;
-        return read_whole(text, v) ? std::string() : "'" + text + "' is not a non-negative integer";
-      },
-      "NONNEGATIVE");
-}
-
-/// A finite number above zero: "--size: '0' is not a positive finite number".
-CLI::Validator positive_finite() {
-  return CLI::Validator(
-      [](std::string& text) -> std::string {
-        double v = 0;
-        return read_whole(text, v) && std::isfinite(v) && v > 0 ? std::string()
-                                                                : "'" + text + "' is not a positive finite number";
-      },
-      "POSITIVE");
-}
 
 /// An option whose value is one of `choices`, its default shown.
 CLI::Option* add_choice(CLI::App* cmd, const std::string& name, std::string& value, const std::string& help,
@@ -178,77 +136,6 @@ CLI::App* add_mesh(CLI::App& app, MeshOptions& o) {
                 "Binary, and the .vtu's arrays zlib-compressed (vtkZLibDataCompressor); .msh has no compression");
   cmd->add_flag("-q,--quiet", o.quiet, "No summary on stderr");
   cmd->footer("Example:\n  bccmis mesh spec/examples/d3/face_refined.state -o face.vtu -o face.msh --stats");
-  return cmd;
-}
-
-CLI::App* add_stuff(CLI::App& app, StuffOptions& o) {
-  CLI::App* cmd = app.add_subcommand(
-      "stuff", "Mesh a closed shape with tetrahedra by isosurface stuffing on the graded BCC mesh (spec/stuffing.md).");
-  cmd->add_option("input", o.input,
-                  "Triangle mesh: .off, .obj, .ply or .stl (PLY and STL ASCII or binary), '-' for stdin; open, "
-                  "self-intersecting or "
-                  "otherwise flawed meshes are repaired and meshed as the solid where the winding number >= 1/2");
-  cmd->add_option("--format", o.format,
-                  "Read the input as off, obj, ply or stl whatever its name (default: the extension; for stdin, "
-                  "what the content is)")
-      ->check(CLI::IsMember({"off", "obj", "ply", "stl"}));
-  cmd->add_option("--shape", o.shape,
-                  "A built-in shape instead: sphere[:r=R], torus[:R=A,r=B], spheres[:r=R,d=D] (defaults r=1; R=1, "
-                  "r=0.4; r=0.7, d=1)");
-  cmd->add_option("-o,--output", o.outputs,
-                  "File to write (atomically, all or none); the extension names it: .vtu, .msh (Gmsh 4.1), .mesh "
-                  "(Medit) for the tetrahedra, .off, .obj for the boundary surface; repeatable");
-  cmd->add_option("-L,--max-level", o.max_level, "Finest lattice level, used where the surface is (default 4)")
-      ->check(integer_in(0, 20));
-  cmd->add_option("--min-level", o.min_level, "Every lattice leaf at least this level (default 0)")
-      ->check(integer_in(0, 20));
-  cmd->add_option("--cells", o.cells, "Level-0 cubes along the shape's longest side (default 4)")
-      ->check(integer_in(1, 1 << 20));
-  cmd->add_option("--size", o.size, "Finest edge length at most this (chooses --max-level; not with -L)")
-      ->check(positive_finite());
-  cmd->add_option("--animate", o.animate,
-                  "Move the shape through the lattice in N frames: local refine and coarsen per frame; -o names "
-                  "a .pvd (ParaView) and the frames are written beside it as .vtu")
-      ->check(integer_in(1, 100000));
-  cmd->add_option("--path", o.path,
-                  "--animate: the whole motion DX,DY,DZ (default: 1.5 times the shape's x extent along x)");
-  cmd->add_flag("--compare", o.compare, "--animate: also build every frame from scratch and report both times");
-  cmd->add_option("--impl", o.impl,
-                  "The lattice: fast (d3::fast::Lattice, default) or reference (d3::Graph); the same mesh")
-      ->check(CLI::IsMember({"fast", "reference"}));
-  cmd->add_option("--threads", o.threads,
-                  "Threads extracting the lattice's tetrahedra (default 0: every core); the same mesh on any number")
-      ->check(integer_in(0, 256));
-  cmd->add_flag("--stats", o.stats, "Print counts, volume and its error, dihedral angles and seconds per phase");
-  cmd->add_flag("--json", o.json, "Statistics as JSON (implies --stats)");
-  cmd->add_flag("--hausdorff", o.hausdorff,
-                "Statistics also with the Hausdorff distance between the boundary and the surface, sampled both ways "
-                "(implies --stats; not with --animate)");
-  cmd->add_flag("--check", o.check,
-                "Check the mesh before writing: exact positive orientation, conformity, a closed boundary on the "
-                "surface (exit 1 on a violation)");
-  cmd->add_flag("--strict", o.strict,
-                "Refuse a triangle mesh that is not closed, manifold, consistently oriented and free of "
-                "self-intersections, naming its first flaw (exit 2)");
-  cmd->add_flag("--binary", o.binary,
-                "Write .vtu (base64; also the --animate frames) and .msh (4.1 binary) with binary numbers; ASCII "
-                "otherwise");
-  cmd->add_flag("--compress", o.compress,
-                "Binary, and the .vtu's arrays (also the --animate frames) zlib-compressed "
-                "(vtkZLibDataCompressor); .msh has no compression");
-  cmd->add_option("--surface-vertices", o.surface_vertices,
-                  "The .off/.obj boundary: 'used' (its own vertices, default) or 'all' (every vertex of the "
-                  "volume mesh, numbered as in the .vtu/.msh/.mesh)")
-      ->check(CLI::IsMember({"used", "all"}));
-  cmd->add_option("--memory-limit", o.memory_limit_gb,
-                  "Refuse before building when the run's memory estimate exceeds this many GB (10^9 bytes; "
-                  "default: the memory available, MemAvailable)")
-      ->check(positive_finite());
-  cmd->add_flag("-q,--quiet", o.quiet, "No progress or summary on stderr");
-  cmd->footer(
-      "Examples:\n  bccmis stuff --shape torus -L 4 -o torus.vtu --stats\n"
-      "  bccmis stuff elephant.off -L 5 -o elephant.msh -o elephant.off --stats --json\n"
-      "  bccmis stuff --shape sphere:r=0.5 -L 4 --animate 20 -o frames/ball.pvd --stats --compare");
   return cmd;
 }
 
@@ -523,14 +410,13 @@ std::variant<int, Command> parse_command_line(int argc, char** argv) {
     std::cerr << "bccmis: " << e.what() << "\nRun '" << help_command(argc, argv) << "' for usage.\n";
     return kExitInput;
   }
-  // spec/cli.md, stuff: --size chooses the max level, so it and -L exclude
-  // each other; --json implies --stats (stuff, mesh), and so does --hausdorff (stuff).
-  if (*stuff_cmd && stuff_cmd->count("--size") > 0 && stuff_cmd->count("--max-level") > 0) {
-    std::cerr << "bccmis: --size and -L,--max-level both choose the finest level: give one\n"
-              << "Run 'bccmis stuff --help' for usage.\n";
-    return kExitInput;
-  }
-  stuff.stats = stuff.stats || stuff.json || stuff.hausdorff;
+  // spec/cli.md: stuff's rules across options (stuff_command_line.h);
+  // mesh's --json implies --stats.
+  if (*stuff_cmd)
+    if (const std::string why = finish_stuff_options(*stuff_cmd, stuff); !why.empty()) {
+      std::cerr << "bccmis: " << why << "\nRun 'bccmis stuff --help' for usage.\n";
+      return kExitInput;
+    }
   mesh.stats = mesh.stats || mesh.json;
   for (const auto& [cmd, options] : commands)
     if (*cmd) return options();

@@ -13,8 +13,6 @@
 #include <optional>
 #include <string>
 
-#include "bccmis/io/medit.h"
-#include "bccmis/io/msh.h"
 #include "bccmis/io/obj.h"
 #include "bccmis/io/off.h"
 #include "bccmis/io/pvd.h"
@@ -25,18 +23,13 @@
 #include "bccmis/stuff/statistics_json.h"
 #include "commands.h"
 #include "io.h"
+#include "stuff_input.h"
 
 namespace bccmis::cli {
 
 namespace {
 
 using stuff::Vec3;
-
-bool ends_with(const std::string& s, std::string_view suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-io::Encoding encoding(const StuffOptions& o) { return output_encoding(o.binary, o.compress); }
 
 bool is_surface_path(const std::string& path) { return ends_with(path, ".off") || ends_with(path, ".obj"); }
 
@@ -46,19 +39,6 @@ void check_stuff_path(const std::string& path) {
     throw InputError("output '" + path +
                      "': unknown format; the extension names it: .vtu, .msh, .mesh (tetrahedra), .off, .obj "
                      "(boundary surface)");
-}
-
-std::shared_ptr<const stuff::Shape> load_shape(const StuffOptions& o) {
-  if (!o.shape.empty() && !o.input.empty()) throw InputError("give either an input mesh or --shape, not both");
-  if (o.shape.empty() && o.input.empty())
-    throw InputError("nothing to mesh: give an input mesh (.off, .obj, .ply, .stl) or --shape NAME");
-  if (!o.shape.empty()) return stuff::make_builtin(o.shape);
-  std::optional<io::SurfaceFormat> format;
-  if (o.format == "off") format = io::SurfaceFormat::off;
-  if (o.format == "obj") format = io::SurfaceFormat::obj;
-  if (o.format == "ply") format = io::SurfaceFormat::ply;
-  if (o.format == "stl") format = io::SurfaceFormat::stl;
-  return stuff::load_mesh_file(o.input, o.strict, format);
 }
 
 std::string number(double x) { return JsonWriter::number(x); }
@@ -274,9 +254,7 @@ int run(const StuffOptions& o) {
   const d3::TetMeshF& mesh = m.stuffed.mesh;
   for (const std::string& path : o.outputs) {
     const bool all = o.surface_vertices == "all";
-    if (ends_with(path, ".vtu")) outputs.add(path, [&](std::ostream& out) { io::write_vtu(out, mesh, encoding(o)); });
-    if (ends_with(path, ".msh")) outputs.add(path, [&](std::ostream& out) { io::write_msh(out, mesh, encoding(o)); });
-    if (ends_with(path, ".mesh")) outputs.add(path, [&](std::ostream& out) { io::write_medit(out, mesh); });
+    add_tetrahedra_output(outputs, path, mesh, encoding(o));
     if (ends_with(path, ".off"))
       outputs.add(path, [&](std::ostream& out) { io::write_off(out, mesh, m.boundary, all); });
     if (ends_with(path, ".obj"))

@@ -1,0 +1,50 @@
+// bccmis::distributed: isosurface stuffing split by leaves
+// (spec/distributed.md D3-D5), without MPI: what one rank stuffs from the
+// replicated lattice, a piece as bytes, and the whole mesh gathered from the
+// pieces.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "bccmis/d3/point.h"
+#include "bccmis/d3/tet_mesh.h"
+#include "bccmis/fast/d3/lattice.h"
+#include "bccmis/stuff/shape.h"
+#include "bccmis/stuff/stuff.h"
+
+namespace bccmis::distributed {
+
+/// D4: the part of the serial mesh made by some leaves. mesh.vertices are in
+/// key order (keys[i] is vertex i's S8 key: (p, p) for lattice point p, the
+/// cut edge's ends in position order); the output tetrahedra of leaves[i]
+/// are mesh.tets[leaf_begin[i] .. leaf_begin[i + 1]].
+struct LeafPiece {
+  d3::TetMeshF mesh;
+  std::vector<std::array<d3::Point, 2>> keys;
+  std::vector<d3::Point> leaves;  ///< sorted (the order of cells(g))
+  std::vector<std::uint32_t> leaf_begin;
+};
+
+/// D3: S5-S9 on the tetrahedra of the leaves `own` (centers of leaves of g,
+/// any order) and of every level-L leaf of g, keeping the output of the
+/// leaves `own`: exactly those tetrahedra of stuff(shape, fit, g, options)
+/// made by them. Throws as stuff() does (std::logic_error, S4, S12).
+LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
+                       const stuff::StuffOptions& options, std::span<const d3::Point> own);
+
+/// D5: the whole mesh from pieces whose leaves do not overlap: vertices in
+/// key order, tetrahedra leaf by leaf in leaf order. Pieces of every leaf of
+/// the lattice give stuff()'s mesh exactly.
+d3::TetMeshF gather_pieces(std::span<const LeafPiece> pieces);
+
+/// A piece as bytes (host byte order, for MPI_BYTE between ranks of one
+/// machine type) and back. from_bytes throws std::runtime_error on a
+/// truncated or inconsistent encoding.
+std::vector<std::byte> to_bytes(const LeafPiece& piece);
+LeafPiece from_bytes(std::span<const std::byte> bytes);
+
+}  // namespace bccmis::distributed

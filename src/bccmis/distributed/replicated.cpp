@@ -1,0 +1,37 @@
+// spec/distributed.md: the replicated lattice (S24, S2, S3) and a rank's
+// piece of the mesh on it (D3, D4).
+#include "bccmis/distributed/replicated.h"
+
+#include <cmath>
+
+#include "bccmis/stuff/mesh_shape.h"
+
+namespace bccmis::distributed {
+
+namespace {
+
+stuff::Fit fit_of(const stuff::Shape& local, const stuff::Normalisation& n, stuff::StuffOptions& options) {
+  if (options.size) options.size = std::ldexp(*options.size, -n.exponent);
+  const stuff::Fit fit = stuff::fit_lattice(local.bounds(), options);
+  options.max_level = fit.size.L;
+  return fit;
+}
+
+}  // namespace
+
+Replicated replicate(const stuff::Shape& world, const stuff::StuffOptions& options) {
+  const stuff::Normalisation n = stuff::normalisation_of(world.bounds());
+  std::unique_ptr<stuff::Shape> local = world.normalised(n);
+  stuff::StuffOptions o = options;
+  const stuff::Fit fit = fit_of(*local, n, o);
+  d3::fast::Lattice g = stuff::background_fast(*local, fit, o);
+  return Replicated{n, std::move(local), o, fit, std::move(g)};
+}
+
+LeafPiece stuff_piece(const Replicated& r, std::span<const d3::Point> own) {
+  LeafPiece piece = stuff_leaves(*r.shape, r.fit, r.lattice, r.options, own);
+  stuff::to_world(piece.mesh, r.normalisation, std::ldexp(r.fit.h, r.normalisation.exponent));
+  return piece;
+}
+
+}  // namespace bccmis::distributed

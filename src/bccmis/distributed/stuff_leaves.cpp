@@ -1,0 +1,64 @@
+// spec/distributed.md D3: what one rank stuffs, from the replicated lattice.
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "bccmis/d3/detail/tetrahedra.h"
+#include "bccmis/distributed/leaf_piece.h"
+
+namespace bccmis::distributed {
+
+LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
+                       const stuff::StuffOptions& options, std::span<const d3::Point> own) {
+  std::vector<d3::Point> mine(own.begin(), own.end());
+  std::sort(mine.begin(), mine.end());
+  // T_r (D3): the tetrahedra of the own leaves and of every level-L leaf (the
+  // band of S3, which holds every tetrahedron with a cut edge), leaf by leaf
+  // in the order of cells(g); own_range[i]: where own leaf i's lattice
+  // tetrahedra are in `tets`.
+  std::vector<d3::Tet> tets;
+  std::vector<std::array<std::size_t, 2>> own_range;
+  std::vector<d3::Point> ring;
+  ring.reserve(8);
+  const int L = fit.size.L;
+  for (const d3::Point& u : g.cells()) {
+    const bool is_own = std::binary_search(mine.begin(), mine.end(), u);
+    if (!is_own && g.level_of(u) != L) continue;
+    const std::size_t first = tets.size();
+    d3::detail::leaf_tetrahedra(g, u, tets, ring);
+    if (is_own) own_range.push_back({first, tets.size()});
+  }
+  const stuff::StuffedPart part = stuff::stuff_part(shape, fit, g, options, tets);
+  const d3::TetMeshF& all = part.stuffed.mesh;
+
+  // Keep the output of the own leaves and the vertices it uses, in the
+  // part's vertex order (S8's key order).
+  LeafPiece piece;
+  piece.leaves = mine;
+  std::vector<std::uint8_t> used(all.vertices.size(), 0);
+  for (const auto& [first, last] : own_range)
+    for (std::uint32_t k = part.begin[first]; k < part.begin[last]; ++k)
+      for (const std::uint32_t v : all.tets[k]) used[v] = 1;
+  std::vector<std::uint32_t> index(all.vertices.size(), 0);
+  for (std::size_t v = 0; v < all.vertices.size(); ++v) {
+    if (!used[v]) continue;
+    index[v] = static_cast<std::uint32_t>(piece.mesh.vertices.size());
+    piece.mesh.vertices.push_back(all.vertices[v]);
+    piece.mesh.kind.push_back(all.kind[v]);
+    piece.keys.push_back(part.keys[v]);
+  }
+  for (const auto& [first, last] : own_range) {
+    piece.leaf_begin.push_back(static_cast<std::uint32_t>(piece.mesh.tets.size()));
+    for (std::uint32_t k = part.begin[first]; k < part.begin[last]; ++k) {
+      std::array<std::uint32_t, 4> t = all.tets[k];
+      for (std::uint32_t& v : t) v = index[v];
+      piece.mesh.tets.push_back(t);
+      piece.mesh.level.push_back(all.level[k]);
+    }
+  }
+  piece.leaf_begin.push_back(static_cast<std::uint32_t>(piece.mesh.tets.size()));
+  return piece;
+}
+
+}  // namespace bccmis::distributed

@@ -1,0 +1,40 @@
+#include "stuff_input.h"
+
+#include <optional>
+
+#include "bccmis/io/medit.h"
+#include "bccmis/io/msh.h"
+#include "bccmis/io/surface_format.h"
+#include "bccmis/io/vtu.h"
+#include "bccmis/stuff/mesh_shape.h"
+#include "io.h"
+
+namespace bccmis::cli {
+
+bool ends_with(const std::string& s, std::string_view suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+io::Encoding encoding(const StuffOptions& o) { return output_encoding(o.binary, o.compress); }
+
+void add_tetrahedra_output(OutputSet& outputs, const std::string& path, const d3::TetMeshF& mesh,
+                           io::Encoding encoding) {
+  if (ends_with(path, ".vtu")) outputs.add(path, [&](std::ostream& out) { io::write_vtu(out, mesh, encoding); });
+  if (ends_with(path, ".msh")) outputs.add(path, [&](std::ostream& out) { io::write_msh(out, mesh, encoding); });
+  if (ends_with(path, ".mesh")) outputs.add(path, [&](std::ostream& out) { io::write_medit(out, mesh); });
+}
+
+std::shared_ptr<const stuff::Shape> load_shape(const StuffOptions& o) {
+  if (!o.shape.empty() && !o.input.empty()) throw InputError("give either an input mesh or --shape, not both");
+  if (o.shape.empty() && o.input.empty())
+    throw InputError("nothing to mesh: give an input mesh (.off, .obj, .ply, .stl) or --shape NAME");
+  if (!o.shape.empty()) return stuff::make_builtin(o.shape);
+  std::optional<io::SurfaceFormat> format;
+  if (o.format == "off") format = io::SurfaceFormat::off;
+  if (o.format == "obj") format = io::SurfaceFormat::obj;
+  if (o.format == "ply") format = io::SurfaceFormat::ply;
+  if (o.format == "stl") format = io::SurfaceFormat::stl;
+  return stuff::load_mesh_file(o.input, o.strict, format);
+}
+
+}  // namespace bccmis::cli

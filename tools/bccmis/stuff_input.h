@@ -1,0 +1,34 @@
+// bccmis CLI: what every tool that stuffs reads from its options
+// (bccmis stuff, bccmis-mpi stuff): the shape, the output encoding and the
+// writers of the tetrahedra.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "bccmis/d3/tet_mesh.h"
+#include "bccmis/io/encoding.h"
+#include "bccmis/stuff/shape.h"
+#include "commands.h"
+#include "io.h"
+
+namespace bccmis::cli {
+
+/// Whether `s` ends with `suffix` (an output's extension).
+bool ends_with(const std::string& s, std::string_view suffix);
+
+/// The encoding --binary and --compress ask for (spec/cli.md).
+io::Encoding encoding(const StuffOptions& o);
+
+/// Stages `mesh` for `path` by its extension: .vtu, .msh, .mesh (the
+/// encoding for the first two); any other extension stages nothing.
+void add_tetrahedra_output(OutputSet& outputs, const std::string& path, const d3::TetMeshF& mesh,
+                           io::Encoding encoding);
+
+/// The shape to mesh: --shape NAME or the input mesh (--format, --strict).
+/// Throws InputError when both or neither are given, stuff::ShapeError when
+/// the shape is refused.
+std::shared_ptr<const stuff::Shape> load_shape(const StuffOptions& o);
+
+}  // namespace bccmis::cli

@@ -1,0 +1,46 @@
+// bccmis-mpi: `mpirun -n P bccmis-mpi stuff ...`, isosurface stuffing with
+// its leaves split among MPI ranks (spec/distributed.md). main starts MPI
+// (through the p4est bridge's Session), parses the options of `bccmis stuff`
+// (the same option code, stuff_command_line.h) plus --gather, and runs
+// stuff.cpp. Exit codes as bccmis's (spec/cli.md), the same on every rank.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "bccmis/p4est/bridge.h"
+#include "io.h"
+#include "stuff_command_line.h"
+#include "stuff_mpi.h"
+
+int main(int argc, char** argv) {
+  using namespace bccmis::cli;
+  const bccmis::p4est_bridge::Session session(&argc, &argv);
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  CLI::App app{
+      "bccmis-mpi: tetrahedral meshes of shapes by isosurface stuffing, the leaves split among MPI ranks "
+      "(spec/distributed.md). Run under mpirun -n P."};
+  app.require_subcommand(1);
+  StuffOptions o;
+  bool gather = false;
+  CLI::App* cmd = add_stuff(app, o);
+  cmd->add_flag("--gather", gather,
+                "Gather the mesh on rank 0 and write one file (.vtu, .msh, .mesh), the bytes bccmis stuff writes; "
+                "without it, -o names a .pvtu and every rank writes its .vtu piece beside it");
+  cmd->footer("Example:\n  mpirun -n 2 bccmis-mpi stuff --shape torus -L 4 -o torus.pvtu");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = e.get_exit_code() == 0 ? kExitOk : kExitInput;
+    if (rank == 0) {
+      if (code == kExitOk) return app.exit(e);
+      std::cerr << "bccmis-mpi: " << e.what() << "\nRun 'bccmis-mpi stuff --help' for usage.\n";
+    }
+    return code;
+  }
+  if (const std::string why = finish_stuff_options(*cmd, o); !why.empty()) {
+    if (rank == 0) std::cerr << "bccmis-mpi: " << why << "\nRun 'bccmis-mpi stuff --help' for usage.\n";
+    return kExitInput;
+  }
+  return run_mpi(o, gather, MPI_COMM_WORLD);
+}

@@ -1,0 +1,161 @@
+// bccmis-mpi stuff: the stages of one run on every rank and the agreement
+// after each (spec/distributed.md D6); the library does the work
+// (bccmis/distributed/): the replicated lattice, the partition (D2), the
+// pieces (D3, D4) and their gathering (D5).
+#include "stuff_mpi.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bccmis/distributed/leaf_piece.h"
+#include "bccmis/distributed/ranks.h"
+#include "bccmis/distributed/replicated.h"
+#include "bccmis/io/pvtu.h"
+#include "bccmis/io/vtu.h"
+#include "bccmis/p4est/bridge.h"
+#include "bccmis/stuff/mesh_shape.h"
+#include "io.h"
+#include "stuff_input.h"
+
+namespace bccmis::cli {
+
+namespace {
+
+constexpr const char* kTool = "bccmis-mpi stuff";
+
+/// Ends the run on every rank with the agreed exit code.
+struct Stop {
+  int code;
+};
+
+/// D6: runs `body` on this rank (a failure prints one line, naming the
+/// rank), then the ranks agree; throws Stop on every rank when one failed.
+template <class Body>
+void stage(MPI_Comm comm, Body&& body) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  const std::string tool = std::string(kTool) + ": rank " + std::to_string(rank);
+  const int code = guarded(tool.c_str(), [&] {
+    try {
+      body();
+    } catch (const stuff::ShapeError& e) {
+      throw InputError(e.what());
+    }
+    return kExitOk;
+  });
+  const distributed::Agreement a = distributed::agree(code, comm);
+  if (!a.ok()) throw Stop{a.code};
+}
+
+/// D1: the options this slice does not split yet, and the one output.
+void check_options(const StuffOptions& o, bool gather) {
+  const auto refuse = [](const std::string& what) {
+    throw InputError(what + " is not supported on several ranks yet (spec/distributed.md D1)");
+  };
+  if (o.stats) refuse("--stats (also --json, --hausdorff)");
+  if (o.check) refuse("--check");
+  if (o.animate > 0 || !o.path.empty() || o.compare) refuse("--animate");
+  if (o.impl != "fast") refuse("--impl " + o.impl);
+  if (o.memory_limit_gb > 0) refuse("--memory-limit");
+  if (o.outputs.size() != 1)
+    throw InputError("give one output: -o FILE.pvtu (a piece per rank), or --gather -o FILE (.vtu, .msh, .mesh)");
+  const std::string& path = o.outputs[0];
+  if (gather && !ends_with(path, ".vtu") && !ends_with(path, ".msh") && !ends_with(path, ".mesh"))
+    throw InputError("output '" + path + "': --gather writes .vtu, .msh or .mesh");
+  if (!gather && !ends_with(path, ".pvtu"))
+    throw InputError("output '" + path + "': without --gather the output is a .pvtu (its pieces beside it)");
+}
+
+/// The piece of rank r beside FILE.pvtu: FILE_RRRR.vtu.
+std::string piece_path(const std::string& pvtu, int r) {
+  char suffix[24];
+  std::snprintf(suffix, sizeof suffix, "_%04d.vtu", r);
+  return pvtu.substr(0, pvtu.size() - 5) + suffix;
+}
+
+std::string file_name(const std::string& path) { return path.substr(path.find_last_of('/') + 1); }
+
+}  // namespace
+
+int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
+  int rank = 0, size = 0;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  OutputSet pieces, index;  // index: rank 0's .pvtu or --gather file, renamed last
+  std::shared_ptr<const stuff::Shape> shape;
+  std::optional<distributed::Replicated> lattice;
+  distributed::LeafPiece piece;
+  const std::string& out = o.outputs.empty() ? std::string() : o.outputs[0];
+  try {
+    // (1) the options, the outputs' temporaries, the shape, the lattice.
+    stage(comm, [&] {
+      check_options(o, gather);
+      if (!gather) pieces.open(piece_path(out, rank));
+      if (rank == 0) index.open(out);
+      shape = load_shape(o);
+      stuff::StuffOptions so;
+      so.max_level = o.max_level;
+      so.min_level = o.min_level;
+      so.cells = o.cells;
+      if (o.size > 0) so.size = o.size;
+      so.threads = o.threads;
+      lattice.emplace(distributed::replicate(*shape, so));
+      if (lattice->fit.size.L > P8EST_QMAXLEVEL)
+        throw InputError("max level " + std::to_string(lattice->fit.size.L) + ": the partition (p8est) reaches level " +
+                         std::to_string(P8EST_QMAXLEVEL) + " at most (spec/distributed.md D2)");
+    });
+    // (2) the partition and this rank's piece.
+    stage(comm, [&] {
+      const std::vector<d3::Point> own = distributed::own_leaves(lattice->lattice, comm);
+      piece = distributed::stuff_piece(*lattice, own);
+    });
+    // (3) the outputs, into their temporaries.
+    std::uint64_t tetrahedra = piece.mesh.tets.size(), vertices = 0;
+    MPI_Allreduce(MPI_IN_PLACE, &tetrahedra, 1, MPI_UINT64_T, MPI_SUM, comm);
+    std::vector<std::vector<std::byte>> bytes;
+    stage(comm, [&] {
+      if (gather) bytes = distributed::gather_bytes(distributed::to_bytes(piece), 0, comm);
+    });
+    stage(comm, [&] {
+      if (rank == 0 && tetrahedra == 0) {  // S26, as bccmis stuff
+        stuff::Fit world = lattice->fit;
+        world.h = std::ldexp(world.h, lattice->normalisation.exponent);
+        throw InputError(shape->describe() + ": the mesh is empty: " + stuff::level_hint(shape->bounds(), world));
+      }
+      if (!gather) {
+        pieces.add(piece_path(out, rank), [&](std::ostream& s) { io::write_vtu(s, piece.mesh, encoding(o)); });
+        if (rank == 0) {
+          std::vector<std::string> names;
+          for (int r = 0; r < size; ++r) names.push_back(file_name(piece_path(out, r)));
+          index.add(out, [&](std::ostream& s) { io::write_pvtu(s, names); });
+        }
+      } else if (rank == 0) {
+        std::vector<distributed::LeafPiece> all;
+        for (const auto& b : bytes) all.push_back(distributed::from_bytes(b));
+        const d3::TetMeshF mesh = distributed::gather_pieces(all);
+        vertices = mesh.vertices.size();
+        add_tetrahedra_output(index, out, mesh, encoding(o));
+      }
+    });
+    // (4) the pieces renamed into place on every rank, then the index.
+    stage(comm, [&] { pieces.commit(); });
+    stage(comm, [&] {
+      if (rank == 0) index.commit();
+    });
+    if (rank == 0 && !o.quiet)
+      std::cerr << kTool << ": " << tetrahedra << " tetrahedra"
+                << (gather ? ", " + std::to_string(vertices) + " vertices," : " in " + std::to_string(size) + " pieces")
+                << " from " << size << " rank" << (size == 1 ? "" : "s") << " written to " << out << "\n";
+  } catch (const Stop& stop) {
+    return stop.code;
+  }
+  return kExitOk;
+}
+
+}  // namespace bccmis::cli
