@@ -4,6 +4,7 @@
 // pieces (D3, D4) and their gathering (D5).
 #include "stuff_mpi.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -116,8 +117,12 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
       piece = distributed::stuff_piece(*lattice, own);
     });
     // (3) the outputs, into their temporaries.
-    std::uint64_t tetrahedra = piece.mesh.tets.size(), vertices = 0;
-    MPI_Allreduce(MPI_IN_PLACE, &tetrahedra, 1, MPI_UINT64_T, MPI_SUM, comm);
+    // Every rank's tetrahedra: a rank whose leaves make none writes no piece (D1).
+    const std::uint64_t mine = piece.mesh.tets.size();
+    std::vector<std::uint64_t> counts(static_cast<std::size_t>(size));
+    MPI_Allgather(&mine, 1, MPI_UINT64_T, counts.data(), 1, MPI_UINT64_T, comm);
+    std::uint64_t tetrahedra = 0, vertices = 0;
+    for (const std::uint64_t n : counts) tetrahedra += n;
     std::vector<std::vector<std::byte>> bytes;
     stage(comm, [&] {
       if (gather) bytes = distributed::gather_bytes(distributed::to_bytes(piece), 0, comm);
@@ -129,10 +134,12 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
         throw InputError(shape->describe() + ": the mesh is empty: " + stuff::level_hint(shape->bounds(), world));
       }
       if (!gather) {
-        pieces.add(piece_path(out, rank), [&](std::ostream& s) { io::write_vtu(s, piece.mesh, encoding(o)); });
+        if (mine > 0)
+          pieces.add(piece_path(out, rank), [&](std::ostream& s) { io::write_vtu(s, piece.mesh, encoding(o)); });
         if (rank == 0) {
           std::vector<std::string> names;
-          for (int r = 0; r < size; ++r) names.push_back(file_name(piece_path(out, r)));
+          for (int r = 0; r < size; ++r)
+            if (counts[static_cast<std::size_t>(r)] > 0) names.push_back(file_name(piece_path(out, r)));
           index.add(out, [&](std::ostream& s) { io::write_pvtu(s, names); });
         }
       } else if (rank == 0) {
@@ -144,13 +151,19 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
       }
     });
     // (4) the pieces renamed into place on every rank, then the index.
-    stage(comm, [&] { pieces.commit(); });
+    stage(comm, [&] {
+      if (mine > 0) pieces.commit();  // an empty piece's temporary goes with `pieces`
+    });
     stage(comm, [&] {
       if (rank == 0) index.commit();
     });
     if (rank == 0 && !o.quiet)
       std::cerr << kTool << ": " << tetrahedra << " tetrahedra"
-                << (gather ? ", " + std::to_string(vertices) + " vertices," : " in " + std::to_string(size) + " pieces")
+                << (gather ? ", " + std::to_string(vertices) + " vertices,"
+                           : " in " +
+                                 std::to_string(std::count_if(counts.begin(), counts.end(),
+                                                              [](std::uint64_t n) { return n > 0; })) +
+                                 " pieces")
                 << " from " << size << " rank" << (size == 1 ? "" : "s") << " written to " << out << "\n";
   } catch (const Stop& stop) {
     return stop.code;

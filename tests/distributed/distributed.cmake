@@ -1,0 +1,38 @@
+# Included by tests/CMakeLists.txt: stuffing split among MPI ranks
+# (spec/distributed.md), label mpi. In one process, the pieces of any split
+# of the leaves gathered are stuff()'s mesh; under mpirun on 1-4 ranks
+# (oversubscribed on small machines), bccmis-mpi stuff against bccmis stuff
+# (tests/distributed/mpi_stuff_test.py): --gather byte for byte, the .pvtu's
+# pieces by vertex positions and conformity, and the failures.
+bccmis_add_gtest(distributed_tests SOURCES stuff_leaves_test.cpp LIBS bccmis::distributed bccmis::stuff PREFIX distributed. NO_PRETTY_VALUES
+                 LABELS unit mpi)
+
+if(NOT TARGET bccmis_mpi OR NOT BCCMIS_MPIRUN)
+  return()
+endif()
+# As tests/p4est: LeakSanitizer reports OpenMPI's plugins.
+set(_bccmis_mpi_test ${BCCMIS_SYSTEM_PYTHON3} ${CMAKE_CURRENT_LIST_DIR}/mpi_stuff_test.py)
+set(_bccmis_mpi_tools ${BCCMIS_MPIRUN} $<TARGET_FILE:bccmis> $<TARGET_FILE:bccmis_mpi>)
+set(_bccmis_mpi_props LABELS mpi TIMEOUT 120 PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
+foreach(ranks 1 2 3 4)
+  bccmis_add_test(mpi.stuff_gather_torus_${ranks}_ranks
+                  COMMAND ${_bccmis_mpi_test} gather ${_bccmis_mpi_tools} ${ranks} -- --shape torus -L 3
+                  ${_bccmis_mpi_props})
+  bccmis_add_test(mpi.stuff_pvtu_torus_${ranks}_ranks
+                  COMMAND ${_bccmis_mpi_test} pvtu ${_bccmis_mpi_tools} ${ranks} -- --shape torus -L 3
+                  ${_bccmis_mpi_props})
+endforeach()
+if(TARGET bccmis::stuff_surface)  # a CGAL sample mesh (tests/stuff/stuff.cmake extracts it)
+  foreach(ranks 2 3)
+    bccmis_add_test(mpi.stuff_gather_double_torus_${ranks}_ranks
+                    COMMAND ${_bccmis_mpi_test} gather ${_bccmis_mpi_tools} ${ranks} --
+                            ${bccmis_cgal_data}/data/meshes/double-torus-example.off -L 3
+                    ${_bccmis_mpi_props})
+  endforeach()
+  bccmis_add_test(mpi.stuff_pvtu_double_torus_4_ranks
+                  COMMAND ${_bccmis_mpi_test} pvtu ${_bccmis_mpi_tools} 4 --
+                          ${bccmis_cgal_data}/data/meshes/double-torus-example.off -L 3
+                  ${_bccmis_mpi_props})
+endif()
+bccmis_add_test(mpi.stuff_errors_3_ranks COMMAND ${_bccmis_mpi_test} errors ${_bccmis_mpi_tools} 3
+                ${_bccmis_mpi_props})

@@ -1,0 +1,136 @@
+#!/usr/bin/env python3
+"""bccmis-mpi stuff against bccmis stuff (spec/distributed.md).
+
+  mpi_stuff_test.py gather MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
+      --gather's binary .vtu (on 2 ranks also ASCII .vtu and .msh) equals
+      bccmis stuff's byte for byte (D5).
+  mpi_stuff_test.py pvtu MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
+      the .pvtu lists the pieces written (one a rank with tetrahedra); they, read by meshio, hold the serial
+      mesh's tetrahedra (by vertex positions, bit for bit, with their levels)
+      and each boundary vertex at one position; every triangle lies in one
+      tetrahedron (the serial boundary) or two, and some interior triangles
+      join tetrahedra of two pieces (D3, D7).
+  mpi_stuff_test.py errors MPIRUN BCCMIS BCCMIS_MPI RANKS
+      an unreadable input, an unwritable output directory, and one rank that
+      cannot put its piece in place: exit 2, a message, no .pvtu (D6).
+"""
+import collections
+import os
+import subprocess
+import sys
+import tempfile
+import xml.etree.ElementTree as ET
+
+import meshio
+
+
+def run(cmd, expect=0):
+    r = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
+    if r.returncode != expect:
+        sys.exit(f"FAIL: {' '.join(cmd)}: exit {r.returncode}, expected {expect}\n{r.stderr}")
+    return r
+
+
+def mpi(mpirun, ranks):
+    return [mpirun, "--allow-run-as-root", "--oversubscribe", "-n", str(ranks)]
+
+
+def tets_of(mesh):
+    """The tetrahedra as sorted tuples of vertex positions, with the level."""
+    points = [tuple(map(float, p)) for p in mesh.points]
+    cells = mesh.cells_dict["tetra"]
+    levels = mesh.cell_data_dict["level"]["tetra"]
+    return [(tuple(sorted(points[v] for v in t)), int(l)) for t, l in zip(cells, levels)]
+
+
+def gather(mpirun, bccmis, bccmis_mpi, ranks, args, work):
+    formats = ((".vtu", ["--binary"]), (".vtu", []), (".msh", [])) if ranks == 2 else ((".vtu", ["--binary"]),)
+    for ext, extra in formats:
+        serial, together = os.path.join(work, "serial" + ext), os.path.join(work, "gathered" + ext)
+        run([bccmis, "stuff", *args, *extra, "-q", "-o", serial])
+        run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, *extra, "-q", "--gather", "-o", together])
+        a, b = open(serial, "rb").read(), open(together, "rb").read()
+        if a != b:
+            sys.exit(f"FAIL: {ranks} ranks, {ext} {extra}: the gathered file differs from bccmis stuff's "
+                     f"({len(a)} and {len(b)} bytes)")
+    print(f"ok: {ranks} ranks: --gather writes bccmis stuff's bytes ({', '.join(e + ' ' + ' '.join(x) for e, x in formats)})")
+
+
+def pvtu(mpirun, bccmis, bccmis_mpi, ranks, args, work):
+    serial_path, index = os.path.join(work, "serial.vtu"), os.path.join(work, "out.pvtu")
+    run([bccmis, "stuff", *args, "-q", "-o", serial_path])
+    run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, "-q", "-o", index])
+    # A rank whose leaves make no tetrahedron writes no piece (D1).
+    sources = [p.get("Source") for p in ET.parse(index).getroot().iter("Piece")]
+    written = sorted(f for f in os.listdir(work) if f.startswith("out_"))
+    if not sources or sources != written or any(s not in [f"out_{r:04d}.vtu" for r in range(ranks)] for s in sources):
+        sys.exit(f"FAIL: the .pvtu lists {sources}, the directory holds {written}")
+    serial = tets_of(meshio.read(serial_path))
+    union, piece_of = [], []
+    for r, source in enumerate(sources):
+        t = tets_of(meshio.read(os.path.join(work, source)))
+        if not t:
+            sys.exit(f"FAIL: piece {r} is empty")
+        union += t
+        piece_of += [r] * len(t)
+    if collections.Counter(union) != collections.Counter(serial):
+        sys.exit(f"FAIL: the pieces hold {len(union)} tetrahedra, the serial mesh {len(serial)}; "
+                 f"{len(set(union) ^ set(serial))} differ by vertex positions or level")
+    triangles = collections.defaultdict(list)
+    for (corners, _), r in zip(union, piece_of):
+        for skip in range(4):
+            triangles[tuple(c for i, c in enumerate(corners) if i != skip)].append(r)
+    over = [t for t, rs in triangles.items() if len(rs) > 2]
+    across = sum(1 for rs in triangles.values() if len(rs) == 2 and rs[0] != rs[1])
+    boundary = sum(1 for rs in triangles.values() if len(rs) == 1)
+    serial_triangles = collections.Counter()
+    for corners, _ in serial:
+        for skip in range(4):
+            serial_triangles[tuple(c for i, c in enumerate(corners) if i != skip)] += 1
+    serial_boundary = sum(1 for n in serial_triangles.values() if n == 1)
+    if over:
+        sys.exit(f"FAIL: {len(over)} triangles lie in more than two tetrahedra, e.g. {over[0]}")
+    if boundary != serial_boundary:
+        sys.exit(f"FAIL: {boundary} triangles in one tetrahedron across the pieces, {serial_boundary} in the serial mesh")
+    if ranks > 1 and across == 0:
+        sys.exit("FAIL: no interior triangle joins two pieces: the partition is not exercised")
+    print(f"ok: {ranks} ranks, {len(sources)} pieces: {len(union)} tetrahedra as in the serial mesh; {across} interior triangles "
+          f"join two pieces, none lies in three tetrahedra; {boundary} boundary triangles")
+
+
+def errors(mpirun, bccmis, bccmis_mpi, ranks, work):
+    def refused(args, index, says):
+        r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, "-o", index], expect=2)
+        if says not in r.stderr:
+            sys.exit(f"FAIL: {args}: stderr does not say '{says}':\n{r.stderr}")
+        if os.path.exists(index):
+            sys.exit(f"FAIL: {args}: a failed run left {index}")
+        left = [f for f in os.listdir(work) if f.startswith(".") or f.endswith(".pvtu")]
+        if left:
+            sys.exit(f"FAIL: {args}: a failed run left {left}")
+    index = os.path.join(work, "out.pvtu")
+    refused([os.path.join(work, "missing.off"), "-L", "2"], index, "missing.off")
+    refused(["--shape", "sphere", "-L", "2"], os.path.join(work, "no_such_dir", "out.pvtu"), "no_such_dir")
+    # Rank 1 (the last rank when there is one) cannot put its piece in place:
+    # its target is a directory. Every rank exits 2 and no .pvtu is written.
+    last = ranks - 1
+    os.mkdir(os.path.join(work, f"out_{last:04d}.vtu"))
+    refused(["--shape", "sphere", "-L", "2"], index, f"rank {last}")
+    print(f"ok: {ranks} ranks: an unreadable input, an unwritable directory and one rank's failed piece exit 2 "
+          "with no .pvtu")
+
+
+def main():
+    mode, mpirun, bccmis, bccmis_mpi, ranks = sys.argv[1:6]
+    args = sys.argv[7:] if len(sys.argv) > 6 and sys.argv[6] == "--" else []
+    with tempfile.TemporaryDirectory() as work:
+        if mode == "gather":
+            gather(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
+        elif mode == "pvtu":
+            pvtu(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
+        else:
+            errors(mpirun, bccmis, bccmis_mpi, int(ranks), work)
+
+
+if __name__ == "__main__":
+    main()
