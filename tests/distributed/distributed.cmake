@@ -26,12 +26,12 @@ if(TARGET bccmis::stuff_surface)  # a CGAL sample mesh (tests/stuff/stuff.cmake 
   foreach(ranks 2 3)
     bccmis_add_test(mpi.stuff_gather_double_torus_${ranks}_ranks
                     COMMAND ${_bccmis_mpi_test} gather ${_bccmis_mpi_tools} ${ranks} --
-                            ${bccmis_cgal_data}/data/meshes/double-torus-example.off -L 3
+                            ${bccmis_cgal_data}/data/meshes/double-torus-example.off -L 2 --cells 6
                     ${_bccmis_mpi_props})
   endforeach()
   bccmis_add_test(mpi.stuff_pvtu_double_torus_4_ranks
                   COMMAND ${_bccmis_mpi_test} pvtu ${_bccmis_mpi_tools} 4 --
-                          ${bccmis_cgal_data}/data/meshes/double-torus-example.off -L 3
+                          ${bccmis_cgal_data}/data/meshes/double-torus-example.off -L 2 --cells 6
                   ${_bccmis_mpi_props})
 endif()
 bccmis_add_test(mpi.stuff_errors_3_ranks COMMAND ${_bccmis_mpi_test} errors ${_bccmis_mpi_tools} 3
