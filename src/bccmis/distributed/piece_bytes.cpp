@@ -33,29 +33,29 @@ void take(std::span<const std::byte>& in, std::vector<T>& values) {
   in = in.subspan(n * sizeof(T));
 }
 
+/// visit(array) for each array of a piece, in the order of the encoding.
+template <class Piece, class Visit>
+void each_array(Piece& piece, Visit&& visit) {
+  visit(piece.mesh.vertices);
+  visit(piece.mesh.tets);
+  visit(piece.mesh.kind);
+  visit(piece.mesh.level);
+  visit(piece.keys);
+  visit(piece.leaves);
+  visit(piece.leaf_begin);
+}
+
 }  // namespace
 
 std::vector<std::byte> to_bytes(const LeafPiece& piece) {
   std::vector<std::byte> out;
-  put(out, piece.mesh.vertices);
-  put(out, piece.mesh.tets);
-  put(out, piece.mesh.kind);
-  put(out, piece.mesh.level);
-  put(out, piece.keys);
-  put(out, piece.leaves);
-  put(out, piece.leaf_begin);
+  each_array(piece, [&out](const auto& values) { put(out, values); });
   return out;
 }
 
 LeafPiece from_bytes(std::span<const std::byte> in) {
   LeafPiece piece;
-  take(in, piece.mesh.vertices);
-  take(in, piece.mesh.tets);
-  take(in, piece.mesh.kind);
-  take(in, piece.mesh.level);
-  take(in, piece.keys);
-  take(in, piece.leaves);
-  take(in, piece.leaf_begin);
+  each_array(piece, [&in](auto& values) { take(in, values); });
   const std::size_t n = piece.mesh.vertices.size();
   bool ok = in.empty() && piece.mesh.kind.size() == n && piece.keys.size() == n &&
             piece.mesh.level.size() == piece.mesh.tets.size() && piece.leaf_begin.size() == piece.leaves.size() + 1 &&
