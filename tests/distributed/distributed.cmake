@@ -16,10 +16,10 @@ set(_bccmis_mpi_tools ${BCCMIS_MPIRUN} $<TARGET_FILE:bccmis> $<TARGET_FILE:bccmi
 set(_bccmis_mpi_props LABELS mpi TIMEOUT 120 PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
 foreach(ranks 1 2 3 4)
   bccmis_add_test(mpi.stuff_gather_torus_${ranks}_ranks
-                  COMMAND ${_bccmis_mpi_test} gather ${_bccmis_mpi_tools} ${ranks} -- --shape torus -L 3
+                  COMMAND ${_bccmis_mpi_test} gather ${_bccmis_mpi_tools} ${ranks} -- --shape torus -L 2 --cells 6
                   ${_bccmis_mpi_props})
   bccmis_add_test(mpi.stuff_pvtu_torus_${ranks}_ranks
-                  COMMAND ${_bccmis_mpi_test} pvtu ${_bccmis_mpi_tools} ${ranks} -- --shape torus -L 3
+                  COMMAND ${_bccmis_mpi_test} pvtu ${_bccmis_mpi_tools} ${ranks} -- --shape torus -L 2 --cells 6
                   ${_bccmis_mpi_props})
 endforeach()
 if(TARGET bccmis::stuff_surface)  # a CGAL sample mesh (tests/stuff/stuff.cmake extracts it)
