@@ -22,6 +22,9 @@ foreach(ranks 1 2 3 4)
                   COMMAND ${_bccmis_mpi_test} pvtu ${_bccmis_mpi_tools} ${ranks} -- --shape torus -L 2 --cells 6
                   ${_bccmis_mpi_props})
 endforeach()
+# Rank 3's leaves all lie outside the torus: it writes no piece (D1).
+bccmis_add_test(mpi.stuff_pvtu_torus_empty_piece_4_ranks
+                COMMAND ${_bccmis_mpi_test} pvtu ${_bccmis_mpi_tools} 4:3 -- --shape torus -L 3 ${_bccmis_mpi_props})
 if(TARGET bccmis::stuff_surface)  # a CGAL sample mesh (tests/stuff/stuff.cmake extracts it)
   foreach(ranks 2 3)
     bccmis_add_test(mpi.stuff_gather_double_torus_${ranks}_ranks

@@ -4,12 +4,14 @@
   mpi_stuff_test.py gather MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
       --gather's binary .vtu (on 2 ranks also ASCII .vtu and .msh) equals
       bccmis stuff's byte for byte (D5).
-  mpi_stuff_test.py pvtu MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
+  mpi_stuff_test.py pvtu MPIRUN BCCMIS BCCMIS_MPI RANKS[:PIECES] -- STUFF_ARGS...
       the .pvtu lists the pieces written (one a rank with tetrahedra); they, read by meshio, hold the serial
       mesh's tetrahedra (by vertex positions, bit for bit, with their levels)
       and each boundary vertex at one position; every triangle lies in one
       tetrahedron (the serial boundary) or two, and some interior triangles
-      join tetrahedra of two pieces (D3, D7).
+      join tetrahedra of two pieces (D3, D7). With PIECES, exactly that many
+      pieces (fewer than RANKS: a rank whose leaves make no tetrahedron writes
+      none, D1).
   mpi_stuff_test.py errors MPIRUN BCCMIS BCCMIS_MPI RANKS
       an unreadable input, an unwritable output directory, and one rank that
       cannot put its piece in place: exit 2, a message, no .pvtu (D6).
@@ -56,7 +58,7 @@ def gather(mpirun, bccmis, bccmis_mpi, ranks, args, work):
     print(f"ok: {ranks} ranks: --gather writes bccmis stuff's bytes ({', '.join(e + ' ' + ' '.join(x) for e, x in formats)})")
 
 
-def pvtu(mpirun, bccmis, bccmis_mpi, ranks, args, work):
+def pvtu(mpirun, bccmis, bccmis_mpi, ranks, pieces, args, work):
     serial_path, index = os.path.join(work, "serial.vtu"), os.path.join(work, "out.pvtu")
     run([bccmis, "stuff", *args, "-q", "-o", serial_path])
     run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, "-q", "-o", index])
@@ -65,6 +67,8 @@ def pvtu(mpirun, bccmis, bccmis_mpi, ranks, args, work):
     written = sorted(f for f in os.listdir(work) if f.startswith("out_"))
     if not sources or sources != written or any(s not in [f"out_{r:04d}.vtu" for r in range(ranks)] for s in sources):
         sys.exit(f"FAIL: the .pvtu lists {sources}, the directory holds {written}")
+    if pieces is not None and len(sources) != pieces:
+        sys.exit(f"FAIL: {len(sources)} pieces, expected {pieces}")
     serial = tets_of(meshio.read(serial_path))
     union, piece_of = [], []
     for r, source in enumerate(sources):
@@ -127,7 +131,8 @@ def main():
         if mode == "gather":
             gather(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
         elif mode == "pvtu":
-            pvtu(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
+            count, _, pieces = ranks.partition(":")
+            pvtu(mpirun, bccmis, bccmis_mpi, int(count), int(pieces) if pieces else None, args, work)
         else:
             errors(mpirun, bccmis, bccmis_mpi, int(ranks), work)
 
