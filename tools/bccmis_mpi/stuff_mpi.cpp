@@ -106,10 +106,7 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
       so.cells = o.cells;
       if (o.size > 0) so.size = o.size;
       so.threads = o.threads;
-      lattice.emplace(distributed::replicate(*shape, so));
-      if (lattice->fit.size.L > P8EST_QMAXLEVEL)
-        throw InputError("max level " + std::to_string(lattice->fit.size.L) + ": the partition (p8est) reaches level " +
-                         std::to_string(P8EST_QMAXLEVEL) + " at most (spec/distributed.md D2)");
+      lattice.emplace(distributed::replicate(*shape, so, P8EST_QMAXLEVEL));
     });
     // (2) the partition and this rank's piece.
     stage(comm, [&] {

@@ -3,6 +3,7 @@
 #include "bccmis/distributed/replicated.h"
 
 #include <cmath>
+#include <string>
 
 #include "bccmis/stuff/mesh_shape.h"
 
@@ -19,11 +20,14 @@ stuff::Fit fit_of(const stuff::Shape& local, const stuff::Normalisation& n, stuf
 
 }  // namespace
 
-Replicated replicate(const stuff::Shape& world, const stuff::StuffOptions& options) {
+Replicated replicate(const stuff::Shape& world, const stuff::StuffOptions& options, int deepest) {
   const stuff::Normalisation n = stuff::normalisation_of(world.bounds());
   std::unique_ptr<stuff::Shape> local = world.normalised(n);
   stuff::StuffOptions o = options;
   const stuff::Fit fit = fit_of(*local, n, o);
+  if (fit.size.L > deepest)
+    throw stuff::ShapeError("max level " + std::to_string(fit.size.L) + ": the partition (p8est) reaches level " +
+                            std::to_string(deepest) + " at most (spec/distributed.md D1)");
   d3::fast::Lattice g = stuff::background_fast(*local, fit, o);
   return Replicated{n, std::move(local), o, fit, std::move(g)};
 }

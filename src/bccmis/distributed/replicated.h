@@ -24,8 +24,10 @@ struct Replicated {
 };
 
 /// S24, S2, S3 for `world` as mesh_shape() does them. Throws ShapeError as
-/// fit_lattice() does. `world` must outlive the result.
-Replicated replicate(const stuff::Shape& world, const stuff::StuffOptions& options);
+/// fit_lattice() does, and, before building anything, when the level used
+/// is above `deepest` (the partition's deepest level, D2). `world` must
+/// outlive the result.
+Replicated replicate(const stuff::Shape& world, const stuff::StuffOptions& options, int deepest);
 
 /// D3, D4: stuff_leaves() on the replicated lattice, the piece's vertices
 /// mapped to world coordinates (S24's to_world; ShapeError as there).
