@@ -275,8 +275,9 @@ int run(const StuffOptions& o) {
   for (const std::string& path : o.outputs) {
     const bool all = o.surface_vertices == "all";
     if (ends_with(path, ".vtu")) outputs.add(path, [&](std::ostream& out) { io::write_vtu(out, mesh, encoding(o)); });
-    if (ends_with(path, ".msh")) outputs.add(path, [&](std::ostream& out) { io::write_msh(out, mesh, encoding(o)); });
-    if (ends_with(path, ".mesh")) outputs.add(path, [&](std::ostream& out) { io::write_medit(out, mesh); });
+    if (ends_with(path, ".msh"))
+      outputs.add(path, [&](std::ostream& out) { io::write_msh(out, mesh, m.regions, encoding(o)); });
+    if (ends_with(path, ".mesh")) outputs.add(path, [&](std::ostream& out) { io::write_medit(out, mesh, m.regions); });
     if (ends_with(path, ".off"))
       outputs.add(path, [&](std::ostream& out) { io::write_off(out, mesh, m.boundary, all); });
     if (ends_with(path, ".obj"))

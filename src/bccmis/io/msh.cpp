@@ -92,8 +92,7 @@ class MshNumbers {
 };
 
 template <class P>
-void write_msh_impl(std::ostream& out, const d3::BasicTetMesh<P>& mesh, Encoding encoding) {
-  const Regions r = regions_of(mesh.tets);
+void write_msh_impl(std::ostream& out, const d3::BasicTetMesh<P>& mesh, const Regions& r, Encoding encoding) {
   const std::size_t n = mesh.vertices.size(), m = mesh.tets.size(), b = r.boundary.size();
   const std::size_t components = r.count;
   // Nodes need an entity even without tetrahedra.
@@ -193,7 +192,14 @@ void write_msh_impl(std::ostream& out, const d3::BasicTetMesh<P>& mesh, Encoding
 
 }  // namespace
 
-void write_msh(std::ostream& out, const d3::TetMesh& mesh, Encoding encoding) { write_msh_impl(out, mesh, encoding); }
-void write_msh(std::ostream& out, const d3::TetMeshF& mesh, Encoding encoding) { write_msh_impl(out, mesh, encoding); }
+void write_msh(std::ostream& out, const d3::TetMesh& mesh, Encoding encoding) {
+  write_msh_impl(out, mesh, regions_of(mesh.tets), encoding);
+}
+void write_msh(std::ostream& out, const d3::TetMeshF& mesh, Encoding encoding) {
+  write_msh_impl(out, mesh, regions_of(mesh.tets), encoding);
+}
+void write_msh(std::ostream& out, const d3::TetMeshF& mesh, const Regions& regions, Encoding encoding) {
+  write_msh_impl(out, mesh, regions, encoding);
+}
 
 }  // namespace bccmis::io

@@ -26,7 +26,8 @@ struct Components {
 
 }  // namespace
 
-Regions regions_of(const std::vector<std::array<std::uint32_t, 4>>& tets) {
+Regions regions_of(const std::vector<std::array<std::uint32_t, 4>>& tets,
+                   std::vector<std::array<std::uint32_t, 3>>* boundary_by_triple) {
   std::size_t vertex_count = 0;
   for (const auto& t : tets)
     vertex_count = std::max<std::size_t>(vertex_count, *std::max_element(t.begin(), t.end()) + std::size_t{1});
@@ -47,6 +48,11 @@ Regions regions_of(const std::vector<std::array<std::uint32_t, 4>>& tets) {
     const std::uint32_t root = components.find(t);
     if (number[root] == UINT32_MAX) number[root] = r.count++;
     r.tet_component[t] = number[root];
+  }
+  if (boundary_by_triple != nullptr) {
+    boundary_by_triple->clear();
+    boundary_by_triple->reserve(single.size());
+    for (const std::size_t f : single) boundary_by_triple->push_back(outward_face(tets, f));
   }
   std::stable_sort(single.begin(), single.end(),
                    [&](std::size_t a, std::size_t b) { return r.tet_component[a / 4] < r.tet_component[b / 4]; });
