@@ -35,6 +35,15 @@ StuffQuality angles_one_by_one(const d3::TetMeshF& m) {
   return q;
 }
 
+/// quality(m)'s angle statistics `q` are those of the angles one by one.
+void expect_angles_one_by_one(const d3::TetMeshF& m, const StuffQuality& q) {
+  const StuffQuality expected = angles_one_by_one(m);
+  EXPECT_EQ(q.histogram, expected.histogram);
+  EXPECT_EQ(q.below10, expected.below10);
+  EXPECT_EQ(q.min_dihedral, expected.min_dihedral);
+  EXPECT_EQ(q.max_dihedral, expected.max_dihedral);
+}
+
 /// A tetrahedron whose dihedral angle at its edge v0v1 (the z axis) is
 /// `degrees`: v2 in the half-plane y = 0, x > 0, and v3 at that angle from it.
 void add_tet_with_angle(d3::TetMeshF& m, long double degrees) {
@@ -64,12 +73,8 @@ TEST(StuffQualityAngles, BinEdgesAndTenDegreesCountAsTheRoundedAngles) {
   }
   // The check reads something: some of these angles round onto an edge or
   // either side of it (the exact counts below are the one-by-one path's).
-  const StuffQuality expected = angles_one_by_one(m);
   const StuffQuality q = quality(m);
-  EXPECT_EQ(q.histogram, expected.histogram);
-  EXPECT_EQ(q.below10, expected.below10);
-  EXPECT_EQ(q.min_dihedral, expected.min_dihedral);
-  EXPECT_EQ(q.max_dihedral, expected.max_dihedral);
+  expect_angles_one_by_one(m, q);
   // On the lines, half of the edge cases go up a bin: the 12 bins above
   // 7.5 + 15k each hold at least the tetrahedra placed a micro-degree above.
   for (std::size_t k = 1; k <= 12; ++k) EXPECT_GE(q.histogram[k], 1U) << "bin " << k;
@@ -83,12 +88,7 @@ TEST(StuffQualityAngles, StuffedMeshesCountAsTheRoundedAngles) {
     const auto shape = make_torus({0.01, -0.02, 0.003}, 1, 0.4);
     const d3::TetMeshF m = stuff_shape(*shape, o).mesh;
     ASSERT_GT(m.tets.size(), 300U);
-    const StuffQuality expected = angles_one_by_one(m);
-    const StuffQuality q = quality(m);
-    EXPECT_EQ(q.histogram, expected.histogram);
-    EXPECT_EQ(q.below10, expected.below10);
-    EXPECT_EQ(q.min_dihedral, expected.min_dihedral);
-    EXPECT_EQ(q.max_dihedral, expected.max_dihedral);
+    expect_angles_one_by_one(m, quality(m));
   }
 }
 
