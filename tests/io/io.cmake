@@ -1,6 +1,6 @@
 # The readers and writers of bccmis::io (src/bccmis/io/), format by format.
 find_package(ZLIB REQUIRED)
-bccmis_add_gtest(io_tests SOURCES ply_read_test.cpp pvd_test.cpp surface_format_test.cpp vtu_compressed_test.cpp
+bccmis_add_gtest(io_tests SOURCES base64_test.cpp ply_read_test.cpp regions_test.cpp pvd_test.cpp surface_format_test.cpp vtu_compressed_test.cpp
                  LIBS bccmis::io ZLIB::ZLIB LABELS unit)
 
 # The FEM files used as FEM codes use them (spec/mesh3d.md M20-M23): gmsh

@@ -3,7 +3,7 @@
 # boundary on the surface, enclosed volume equal to the tetrahedra's, every
 # interior triangle in two tetrahedra, positive orientation, angle bounds.
 # The checker's stuffed-mesh layer on hand-built meshes shares the executable.
-bccmis_add_gtest(stuffing_tests SOURCES stuffing_test.cpp stuffed_mesh_check_test.cpp
+bccmis_add_gtest(stuffing_tests SOURCES stuffing_test.cpp stuffed_mesh_check_test.cpp quality_test.cpp
                  LIBS bccmis::stuff bccmis::d3 bccmis::invariants_d3 LABELS unit)
 
 # The CLI's files read by meshio and gmsh, with the boundary's topology and

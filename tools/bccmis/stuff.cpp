@@ -254,7 +254,7 @@ int run(const StuffOptions& o) {
   const d3::TetMeshF& mesh = m.stuffed.mesh;
   for (const std::string& path : o.outputs) {
     const bool all = o.surface_vertices == "all";
-    add_tetrahedra_output(outputs, path, mesh, encoding(o));
+    add_tetrahedra_output(outputs, path, mesh, m.regions, encoding(o));
     if (ends_with(path, ".off"))
       outputs.add(path, [&](std::ostream& out) { io::write_off(out, mesh, m.boundary, all); });
     if (ends_with(path, ".obj"))

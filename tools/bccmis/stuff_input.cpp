@@ -18,10 +18,11 @@ bool ends_with(const std::string& s, std::string_view suffix) {
 io::Encoding encoding(const StuffOptions& o) { return output_encoding(o.binary, o.compress); }
 
 void add_tetrahedra_output(OutputSet& outputs, const std::string& path, const d3::TetMeshF& mesh,
-                           io::Encoding encoding) {
+                           const io::Regions& regions, io::Encoding encoding) {
   if (ends_with(path, ".vtu")) outputs.add(path, [&](std::ostream& out) { io::write_vtu(out, mesh, encoding); });
-  if (ends_with(path, ".msh")) outputs.add(path, [&](std::ostream& out) { io::write_msh(out, mesh, encoding); });
-  if (ends_with(path, ".mesh")) outputs.add(path, [&](std::ostream& out) { io::write_medit(out, mesh); });
+  if (ends_with(path, ".msh"))
+    outputs.add(path, [&](std::ostream& out) { io::write_msh(out, mesh, regions, encoding); });
+  if (ends_with(path, ".mesh")) outputs.add(path, [&](std::ostream& out) { io::write_medit(out, mesh, regions); });
 }
 
 std::shared_ptr<const stuff::Shape> load_shape(const StuffOptions& o) {

@@ -9,6 +9,7 @@
 
 #include "bccmis/d3/tet_mesh.h"
 #include "bccmis/io/encoding.h"
+#include "bccmis/io/regions.h"
 #include "bccmis/stuff/shape.h"
 #include "commands.h"
 #include "io.h"
@@ -22,9 +23,10 @@ bool ends_with(const std::string& s, std::string_view suffix);
 io::Encoding encoding(const StuffOptions& o);
 
 /// Stages `mesh` for `path` by its extension: .vtu, .msh, .mesh (the
-/// encoding for the first two); any other extension stages nothing.
+/// encoding for the first two; `regions`, io::regions_of(mesh.tets), for the
+/// last two); any other extension stages nothing.
 void add_tetrahedra_output(OutputSet& outputs, const std::string& path, const d3::TetMeshF& mesh,
-                           io::Encoding encoding);
+                           const io::Regions& regions, io::Encoding encoding);
 
 /// The shape to mesh: --shape NAME or the input mesh (--format, --strict).
 /// Throws InputError when both or neither are given, stuff::ShapeError when

@@ -18,6 +18,7 @@
 #include "bccmis/distributed/ranks.h"
 #include "bccmis/distributed/replicated.h"
 #include "bccmis/io/pvtu.h"
+#include "bccmis/io/regions.h"
 #include "bccmis/io/vtu.h"
 #include "bccmis/p4est/bridge.h"
 #include "bccmis/stuff/mesh_shape.h"
@@ -121,6 +122,8 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
     std::uint64_t tetrahedra = 0, vertices = 0;
     for (const std::uint64_t n : counts) tetrahedra += n;
     std::vector<std::vector<std::byte>> bytes;
+    d3::TetMeshF mesh;  // --gather: the whole mesh on rank 0, until it is written
+    io::Regions regions;
     stage(comm, [&] {
       if (gather) bytes = distributed::gather_bytes(distributed::to_bytes(piece), 0, comm);
     });
@@ -142,9 +145,10 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
       } else if (rank == 0) {
         std::vector<distributed::LeafPiece> all;
         for (const auto& b : bytes) all.push_back(distributed::from_bytes(b));
-        const d3::TetMeshF mesh = distributed::gather_pieces(all);
+        mesh = distributed::gather_pieces(all);
         vertices = mesh.vertices.size();
-        add_tetrahedra_output(index, out, mesh, encoding(o));
+        regions = io::regions_of(mesh.tets);
+        add_tetrahedra_output(index, out, mesh, regions, encoding(o));
       }
     });
     // (4) the pieces renamed into place on every rank, then the index.

@@ -103,7 +103,7 @@ long double coordinate(const Point& p, int i) { return static_cast<long double>(
 long double coordinate(const Vec3& p, int i) { return p[static_cast<std::size_t>(i)]; }
 
 template <class P>
-std::array<double, 6> dihedral_angles_impl(const std::array<P, 4>& t) {
+std::array<long double, 6> dihedral_cosines_impl(const std::array<P, 4>& t) {
   using V = std::array<long double, 3>;
   auto sub = [](const P& a, const P& b) {
     return V{coordinate(a, 0) - coordinate(b, 0), coordinate(a, 1) - coordinate(b, 1),
@@ -117,14 +117,21 @@ std::array<double, 6> dihedral_angles_impl(const std::array<P, 4>& t) {
   // and (i, j, l): between the components of ik and il orthogonal to ij.
   static constexpr int kEdges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
                                        {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
-  std::array<double, 6> out{};
+  std::array<long double, 6> out{};
   for (int e = 0; e < 6; ++e) {
     const auto [i, j, k, l] = kEdges[e];
     const V axis = sub(t[j], t[i]);
     const V nk = cross(axis, sub(t[k], t[i])), nl = cross(axis, sub(t[l], t[i]));
-    const long double c = dot(nk, nl) / std::sqrt(dot(nk, nk) * dot(nl, nl));
-    out[e] = static_cast<double>(std::acos(std::clamp(c, -1.0L, 1.0L)) * 180.0L / std::acos(-1.0L));
+    out[static_cast<std::size_t>(e)] = std::clamp(dot(nk, nl) / std::sqrt(dot(nk, nk) * dot(nl, nl)), -1.0L, 1.0L);
   }
+  return out;
+}
+
+template <class P>
+std::array<double, 6> dihedral_angles_impl(const std::array<P, 4>& t) {
+  std::array<double, 6> out{};
+  const auto c = dihedral_cosines_impl(t);
+  for (std::size_t e = 0; e < 6; ++e) out[e] = dihedral_angle(c[e]);
   return out;
 }
 
@@ -132,6 +139,8 @@ std::array<double, 6> dihedral_angles_impl(const std::array<P, 4>& t) {
 
 std::array<double, 6> dihedral_angles(const Tet& t) { return dihedral_angles_impl(t); }
 std::array<double, 6> dihedral_angles(const std::array<Vec3, 4>& t) { return dihedral_angles_impl(t); }
+std::array<long double, 6> dihedral_cosines(const std::array<Vec3, 4>& t) { return dihedral_cosines_impl(t); }
+double dihedral_angle(long double cosine) { return static_cast<double>(std::acos(cosine) * 180.0L / std::acos(-1.0L)); }
 
 MeshQuality mesh_quality(const std::vector<Tet>& tets) {
   MeshQuality q;

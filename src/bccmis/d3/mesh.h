@@ -46,6 +46,11 @@ TetMesh index_mesh(const Graph& g, const std::vector<Tet>& tets);
 std::array<double, 6> dihedral_angles(const Tet& t);
 /// The same for a tetrahedron in space.
 std::array<double, 6> dihedral_angles(const std::array<Vec3, 4>& t);
+/// The cosines of those angles, in the same order, clamped to [-1, 1]:
+/// dihedral_angles(t)[e] is dihedral_angle(dihedral_cosines(t)[e]) exactly.
+std::array<long double, 6> dihedral_cosines(const std::array<Vec3, 4>& t);
+/// The angle in degrees of a cosine in [-1, 1], as dihedral_angles rounds it.
+double dihedral_angle(long double cosine);
 
 /// What `bccmis mesh --stats` reports of a mesh (spec/mesh3d.md §6).
 struct MeshQuality {

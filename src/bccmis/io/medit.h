@@ -11,6 +11,7 @@
 
 #include "bccmis/d3/tet_mesh.h"
 #include "bccmis/io/orientation.h"
+#include "bccmis/io/regions.h"
 
 namespace bccmis::io {
 
@@ -18,6 +19,8 @@ namespace bccmis::io {
 /// as reference (0 past the end of `level`), End.
 void write_medit(std::ostream& out, const d3::TetMesh& mesh);
 void write_medit(std::ostream& out, const d3::TetMeshF& mesh);
+/// The same with the mesh's regions already found (regions_of(mesh.tets)).
+void write_medit(std::ostream& out, const d3::TetMeshF& mesh, const Regions& regions);
 
 /// The tetrahedral mesh in `text`: vertices with their reference as kind
 /// (0..255), tetrahedra (1-based indices in the file) with their reference as

@@ -11,7 +11,7 @@ namespace bccmis::io {
 namespace {
 
 template <class P>
-void write_medit_impl(std::ostream& out, const d3::BasicTetMesh<P>& mesh) {
+void write_medit_impl(std::ostream& out, const d3::BasicTetMesh<P>& mesh, const Regions& r) {
   out << "MeshVersionFormatted 2\n\nDimension 3\n\nVertices\n" << mesh.vertices.size() << '\n';
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
     detail::write_point(out, mesh.vertices[i], ' ');
@@ -23,7 +23,6 @@ void write_medit_impl(std::ostream& out, const d3::BasicTetMesh<P>& mesh) {
     out << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << ' ' << t[3] + 1 << ' '
         << (i < mesh.level.size() ? mesh.level[i] : 0) << '\n';
   }
-  const Regions r = regions_of(mesh.tets);
   out << "\nTriangles\n" << r.boundary.size() << '\n';
   for (std::size_t j = 0; j < r.boundary.size(); ++j) {
     const auto& f = r.boundary[j];
@@ -34,7 +33,10 @@ void write_medit_impl(std::ostream& out, const d3::BasicTetMesh<P>& mesh) {
 
 }  // namespace
 
-void write_medit(std::ostream& out, const d3::TetMesh& mesh) { write_medit_impl(out, mesh); }
-void write_medit(std::ostream& out, const d3::TetMeshF& mesh) { write_medit_impl(out, mesh); }
+void write_medit(std::ostream& out, const d3::TetMesh& mesh) { write_medit_impl(out, mesh, regions_of(mesh.tets)); }
+void write_medit(std::ostream& out, const d3::TetMeshF& mesh) { write_medit_impl(out, mesh, regions_of(mesh.tets)); }
+void write_medit(std::ostream& out, const d3::TetMeshF& mesh, const Regions& regions) {
+  write_medit_impl(out, mesh, regions);
+}
 
 }  // namespace bccmis::io

@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <ostream>
 #include <string>
@@ -24,52 +25,74 @@ double coordinate(const d3::Vec3& p, std::size_t i) { return p[i]; }
 
 /// The numbers of an MSH 4.1 section as text (separated by spaces, lines
 /// ended by end_line) or binary (int as int32, size_t as uint64, double as
-/// float64; end_line writes nothing).
+/// float64; end_line writes nothing), gathered in a buffer written out when
+/// full and at flush() (so anything written to the stream directly must
+/// come after a flush or end_section).
 class MshNumbers {
  public:
   MshNumbers(std::ostream& out, Encoding encoding) : out_(out), binary_(encoding != Encoding::ascii) {}
+  MshNumbers(const MshNumbers&) = delete;
+  MshNumbers& operator=(const MshNumbers&) = delete;
+  ~MshNumbers() { flush(); }
+
   void integer(int v) {
     if (binary_) return raw(static_cast<std::int32_t>(v));
-    text(std::to_string(v));
+    text(v);
   }
   void size(std::size_t v) {
     if (binary_) return raw(static_cast<std::uint64_t>(v));
-    text(std::to_string(v));
+    text(v);
   }
   void real(double v) {
     if (binary_) return raw(v);
-    char buf[32];
-    text(std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr));
+    text(v);
   }
   void end_line() {
-    if (!binary_) out_ << '\n';
+    if (!binary_) put('\n');
     first_ = true;
   }
   /// "$EndNAME", after a newline that ends the binary data.
   void end_section(const char* name) {
+    flush();
     if (binary_) out_ << '\n';
     out_ << "$End" << name << '\n';
     first_ = true;
   }
+  void flush() {
+    out_.write(buffer_.data(), static_cast<std::streamsize>(used_));
+    used_ = 0;
+  }
 
  private:
+  static constexpr std::size_t kRoom = 32;  ///< the most one number takes, with its space
+
+  char* room() {
+    if (used_ + kRoom > buffer_.size()) flush();
+    return buffer_.data() + used_;
+  }
+  void put(char c) { *room() = c, ++used_; }
   template <class T>
   void raw(T v) {
-    out_.write(reinterpret_cast<const char*>(&v), sizeof v);
+    std::memcpy(room(), &v, sizeof v);
+    used_ += sizeof v;
   }
-  void text(const std::string& s) {
-    if (!first_) out_ << ' ';
-    out_ << s;
+  template <class T>
+  void text(T v) {
+    char* p = room();
+    if (!first_) *p++ = ' ';
+    p = std::to_chars(p, buffer_.data() + buffer_.size(), v).ptr;
+    used_ = static_cast<std::size_t>(p - buffer_.data());
     first_ = false;
   }
   std::ostream& out_;
   bool binary_;
   bool first_ = true;
+  std::array<char, 65536> buffer_{};
+  std::size_t used_ = 0;
 };
 
 template <class P>
-void write_msh_impl(std::ostream& out, const d3::BasicTetMesh<P>& mesh, Encoding encoding) {
-  const Regions r = regions_of(mesh.tets);
+void write_msh_impl(std::ostream& out, const d3::BasicTetMesh<P>& mesh, const Regions& r, Encoding encoding) {
   const std::size_t n = mesh.vertices.size(), m = mesh.tets.size(), b = r.boundary.size();
   const std::size_t components = r.count;
   // Nodes need an entity even without tetrahedra.
@@ -80,6 +103,7 @@ void write_msh_impl(std::ostream& out, const d3::BasicTetMesh<P>& mesh, Encoding
   out << "$MeshFormat\n4.1 " << (binary ? 1 : 0) << " 8\n";
   if (binary) {
     w.integer(1);  // tells the reader the byte order
+    w.flush();
     out << '\n';
   }
   out << "$EndMeshFormat\n";
@@ -168,7 +192,14 @@ void write_msh_impl(std::ostream& out, const d3::BasicTetMesh<P>& mesh, Encoding
 
 }  // namespace
 
-void write_msh(std::ostream& out, const d3::TetMesh& mesh, Encoding encoding) { write_msh_impl(out, mesh, encoding); }
-void write_msh(std::ostream& out, const d3::TetMeshF& mesh, Encoding encoding) { write_msh_impl(out, mesh, encoding); }
+void write_msh(std::ostream& out, const d3::TetMesh& mesh, Encoding encoding) {
+  write_msh_impl(out, mesh, regions_of(mesh.tets), encoding);
+}
+void write_msh(std::ostream& out, const d3::TetMeshF& mesh, Encoding encoding) {
+  write_msh_impl(out, mesh, regions_of(mesh.tets), encoding);
+}
+void write_msh(std::ostream& out, const d3::TetMeshF& mesh, const Regions& regions, Encoding encoding) {
+  write_msh_impl(out, mesh, regions, encoding);
+}
 
 }  // namespace bccmis::io

@@ -9,6 +9,7 @@
 #include "bccmis/d3/tet_mesh.h"
 #include "bccmis/io/encoding.h"
 #include "bccmis/io/orientation.h"
+#include "bccmis/io/regions.h"
 
 namespace bccmis::io {
 
@@ -20,6 +21,9 @@ namespace bccmis::io {
 /// tets + j + 1; node tags from 1.
 void write_msh(std::ostream& out, const d3::TetMesh& mesh, Encoding encoding = Encoding::ascii);
 void write_msh(std::ostream& out, const d3::TetMeshF& mesh, Encoding encoding = Encoding::ascii);
+/// The same with the mesh's regions already found (regions_of(mesh.tets)).
+void write_msh(std::ostream& out, const d3::TetMeshF& mesh, const Regions& regions,
+               Encoding encoding = Encoding::ascii);
 
 /// The tetrahedra of the MSH 4.1 text `text` (as write_msh writes it, or
 /// Gmsh), ASCII or binary: $MeshFormat 4.1 0 8 or 4.1 1 8, $Nodes (not parametric), $Elements whose

@@ -1,8 +1,10 @@
 #include "bccmis/io/regions.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <numeric>
-#include <tuple>
+
+#include "bccmis/io/tet_faces.h"
 
 namespace bccmis::io {
 
@@ -22,38 +24,23 @@ struct Components {
   }
 };
 
-/// One face of one tetrahedron: its sorted vertices, the tetrahedron, and
-/// the face as oriented outward.
-struct Face {
-  std::array<std::uint32_t, 3> key;
-  std::uint32_t tet;
-  std::array<std::uint32_t, 3> outward;
-};
-
 }  // namespace
 
-Regions regions_of(const std::vector<std::array<std::uint32_t, 4>>& tets) {
-  // The face opposite v_i of a positive tetrahedron, outward.
-  static constexpr std::size_t kFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
-  std::vector<Face> faces;
-  faces.reserve(4 * tets.size());
-  for (std::uint32_t t = 0; t < tets.size(); ++t)
-    for (const auto& f : kFaces) {
-      const std::array<std::uint32_t, 3> tri{tets[t][f[0]], tets[t][f[1]], tets[t][f[2]]};
-      std::array<std::uint32_t, 3> key = tri;
-      std::sort(key.begin(), key.end());
-      faces.push_back({key, t, tri});
-    }
-  std::sort(faces.begin(), faces.end(),
-            [](const Face& a, const Face& b) { return std::tie(a.key, a.tet) < std::tie(b.key, b.tet); });
+Regions regions_of(const std::vector<std::array<std::uint32_t, 4>>& tets,
+                   std::vector<std::array<std::uint32_t, 3>>* boundary_by_triple) {
+  std::size_t vertex_count = 0;
+  for (const auto& t : tets)
+    vertex_count = std::max<std::size_t>(vertex_count, *std::max_element(t.begin(), t.end()) + std::size_t{1});
+  // The groups of faces in the order of their sorted vertex triples
+  // (io/tet_faces.h): a larger group joins its tetrahedra, a single face is
+  // a boundary triangle.
   Components components(tets.size());
-  std::vector<const Face*> single;
-  for (std::size_t i = 0; i < faces.size();) {
-    std::size_t j = i + 1;
-    while (j < faces.size() && faces[j].key == faces[i].key) components.join(faces[i].tet, faces[j++].tet);
-    if (j == i + 1) single.push_back(&faces[i]);
-    i = j;
-  }
+  std::vector<std::size_t> single;
+  for_each_face_group(tets, vertex_count, [&](const std::size_t* first, const std::size_t* last) {
+    if (last - first == 1) single.push_back(*first);
+    for (const std::size_t* f = first + 1; f < last; ++f)
+      components.join(static_cast<std::uint32_t>(*first / 4), static_cast<std::uint32_t>(*f / 4));
+  });
   Regions r;
   r.tet_component.resize(tets.size());
   std::vector<std::uint32_t> number(tets.size(), UINT32_MAX);  // by root
@@ -62,11 +49,18 @@ Regions regions_of(const std::vector<std::array<std::uint32_t, 4>>& tets) {
     if (number[root] == UINT32_MAX) number[root] = r.count++;
     r.tet_component[t] = number[root];
   }
+  if (boundary_by_triple != nullptr) {
+    boundary_by_triple->clear();
+    boundary_by_triple->reserve(single.size());
+    for (const std::size_t f : single) boundary_by_triple->push_back(outward_face(tets, f));
+  }
   std::stable_sort(single.begin(), single.end(),
-                   [&](const Face* a, const Face* b) { return r.tet_component[a->tet] < r.tet_component[b->tet]; });
-  for (const Face* f : single) {
-    r.boundary.push_back(f->outward);
-    r.boundary_component.push_back(r.tet_component[f->tet]);
+                   [&](std::size_t a, std::size_t b) { return r.tet_component[a / 4] < r.tet_component[b / 4]; });
+  r.boundary.reserve(single.size());
+  r.boundary_component.reserve(single.size());
+  for (const std::size_t f : single) {
+    r.boundary.push_back(outward_face(tets, f));
+    r.boundary_component.push_back(r.tet_component[f / 4]);
   }
   return r;
 }

@@ -23,7 +23,11 @@ struct Regions {
   std::vector<std::uint32_t> boundary_component;
 };
 
-/// M23 on the tetrahedra `tets` (indices into any vertex array).
-Regions regions_of(const std::vector<std::array<std::uint32_t, 4>>& tets);
+/// M23 on the tetrahedra `tets` (indices into any vertex array). With
+/// `boundary_by_triple`, also the boundary triangles in the order of their
+/// sorted vertex triples (the order of spec/stuffing.md S11's boundary), from
+/// the same one grouping of the faces (io/tet_faces.h).
+Regions regions_of(const std::vector<std::array<std::uint32_t, 4>>& tets,
+                   std::vector<std::array<std::uint32_t, 3>>* boundary_by_triple = nullptr);
 
 }  // namespace bccmis::io

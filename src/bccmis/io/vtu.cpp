@@ -1,5 +1,7 @@
 #include "bccmis/io/vtu.h"
 
+#include <algorithm>
+#include <array>
 #include <bit>
 #include <charconv>
 #include <cstddef>
@@ -38,27 +40,46 @@ void write_number(std::ostream& out, T v) {
     out.write(buf, std::to_chars(buf, buf + sizeof buf, v).ptr - buf);
 }
 
-/// One DataArray of `values` (per_line numbers a line in ASCII): ASCII text,
-/// base64 of a UInt64 byte count followed by the little-endian values, or
-/// the values compressed in blocks (detail/zlib_blocks.h).
-template <class T>
-void write_data_array(std::ostream& out, const std::string& attributes, const std::vector<T>& values,
+/// One DataArray of `count` values of type T, the i-th `value_at(i)`
+/// (per_line numbers a line in ASCII): ASCII text, base64 of a UInt64 byte
+/// count followed by the little-endian values, streamed, or the values
+/// compressed in blocks (detail/zlib_blocks.h).
+template <class T, class ValueAt>
+void write_data_array(std::ostream& out, const std::string& attributes, std::size_t count, const ValueAt& value_at,
                       std::size_t per_line, Encoding encoding) {
   out << "        <DataArray " << attributes << " format=\"" << (encoding == Encoding::ascii ? "ascii" : "binary")
       << "\">\n";
   if (encoding == Encoding::ascii) {
-    for (std::size_t i = 0; i < values.size(); ++i) {
-      write_number(out, values[i]);
+    for (std::size_t i = 0; i < count; ++i) {
+      write_number(out, static_cast<T>(value_at(i)));
       out << ((i + 1) % per_line == 0 ? '\n' : ' ');
     }
   } else {
     static_assert(std::endian::native == std::endian::little, "the binary .vtu is written little-endian");
-    const std::uint64_t bytes = values.size() * sizeof(T);
-    std::string raw(sizeof bytes + bytes, '\0');
-    std::memcpy(raw.data(), &bytes, sizeof bytes);
-    if (bytes > 0) std::memcpy(raw.data() + sizeof bytes, values.data(), bytes);
-    const std::string_view data = std::string_view(raw).substr(sizeof bytes);
-    out << "          " << (encoding == Encoding::zlib ? detail::zlib_base64(data) : detail::base64(raw)) << '\n';
+    // The values in chunks of 4,096, each handed to `sink` as bytes.
+    const auto each_chunk = [&](const auto& sink) {
+      std::array<T, 4096> chunk{};
+      for (std::size_t i = 0; i < count;) {
+        const std::size_t n = std::min(chunk.size(), count - i);
+        for (std::size_t j = 0; j < n; ++j) chunk[j] = static_cast<T>(value_at(i + j));
+        sink(chunk.data(), n * sizeof(T));
+        i += n;
+      }
+    };
+    const std::uint64_t bytes = count * sizeof(T);
+    out << "          ";
+    if (encoding == Encoding::zlib) {
+      std::string raw;
+      raw.reserve(bytes);
+      each_chunk([&](const T* p, std::size_t n) { raw.append(reinterpret_cast<const char*>(p), n); });
+      out << detail::zlib_base64(raw);
+    } else {
+      detail::Base64Writer b64(out);
+      b64.put(&bytes, sizeof bytes);
+      each_chunk([&](const T* p, std::size_t n) { b64.put(p, n); });
+      b64.finish();
+    }
+    out << '\n';
   }
   out << "        </DataArray>\n";
 }
@@ -66,43 +87,43 @@ void write_data_array(std::ostream& out, const std::string& attributes, const st
 template <class P>
 void write_vtu_impl(std::ostream& out, const d3::BasicTetMesh<P>& mesh, Encoding encoding) {
   using Coordinate = std::conditional_t<std::is_same_v<P, d3::Point>, std::int64_t, double>;
-  std::vector<Coordinate> xyz;
-  xyz.reserve(3 * mesh.vertices.size());
-  for (const P& p : mesh.vertices) {
+  // Every array is read from the mesh as it is written: no copy of the mesh.
+  const auto coordinate = [&](std::size_t i) -> Coordinate {
+    const P& p = mesh.vertices[i / 3];
     if constexpr (std::is_same_v<P, d3::Point>)
-      xyz.insert(xyz.end(), {p.x, p.y, p.z});
+      return i % 3 == 0 ? p.x : i % 3 == 1 ? p.y : p.z;
     else
-      xyz.insert(xyz.end(), p.begin(), p.end());
-  }
-  std::vector<std::int64_t> connectivity, offsets;
-  connectivity.reserve(4 * mesh.tets.size());
-  offsets.reserve(mesh.tets.size());
-  for (const auto& t : mesh.tets) {
-    connectivity.insert(connectivity.end(), t.begin(), t.end());
-    offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
-  }
-  const std::vector<std::int32_t> level(mesh.level.begin(), mesh.level.end());
-  const std::vector<std::uint8_t> types(mesh.tets.size(), 10);
+      return p[i % 3];
+  };
+  const std::size_t nt = mesh.tets.size();
   out << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\""
       << (encoding == Encoding::ascii ? "" : " header_type=\"UInt64\"")
       << (encoding == Encoding::zlib ? " compressor=\"vtkZLibDataCompressor\"" : "") << ">\n"
       << "  <UnstructuredGrid>\n"
-      << "    <Piece NumberOfPoints=\"" << mesh.vertices.size() << "\" NumberOfCells=\"" << mesh.tets.size() << "\">\n"
+      << "    <Piece NumberOfPoints=\"" << mesh.vertices.size() << "\" NumberOfCells=\"" << nt << "\">\n"
       << "      <PointData Scalars=\"kind\">\n";
-  write_data_array(out, "type=\"UInt8\" Name=\"kind\"", mesh.kind, 1, encoding);
+  write_data_array<std::uint8_t>(
+      out, "type=\"UInt8\" Name=\"kind\"", mesh.kind.size(), [&](std::size_t i) { return mesh.kind[i]; }, 1, encoding);
   out << "      </PointData>\n"
       << "      <CellData Scalars=\"level\">\n";
-  write_data_array(out, "type=\"Int32\" Name=\"level\"", level, 1, encoding);
+  write_data_array<std::int32_t>(
+      out, "type=\"Int32\" Name=\"level\"", mesh.level.size(), [&](std::size_t i) { return mesh.level[i]; }, 1,
+      encoding);
   out << "      </CellData>\n"
       << "      <Points>\n";
-  write_data_array(out, "type=\"" + std::string(detail::coordinate_type<P>()) + "\" NumberOfComponents=\"3\"", xyz, 3,
-                   encoding);
+  write_data_array<Coordinate>(out,
+                               "type=\"" + std::string(detail::coordinate_type<P>()) + "\" NumberOfComponents=\"3\"",
+                               3 * mesh.vertices.size(), coordinate, 3, encoding);
   out << "      </Points>\n"
       << "      <Cells>\n";
-  write_data_array(out, "type=\"Int64\" Name=\"connectivity\"", connectivity, 4, encoding);
-  write_data_array(out, "type=\"Int64\" Name=\"offsets\"", offsets, 1, encoding);
-  write_data_array(out, "type=\"UInt8\" Name=\"types\"", types, 1, encoding);
+  write_data_array<std::int64_t>(
+      out, "type=\"Int64\" Name=\"connectivity\"", 4 * nt, [&](std::size_t i) { return mesh.tets[i / 4][i % 4]; }, 4,
+      encoding);
+  write_data_array<std::int64_t>(
+      out, "type=\"Int64\" Name=\"offsets\"", nt, [](std::size_t i) { return 4 * (i + 1); }, 1, encoding);
+  write_data_array<std::uint8_t>(
+      out, "type=\"UInt8\" Name=\"types\"", nt, [](std::size_t) { return 10; }, 1, encoding);
   out << "      </Cells>\n"
       << "    </Piece>\n"
       << "  </UnstructuredGrid>\n"

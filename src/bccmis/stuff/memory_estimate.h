@@ -11,8 +11,8 @@
 
 namespace bccmis::stuff {
 
-/// S25: the bytes a run's peak holds per leaf of its background lattice
-/// (measured on the sphere at levels 3-5: 2.2-2.5 KB).
+/// S25: the bytes a run's peak holds per leaf of the probe's estimate, below
+/// what was measured on the sphere (2.6 KB at level 5, 3.0 KB at level 7).
 inline constexpr double kBytesPerLeaf = 2200;
 
 /// S25: an estimate of the leaves S3 makes for `shape` at options.max_level

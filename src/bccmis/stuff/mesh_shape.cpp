@@ -110,7 +110,8 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
   // S11 first, so that S27's topology errors below come from meshes that pass it.
   if (settings.check)
     if (auto why = find_stuffed_problem(shape, fit, r.stuffed.mesh)) throw CheckError(world.describe() + ": " + *why);
-  r.boundary = boundary_triangles(r.stuffed.mesh);
+  // One grouping of the faces for S11's boundary and M23's regions.
+  r.regions = io::regions_of(r.stuffed.mesh.tets, &r.boundary);
   // S27: what the mesh is against what the shape is.
   r.topology = topology(r.stuffed.mesh, r.boundary);
   if (const auto want = world.surface_components()) {

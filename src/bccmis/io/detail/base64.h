@@ -2,32 +2,101 @@
 // binary DataArrays of a .vtu (spec/mesh3d.md M20), both ways.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cstddef>
+#include <ostream>
 #include <string>
 #include <string_view>
 
 namespace bccmis::io::detail {
 
-/// The base64 text of `bytes`.
-inline std::string base64(std::string_view bytes) {
-  static constexpr char kDigits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
-  std::size_t i = 0;
-  const auto byte = [&](std::size_t k) { return static_cast<unsigned>(static_cast<unsigned char>(bytes[k])); };
-  for (; i + 3 <= bytes.size(); i += 3) {
-    const unsigned v = byte(i) << 16 | byte(i + 1) << 8 | byte(i + 2);
-    for (int s = 18; s >= 0; s -= 6) out += kDigits[(v >> s) & 63];
-  }
-  if (const std::size_t rest = bytes.size() - i; rest > 0) {
-    const unsigned v = byte(i) << 16 | (rest == 2 ? byte(i + 1) << 8 : 0u);
-    out += kDigits[(v >> 18) & 63];
-    out += kDigits[(v >> 12) & 63];
-    out += rest == 2 ? kDigits[(v >> 6) & 63] : '=';
-    out += '=';
+inline constexpr char kBase64Digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+
+/// The 4 digits of each of the `triples` 3-byte groups at `in`, to `out`.
+inline char* base64_triples(const unsigned char* in, std::size_t triples, char* out) {
+  for (std::size_t t = 0; t < triples; ++t, in += 3) {
+    const unsigned v = unsigned{in[0]} << 16 | unsigned{in[1]} << 8 | unsigned{in[2]};
+    *out++ = kBase64Digits[(v >> 18) & 63];
+    *out++ = kBase64Digits[(v >> 12) & 63];
+    *out++ = kBase64Digits[(v >> 6) & 63];
+    *out++ = kBase64Digits[v & 63];
   }
   return out;
 }
+
+/// The 4 digits, padded, of the last 1 or 2 bytes (`rest`) at `in`.
+inline char* base64_tail(const unsigned char* in, std::size_t rest, char* out) {
+  const unsigned v = unsigned{in[0]} << 16 | (rest == 2 ? unsigned{in[1]} << 8 : 0u);
+  *out++ = kBase64Digits[(v >> 18) & 63];
+  *out++ = kBase64Digits[(v >> 12) & 63];
+  *out++ = rest == 2 ? kBase64Digits[(v >> 6) & 63] : '=';
+  *out++ = '=';
+  return out;
+}
+
+/// The base64 text of `bytes`.
+inline std::string base64(std::string_view bytes) {
+  std::string out((bytes.size() + 2) / 3 * 4, '\0');
+  const auto* in = reinterpret_cast<const unsigned char*>(bytes.data());
+  char* end = base64_triples(in, bytes.size() / 3, out.data());
+  if (const std::size_t rest = bytes.size() % 3; rest > 0) base64_tail(in + bytes.size() - rest, rest, end);
+  return out;
+}
+
+/// base64 written as the bytes come, in pieces of any length, to a stream:
+/// the same text as base64() of all the pieces joined, without holding them.
+class Base64Writer {
+ public:
+  explicit Base64Writer(std::ostream& out) : out_(out) {}
+  Base64Writer(const Base64Writer&) = delete;
+  Base64Writer& operator=(const Base64Writer&) = delete;
+
+  void put(const void* data, std::size_t n) {
+    const auto* in = static_cast<const unsigned char*>(data);
+    while (n > 0 && held_ > 0 && held_ < 3) {  // complete a group begun before
+      group_[held_++] = *in++;
+      --n;
+    }
+    if (held_ == 3) {
+      emit(group_, 1);
+      held_ = 0;
+    }
+    const std::size_t triples = n / 3;
+    for (std::size_t done = 0; done < triples;) {
+      const std::size_t now = std::min(triples - done, kTriplesPerFlush);
+      emit(in + 3 * done, now);
+      done += now;
+    }
+    for (std::size_t i = 3 * triples; i < n; ++i) group_[held_++] = in[i];
+  }
+
+  /// The last group, padded, and everything still buffered.
+  void finish() {
+    if (held_ > 0)
+      used_ = static_cast<std::size_t>(base64_tail(group_, held_, buffer_.data() + used_) - buffer_.data());
+    held_ = 0;
+    flush();
+  }
+
+ private:
+  static constexpr std::size_t kTriplesPerFlush = 16384;
+
+  void emit(const unsigned char* in, std::size_t triples) {
+    if (used_ + 4 * triples > buffer_.size()) flush();
+    used_ = static_cast<std::size_t>(base64_triples(in, triples, buffer_.data() + used_) - buffer_.data());
+  }
+  void flush() {
+    out_.write(buffer_.data(), static_cast<std::streamsize>(used_));
+    used_ = 0;
+  }
+
+  std::ostream& out_;
+  std::array<char, 4 * kTriplesPerFlush + 4> buffer_{};
+  std::size_t used_ = 0;
+  unsigned char group_[3] = {};
+  std::size_t held_ = 0;
+};
 
 /// The bytes of the base64 text `text` (white space ignored; padding may
 /// end each encoded block); false on a character outside the alphabet.
