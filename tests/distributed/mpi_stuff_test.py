@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """bccmis-mpi stuff against bccmis stuff (spec/distributed.md).
 
-  mpi_stuff_test.py gather MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
-      --gather's binary .vtu (on 2 ranks also ASCII .vtu and .msh) equals
+  mpi_stuff_test.py gather|gather-every-format MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
+      --gather's binary .vtu (every format: also ASCII .vtu and .msh) equals
       bccmis stuff's byte for byte (D5).
   mpi_stuff_test.py pvtu MPIRUN BCCMIS BCCMIS_MPI RANKS[:PIECES] -- STUFF_ARGS...
       the .pvtu lists the pieces written (one a rank with tetrahedra); they, read by meshio, hold the serial
@@ -45,8 +45,8 @@ def tets_of(mesh):
     return [(tuple(sorted(points[v] for v in t)), int(l)) for t, l in zip(cells, levels)]
 
 
-def gather(mpirun, bccmis, bccmis_mpi, ranks, args, work):
-    formats = ((".vtu", ["--binary"]), (".vtu", []), (".msh", [])) if ranks == 2 else ((".vtu", ["--binary"]),)
+def gather(mpirun, bccmis, bccmis_mpi, ranks, args, work, every_format):
+    formats = ((".vtu", ["--binary"]), (".vtu", []), (".msh", [])) if every_format else ((".vtu", ["--binary"]),)
     for ext, extra in formats:
         serial, together = os.path.join(work, "serial" + ext), os.path.join(work, "gathered" + ext)
         run([bccmis, "stuff", *args, *extra, "-q", "-o", serial])
@@ -128,8 +128,8 @@ def main():
     mode, mpirun, bccmis, bccmis_mpi, ranks = sys.argv[1:6]
     args = sys.argv[7:] if len(sys.argv) > 6 and sys.argv[6] == "--" else []
     with tempfile.TemporaryDirectory() as work:
-        if mode == "gather":
-            gather(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
+        if mode in ("gather", "gather-every-format"):
+            gather(mpirun, bccmis, bccmis_mpi, int(ranks), args, work, mode == "gather-every-format")
         elif mode == "pvtu":
             count, _, pieces = ranks.partition(":")
             pvtu(mpirun, bccmis, bccmis_mpi, int(count), int(pieces) if pieces else None, args, work)
