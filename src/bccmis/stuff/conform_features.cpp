@@ -1,0 +1,283 @@
+// S30-S33: a stuffed mesh made to hold the sharp features (conform_features.h).
+#include "bccmis/stuff/conform_features.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <map>
+#include <queue>
+#include <utility>
+
+#include "bccmis/d3/mesh.h"
+#include "bccmis/stuff/stuff.h"
+
+namespace bccmis::stuff {
+
+namespace {
+
+double distance(const Vec3& a, const Vec3& b) { return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
+
+/// The mesh as S30 walks it: the boundary graph, the tetrahedra at each
+/// vertex, and the guard of S31.
+class Snapper {
+ public:
+  Snapper(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary, double h)
+      : mesh_(mesh),
+        h_(h),
+        tets_at_(mesh.vertices.size()),
+        neighbours_(mesh.vertices.size()),
+        taken_(mesh.vertices.size(), 0) {
+    for (std::uint32_t t = 0; t < mesh.tets.size(); ++t)
+      for (const std::uint32_t v : mesh.tets[t]) tets_at_[v].push_back(t);
+    for (const auto& f : boundary)
+      for (std::size_t i = 0; i < 3; ++i) {
+        neighbours_[f[i]].push_back(f[(i + 1) % 3]);
+        neighbours_[f[(i + 1) % 3]].push_back(f[i]);
+      }
+    for (std::uint32_t v = 0; v < neighbours_.size(); ++v) {
+      auto& n = neighbours_[v];
+      std::sort(n.begin(), n.end());
+      n.erase(std::unique(n.begin(), n.end()), n.end());
+      if (!n.empty()) boundary_vertices_.push_back(v);
+    }
+  }
+
+  /// S31: v moved to x when every tetrahedron at it stays positively
+  /// oriented (S12) with its dihedral angles in S10's interval.
+  bool move(std::uint32_t v, const Vec3& x, FeatureConformity& r) {
+    for (const std::uint32_t t : tets_at_[v]) {
+      std::array<Vec3, 4> p;
+      for (std::size_t i = 0; i < 4; ++i) p[i] = mesh_.tets[t][i] == v ? x : mesh_.vertices[mesh_.tets[t][i]];
+      bool ok = orientation(p[0], p[1], p[2], p[3]) > 0;
+      for (const double a : ok ? d3::dihedral_angles(p) : std::array<double, 6>{})
+        ok = ok && a >= kDihedralBounds[0] && a <= kDihedralBounds[1];
+      if (!ok) {
+        ++r.refused;
+        return false;
+      }
+    }
+    ++r.moves;
+    mesh_.vertices[v] = x;
+    mesh_.kind[v] = kSnappedVertex;
+    return true;
+  }
+
+  /// S30.1: the nearest free boundary vertex within h whose move onto c is
+  /// accepted, taken; none: -1.
+  std::int64_t snap_corner(const Vec3& c, FeatureConformity& r) {
+    std::vector<std::pair<double, std::uint32_t>> candidates;
+    for (const std::uint32_t v : boundary_vertices_)
+      if (const double d = distance(mesh_.vertices[v], c); !taken_[v] && d <= h_) candidates.emplace_back(d, v);
+    std::sort(candidates.begin(), candidates.end());
+    for (const auto& [d, v] : candidates)
+      if (move(v, c, r)) {
+        taken_[v] = 1;
+        return v;
+      }
+    return -1;
+  }
+
+  /// S30.2: the piece C from vertex `from` to vertex `to` (its ends'
+  /// vertices, already on them): the cheapest boundary path through free
+  /// vertices within h of C, its interior moved onto C; a vertex whose move
+  /// is refused (or breaks the order along C) is left out and the path
+  /// sought again, up to kAttempts times. True when conformed.
+  bool snap_piece(const FeatureCurve& C, std::uint32_t from, std::uint32_t to, FeatureConformity& r) {
+    // d(v, C) of the free boundary vertices near C (a box around it first).
+    Vec3 lo = C.points.front(), hi = lo;
+    for (const Vec3& p : C.points)
+      for (std::size_t k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+    std::vector<std::uint32_t> nearby;
+    std::vector<double> near(mesh_.vertices.size(), HUGE_VAL);
+    for (const std::uint32_t v : boundary_vertices_) {
+      const Vec3& x = mesh_.vertices[v];
+      bool in_box = true;
+      for (std::size_t k = 0; k < 3; ++k) in_box = in_box && x[k] >= lo[k] - h_ && x[k] <= hi[k] + h_;
+      if (in_box && (v == from || v == to || !taken_[v]))
+        if (const double d = nearest_on_curve(C, x).distance; d <= h_ || v == from || v == to) {
+          near[v] = d;
+          nearby.push_back(v);
+        }
+    }
+    for (int attempt = 0; attempt < kAttempts; ++attempt) {
+      const std::vector<std::uint32_t> path = cheapest_path(from, to, near);
+      if (path.empty()) return false;
+      // The interior onto C, in order, arc lengths strictly increasing.
+      double s = 0;
+      std::int64_t failed = -1;
+      for (const std::uint32_t v : path) {
+        const CurvePoint p = nearest_on_curve(C, mesh_.vertices[v]);
+        if (!(p.s > s && p.s < C.length()) || !move(v, p.point, r)) {
+          failed = v;
+          break;
+        }
+        near[v] = 0;
+        s = p.s;
+      }
+      if (failed < 0) {
+        for (const std::uint32_t v : path) taken_[v] = 1;
+        return true;
+      }
+      near[static_cast<std::size_t>(failed)] = HUGE_VAL;
+    }
+    return false;
+  }
+
+ private:
+  // S30.2: paths sought at most 8 times; an edge costs its length plus 4 times its ends' distances to C.
+  static constexpr int kAttempts = 8;
+  static constexpr double kNear = 4;
+
+  /// Dijkstra from `from` to `to` through vertices with near[v] finite, an
+  /// edge uw costing |u - w| + near[u] + near[w]: the path's interior
+  /// vertices in order; empty when `to` cannot be reached.
+  std::vector<std::uint32_t> cheapest_path(std::uint32_t from, std::uint32_t to,
+                                           const std::vector<double>& near) const {
+    std::vector<double> cost(mesh_.vertices.size(), HUGE_VAL);
+    std::vector<std::uint32_t> previous(mesh_.vertices.size(), UINT32_MAX);
+    using Item = std::pair<double, std::uint32_t>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+    cost[from] = 0;
+    queue.emplace(0, from);
+    while (!queue.empty()) {
+      const auto [c, u] = queue.top();
+      queue.pop();
+      if (u == to) break;
+      if (c > cost[u]) continue;
+      for (const std::uint32_t w : neighbours_[u]) {
+        if (near[w] == HUGE_VAL || w == from) continue;
+        const double next = c + distance(mesh_.vertices[u], mesh_.vertices[w]) + kNear * (near[u] + near[w]);
+        if (next < cost[w] || (next == cost[w] && u < previous[w])) {
+          cost[w] = next;
+          previous[w] = u;
+          queue.emplace(next, w);
+        }
+      }
+    }
+    std::vector<std::uint32_t> path;
+    if (cost[to] == HUGE_VAL) return path;
+    for (std::uint32_t v = previous[to]; v != from; v = previous[v]) path.push_back(v);
+    std::reverse(path.begin(), path.end());
+    return path;
+  }
+
+ private:
+  d3::TetMeshF& mesh_;
+  double h_;
+  std::vector<std::vector<std::uint32_t>> tets_at_;
+  std::vector<std::vector<std::uint32_t>> neighbours_;
+  std::vector<std::uint32_t> boundary_vertices_;
+  std::vector<char> taken_;
+};
+
+/// The corner of `features` at p, if any (its index), by exact equality.
+std::int64_t corner_index(const Features& features, const Vec3& p) {
+  const auto it = std::lower_bound(features.corners.begin(), features.corners.end(), p);
+  return it != features.corners.end() && *it == p ? it - features.corners.begin() : -1;
+}
+
+}  // namespace
+
+FeatureConformity conform_features(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
+                                   const Features& features, double h) {
+  FeatureConformity r;
+  Snapper snapper(mesh, boundary, h);
+  // S30.1: the corners, in order.
+  std::vector<std::int64_t> corner_vertex;
+  for (const Vec3& c : features.corners) {
+    corner_vertex.push_back(snapper.snap_corner(c, r));
+    if (corner_vertex.back() >= 0) {
+      r.corners.push_back(c);
+      ++r.corners_conformed;
+    }
+  }
+  // S30.2: the curves, in order; a loop in two pieces from its start and its
+  // vertex nearest half its length, both snapped as corners.
+  for (const FeatureCurve& C : features.curves) {
+    std::vector<FeatureCurve> pieces;
+    std::vector<std::int64_t> ends;
+    if (C.closed) {
+      const double half = C.length() / 2;
+      std::size_t middle = 1;
+      double s = 0, best = HUGE_VAL;
+      for (std::size_t i = 1; i + 1 < C.points.size(); ++i) {
+        s += distance(C.points[i], C.points[i - 1]);
+        if (std::abs(s - half) < best) best = std::abs(s - half), middle = i;
+      }
+      pieces.push_back({{C.points.begin(), C.points.begin() + static_cast<std::ptrdiff_t>(middle) + 1}, false});
+      pieces.push_back({{C.points.begin() + static_cast<std::ptrdiff_t>(middle), C.points.end()}, false});
+      const std::int64_t start = snapper.snap_corner(C.points.front(), r);
+      ends = {start, snapper.snap_corner(C.points[middle], r), start};
+    } else {
+      pieces.push_back(C);
+      const std::int64_t a = corner_index(features, C.points.front()), b = corner_index(features, C.points.back());
+      ends = {a < 0 ? -1 : corner_vertex[static_cast<std::size_t>(a)],
+              b < 0 ? -1 : corner_vertex[static_cast<std::size_t>(b)]};
+    }
+    bool conformed = true;
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      const bool ok = ends[i] >= 0 && ends[i + 1] >= 0 &&
+                      snapper.snap_piece(pieces[i], static_cast<std::uint32_t>(ends[i]),
+                                         static_cast<std::uint32_t>(ends[i + 1]), r);
+      if (ok) r.pieces.push_back(pieces[i]);
+      conformed = conformed && ok;
+    }
+    if (conformed) ++r.curves_conformed;
+  }
+  return r;
+}
+
+double feature_distance(const d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
+                        const Features& features, double h) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+  for (const auto& f : boundary)
+    for (std::size_t i = 0; i < 3; ++i) edges.emplace_back(std::minmax(f[i], f[(i + 1) % 3]));
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  if (edges.empty()) return features.curves.empty() ? 0 : HUGE_VAL;
+  // The edges filed in a grid of cubes of side h by the cubes their boxes
+  // meet; a point's rings of cubes are searched outward until the nearest
+  // edge found is nearer than the ring.
+  const auto cell = [h](const Vec3& p) {
+    return std::array<std::int64_t, 3>{static_cast<std::int64_t>(std::floor(p[0] / h)),
+                                       static_cast<std::int64_t>(std::floor(p[1] / h)),
+                                       static_cast<std::int64_t>(std::floor(p[2] / h))};
+  };
+  std::map<std::array<std::int64_t, 3>, std::vector<std::uint32_t>> grid;
+  for (std::uint32_t e = 0; e < edges.size(); ++e) {
+    const auto a = cell(mesh.vertices[edges[e].first]), b = cell(mesh.vertices[edges[e].second]);
+    for (std::int64_t x = std::min(a[0], b[0]); x <= std::max(a[0], b[0]); ++x)
+      for (std::int64_t y = std::min(a[1], b[1]); y <= std::max(a[1], b[1]); ++y)
+        for (std::int64_t z = std::min(a[2], b[2]); z <= std::max(a[2], b[2]); ++z) grid[{x, y, z}].push_back(e);
+  }
+  double worst = 0;
+  for (const FeatureCurve& C : features.curves)
+    for (const Vec3& p : C.points) {
+      const auto c = cell(p);
+      double nearest = HUGE_VAL;
+      // Rings 0 .. r hold every edge within r h of p: stop once the nearest found is.
+      for (std::int64_t r = 0; r == 0 || nearest > static_cast<double>(r - 1) * h; ++r) {
+        if (r > 64) {  // far from every edge: all of them
+          for (const auto& [u, w] : edges)
+            nearest = std::min(nearest, nearest_on_segment(mesh.vertices[u], mesh.vertices[w], p).distance);
+          break;
+        }
+        for (std::int64_t x = -r; x <= r; ++x)
+          for (std::int64_t y = -r; y <= r; ++y)
+            for (std::int64_t z = -r; z <= r; ++z) {
+              if (std::max({std::abs(x), std::abs(y), std::abs(z)}) != r) continue;
+              const auto it = grid.find({c[0] + x, c[1] + y, c[2] + z});
+              if (it == grid.end()) continue;
+              for (const std::uint32_t e : it->second)
+                nearest = std::min(
+                    nearest,
+                    nearest_on_segment(mesh.vertices[edges[e].first], mesh.vertices[edges[e].second], p).distance);
+            }
+      }
+      worst = std::max(worst, nearest);
+    }
+  return worst;
+}
+
+}  // namespace bccmis::stuff
