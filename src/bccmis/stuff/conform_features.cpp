@@ -6,6 +6,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <optional>
 #include <queue>
 #include <utility>
 
@@ -17,6 +18,20 @@ namespace bccmis::stuff {
 namespace {
 
 double distance(const Vec3& a, const Vec3& b) { return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
+
+/// The point of C at arc length s (0 <= s <= its length).
+Vec3 point_at(const FeatureCurve& C, double s) {
+  for (std::size_t i = 1; i < C.points.size(); ++i) {
+    const Vec3 &a = C.points[i - 1], &b = C.points[i];
+    const double len = distance(a, b);
+    if (s <= len && len > 0) {
+      const double t = s / len;
+      return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
+    }
+    s -= len;
+  }
+  return C.points.back();
+}
 
 /// The mesh as S30 walks it: the boundary graph, the tetrahedra at each
 /// vertex, and the guard of S31.
@@ -101,23 +116,35 @@ class Snapper {
         }
     }
     for (int attempt = 0; attempt < kAttempts; ++attempt) {
-      const std::vector<std::uint32_t> path = cheapest_path(from, to, near);
-      if (path.empty()) return false;
+      const std::optional<std::vector<std::uint32_t>> found = cheapest_path(from, to, near);
+      if (!found) return false;
+      const std::vector<std::uint32_t>& path = *found;
       // The interior onto C, in order, arc lengths strictly increasing.
       double s = 0;
       std::int64_t failed = -1;
       for (const std::uint32_t v : path) {
+        // The nearest point of C first, then points h/4 and h/2 along C
+        // either side of it.
         const CurvePoint p = nearest_on_curve(C, mesh_.vertices[v]);
-        if (!(p.s > s && p.s < C.length()) || !move(v, p.point, r)) {
+        bool moved = false;
+        for (const double shift : {0.0, -0.25, 0.25, -0.5, 0.5}) {
+          const double target = p.s + shift * h_;
+          if (!(target > s && target < C.length())) continue;
+          if (move(v, shift == 0 ? p.point : point_at(C, target), r)) {
+            moved = true;
+            s = target;
+            break;
+          }
+        }
+        if (!moved) {
           failed = v;
           break;
         }
         near[v] = 0;
-        s = p.s;
       }
       if (failed < 0) {
         for (const std::uint32_t v : path) taken_[v] = 1;
-        return true;
+        return chords_within(C, from, path, to);
       }
       near[static_cast<std::size_t>(failed)] = HUGE_VAL;
     }
@@ -125,15 +152,39 @@ class Snapper {
   }
 
  private:
+  /// S32's chord condition on the path from -> path -> to, whose vertices
+  /// lie on C in order: every vertex of C between two consecutive ones
+  /// within h/4 of the edge joining them.
+  bool chords_within(const FeatureCurve& C, std::uint32_t from, const std::vector<std::uint32_t>& path,
+                     std::uint32_t to) const {
+    std::vector<std::uint32_t> chain{from};
+    chain.insert(chain.end(), path.begin(), path.end());
+    chain.push_back(to);
+    std::vector<double> s_vertex{0};
+    for (std::size_t i = 1; i < C.points.size(); ++i)
+      s_vertex.push_back(s_vertex.back() + distance(C.points[i - 1], C.points[i]));
+    double s_from = 0;
+    for (std::size_t k = 1; k < chain.size(); ++k) {
+      const Vec3 &a = mesh_.vertices[chain[k - 1]], &b = mesh_.vertices[chain[k]];
+      const double s_to = k + 1 == chain.size() ? C.length() : nearest_on_curve(C, b).s;
+      for (std::size_t i = 0; i < C.points.size(); ++i)
+        if (s_vertex[i] > s_from && s_vertex[i] < s_to && nearest_on_segment(a, b, C.points[i]).distance > h_ / 4)
+          return false;
+      s_from = s_to;
+    }
+    return true;
+  }
+
   // S30.2: paths sought at most 8 times; an edge costs its length plus 4 times its ends' distances to C.
   static constexpr int kAttempts = 8;
   static constexpr double kNear = 4;
 
   /// Dijkstra from `from` to `to` through vertices with near[v] finite, an
-  /// edge uw costing |u - w| + near[u] + near[w]: the path's interior
-  /// vertices in order; empty when `to` cannot be reached.
-  std::vector<std::uint32_t> cheapest_path(std::uint32_t from, std::uint32_t to,
-                                           const std::vector<double>& near) const {
+  /// edge uw costing |u - w| + kNear (near[u] + near[w]): the path's
+  /// interior vertices in order (none when uw is an edge); nothing when `to`
+  /// cannot be reached.
+  std::optional<std::vector<std::uint32_t>> cheapest_path(std::uint32_t from, std::uint32_t to,
+                                                          const std::vector<double>& near) const {
     std::vector<double> cost(mesh_.vertices.size(), HUGE_VAL);
     std::vector<std::uint32_t> previous(mesh_.vertices.size(), UINT32_MAX);
     using Item = std::pair<double, std::uint32_t>;
@@ -155,8 +206,8 @@ class Snapper {
         }
       }
     }
+    if (cost[to] == HUGE_VAL) return std::nullopt;
     std::vector<std::uint32_t> path;
-    if (cost[to] == HUGE_VAL) return path;
     for (std::uint32_t v = previous[to]; v != from; v = previous[v]) path.push_back(v);
     std::reverse(path.begin(), path.end());
     return path;
