@@ -18,6 +18,7 @@
 #include "bccmis/stuff/features.h"
 #include "bccmis/stuff/mesh_shape.h"
 #include "bccmis/stuff/surface.h"
+#include "testing/cube.h"
 
 namespace bccmis::stuff {
 namespace {
@@ -27,17 +28,8 @@ using Soup = std::vector<std::array<Vec3, 3>>;
 
 const std::string kCgal = BCCMIS_CGAL_MESHES_DIR;
 
-/// The cube [0,2]^3: vertex x + 2y + 4z at 2 (x, y, z); two triangles a
-/// side, counterclockwise seen from outside (as soup_test.cpp).
-std::vector<Vec3> cube_vertices() {
-  std::vector<Vec3> v;
-  for (int z = 0; z < 2; ++z)
-    for (int y = 0; y < 2; ++y)
-      for (int x = 0; x < 2; ++x) v.push_back({2.0 * x, 2.0 * y, 2.0 * z});
-  return v;
-}
-const Tris kCubeTriangles = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
-                             {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+using testing::cube_vertices;
+const Tris kCubeTriangles = testing::cube_triangles();
 
 Soup soup(const std::vector<Vec3>& v, const Tris& t) {
   Soup s;
