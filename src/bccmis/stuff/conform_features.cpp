@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <queue>
+#include <unordered_map>
 #include <utility>
 
 #include "bccmis/d3/mesh.h"
@@ -18,6 +19,33 @@ namespace bccmis::stuff {
 namespace {
 
 double distance(const Vec3& a, const Vec3& b) { return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
+
+/// Points filed in a grid of cubes of side `side`, for the queries of a box.
+class PointGrid {
+ public:
+  explicit PointGrid(double side) : side_(side) {}
+  void insert(std::uint32_t id, const Vec3& p) { cells_[cell(p)].push_back(id); }
+  /// The ids of the points filed in the cubes that meet the box [lo, hi].
+  std::vector<std::uint32_t> in_box(const Vec3& lo, const Vec3& hi) const {
+    std::vector<std::uint32_t> out;
+    const auto a = cell(lo), b = cell(hi);
+    for (auto it = cells_.lower_bound({a[0], a[1], a[2]}); it != cells_.end() && it->first[0] <= b[0]; ++it) {
+      const auto& c = it->first;
+      if (c[1] >= a[1] && c[1] <= b[1] && c[2] >= a[2] && c[2] <= b[2])
+        out.insert(out.end(), it->second.begin(), it->second.end());
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+ private:
+  std::array<std::int64_t, 3> cell(const Vec3& p) const {
+    return {static_cast<std::int64_t>(std::floor(p[0] / side_)), static_cast<std::int64_t>(std::floor(p[1] / side_)),
+            static_cast<std::int64_t>(std::floor(p[2] / side_))};
+  }
+  double side_;
+  std::map<std::array<std::int64_t, 3>, std::vector<std::uint32_t>> cells_;
+};
 
 /// The point of C at arc length s (0 <= s <= its length).
 Vec3 point_at(const FeatureCurve& C, double s) {
@@ -42,7 +70,8 @@ class Snapper {
         h_(h),
         tets_at_(mesh.vertices.size()),
         neighbours_(mesh.vertices.size()),
-        taken_(mesh.vertices.size(), 0) {
+        taken_(mesh.vertices.size(), 0),
+        grid_(h) {
     for (std::uint32_t t = 0; t < mesh.tets.size(); ++t)
       for (const std::uint32_t v : mesh.tets[t]) tets_at_[v].push_back(t);
     for (const auto& f : boundary)
@@ -54,7 +83,7 @@ class Snapper {
       auto& n = neighbours_[v];
       std::sort(n.begin(), n.end());
       n.erase(std::unique(n.begin(), n.end()), n.end());
-      if (!n.empty()) boundary_vertices_.push_back(v);
+      if (!n.empty()) grid_.insert(v, mesh.vertices[v]);
     }
   }
 
@@ -82,7 +111,7 @@ class Snapper {
   /// accepted, taken; none: -1.
   std::int64_t snap_corner(const Vec3& c, FeatureConformity& r) {
     std::vector<std::pair<double, std::uint32_t>> candidates;
-    for (const std::uint32_t v : boundary_vertices_)
+    for (const std::uint32_t v : grid_.in_box({c[0] - h_, c[1] - h_, c[2] - h_}, {c[0] + h_, c[1] + h_, c[2] + h_}))
       if (const double d = distance(mesh_.vertices[v], c); !taken_[v] && d <= h_) candidates.emplace_back(d, v);
     std::sort(candidates.begin(), candidates.end());
     for (const auto& [d, v] : candidates)
@@ -103,17 +132,14 @@ class Snapper {
     Vec3 lo = C.points.front(), hi = lo;
     for (const Vec3& p : C.points)
       for (std::size_t k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-    std::vector<std::uint32_t> nearby;
-    std::vector<double> near(mesh_.vertices.size(), HUGE_VAL);
-    for (const std::uint32_t v : boundary_vertices_) {
+    std::unordered_map<std::uint32_t, double> near;
+    for (const std::uint32_t v :
+         grid_.in_box({lo[0] - h_, lo[1] - h_, lo[2] - h_}, {hi[0] + h_, hi[1] + h_, hi[2] + h_})) {
       const Vec3& x = mesh_.vertices[v];
       bool in_box = true;
       for (std::size_t k = 0; k < 3; ++k) in_box = in_box && x[k] >= lo[k] - h_ && x[k] <= hi[k] + h_;
       if (in_box && (v == from || v == to || !taken_[v]))
-        if (const double d = nearest_on_curve(C, x).distance; d <= h_ || v == from || v == to) {
-          near[v] = d;
-          nearby.push_back(v);
-        }
+        if (const double d = nearest_on_curve(C, x).distance; d <= h_ || v == from || v == to) near[v] = d;
     }
     for (int attempt = 0; attempt < kAttempts; ++attempt) {
       const std::optional<std::vector<std::uint32_t>> found = cheapest_path(from, to, near);
@@ -146,7 +172,7 @@ class Snapper {
         for (const std::uint32_t v : path) taken_[v] = 1;
         return chords_within(C, from, path, to);
       }
-      near[static_cast<std::size_t>(failed)] = HUGE_VAL;
+      near.erase(static_cast<std::uint32_t>(failed));
     }
     return false;
   }
@@ -184,9 +210,13 @@ class Snapper {
   /// interior vertices in order (none when uw is an edge); nothing when `to`
   /// cannot be reached.
   std::optional<std::vector<std::uint32_t>> cheapest_path(std::uint32_t from, std::uint32_t to,
-                                                          const std::vector<double>& near) const {
-    std::vector<double> cost(mesh_.vertices.size(), HUGE_VAL);
-    std::vector<std::uint32_t> previous(mesh_.vertices.size(), UINT32_MAX);
+                                                          const std::unordered_map<std::uint32_t, double>& near) const {
+    std::unordered_map<std::uint32_t, double> cost;
+    std::unordered_map<std::uint32_t, std::uint32_t> previous;
+    const auto cost_of = [&cost](std::uint32_t v) {
+      const auto it = cost.find(v);
+      return it == cost.end() ? HUGE_VAL : it->second;
+    };
     using Item = std::pair<double, std::uint32_t>;
     std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
     cost[from] = 0;
@@ -195,20 +225,21 @@ class Snapper {
       const auto [c, u] = queue.top();
       queue.pop();
       if (u == to) break;
-      if (c > cost[u]) continue;
+      if (c > cost_of(u)) continue;
       for (const std::uint32_t w : neighbours_[u]) {
-        if (near[w] == HUGE_VAL || w == from) continue;
-        const double next = c + distance(mesh_.vertices[u], mesh_.vertices[w]) + kNear * (near[u] + near[w]);
-        if (next < cost[w] || (next == cost[w] && u < previous[w])) {
+        const auto nw = near.find(w);
+        if (nw == near.end() || w == from) continue;
+        const double next = c + distance(mesh_.vertices[u], mesh_.vertices[w]) + kNear * (near.at(u) + nw->second);
+        if (next < cost_of(w) || (next == cost_of(w) && u < previous.at(w))) {
           cost[w] = next;
           previous[w] = u;
           queue.emplace(next, w);
         }
       }
     }
-    if (cost[to] == HUGE_VAL) return std::nullopt;
+    if (cost_of(to) == HUGE_VAL) return std::nullopt;
     std::vector<std::uint32_t> path;
-    for (std::uint32_t v = previous[to]; v != from; v = previous[v]) path.push_back(v);
+    for (std::uint32_t v = previous.at(to); v != from; v = previous.at(v)) path.push_back(v);
     std::reverse(path.begin(), path.end());
     return path;
   }
@@ -218,8 +249,8 @@ class Snapper {
   double h_;
   std::vector<std::vector<std::uint32_t>> tets_at_;
   std::vector<std::vector<std::uint32_t>> neighbours_;
-  std::vector<std::uint32_t> boundary_vertices_;
   std::vector<char> taken_;
+  PointGrid grid_;  ///< the boundary vertices, in cubes of side h
 };
 
 /// The corner of `features` at p, if any (its index), by exact equality.
