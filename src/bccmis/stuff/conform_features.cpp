@@ -20,21 +20,28 @@ namespace {
 
 double distance(const Vec3& a, const Vec3& b) { return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
 
-/// Points filed in a grid of cubes of side `side`, for the queries of a box.
-class PointGrid {
+/// Items (points, or segments by their boxes) filed in a grid of cubes of
+/// side `side` by the cubes their boxes meet, for the queries of a box.
+class BoxGrid {
  public:
-  explicit PointGrid(double side) : side_(side) {}
-  void insert(std::uint32_t id, const Vec3& p) { cells_[cell(p)].push_back(id); }
-  /// The ids of the points filed in the cubes that meet the box [lo, hi].
+  explicit BoxGrid(double side) : side_(side) {}
+  void insert(std::uint32_t id, const Vec3& lo, const Vec3& hi) {
+    const auto a = cell(lo), b = cell(hi);
+    for (std::int64_t x = a[0]; x <= b[0]; ++x)
+      for (std::int64_t y = a[1]; y <= b[1]; ++y)
+        for (std::int64_t z = a[2]; z <= b[2]; ++z) cells_[{x, y, z}].push_back(id);
+  }
+  /// The items filed in the cubes that meet the box [lo, hi], in id order.
   std::vector<std::uint32_t> in_box(const Vec3& lo, const Vec3& hi) const {
     std::vector<std::uint32_t> out;
     const auto a = cell(lo), b = cell(hi);
-    for (auto it = cells_.lower_bound({a[0], a[1], a[2]}); it != cells_.end() && it->first[0] <= b[0]; ++it) {
+    for (auto it = cells_.lower_bound(a); it != cells_.end() && it->first[0] <= b[0]; ++it) {
       const auto& c = it->first;
       if (c[1] >= a[1] && c[1] <= b[1] && c[2] >= a[2] && c[2] <= b[2])
         out.insert(out.end(), it->second.begin(), it->second.end());
     }
     std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
   }
 
@@ -46,6 +53,11 @@ class PointGrid {
   double side_;
   std::map<std::array<std::int64_t, 3>, std::vector<std::uint32_t>> cells_;
 };
+
+/// The box [p - r, p + r].
+std::pair<Vec3, Vec3> box_around(const Vec3& p, double r) {
+  return {{p[0] - r, p[1] - r, p[2] - r}, {p[0] + r, p[1] + r, p[2] + r}};
+}
 
 /// The point of C at arc length s (0 <= s <= its length).
 Vec3 point_at(const FeatureCurve& C, double s) {
@@ -83,7 +95,7 @@ class Snapper {
       auto& n = neighbours_[v];
       std::sort(n.begin(), n.end());
       n.erase(std::unique(n.begin(), n.end()), n.end());
-      if (!n.empty()) grid_.insert(v, mesh.vertices[v]);
+      if (!n.empty()) grid_.insert(v, mesh.vertices[v], mesh.vertices[v]);
     }
   }
 
@@ -111,7 +123,8 @@ class Snapper {
   /// accepted, taken; none: -1.
   std::int64_t snap_corner(const Vec3& c, FeatureConformity& r) {
     std::vector<std::pair<double, std::uint32_t>> candidates;
-    for (const std::uint32_t v : grid_.in_box({c[0] - h_, c[1] - h_, c[2] - h_}, {c[0] + h_, c[1] + h_, c[2] + h_}))
+    const auto [box_lo, box_hi] = box_around(c, h_);
+    for (const std::uint32_t v : grid_.in_box(box_lo, box_hi))
       if (const double d = distance(mesh_.vertices[v], c); !taken_[v] && d <= h_) candidates.emplace_back(d, v);
     std::sort(candidates.begin(), candidates.end());
     for (const auto& [d, v] : candidates)
@@ -250,7 +263,7 @@ class Snapper {
   std::vector<std::vector<std::uint32_t>> tets_at_;
   std::vector<std::vector<std::uint32_t>> neighbours_;
   std::vector<char> taken_;
-  PointGrid grid_;  ///< the boundary vertices, in cubes of side h
+  BoxGrid grid_;  ///< the boundary vertices, in cubes of side h
 };
 
 /// The corner of `features` at p, if any (its index), by exact equality.
@@ -318,44 +331,24 @@ double feature_distance(const d3::TetMeshF& mesh, const std::vector<std::array<s
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   if (edges.empty()) return features.curves.empty() ? 0 : HUGE_VAL;
-  // The edges filed in a grid of cubes of side h by the cubes their boxes
-  // meet; a point's rings of cubes are searched outward until the nearest
-  // edge found is nearer than the ring.
-  const auto cell = [h](const Vec3& p) {
-    return std::array<std::int64_t, 3>{static_cast<std::int64_t>(std::floor(p[0] / h)),
-                                       static_cast<std::int64_t>(std::floor(p[1] / h)),
-                                       static_cast<std::int64_t>(std::floor(p[2] / h))};
-  };
-  std::map<std::array<std::int64_t, 3>, std::vector<std::uint32_t>> grid;
+  // The edges filed by their boxes in a grid of cubes of side h; for each
+  // point, boxes of half-side r = h, 2h, 4h, ... around it until the
+  // nearest edge found is within r (every edge within r meets the box).
+  BoxGrid grid(h);
   for (std::uint32_t e = 0; e < edges.size(); ++e) {
-    const auto a = cell(mesh.vertices[edges[e].first]), b = cell(mesh.vertices[edges[e].second]);
-    for (std::int64_t x = std::min(a[0], b[0]); x <= std::max(a[0], b[0]); ++x)
-      for (std::int64_t y = std::min(a[1], b[1]); y <= std::max(a[1], b[1]); ++y)
-        for (std::int64_t z = std::min(a[2], b[2]); z <= std::max(a[2], b[2]); ++z) grid[{x, y, z}].push_back(e);
+    const Vec3 &a = mesh.vertices[edges[e].first], &b = mesh.vertices[edges[e].second];
+    grid.insert(e, {std::min(a[0], b[0]), std::min(a[1], b[1]), std::min(a[2], b[2])},
+                {std::max(a[0], b[0]), std::max(a[1], b[1]), std::max(a[2], b[2])});
   }
   double worst = 0;
   for (const FeatureCurve& C : features.curves)
     for (const Vec3& p : C.points) {
-      const auto c = cell(p);
       double nearest = HUGE_VAL;
-      // Rings 0 .. r hold every edge within r h of p: stop once the nearest found is.
-      for (std::int64_t r = 0; r == 0 || nearest > static_cast<double>(r - 1) * h; ++r) {
-        if (r > 64) {  // far from every edge: all of them
-          for (const auto& [u, w] : edges)
-            nearest = std::min(nearest, nearest_on_segment(mesh.vertices[u], mesh.vertices[w], p).distance);
-          break;
-        }
-        for (std::int64_t x = -r; x <= r; ++x)
-          for (std::int64_t y = -r; y <= r; ++y)
-            for (std::int64_t z = -r; z <= r; ++z) {
-              if (std::max({std::abs(x), std::abs(y), std::abs(z)}) != r) continue;
-              const auto it = grid.find({c[0] + x, c[1] + y, c[2] + z});
-              if (it == grid.end()) continue;
-              for (const std::uint32_t e : it->second)
-                nearest = std::min(
-                    nearest,
-                    nearest_on_segment(mesh.vertices[edges[e].first], mesh.vertices[edges[e].second], p).distance);
-            }
+      for (double r = h; nearest > r; r *= 2) {
+        const auto [lo, hi] = box_around(p, r);
+        for (const std::uint32_t e : grid.in_box(lo, hi))
+          nearest = std::min(
+              nearest, nearest_on_segment(mesh.vertices[edges[e].first], mesh.vertices[edges[e].second], p).distance);
       }
       worst = std::max(worst, nearest);
     }
