@@ -88,6 +88,8 @@ class _RunOptions(TypedDict, total=False):
     check: bool
     strict: bool
     stats: bool
+    features: Optional[bool]  # None: on for a triangle mesh
+    feature_angle: Optional[float]  # 60
     progress: Optional[Callable[[str], None]]
 
 def stuff(

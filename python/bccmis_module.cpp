@@ -266,6 +266,8 @@ struct RunOptions {
   std::optional<double> size;
   std::string impl = "fast";
   bool check = false, strict = false, stats = false;
+  std::optional<bool> features;         ///< unset: on for a triangle mesh (spec/stuffing.md S29-S33)
+  std::optional<double> feature_angle;  ///< implies features
   py::object progress = py::none();
 };
 
@@ -285,6 +287,12 @@ py::object make_run(std::shared_ptr<const bccmis::stuff::Shape> shape, const Run
   settings.check = o.check;
   settings.strict = o.strict;
   settings.statistics = o.stats;
+  // P1: features as the CLI's, on for a triangle mesh unless features=False.
+  if (o.feature_angle && !(*o.feature_angle >= 0 && *o.feature_angle <= 180))
+    value_error("feature_angle: expected degrees from 0 to 180");
+  if (o.feature_angle && o.features == false) value_error("feature_angle with features=False: give one");
+  settings.features.on = o.features.value_or(o.feature_angle || !shape->surface_triangles().empty());
+  if (o.feature_angle) settings.features.angle = *o.feature_angle;
   if (o.stats && dynamic_cast<const PythonShape*>(shape.get()))
     value_error("stats: a Python shape has no volume and no surface samples to compare with (spec/python.md P3)");
   const py::object progress = o.progress;
@@ -310,8 +318,10 @@ py::object make_run(std::shared_ptr<const bccmis::stuff::Shape> shape, const Run
 }
 
 RunOptions run_options(int max_level, int min_level, int cells, std::optional<double> size, std::string impl,
-                       bool check, bool strict, bool stats, py::object progress) {
-  return {max_level, min_level, cells, size, std::move(impl), check, strict, stats, std::move(progress)};
+                       bool check, bool strict, bool stats, std::optional<bool> features,
+                       std::optional<double> feature_angle, py::object progress) {
+  return {max_level, min_level, cells,    size,          std::move(impl),    check,
+          strict,    stats,     features, feature_angle, std::move(progress)};
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
@@ -738,28 +748,30 @@ PYBIND11_MODULE(bccmis, m) {
   m.def(
       "stuff",
       [](const py::object& shape, const py::object& faces, int max_level, int min_level, int cells,
-         std::optional<double> size, std::string impl, bool check, bool strict, bool stats, const py::object& bounds,
+         std::optional<double> size, std::string impl, bool check, bool strict, bool stats,
+         std::optional<bool> features, std::optional<double> feature_angle, const py::object& bounds,
          py::object progress) {
-        return stuff_shape(
-            shape, faces, bounds,
-            run_options(max_level, min_level, cells, size, std::move(impl), check, strict, stats, std::move(progress)));
+        return stuff_shape(shape, faces, bounds,
+                           run_options(max_level, min_level, cells, size, std::move(impl), check, strict, stats,
+                                       features, feature_angle, std::move(progress)));
       },
       "shape"_a, "faces"_a = py::none(), py::kw_only(), "max_level"_a = 4, "min_level"_a = 0, "cells"_a = 4,
       "size"_a = py::none(), "impl"_a = "fast", "check"_a = false, "strict"_a = false, "stats"_a = false,
-      "bounds"_a = py::none(), "progress"_a = py::none(),
+      "features"_a = py::none(), "feature_angle"_a = py::none(), "bounds"_a = py::none(), "progress"_a = py::none(),
       "A tetrahedral mesh of a triangle mesh (vertices, faces), a Shape or a callable (spec/python.md P1).\n"
       "mesh = bccmis.stuff(bccmis.shapes.torus(), max_level=3)");
   m.def(
       "stuff_file",
       [](const std::string& path, std::optional<std::string> format, int max_level, int min_level, int cells,
-         std::optional<double> size, std::string impl, bool check, bool strict, bool stats, py::object progress) {
-        return stuff_file(
-            path, format,
-            run_options(max_level, min_level, cells, size, std::move(impl), check, strict, stats, std::move(progress)));
+         std::optional<double> size, std::string impl, bool check, bool strict, bool stats,
+         std::optional<bool> features, std::optional<double> feature_angle, py::object progress) {
+        return stuff_file(path, format,
+                          run_options(max_level, min_level, cells, size, std::move(impl), check, strict, stats,
+                                      features, feature_angle, std::move(progress)));
       },
       "path"_a, py::kw_only(), "format"_a = py::none(), "max_level"_a = 4, "min_level"_a = 0, "cells"_a = 4,
       "size"_a = py::none(), "impl"_a = "fast", "check"_a = false, "strict"_a = false, "stats"_a = false,
-      "progress"_a = py::none(),
+      "features"_a = py::none(), "feature_angle"_a = py::none(), "progress"_a = py::none(),
       "A tetrahedral mesh of a triangle mesh file (.off, .obj, .ply, .stl; spec/python.md P2).\n"
       "mesh = bccmis.stuff_file('bunny.off', max_level=5)");
 

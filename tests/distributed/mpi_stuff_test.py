@@ -3,7 +3,7 @@
 
   mpi_stuff_test.py gather|gather-every-format MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
       --gather's binary .vtu (every format: also ASCII .vtu and .msh) equals
-      bccmis stuff's byte for byte (D5).
+      bccmis stuff --no-features's byte for byte (D1, D5).
   mpi_stuff_test.py pvtu MPIRUN BCCMIS BCCMIS_MPI RANKS[:PIECES] -- STUFF_ARGS...
       the .pvtu lists the pieces written (one a rank with tetrahedra); they, read by meshio, hold the serial
       mesh's tetrahedra (by vertex positions, bit for bit, with their levels)
@@ -49,7 +49,7 @@ def gather(mpirun, bccmis, bccmis_mpi, ranks, args, work, every_format):
     formats = ((".vtu", ["--binary"]), (".vtu", []), (".msh", [])) if every_format else ((".vtu", ["--binary"]),)
     for ext, extra in formats:
         serial, together = os.path.join(work, "serial" + ext), os.path.join(work, "gathered" + ext)
-        run([bccmis, "stuff", *args, *extra, "-q", "-o", serial])
+        run([bccmis, "stuff", *args, *extra, "--no-features", "-q", "-o", serial])
         run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, *extra, "-q", "--gather", "-o", together])
         a, b = open(serial, "rb").read(), open(together, "rb").read()
         if a != b:
@@ -60,7 +60,7 @@ def gather(mpirun, bccmis, bccmis_mpi, ranks, args, work, every_format):
 
 def pvtu(mpirun, bccmis, bccmis_mpi, ranks, pieces, args, work):
     serial_path, index = os.path.join(work, "serial.vtu"), os.path.join(work, "out.pvtu")
-    run([bccmis, "stuff", *args, "-q", "-o", serial_path])
+    run([bccmis, "stuff", *args, "--no-features", "-q", "-o", serial_path])
     run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, "-q", "-o", index])
     # A rank whose leaves make no tetrahedron writes no piece (D1).
     sources = [p.get("Source") for p in ET.parse(index).getroot().iter("Piece")]

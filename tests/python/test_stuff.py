@@ -126,3 +126,25 @@ def test_python_sphere_against_builtin():
     order = lambda p: p[np.lexsort(np.round(p, 6).T[::-1])]
     a, b = order(mine.points), order(builtin.points)
     assert a.shape == b.shape and np.abs(a - b).max() < 1e-12
+
+
+def test_features_keep_a_turned_cube():
+    """spec/stuffing.md S29-S33, spec/python.md P1: features are on for a
+    triangle mesh; the creases and corners of the cube [0,2]^3 turned about
+    no lattice direction are kept, so the volume is the cube's, 8."""
+    a, b = 0.3, 0.2
+    turn_z = np.array([[np.cos(a), -np.sin(a), 0], [np.sin(a), np.cos(a), 0], [0, 0, 1]])
+    turn_x = np.array([[1, 0, 0], [0, np.cos(b), -np.sin(b)], [0, np.sin(b), np.cos(b)]])
+    corners = np.array([[2.0 * x, 2.0 * y, 2.0 * z] for z in (0, 1) for y in (0, 1) for x in (0, 1)])
+    vertices = corners @ (turn_x @ turn_z).T
+    faces = np.array([[0, 2, 3], [0, 3, 1], [4, 5, 7], [4, 7, 6], [0, 1, 5], [0, 5, 4],
+                      [2, 6, 7], [2, 7, 3], [0, 4, 6], [0, 6, 2], [1, 3, 7], [1, 7, 5]])
+    kept = bccmis.stuff(vertices, faces, max_level=2, stats=True, check=True)
+    assert kept.stats["feature_corners_conformed"] == 8
+    assert kept.stats["feature_curves_conformed"] == 12
+    assert abs(kept.stats["volume"] - 8) < 1e-12
+    cut = bccmis.stuff(vertices, faces, max_level=2, stats=True, features=False)
+    assert "feature_edges" not in cut.stats
+    assert cut.stats["volume"] < 8 - 1e-2
+    with pytest.raises(ValueError, match="feature_angle"):
+        bccmis.stuff(vertices, faces, feature_angle=181)

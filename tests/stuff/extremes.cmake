@@ -46,11 +46,11 @@ bccmis_cli_test(stuff_json_without_hausdorff 0 ARGS stuff --shape sphere -L 2 --
 bccmis_cli_test(stuff_hausdorff_animate 2 ARGS stuff --shape sphere -L 2 --animate 1 --hausdorff
                 STDERR_REGEX "--hausdorff applies without --animate")
 if(TARGET bccmis::stuff_surface)
-  bccmis_cli_test(stuff_octahedron_x1e150 0 ARGS stuff ${_extreme}/octahedron_x1e150.off -L 2 --stats -q
+  bccmis_cli_test(stuff_octahedron_x1e150 0 ARGS stuff ${_extreme}/octahedron_x1e150.off -L 2 --stats -q --no-features
                   STDOUT_REGEX "${_small_error}")
-  bccmis_cli_test(stuff_octahedron_x1e20 0 ARGS stuff ${_extreme}/octahedron_x1e20.off -L 2 --stats -q RUN_TIMEOUT 20
+  bccmis_cli_test(stuff_octahedron_x1e20 0 ARGS stuff ${_extreme}/octahedron_x1e20.off -L 2 --stats -q --no-features RUN_TIMEOUT 20
                   STDOUT_REGEX "${_small_error}")
-  bccmis_cli_test(stuff_octahedron_x1e-300 0 ARGS stuff ${_extreme}/octahedron_x1e-300.off -L 2 --stats -q
+  bccmis_cli_test(stuff_octahedron_x1e-300 0 ARGS stuff ${_extreme}/octahedron_x1e-300.off -L 2 --stats -q --no-features
                   STDOUT_REGEX "${_small_error}")
   # S24: at 1e15 coordinates are 0.125 apart; -L 3's finest side is 0.091.
   bccmis_cli_test(stuff_octahedron_at_1e15 2 ARGS stuff ${_extreme}/octahedron_at_1e15.off -L 3 -o x.vtu

@@ -8,6 +8,7 @@ if(TARGET bccmis::stuff_surface)
   set(BCCMIS_CGAL_DATA_TAR /usr/share/doc/libcgal-dev/data.tar.gz CACHE FILEPATH
       "data.tar.gz of libcgal-demo, CGAL's sample meshes")
   set(bccmis_cgal_meshes elephant.off double-torus-example.off icosahedron.off corner_poly.off prim.off 3torus.off
+                         fandisk.off # sharp features (features_test.cpp)
                          # flawed files for cli.stuff_wild_files (below)
                          bones.off blob.off mpi.off cube4-shuffled.off colored_tetra.ply)
   set(bccmis_cgal_data ${CMAKE_CURRENT_BINARY_DIR}/cgal_data)
@@ -54,5 +55,15 @@ if(TARGET bccmis::stuff_surface)
                    LIBS bccmis::stuffing bccmis::stuff_surface bccmis::io
                    DEFINITIONS BCCMIS_STUFF_TEST_DIR="${CMAKE_CURRENT_LIST_DIR}"
                                BCCMIS_CGAL_MESHES_DIR="${bccmis_cgal_data}/data/meshes"
+                   LABELS unit)
+endif()
+
+# Sharp features (spec/stuffing.md S29-S33): detection on hand-built
+# surfaces, conformity on a turned cube and on fandisk at level 3 with S10's
+# bound and the feature checker, the checker's planted failures.
+if(TARGET bccmis::stuff_surface)
+  bccmis_add_gtest(stuff_features_tests SOURCES features_test.cpp
+                   LIBS bccmis::stuffing bccmis::stuff_surface bccmis::invariants_d3
+                   DEFINITIONS BCCMIS_CGAL_MESHES_DIR="${bccmis_cgal_data}/data/meshes"
                    LABELS unit)
 endif()

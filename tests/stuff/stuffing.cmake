@@ -86,3 +86,18 @@ bccmis_add_gtest(stuff_render_tests SOURCES render_test.cpp LIBS bccmis::stuff b
 # stuffed mesh, exactly.
 bccmis_add_gtest(stuffing_fast_tests SOURCES stuffing_fast_test.cpp LIBS bccmis::stuff bccmis::d3 bccmis::fast
                  LABELS unit)
+
+# Sharp features (spec/stuffing.md S29-S33, spec/cli.md): the cube's 12
+# creases and 8 corners found and conformed, checked by the feature layer;
+# the options' refusals.
+if(TARGET bccmis::stuff_surface)
+  bccmis_cli_test(stuff_features_cube 0
+                  ARGS stuff ${CMAKE_CURRENT_SOURCE_DIR}/stuff/good/cube.off -L 2 --features --check --stats -q
+                  STDOUT_REGEX "feature_edges 12\nfeature_curves 12\nfeature_corners 8\nfeature_corners_conformed 8\nfeature_curves_conformed 12\n.*feature_angle 60\nfeature_distance 0\n")
+endif()
+bccmis_cli_test(stuff_features_and_no_features 2 ARGS stuff --shape sphere --features --no-features --stats
+                STDERR_REGEX "--features excludes --no-features")
+bccmis_cli_test(stuff_feature_angle_range 2 ARGS stuff --shape sphere --feature-angle 181 --stats
+                STDERR_REGEX "--feature-angle: Value 181 not in range")
+bccmis_cli_test(stuff_features_animate 2 ARGS stuff --shape sphere --features --animate 2 -o a.pvd
+                STDERR_REGEX "--features and --feature-angle apply without --animate")

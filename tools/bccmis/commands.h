@@ -147,9 +147,12 @@ struct StuffOptions {
   bool json = false;
   bool hausdorff = false;  ///< --stats also reports S13's sampled Hausdorff distance
   bool check = false;
-  bool strict = false;    ///< refuse a triangle mesh at its first flaw (spec/stuffing.md S21)
-  bool binary = false;    ///< .vtu (also the --animate frames) and .msh with binary numbers (spec/cli.md)
-  bool compress = false;  ///< binary, and .vtu zlib-compressed (spec/cli.md)
+  bool strict = false;        ///< refuse a triangle mesh at its first flaw (spec/stuffing.md S21)
+  bool features = false;      ///< keep the sharp features (spec/stuffing.md S29-S33)
+  double feature_angle = -1;  ///< >= 0: S29's feature angle (and features on)
+  bool no_features = false;   ///< the mesh of S5-S9 exactly
+  bool binary = false;        ///< .vtu (also the --animate frames) and .msh with binary numbers (spec/cli.md)
+  bool compress = false;      ///< binary, and .vtu zlib-compressed (spec/cli.md)
   std::string surface_vertices = "used";  ///< .off/.obj: "used" (compact) or "all" (the volume mesh's numbering)
   double memory_limit_gb = 0;             ///< > 0: the memory a run may take (spec/stuffing.md S25), else MemAvailable
   bool quiet = false;

@@ -95,6 +95,8 @@ std::string stats_text(const std::string& shape, const stuff::Meshed& m, const s
     if (q.histogram[k] != 0) out += "dihedral_" + std::to_string(15 * k) + " " + std::to_string(q.histogram[k]) + "\n";
   out += "boundary_euler " + std::to_string(m.topology.boundary_euler) + "\n";
   for (const std::string& warning : m.warnings) out += "warning " + warning + "\n";
+  if (m.features)  // S33
+    out += "feature_angle " + number(m.features->angle) + "\nfeature_distance " + number(m.features->distance) + "\n";
   if (m.soup) out += soup_text(*m.soup);
   for (const auto& [phase, t] : seconds) out += "seconds_" + phase + " " + number(t) + "\n";
   return out;
@@ -125,6 +127,7 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
     throw InputError("--animate writes one .pvd (ParaView's index) with its .vtu frames beside it: give -o FILE.pvd");
   if (o.outputs.empty() && !o.stats) throw InputError("nothing to do: give -o FILE.pvd or --stats");
   if (o.hausdorff) throw InputError("--hausdorff applies without --animate (a frame's statistics have no distance)");
+  if (o.features || o.feature_angle >= 0) throw InputError("--features and --feature-angle apply without --animate");
   stuff::AnimateSettings settings;
   settings.lattice = so;
   settings.frames = o.animate;
@@ -237,6 +240,9 @@ int run(const StuffOptions& o) {
   settings.hausdorff = o.hausdorff;
   settings.check = o.check;
   settings.strict = o.strict;
+  // spec/cli.md: on by default for a triangle-mesh INPUT (S29-S33).
+  settings.features.on = (o.features || o.feature_angle >= 0 || !o.input.empty()) && !o.no_features;
+  if (o.feature_angle >= 0) settings.features.angle = o.feature_angle;
   if (o.memory_limit_gb > 0) settings.memory_limit = o.memory_limit_gb * 1e9;
   stuff::Meshed m;
   try {

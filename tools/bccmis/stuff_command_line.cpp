@@ -55,6 +55,18 @@ CLI::App* add_stuff(CLI::App& app, StuffOptions& o) {
   cmd->add_flag("--strict", o.strict,
                 "Refuse a triangle mesh that is not closed, manifold, consistently oriented and free of "
                 "self-intersections, naming its first flaw (exit 2)");
+  auto* features = cmd->add_flag(
+      "--features", o.features,
+      "Keep the sharp features of a triangle mesh (the default for INPUT): creases whose faces turn by more than "
+      "the feature angle, and their corners (spec/stuffing.md S29-S33)");
+  auto* feature_angle =
+      cmd->add_option("--feature-angle", o.feature_angle,
+                      "The feature angle in degrees, 0 to 180 (default 60, CGAL's); implies --features")
+          ->check(CLI::Range(0.0, 180.0));
+  cmd->add_flag("--no-features", o.no_features,
+                "Mesh INPUT without features: the mesh of S5-S9 exactly, creases cut by the lattice's chords")
+      ->excludes(features)
+      ->excludes(feature_angle);
   cmd->add_flag("--binary", o.binary,
                 "Write .vtu (base64; also the --animate frames) and .msh (4.1 binary) with binary numbers; ASCII "
                 "otherwise");

@@ -65,6 +65,7 @@ void check_options(const StuffOptions& o, bool gather) {
   if (o.animate > 0 || !o.path.empty() || o.compare) refuse("--animate");
   if (o.impl != "fast") refuse("--impl " + o.impl);
   if (o.memory_limit_gb > 0) refuse("--memory-limit");
+  if (o.features || o.feature_angle >= 0) refuse("--features (also --feature-angle)");
   if (o.outputs.size() != 1)
     throw InputError("give one output: -o FILE.pvtu (a piece per rank), or --gather -o FILE (.vtu, .msh, .mesh)");
   const std::string& path = o.outputs[0];

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "bccmis/invariants/d3/feature_conformity.h"
 #include "bccmis/invariants/d3/stuffed_mesh.h"
 #include "bccmis/json_writer.h"
 #include "bccmis/stuff/memory_estimate.h"
@@ -60,6 +61,18 @@ std::optional<std::string> find_stuffed_problem(const Shape& shape, const Fit& f
   return std::nullopt;
 }
 
+std::optional<std::string> find_feature_problem(const Fit& fit, const d3::TetMeshF& mesh,
+                                                const FeatureConformity& conformity) {
+  d3::FeatureClaims claims;
+  claims.corners = conformity.corners;
+  for (const FeatureCurve& piece : conformity.pieces) claims.curves.push_back(piece.points);
+  // S32: on the features to 1e-9 h; a chord of a curved crease within h/4.
+  claims.tolerance = 1e-9 * fit.h;
+  claims.chord = fit.h / 4;
+  if (auto v = d3::check_feature_conformity(mesh.vertices, mesh.tets, claims)) return v->message;
+  return std::nullopt;
+}
+
 Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& progress) {
   const auto say = [&](const std::string& what) {
     if (progress) progress(what);
@@ -106,12 +119,38 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
   // S26: an empty mesh is bad input for this level.
   if (r.stuffed.mesh.tets.empty())
     throw ShapeError(world.describe() + ": the mesh is empty: " + level_hint(world.bounds(), r.fit));
+  // One grouping of the faces for S11's boundary and M23's regions (the
+  // feature snapping below moves vertices only), timed with the statistics.
+  const auto t_faces = Clock::now();
+  r.regions = io::regions_of(r.stuffed.mesh.tets, &r.boundary);
+  const double face_seconds = seconds_since(t_faces);
+  // S29-S31: the sharp features of a triangle mesh, and the mesh made to hold them.
+  Features features;
+  FeatureConformity conformity;
+  if (settings.features.on) {
+    const auto t0 = Clock::now();
+    features = detect_features(shape.surface_triangles(), settings.features.angle);
+    conformity = conform_features(r.stuffed.mesh, r.boundary, features, fit.h);
+    r.features = FeatureReport{features.angle,
+                               features.edges,
+                               features.curves.size(),
+                               features.corners.size(),
+                               conformity.corners_conformed,
+                               conformity.curves_conformed};
+    r.seconds.emplace_back("features", seconds_since(t0));
+    say(std::to_string(features.edges) + " feature edges, " + std::to_string(features.corners.size()) +
+        " corners; conformed " + std::to_string(conformity.corners_conformed) + " corners, " +
+        std::to_string(conformity.curves_conformed) + " of " + std::to_string(features.curves.size()) + " curves; " +
+        std::to_string(conformity.moves) + " moves, " + std::to_string(conformity.refused) + " refused by the guard");
+  }
   const auto t1 = Clock::now();
   // S11 first, so that S27's topology errors below come from meshes that pass it.
-  if (settings.check)
+  if (settings.check) {
     if (auto why = find_stuffed_problem(shape, fit, r.stuffed.mesh)) throw CheckError(world.describe() + ": " + *why);
-  // One grouping of the faces for S11's boundary and M23's regions.
-  r.regions = io::regions_of(r.stuffed.mesh.tets, &r.boundary);
+    if (settings.features.on)  // S32
+      if (auto why = find_feature_problem(fit, r.stuffed.mesh, conformity))
+        throw CheckError(world.describe() + ": " + *why);
+  }
   // S27: what the mesh is against what the shape is.
   r.topology = topology(r.stuffed.mesh, r.boundary);
   if (const auto want = world.surface_components()) {
@@ -133,9 +172,12 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
                          " non-manifold edges (parts meeting along a lattice edge; a finer level separates them)");
     if (settings.check && input_manifold) throw CheckError(world.describe() + ": " + r.warnings.back());
   }
-  if (settings.statistics)
+  if (settings.statistics) {
     r.statistics = to_world(statistics(shape, r.stuffed.mesh, r.boundary, settings.hausdorff), n);
-  r.seconds.emplace_back("statistics", seconds_since(t1));
+    if (r.features)  // S33, in world units
+      r.features->distance = std::ldexp(feature_distance(r.stuffed.mesh, r.boundary, features, fit.h), n.exponent);
+  }
+  r.seconds.emplace_back("statistics", face_seconds + seconds_since(t1));
   to_world(r.stuffed.mesh, n, r.fit.h);
   return r;
 }

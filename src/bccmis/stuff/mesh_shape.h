@@ -26,6 +26,8 @@
 
 #include "bccmis/io/regions.h"
 #include "bccmis/io/surface_format.h"
+#include "bccmis/stuff/conform_features.h"
+#include "bccmis/stuff/features.h"
 #include "bccmis/stuff/normalisation.h"
 #include "bccmis/stuff/shape.h"
 #include "bccmis/stuff/soup_report.h"
@@ -35,6 +37,13 @@
 #include "bccmis/stuff/topology.h"
 
 namespace bccmis::stuff {
+
+/// S29-S33: whether a run keeps the sharp features of a triangle-mesh
+/// shape, and the feature angle.
+struct FeatureSettings {
+  bool on = false;
+  double angle = kDefaultFeatureAngle;  ///< phi, degrees (S29)
+};
 
 /// Everything a run is told.
 struct Settings {
@@ -49,6 +58,7 @@ struct Settings {
   bool strict = false;
   /// The memory a run may take (S25); unset: MemAvailable of /proc/meminfo.
   std::optional<double> memory_limit;
+  FeatureSettings features;  ///< S29-S33; off: the mesh of S5-S9 exactly
 };
 
 /// One line of news for a person watching ("12,345 leaves (0.5 s)").
@@ -69,11 +79,12 @@ struct Meshed {
   std::size_t leaves = 0;                              ///< the background lattice's leaves (S3)
   Stuffed stuffed;                                     ///< the mesh and its counts (S5-S9)
   std::vector<std::array<std::uint32_t, 3>> boundary;  ///< S11, outward
-  io::Regions regions;  ///< the components and the boundary by component (mesh3d.md M23), for the FEM writers
+  io::Regions regions;                   ///< the components and the boundary by component (mesh3d.md M23), for the FEM writers
   std::optional<Statistics> statistics;  ///< with Settings::statistics
   std::optional<SoupReport> soup;        ///< the shape's soup report (S21), when it has one
   MeshTopology topology;                 ///< S27: the boundary's components, Euler characteristic
   std::vector<std::string> warnings;     ///< S27: a changed topology, one line each
+  std::optional<FeatureReport> features;  ///< S33, with Settings::features
   PhaseSeconds seconds;
 };
 
@@ -104,6 +115,13 @@ void to_world(d3::TetMeshF& mesh, const Normalisation& n, double h);
 /// against the thinnest extent of `box`, both in world units); -L N would
 /// resolve it", N the first level whose finest side is at most a quarter of it.
 std::string level_hint(const Bounds& box, const Fit& fit);
+
+/// The checker's feature layer (bccmis/invariants/d3/feature_conformity.h)
+/// on a mesh of the lattice `fit` and what S30 conformed in it: a vertex at
+/// each corner within 1e-9 h, each piece covered (S32). The message of the
+/// first problem, or empty.
+std::optional<std::string> find_feature_problem(const Fit& fit, const d3::TetMeshF& mesh,
+                                                const FeatureConformity& conformity);
 
 /// The shape a user names: a triangle mesh file (.off, .obj, .stl), read
 /// through CGAL (ShapeError naming the file when this build has no CGAL or

@@ -52,6 +52,14 @@ Normalisation normalisation_of(const Bounds& box) {
 
 namespace {
 
+/// Every corner of `triangles` through `map`.
+template <class Map>
+std::vector<std::array<Vec3, 3>> mapped(std::vector<std::array<Vec3, 3>> triangles, const Map& map) {
+  for (auto& t : triangles)
+    for (Vec3& p : t) p = map(p);
+  return triangles;
+}
+
 /// A shape evaluated in its own coordinates, seen through a Normalisation.
 class NormalisedView final : public Shape {
  public:
@@ -76,6 +84,9 @@ class NormalisedView final : public Shape {
     auto c = s_.surface_components();
     if (c) c->thinnest = down(c->thinnest);
     return c;
+  }
+  std::vector<std::array<Vec3, 3>> surface_triangles() const override {
+    return mapped(s_.surface_triangles(), [this](const Vec3& p) { return n_.to_local(p); });
   }
 
  private:
@@ -110,6 +121,9 @@ class Placed final : public Shape {
     auto c = local_->surface_components();
     if (c) c->thinnest = up(c->thinnest);
     return c;
+  }
+  std::vector<std::array<Vec3, 3>> surface_triangles() const override {
+    return mapped(local_->surface_triangles(), [this](const Vec3& p) { return n_.to_world(p); });
   }
   std::unique_ptr<Shape> normalised(const Normalisation& n) const override {
     return n == n_ ? view_normalised(*local_, Normalisation{}) : view_normalised(*this, n);

@@ -76,6 +76,10 @@ class Shape {
   /// The connected components of the surface, when the shape knows them
   /// (S27): the built-in shapes and clean triangle meshes.
   virtual std::optional<SurfaceComponents> surface_components() const { return std::nullopt; }
+  /// The triangles of the surface, each oriented outward, when the shape is
+  /// a triangle mesh (after S21-S23's repairs; S29 finds its features in
+  /// them); empty for the other shapes.
+  virtual std::vector<std::array<Vec3, 3>> surface_triangles() const { return {}; }
   /// One line naming the shape for messages and --stats ("sphere r=1", "mesh elephant.off: 2775 triangles").
   virtual std::string describe() const = 0;
 };

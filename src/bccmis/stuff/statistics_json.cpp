@@ -44,15 +44,22 @@ void soup_json(JsonWriter& w, const SoupReport& r) {
 
 std::vector<std::pair<const char*, std::size_t>> statistics_counts(const Meshed& m) {
   const Statistics& s = *m.statistics;
-  return {{"leaves", m.leaves},
-          {"lattice_tetrahedra", m.stuffed.lattice_tetrahedra},
-          {"cut_points", m.stuffed.cut_points},
-          {"warped", m.stuffed.warped},
-          {"vertices", s.vertices},
-          {"tetrahedra", s.tetrahedra},
-          {"boundary_triangles", s.quality.boundary_triangles},
-          {"boundary_components", m.topology.boundary_components},
-          {"nonmanifold_edges", m.topology.nonmanifold_edges}};
+  std::vector<std::pair<const char*, std::size_t>> counts{{"leaves", m.leaves},
+                                                          {"lattice_tetrahedra", m.stuffed.lattice_tetrahedra},
+                                                          {"cut_points", m.stuffed.cut_points},
+                                                          {"warped", m.stuffed.warped},
+                                                          {"vertices", s.vertices},
+                                                          {"tetrahedra", s.tetrahedra},
+                                                          {"boundary_triangles", s.quality.boundary_triangles},
+                                                          {"boundary_components", m.topology.boundary_components},
+                                                          {"nonmanifold_edges", m.topology.nonmanifold_edges}};
+  if (const auto& f = m.features)  // S33
+    counts.insert(counts.end(), {{"feature_edges", f->edges},
+                                 {"feature_curves", f->curves},
+                                 {"feature_corners", f->corners},
+                                 {"feature_corners_conformed", f->corners_conformed},
+                                 {"feature_curves_conformed", f->curves_conformed}});
+  return counts;
 }
 
 std::string statistics_json(const std::string& shape, const Meshed& m, const PhaseSeconds& seconds) {
@@ -83,6 +90,7 @@ std::string statistics_json(const std::string& shape, const Meshed& m, const Pha
         .end_object();
   }
   w.member("min_dihedral", q.min_dihedral).member("max_dihedral", q.max_dihedral).member("below10", s.below10());
+  if (m.features) w.member("feature_angle", m.features->angle).member("feature_distance", m.features->distance);
   w.member("boundary_euler", m.topology.boundary_euler).key("warnings").begin_array();
   for (const std::string& warning : m.warnings) w.value(warning);
   w.end_array();

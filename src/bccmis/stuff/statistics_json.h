@@ -15,7 +15,8 @@ namespace bccmis::stuff {
 /// The counts of a run `m` made with Settings::statistics, by the names
 /// both reports give them: leaves, lattice_tetrahedra, cut_points, warped,
 /// vertices, tetrahedra, boundary_triangles, boundary_components,
-/// nonmanifold_edges.
+/// nonmanifold_edges; with features (S33) feature_edges, feature_curves,
+/// feature_corners, feature_corners_conformed, feature_curves_conformed.
 std::vector<std::pair<const char*, std::size_t>> statistics_counts(const Meshed& m);
 
 /// The JSON object of a run `m` made with Settings::statistics: `shape` (a

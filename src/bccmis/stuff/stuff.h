@@ -128,6 +128,10 @@ std::vector<std::array<std::uint32_t, 3>> boundary_triangles(const d3::TetMeshF&
 /// and kinds, sorted (S16's equality with stuff()).
 bool same_tetrahedra(const d3::TetMeshF& a, const d3::TetMeshF& b);
 
+/// S10's interval of dihedral angles (degrees): what every stuffed mesh
+/// claims, and what S31's guard keeps.
+inline constexpr std::array<double, 2> kDihedralBounds{10.7792, 164.8092};
+
 /// What --stats reports of the mesh itself (S13).
 struct StuffQuality {
   double volume = 0;

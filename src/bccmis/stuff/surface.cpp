@@ -257,6 +257,17 @@ class Checker {
 
 // n points uniform on the triangles by area (area_sum: the running sums of
 // their areas), drawn from `seed`.
+/// The triangles as arrays of coordinates (Shape::surface_triangles).
+std::vector<std::array<Vec3, 3>> to_vec3(const std::vector<std::array<Point, 3>>& triangles) {
+  std::vector<std::array<Vec3, 3>> out;
+  out.reserve(triangles.size());
+  for (const auto& t : triangles) {
+    std::array<Vec3, 3>& o = out.emplace_back();
+    for (std::size_t i = 0; i < 3; ++i) o[i] = {t[i].x(), t[i].y(), t[i].z()};
+  }
+  return out;
+}
+
 std::vector<Vec3> sample_triangles(const std::vector<std::array<Point, 3>>& triangles,
                                    const std::vector<double>& area_sum, std::size_t n, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
@@ -386,6 +397,7 @@ class MeshShape final : public Shape {
     return "mesh " + name_ + ": " + std::to_string(triangles_.size()) + " triangles";
   }
   std::optional<SurfaceComponents> surface_components() const override { return surface_components_; }
+  std::vector<std::array<Vec3, 3>> surface_triangles() const override { return to_vec3(triangles_); }
 
   const SoupReport* soup_report() const override { return report_ ? &*report_ : nullptr; }
   /// The default path's report of a clean file (S21): its notes filled here.
@@ -839,6 +851,7 @@ class SoupShape final : public Shape {
   }
 
   const SoupReport* soup_report() const override { return &report_; }
+  std::vector<std::array<Vec3, 3>> surface_triangles() const override { return to_vec3(triangles_); }
 
  private:
   using SoupPrimitive = CGAL::AABB_triangle_primitive<K, std::vector<K::Triangle_3>::const_iterator>;

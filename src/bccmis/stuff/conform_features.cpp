@@ -1,0 +1,358 @@
+// S30-S33: a stuffed mesh made to hold the sharp features (conform_features.h).
+#include "bccmis/stuff/conform_features.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <map>
+#include <optional>
+#include <queue>
+#include <unordered_map>
+#include <utility>
+
+#include "bccmis/d3/mesh.h"
+#include "bccmis/stuff/stuff.h"
+
+namespace bccmis::stuff {
+
+namespace {
+
+double distance(const Vec3& a, const Vec3& b) { return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
+
+/// Items (points, or segments by their boxes) filed in a grid of cubes of
+/// side `side` by the cubes their boxes meet, for the queries of a box.
+class BoxGrid {
+ public:
+  explicit BoxGrid(double side) : side_(side) {}
+  void insert(std::uint32_t id, const Vec3& lo, const Vec3& hi) {
+    const auto a = cell(lo), b = cell(hi);
+    for (std::int64_t x = a[0]; x <= b[0]; ++x)
+      for (std::int64_t y = a[1]; y <= b[1]; ++y)
+        for (std::int64_t z = a[2]; z <= b[2]; ++z) cells_[{x, y, z}].push_back(id);
+  }
+  /// The items filed in the cubes that meet the box [lo, hi], in id order.
+  std::vector<std::uint32_t> in_box(const Vec3& lo, const Vec3& hi) const {
+    std::vector<std::uint32_t> out;
+    const auto a = cell(lo), b = cell(hi);
+    for (auto it = cells_.lower_bound(a); it != cells_.end() && it->first[0] <= b[0]; ++it) {
+      const auto& c = it->first;
+      if (c[1] >= a[1] && c[1] <= b[1] && c[2] >= a[2] && c[2] <= b[2])
+        out.insert(out.end(), it->second.begin(), it->second.end());
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
+
+ private:
+  std::array<std::int64_t, 3> cell(const Vec3& p) const {
+    return {static_cast<std::int64_t>(std::floor(p[0] / side_)), static_cast<std::int64_t>(std::floor(p[1] / side_)),
+            static_cast<std::int64_t>(std::floor(p[2] / side_))};
+  }
+  double side_;
+  std::map<std::array<std::int64_t, 3>, std::vector<std::uint32_t>> cells_;
+};
+
+/// The box [p - r, p + r].
+std::pair<Vec3, Vec3> box_around(const Vec3& p, double r) {
+  return {{p[0] - r, p[1] - r, p[2] - r}, {p[0] + r, p[1] + r, p[2] + r}};
+}
+
+/// The point of C at arc length s (0 <= s <= its length).
+Vec3 point_at(const FeatureCurve& C, double s) {
+  for (std::size_t i = 1; i < C.points.size(); ++i) {
+    const Vec3 &a = C.points[i - 1], &b = C.points[i];
+    const double len = distance(a, b);
+    if (s <= len && len > 0) {
+      const double t = s / len;
+      return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
+    }
+    s -= len;
+  }
+  return C.points.back();
+}
+
+/// The mesh as S30 walks it: the boundary graph, the tetrahedra at each
+/// vertex, and the guard of S31.
+class Snapper {
+ public:
+  Snapper(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary, double h)
+      : mesh_(mesh),
+        h_(h),
+        tets_at_(mesh.vertices.size()),
+        neighbours_(mesh.vertices.size()),
+        taken_(mesh.vertices.size(), 0),
+        grid_(h) {
+    for (std::uint32_t t = 0; t < mesh.tets.size(); ++t)
+      for (const std::uint32_t v : mesh.tets[t]) tets_at_[v].push_back(t);
+    for (const auto& f : boundary)
+      for (std::size_t i = 0; i < 3; ++i) {
+        neighbours_[f[i]].push_back(f[(i + 1) % 3]);
+        neighbours_[f[(i + 1) % 3]].push_back(f[i]);
+      }
+    for (std::uint32_t v = 0; v < neighbours_.size(); ++v) {
+      auto& n = neighbours_[v];
+      std::sort(n.begin(), n.end());
+      n.erase(std::unique(n.begin(), n.end()), n.end());
+      if (!n.empty()) grid_.insert(v, mesh.vertices[v], mesh.vertices[v]);
+    }
+  }
+
+  /// S31: v moved to x when every tetrahedron at it stays positively
+  /// oriented (S12) with its dihedral angles in S10's interval.
+  bool move(std::uint32_t v, const Vec3& x, FeatureConformity& r) {
+    for (const std::uint32_t t : tets_at_[v]) {
+      std::array<Vec3, 4> p;
+      for (std::size_t i = 0; i < 4; ++i) p[i] = mesh_.tets[t][i] == v ? x : mesh_.vertices[mesh_.tets[t][i]];
+      bool ok = orientation(p[0], p[1], p[2], p[3]) > 0;
+      for (const double a : ok ? d3::dihedral_angles(p) : std::array<double, 6>{})
+        ok = ok && a >= kDihedralBounds[0] && a <= kDihedralBounds[1];
+      if (!ok) {
+        ++r.refused;
+        return false;
+      }
+    }
+    ++r.moves;
+    mesh_.vertices[v] = x;
+    mesh_.kind[v] = kSnappedVertex;
+    return true;
+  }
+
+  /// S30.1: the nearest free boundary vertex within h whose move onto c is
+  /// accepted, taken; none: -1.
+  std::int64_t snap_corner(const Vec3& c, FeatureConformity& r) {
+    std::vector<std::pair<double, std::uint32_t>> candidates;
+    const auto [box_lo, box_hi] = box_around(c, h_);
+    for (const std::uint32_t v : grid_.in_box(box_lo, box_hi))
+      if (const double d = distance(mesh_.vertices[v], c); !taken_[v] && d <= h_) candidates.emplace_back(d, v);
+    std::sort(candidates.begin(), candidates.end());
+    for (const auto& [d, v] : candidates)
+      if (move(v, c, r)) {
+        taken_[v] = 1;
+        return v;
+      }
+    return -1;
+  }
+
+  /// S30.2: the piece C from vertex `from` to vertex `to` (its ends'
+  /// vertices, already on them): the cheapest boundary path through free
+  /// vertices within h of C, its interior moved onto C; a vertex whose move
+  /// is refused (or breaks the order along C) is left out and the path
+  /// sought again, up to kAttempts times. True when conformed.
+  bool snap_piece(const FeatureCurve& C, std::uint32_t from, std::uint32_t to, FeatureConformity& r) {
+    // d(v, C) of the free boundary vertices near C (a box around it first).
+    Vec3 lo = C.points.front(), hi = lo;
+    for (const Vec3& p : C.points)
+      for (std::size_t k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+    std::unordered_map<std::uint32_t, double> near;
+    for (const std::uint32_t v :
+         grid_.in_box({lo[0] - h_, lo[1] - h_, lo[2] - h_}, {hi[0] + h_, hi[1] + h_, hi[2] + h_})) {
+      const Vec3& x = mesh_.vertices[v];
+      bool in_box = true;
+      for (std::size_t k = 0; k < 3; ++k) in_box = in_box && x[k] >= lo[k] - h_ && x[k] <= hi[k] + h_;
+      if (in_box && (v == from || v == to || !taken_[v]))
+        if (const double d = nearest_on_curve(C, x).distance; d <= h_ || v == from || v == to) near[v] = d;
+    }
+    for (int attempt = 0; attempt < kAttempts; ++attempt) {
+      const std::optional<std::vector<std::uint32_t>> found = cheapest_path(from, to, near);
+      if (!found) return false;
+      const std::vector<std::uint32_t>& path = *found;
+      // The interior onto C, in order, arc lengths strictly increasing.
+      double s = 0;
+      std::int64_t failed = -1;
+      for (const std::uint32_t v : path) {
+        // The nearest point of C first, then points h/4 and h/2 along C
+        // either side of it.
+        const CurvePoint p = nearest_on_curve(C, mesh_.vertices[v]);
+        bool moved = false;
+        for (const double shift : {0.0, -0.25, 0.25, -0.5, 0.5}) {
+          const double target = p.s + shift * h_;
+          if (!(target > s && target < C.length())) continue;
+          if (move(v, shift == 0 ? p.point : point_at(C, target), r)) {
+            moved = true;
+            s = target;
+            break;
+          }
+        }
+        if (!moved) {
+          failed = v;
+          break;
+        }
+        near[v] = 0;
+      }
+      if (failed < 0) {
+        for (const std::uint32_t v : path) taken_[v] = 1;
+        return chords_within(C, from, path, to);
+      }
+      near.erase(static_cast<std::uint32_t>(failed));
+    }
+    return false;
+  }
+
+ private:
+  /// S32's chord condition on the path from -> path -> to, whose vertices
+  /// lie on C in order: every vertex of C between two consecutive ones
+  /// within h/4 of the edge joining them.
+  bool chords_within(const FeatureCurve& C, std::uint32_t from, const std::vector<std::uint32_t>& path,
+                     std::uint32_t to) const {
+    std::vector<std::uint32_t> chain{from};
+    chain.insert(chain.end(), path.begin(), path.end());
+    chain.push_back(to);
+    std::vector<double> s_vertex{0};
+    for (std::size_t i = 1; i < C.points.size(); ++i)
+      s_vertex.push_back(s_vertex.back() + distance(C.points[i - 1], C.points[i]));
+    double s_from = 0;
+    for (std::size_t k = 1; k < chain.size(); ++k) {
+      const Vec3 &a = mesh_.vertices[chain[k - 1]], &b = mesh_.vertices[chain[k]];
+      const double s_to = k + 1 == chain.size() ? C.length() : nearest_on_curve(C, b).s;
+      for (std::size_t i = 0; i < C.points.size(); ++i)
+        if (s_vertex[i] > s_from && s_vertex[i] < s_to && nearest_on_segment(a, b, C.points[i]).distance > h_ / 4)
+          return false;
+      s_from = s_to;
+    }
+    return true;
+  }
+
+  // S30.2: paths sought at most 8 times; an edge costs its length plus 4 times its ends' distances to C.
+  static constexpr int kAttempts = 8;
+  static constexpr double kNear = 4;
+
+  /// Dijkstra from `from` to `to` through vertices with near[v] finite, an
+  /// edge uw costing |u - w| + kNear (near[u] + near[w]): the path's
+  /// interior vertices in order (none when uw is an edge); nothing when `to`
+  /// cannot be reached.
+  std::optional<std::vector<std::uint32_t>> cheapest_path(std::uint32_t from, std::uint32_t to,
+                                                          const std::unordered_map<std::uint32_t, double>& near) const {
+    std::unordered_map<std::uint32_t, double> cost;
+    std::unordered_map<std::uint32_t, std::uint32_t> previous;
+    const auto cost_of = [&cost](std::uint32_t v) {
+      const auto it = cost.find(v);
+      return it == cost.end() ? HUGE_VAL : it->second;
+    };
+    using Item = std::pair<double, std::uint32_t>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+    cost[from] = 0;
+    queue.emplace(0, from);
+    while (!queue.empty()) {
+      const auto [c, u] = queue.top();
+      queue.pop();
+      if (u == to) break;
+      if (c > cost_of(u)) continue;
+      for (const std::uint32_t w : neighbours_[u]) {
+        const auto nw = near.find(w);
+        if (nw == near.end() || w == from) continue;
+        const double next = c + distance(mesh_.vertices[u], mesh_.vertices[w]) + kNear * (near.at(u) + nw->second);
+        if (next < cost_of(w) || (next == cost_of(w) && u < previous.at(w))) {
+          cost[w] = next;
+          previous[w] = u;
+          queue.emplace(next, w);
+        }
+      }
+    }
+    if (cost_of(to) == HUGE_VAL) return std::nullopt;
+    std::vector<std::uint32_t> path;
+    for (std::uint32_t v = previous.at(to); v != from; v = previous.at(v)) path.push_back(v);
+    std::reverse(path.begin(), path.end());
+    return path;
+  }
+
+ private:
+  d3::TetMeshF& mesh_;
+  double h_;
+  std::vector<std::vector<std::uint32_t>> tets_at_;
+  std::vector<std::vector<std::uint32_t>> neighbours_;
+  std::vector<char> taken_;
+  BoxGrid grid_;  ///< the boundary vertices, in cubes of side h
+};
+
+/// The corner of `features` at p, if any (its index), by exact equality.
+std::int64_t corner_index(const Features& features, const Vec3& p) {
+  const auto it = std::lower_bound(features.corners.begin(), features.corners.end(), p);
+  return it != features.corners.end() && *it == p ? it - features.corners.begin() : -1;
+}
+
+}  // namespace
+
+FeatureConformity conform_features(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
+                                   const Features& features, double h) {
+  FeatureConformity r;
+  Snapper snapper(mesh, boundary, h);
+  // S30.1: the corners, in order.
+  std::vector<std::int64_t> corner_vertex;
+  for (const Vec3& c : features.corners) {
+    corner_vertex.push_back(snapper.snap_corner(c, r));
+    if (corner_vertex.back() >= 0) {
+      r.corners.push_back(c);
+      ++r.corners_conformed;
+    }
+  }
+  // S30.2: the curves, in order; a loop in two pieces from its start and its
+  // vertex nearest half its length, both snapped as corners.
+  for (const FeatureCurve& C : features.curves) {
+    std::vector<FeatureCurve> pieces;
+    std::vector<std::int64_t> ends;
+    if (C.closed) {
+      const double half = C.length() / 2;
+      std::size_t middle = 1;
+      double s = 0, best = HUGE_VAL;
+      for (std::size_t i = 1; i + 1 < C.points.size(); ++i) {
+        s += distance(C.points[i], C.points[i - 1]);
+        if (std::abs(s - half) < best) best = std::abs(s - half), middle = i;
+      }
+      pieces.push_back({{C.points.begin(), C.points.begin() + static_cast<std::ptrdiff_t>(middle) + 1}, false});
+      pieces.push_back({{C.points.begin() + static_cast<std::ptrdiff_t>(middle), C.points.end()}, false});
+      const std::int64_t start = snapper.snap_corner(C.points.front(), r);
+      ends = {start, snapper.snap_corner(C.points[middle], r), start};
+    } else {
+      pieces.push_back(C);
+      const std::int64_t a = corner_index(features, C.points.front()), b = corner_index(features, C.points.back());
+      ends = {a < 0 ? -1 : corner_vertex[static_cast<std::size_t>(a)],
+              b < 0 ? -1 : corner_vertex[static_cast<std::size_t>(b)]};
+    }
+    bool conformed = true;
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      const bool ok = ends[i] >= 0 && ends[i + 1] >= 0 &&
+                      snapper.snap_piece(pieces[i], static_cast<std::uint32_t>(ends[i]),
+                                         static_cast<std::uint32_t>(ends[i + 1]), r);
+      if (ok) r.pieces.push_back(pieces[i]);
+      conformed = conformed && ok;
+    }
+    if (conformed) ++r.curves_conformed;
+  }
+  return r;
+}
+
+double feature_distance(const d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
+                        const Features& features, double h) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+  for (const auto& f : boundary)
+    for (std::size_t i = 0; i < 3; ++i) edges.emplace_back(std::minmax(f[i], f[(i + 1) % 3]));
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  if (edges.empty()) return features.curves.empty() ? 0 : HUGE_VAL;
+  // The edges filed by their boxes in a grid of cubes of side h; for each
+  // point, boxes of half-side r = h, 2h, 4h, ... around it until the
+  // nearest edge found is within r (every edge within r meets the box).
+  BoxGrid grid(h);
+  for (std::uint32_t e = 0; e < edges.size(); ++e) {
+    const Vec3 &a = mesh.vertices[edges[e].first], &b = mesh.vertices[edges[e].second];
+    grid.insert(e, {std::min(a[0], b[0]), std::min(a[1], b[1]), std::min(a[2], b[2])},
+                {std::max(a[0], b[0]), std::max(a[1], b[1]), std::max(a[2], b[2])});
+  }
+  double worst = 0;
+  for (const FeatureCurve& C : features.curves)
+    for (const Vec3& p : C.points) {
+      double nearest = HUGE_VAL;
+      for (double r = h; nearest > r; r *= 2) {
+        const auto [lo, hi] = box_around(p, r);
+        for (const std::uint32_t e : grid.in_box(lo, hi))
+          nearest = std::min(
+              nearest, nearest_on_segment(mesh.vertices[edges[e].first], mesh.vertices[edges[e].second], p).distance);
+      }
+      worst = std::max(worst, nearest);
+    }
+  return worst;
+}
+
+}  // namespace bccmis::stuff

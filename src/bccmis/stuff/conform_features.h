@@ -1,0 +1,50 @@
+// bccmis::stuff::conform_features: a stuffed mesh made to hold the sharp
+// features of its shape (spec/stuffing.md S30-S33): boundary vertices
+// snapped onto the corners and along the curves, each move guarded so that
+// S10's dihedral bound holds.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "bccmis/d3/tet_mesh.h"
+#include "bccmis/stuff/features.h"
+
+namespace bccmis::stuff {
+
+/// S11's point data for a boundary vertex moved onto a feature (S30).
+inline constexpr std::uint8_t kSnappedVertex = 3;
+
+/// What S30 made: the corners and curve pieces it conformed (a loop is
+/// split in two pieces), what the checker's feature layer verifies (S32).
+struct FeatureConformity {
+  std::vector<Vec3> corners;
+  std::vector<FeatureCurve> pieces;
+  std::size_t corners_conformed = 0;   ///< of Features::corners
+  std::size_t curves_conformed = 0;    ///< of Features::curves, every piece conformed
+  std::size_t moves = 0, refused = 0;  ///< the guard's answers (S31)
+};
+
+/// S30-S31 on `mesh` (a stuffed mesh, positively oriented tetrahedra, whose
+/// boundary triangles are `boundary`), `h` the finest side: moves boundary
+/// vertices onto `features` and marks them kSnappedVertex.
+FeatureConformity conform_features(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
+                                   const Features& features, double h);
+
+/// S33: the largest distance from a point of a feature curve's polyline to
+/// the nearest edge of the boundary triangles; 0 without features. `h`
+/// (the finest side) sizes the search grid only.
+double feature_distance(const d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
+                        const Features& features, double h);
+
+/// S33's figures of a run with features (Meshed::features).
+struct FeatureReport {
+  double angle = 0;
+  std::size_t edges = 0, curves = 0, corners = 0;
+  std::size_t corners_conformed = 0, curves_conformed = 0;
+  double distance = -1;  ///< with the statistics, in world units; -1 when not computed
+};
+
+}  // namespace bccmis::stuff

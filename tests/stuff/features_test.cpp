@@ -1,0 +1,262 @@
+// Sharp features (spec/stuffing.md S29-S33): detection on hand-built
+// surfaces whose creases and corners are known (a cube, a fold standing on
+// the feature angle, a hexagonal prism with two loops), conformity on a
+// rotated cube (the conformed mesh's volume is the cube's) and on CGAL's
+// fandisk, with S10's dihedral bound on every mesh, and the checker's
+// feature layer catching a corner moved off and a curve not covered.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "bccmis/invariants/d3/feature_conformity.h"
+#include "bccmis/stuff/features.h"
+#include "bccmis/stuff/mesh_shape.h"
+#include "bccmis/stuff/surface.h"
+#include "testing/cube.h"
+
+namespace bccmis::stuff {
+namespace {
+
+using Tris = std::vector<std::array<std::uint32_t, 3>>;
+using Soup = std::vector<std::array<Vec3, 3>>;
+
+const std::string kCgal = BCCMIS_CGAL_MESHES_DIR;
+
+using testing::cube_vertices;
+const Tris kCubeTriangles = testing::cube_triangles();
+
+Soup soup(const std::vector<Vec3>& v, const Tris& t) {
+  Soup s;
+  for (const auto& f : t) s.push_back({v[f[0]], v[f[1]], v[f[2]]});
+  return s;
+}
+
+//= spec/stuffing.md S29 type=test
+TEST(FeatureDetection, CubeHasTwelveEdgesAndEightCornersBelowNinetyDegrees) {
+  std::vector<Vec3> corners = cube_vertices();
+  std::sort(corners.begin(), corners.end());  // every vertex, in coordinate order
+  for (const double angle : {1.0, 60.0, 89.9}) {
+    const Features f = detect_features(soup(cube_vertices(), kCubeTriangles), angle);
+    EXPECT_EQ(f.edges, 12u) << angle;
+    EXPECT_EQ(f.corners, corners) << angle;
+    ASSERT_EQ(f.curves.size(), 12u) << angle;
+    for (const FeatureCurve& c : f.curves) {
+      EXPECT_FALSE(c.closed);
+      EXPECT_EQ(c.points.size(), 2u);
+      EXPECT_EQ(c.length(), 2.0);
+      EXPECT_LT(c.points.front(), c.points.back());  // from its smaller end
+    }
+  }
+  // The faces turn by exactly 90 degrees: at phi = 90 no edge is sharper (S29's strict >).
+  const Features f = detect_features(soup(cube_vertices(), kCubeTriangles), 90);
+  EXPECT_EQ(f.edges, 0u);
+  EXPECT_TRUE(f.corners.empty());
+  EXPECT_TRUE(f.curves.empty());
+}
+
+//= spec/stuffing.md S29 type=test
+TEST(FeatureDetection, FoldStandsOnTheFeatureAngle) {
+  // Two triangles along the edge (0,0,0)-(0,1,0), normals (0,0,1) and
+  // (1,0,1): they turn by exactly 45 degrees. The edge is a feature below
+  // 45 only; its ends are corners (one feature edge each). The rims (edges
+  // of one triangle) are never features.
+  const Vec3 o{0, 0, 0}, y{0, 1, 0}, x{1, 0, 0}, w{-1, 0, 1};
+  const Soup consistent{{o, x, y}, {o, y, w}};
+  const Soup inconsistent{{o, x, y}, {y, o, w}};  // the second runs along the edge the same way: its normal flipped
+  for (const Soup& s : {consistent, inconsistent}) {
+    const Features below = detect_features(s, 44.99);
+    EXPECT_EQ(below.edges, 1u);
+    EXPECT_EQ(below.corners, (std::vector<Vec3>{o, y}));
+    ASSERT_EQ(below.curves.size(), 1u);
+    EXPECT_EQ(below.curves[0].points, (std::vector<Vec3>{o, y}));
+    const Features at = detect_features(s, 45);
+    EXPECT_EQ(at.edges, 0u);
+    EXPECT_TRUE(at.corners.empty());
+  }
+}
+
+/// A hexagonal prism of radius 1 and height 1: its rims turn by 90
+/// degrees, its vertical edges by 60, and each rim turns by 60 at a vertex.
+std::vector<Vec3> prism_vertices() {
+  std::vector<Vec3> v;
+  for (int z = 0; z < 2; ++z)
+    for (int k = 0; k < 6; ++k)
+      v.push_back({std::cos(k * std::numbers::pi / 3), std::sin(k * std::numbers::pi / 3), static_cast<double>(z)});
+  return v;
+}
+Tris prism_triangles() {
+  Tris t;
+  for (std::uint32_t k = 0; k < 6; ++k) {
+    const std::uint32_t n = (k + 1) % 6;
+    t.push_back({k, n, 6 + n});
+    t.push_back({k, 6 + n, 6 + k});
+  }
+  for (std::uint32_t k = 1; k + 1 < 6; ++k) {
+    t.push_back({0, k + 1, k});          // the bottom, seen from below
+    t.push_back({6, 6 + k, 6 + k + 1});  // the top
+  }
+  return t;
+}
+Soup hexagonal_prism() { return soup(prism_vertices(), prism_triangles()); }
+
+//= spec/stuffing.md S29 type=test
+TEST(FeatureDetection, HexagonalPrismHasTwoLoopsOrEighteenCurves) {
+  // 60 < phi < 90: the two rims only, loops without a corner (each vertex
+  // has two feature edges turning by 60 < phi).
+  const Features loops = detect_features(hexagonal_prism(), 75);
+  EXPECT_EQ(loops.edges, 12u);
+  EXPECT_TRUE(loops.corners.empty());
+  ASSERT_EQ(loops.curves.size(), 2u);
+  for (const FeatureCurve& c : loops.curves) {
+    EXPECT_TRUE(c.closed);
+    EXPECT_EQ(c.points.size(), 7u);
+    EXPECT_EQ(c.points.front(), c.points.back());
+    EXPECT_NEAR(c.length(), 6, 1e-12);  // a regular hexagon of radius 1
+  }
+  // phi < 60: the vertical edges too; every vertex has three, a corner.
+  const Features all = detect_features(hexagonal_prism(), 55);
+  EXPECT_EQ(all.edges, 18u);
+  EXPECT_EQ(all.corners.size(), 12u);
+  EXPECT_EQ(all.curves.size(), 18u);
+}
+
+/// The cube [0,2]^3 turned about an axis that is no lattice direction, so
+/// that no lattice point lies on its edges by accident.
+std::vector<Vec3> turned_cube() {
+  const double a = 0.3, b = 0.2;
+  std::vector<Vec3> v;
+  for (const Vec3& p : cube_vertices()) {
+    const double x1 = std::cos(a) * p[0] - std::sin(a) * p[1], y1 = std::sin(a) * p[0] + std::cos(a) * p[1];
+    v.push_back({x1, std::cos(b) * y1 - std::sin(b) * p[2], std::sin(b) * y1 + std::cos(b) * p[2]});
+  }
+  return v;
+}
+
+Meshed mesh_with(const Shape& shape, int level, bool features) {
+  Settings s;
+  s.lattice.max_level = level;
+  s.statistics = true;
+  s.check = features;  // S11, S10's interval, S27 and S32
+  s.features.on = features;
+  return mesh_shape(shape, s);
+}
+
+//= spec/stuffing.md S30 type=test
+//= spec/stuffing.md S31 type=test
+TEST(FeatureConformity, TurnedCubeKeepsItsCornersEdgesAndVolume) {
+  const auto cube = make_mesh_shape(turned_cube(), kCubeTriangles, "turned cube");
+  const Meshed without = mesh_with(*cube, 2, false);
+  const Meshed with = mesh_with(*cube, 2, true);
+  ASSERT_TRUE(with.features);
+  EXPECT_EQ(with.features->edges, 12u);
+  EXPECT_EQ(with.features->corners, 8u);
+  EXPECT_EQ(with.features->corners_conformed, 8u);
+  EXPECT_EQ(with.features->curves_conformed, 12u);
+  // Every corner a vertex of the mesh (found here, not by the checker).
+  const auto& V = with.stuffed.mesh.vertices;
+  for (const Vec3& c : turned_cube()) EXPECT_NE(std::find(V.begin(), V.end(), c), V.end());
+  // Every crease covered by boundary edges on it: the boundary is the
+  // cube's, so the volume is 8 (rounding aside); without features the
+  // lattice's chords cut every crease.
+  EXPECT_NEAR(with.statistics->quality.volume, 8, 1e-12);
+  EXPECT_LT(without.statistics->quality.volume, 8 - 1e-2);
+  // S33: every input feature point on a boundary edge.
+  EXPECT_LT(with.features->distance, 1e-12);
+  EXPECT_GT(without.statistics->quality.volume, 0);
+  // S10's bound, kept by S31's guard.
+  EXPECT_GE(with.statistics->quality.min_dihedral, kDihedralBounds[0]);
+  EXPECT_LE(with.statistics->quality.max_dihedral, kDihedralBounds[1]);
+  std::size_t snapped = 0;
+  for (const auto k : with.stuffed.mesh.kind) snapped += k == kSnappedVertex;
+  EXPECT_GE(snapped, 8u);  // at least the corners moved (none is a lattice point)
+}
+
+//= spec/stuffing.md S30 type=test
+TEST(FeatureConformity, HexagonalPrismKeepsItsTwoLoops) {
+  // Loops without corners (phi = 75): each split in two pieces (S30.2).
+  Settings s;
+  s.lattice.max_level = 2;
+  s.statistics = true;
+  s.check = true;
+  s.features = {true, 75};
+  const Meshed m = mesh_shape(*make_mesh_shape(prism_vertices(), prism_triangles(), "hexagonal prism"), s);
+  ASSERT_TRUE(m.features);
+  EXPECT_EQ(m.features->curves, 2u);
+  EXPECT_EQ(m.features->corners, 0u);
+  EXPECT_EQ(m.features->curves_conformed, 2u);
+  // Every snapped vertex on a rim: in the plane z = 0 or z = 1, on a side of
+  // the hexagon (at distance cos 30 degrees from the axis along its normal).
+  std::size_t snapped = 0;
+  for (std::size_t i = 0; i < m.stuffed.mesh.vertices.size(); ++i) {
+    if (m.stuffed.mesh.kind[i] != kSnappedVertex) continue;
+    ++snapped;
+    const Vec3& p = m.stuffed.mesh.vertices[i];
+    EXPECT_TRUE(std::abs(p[2]) < 1e-12 || std::abs(p[2] - 1) < 1e-12) << p[2];
+    double support = 0;  // the largest projection on the sides' normals
+    for (int k = 0; k < 6; ++k) {
+      const double a = (k + 0.5) * std::numbers::pi / 3;
+      support = std::max(support, std::cos(a) * p[0] + std::sin(a) * p[1]);
+    }
+    EXPECT_NEAR(support, std::sqrt(3.0) / 2, 1e-12);
+  }
+  EXPECT_GE(snapped, 4u);  // two ends of two pieces on each loop at least
+  EXPECT_GE(m.statistics->quality.min_dihedral, kDihedralBounds[0]);
+  EXPECT_LE(m.statistics->quality.max_dihedral, kDihedralBounds[1]);
+}
+
+//= spec/stuffing.md S30 type=test
+//= spec/stuffing.md S33 type=test
+TEST(FeatureConformity, FandiskKeepsItsCornersWithinTheBound) {
+  const auto fandisk = load_mesh_file(kCgal + "/fandisk.off");
+  const Meshed without = mesh_with(*fandisk, 3, false);
+  const Meshed with = mesh_with(*fandisk, 3, true);  // S32's checker passes
+  ASSERT_TRUE(with.features);
+  EXPECT_EQ(with.features->corners_conformed, with.features->corners);
+  EXPECT_GT(with.features->curves_conformed, with.features->curves / 2);
+  EXPECT_GE(with.statistics->quality.min_dihedral, kDihedralBounds[0]);
+  EXPECT_LE(with.statistics->quality.max_dihedral, kDihedralBounds[1]);
+  // The creases kept make the volume error several times smaller.
+  EXPECT_LT(std::abs(with.statistics->relative_volume_error), std::abs(without.statistics->relative_volume_error) / 4);
+  EXPECT_FALSE(without.features);
+}
+
+//= spec/stuffing.md S32 type=test
+TEST(FeatureChecker, CatchesACornerMovedOffAndAnUncoveredCurve) {
+  const auto cube = make_mesh_shape(turned_cube(), kCubeTriangles, "turned cube");
+  const Meshed m = mesh_with(*cube, 2, true);
+  const double h = m.fit.h;
+  d3::FeatureClaims claims;
+  claims.corners = turned_cube();
+  for (const auto& [a, b] : std::vector<std::pair<int, int>>{{0, 1}, {0, 2}, {0, 4}, {7, 3}, {7, 5}, {7, 6}})
+    claims.curves.push_back({turned_cube()[static_cast<std::size_t>(a)], turned_cube()[static_cast<std::size_t>(b)]});
+  claims.tolerance = 1e-9 * h;
+  claims.chord = h / 4;
+  auto V = m.stuffed.mesh.vertices;
+  EXPECT_FALSE(d3::check_feature_conformity(V, m.stuffed.mesh.tets, claims));
+  // A corner's vertex moved off by twice the tolerance.
+  const auto at = std::find(V.begin(), V.end(), claims.corners[5]) - V.begin();
+  V[static_cast<std::size_t>(at)][0] += 2e-9 * h;
+  const auto corner = d3::check_feature_conformity(V, m.stuffed.mesh.tets, claims);
+  ASSERT_TRUE(corner);
+  EXPECT_EQ(corner->code, "feature-corner");
+  EXPECT_NE(corner->message.find("corner 5 "), std::string::npos) << corner->message;
+  EXPECT_EQ(corner->layer, 8);
+  // Moved off by the tolerance exactly (in x only): still a vertex there.
+  V[static_cast<std::size_t>(at)][0] = claims.corners[5][0] + 0.5e-9 * h;
+  EXPECT_FALSE(d3::check_feature_conformity(V, m.stuffed.mesh.tets, claims));
+  // A face's diagonal is no crease: no boundary edge lies on all of it.
+  claims.curves.push_back({turned_cube()[0], turned_cube()[3]});
+  const auto diagonal = d3::check_feature_conformity(V, m.stuffed.mesh.tets, claims);
+  ASSERT_TRUE(diagonal);
+  EXPECT_EQ(diagonal->code, "feature-uncovered");
+  EXPECT_NE(diagonal->message.find("curve 6 "), std::string::npos) << diagonal->message;
+}
+
+}  // namespace
+}  // namespace bccmis::stuff
