@@ -14,6 +14,7 @@
 #include <variant>
 #include <vector>
 
+#include "bccmis/d3/point.h"
 #include "bccmis/format.h"
 #include "bccmis/graph.h"
 #include "bccmis/invariants/invariants.h"
@@ -23,8 +24,6 @@ namespace bccmis::fast {
 class Lattice;
 }  // namespace bccmis::fast
 namespace bccmis::d3 {
-struct Point;
-struct LatticeSize;
 using Graph = BasicGraph<Point, LatticeSize>;
 namespace fast {
 class Lattice;
