@@ -1,6 +1,8 @@
-// refine_balanced, coarsen_where, edge_neighbors and boundary_after_coarsen
-// (src/bccmis/apps/balance.h), checked against an independent geometric closure
-// on quadtree cells (level, i, j) that never looks at the graph's sets.
+// The core's cascade refine_balanced, edge_neighbors and find_corner_imbalance
+// (src/bccmis/balance.h), and coarsen_where and
+// boundary_after_coarsen (src/bccmis/apps/balance.h), checked against an
+// independent geometric closure on quadtree cells (level, i, j) that never
+// looks at the graph's sets.
 #include <gtest/gtest.h>
 
 #include <algorithm>
