@@ -16,9 +16,9 @@
 #include <vector>
 
 #include "bccmis/apps/balance.h"
-#include "bccmis/format.h"
 #include "bccmis/geometry.h"
 #include "bccmis/invariants/invariants.h"
+#include "bccmis/io/format.h"
 #include "bccmis/ops.h"
 
 namespace bccmis {

@@ -15,10 +15,10 @@
 #include <vector>
 
 #include "bccmis/d3/point.h"
-#include "bccmis/format.h"
 #include "bccmis/graph.h"
 #include "bccmis/invariants/invariants.h"
 #include "bccmis/io/encoding.h"
+#include "bccmis/io/format.h"
 
 namespace bccmis::fast {
 class Lattice;
