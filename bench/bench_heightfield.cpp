@@ -33,8 +33,8 @@
 #include "bccmis/apps/heightfield.h"
 #include "bccmis/apps/image.h"
 #include "bccmis/fast/lattice.h"
-#include "bccmis/format.h"
 #include "bccmis/geometry.h"
+#include "bccmis/io/format.h"
 #include "bench_main.h"
 
 namespace bccmis::bench {

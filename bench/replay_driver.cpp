@@ -22,8 +22,8 @@
 #include <string_view>
 
 #include "bccmis/fast/lattice.h"
-#include "bccmis/format.h"
 #include "bccmis/graph.h"
+#include "bccmis/io/format.h"
 #include "bccmis/lattice.h"
 #include "bccmis/trace.h"
 

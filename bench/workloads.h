@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "bccmis/fast/lattice.h"
-#include "bccmis/format.h"
 #include "bccmis/graph.h"
+#include "bccmis/io/format.h"
 #include "bccmis/lattice.h"
 #include "bccmis/ops.h"
 

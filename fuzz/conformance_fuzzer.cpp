@@ -31,7 +31,7 @@
 #include <string>
 #include <string_view>
 
-#include "bccmis/format.h"
+#include "bccmis/io/format.h"
 #include "bccmis/oracle/conformance.h"
 #include "bccmis/oracle/view.h"
 #include "bccmis/trace.h"

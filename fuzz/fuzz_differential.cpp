@@ -28,7 +28,7 @@
 #include <string>
 #include <string_view>
 
-#include "bccmis/format.h"
+#include "bccmis/io/format.h"
 #include "fuzz_util.h"
 #include "testing/byte_program.h"
 #include "testing/twin.h"

@@ -27,7 +27,7 @@
 #include <vector>
 
 #include "bccmis/d3/ops.h"
-#include "bccmis/format.h"
+#include "bccmis/io/format.h"
 #include "fuzz_util.h"
 #include "testing/byte_program.h"
 #include "testing/d3/twin.h"

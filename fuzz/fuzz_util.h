@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-#include "bccmis/format.h"
+#include "bccmis/io/format.h"
 
 namespace bccmis::fuzz {
 

@@ -24,9 +24,9 @@
 #include <utility>
 #include <vector>
 
-#include "bccmis/format.h"
 #include "bccmis/invariants/checked.h"
 #include "bccmis/invariants/invariants.h"
+#include "bccmis/io/format.h"
 #include "bccmis/lattice.h"
 #include "bccmis/trace.h"
 #include "fuzz_util.h"

@@ -26,9 +26,9 @@
 #include <vector>
 
 #include "bccmis/d3/lattice.h"
-#include "bccmis/format.h"
 #include "bccmis/geometry.h"
 #include "bccmis/invariants/invariants.h"
+#include "bccmis/io/format.h"
 #include "bccmis/lattice.h"
 #include "d3/checked.h"
 #include "fuzz_util.h"

@@ -24,8 +24,8 @@
 #include <variant>
 
 #include "bccmis/d3/lattice.h"
-#include "bccmis/format.h"
 #include "bccmis/invariants/invariants.h"
+#include "bccmis/io/format.h"
 #include "bccmis/trace.h"
 #include "d3/checked.h"
 #include "fuzz_util.h"

@@ -22,10 +22,10 @@
 #include <string>
 #include <vector>
 
-#include "bccmis/format.h"
 #include "bccmis/geometry.h"
 #include "bccmis/graph.h"
 #include "bccmis/invariants/checked.h"
+#include "bccmis/io/format.h"
 #include "bccmis/ops.h"
 #include "testing/counting_allocator.h"
 

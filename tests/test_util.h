@@ -5,8 +5,8 @@
 #include <ostream>
 #include <string>
 
-#include "bccmis/format.h"
 #include "bccmis/graph.h"
+#include "bccmis/io/format.h"
 #include "bccmis/ops.h"
 
 namespace bccmis {

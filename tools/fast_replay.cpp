@@ -16,7 +16,7 @@
 #include <string>
 
 #include "bccmis/fast/lattice.h"
-#include "bccmis/format.h"
+#include "bccmis/io/format.h"
 #include "bccmis/trace.h"
 
 int main(int argc, char** argv) {

@@ -27,9 +27,9 @@
 #include <string>
 #include <vector>
 
-#include "bccmis/d3/format.h"
 #include "bccmis/d3/lattice.h"
 #include "bccmis/fast/d3/lattice.h"
+#include "bccmis/io/d3/format.h"
 
 namespace {
 

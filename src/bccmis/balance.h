@@ -158,7 +158,7 @@ void cascade(Lat& g, const point_type_t<Lat>& c, Balance b, std::vector<point_ty
 /// neighbor by position first). Only cells that every balanced lattice with
 /// c refined must refine are refined, so the leaf set reached by a set of
 /// requests is the smallest balanced refinement holding them, whatever their
-/// order (tests/apps/balance_test.cpp and tests/d3/balance_test.cpp check
+/// order (tests/balance_test.cpp and tests/d3/balance_test.cpp check
 /// this against a geometric closure). Every lattice of one dimension refines
 /// the same cells in the same order. Refused (changing nothing) only with
 /// `NoSuchCell` or `MaxLevel`. In corner mode g must be corner-balanced.

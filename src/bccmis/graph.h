@@ -14,61 +14,15 @@
 // in spec/errata.toml (entries with kind = "position").
 #pragma once
 
-#include <compare>
-#include <cstdint>
 #include <map>
 #include <set>
-#include <stdexcept>
-#include <string>
+
+#include "bccmis/point.h"
 
 namespace bccmis {
 
-/// A lattice position in integer coordinates (spec/formats.md, "Coordinates").
-struct Point {
-  static constexpr int dimension = 2;
-  std::int64_t x = 0;
-  std::int64_t y = 0;
-  friend auto operator<=>(const Point&, const Point&) = default;
-  friend bool operator==(const Point&, const Point&) = default;
-};
-
-using PointSet = std::set<Point>;
-
-/// "(x, y)": how messages name a position.
-std::string to_string(const Point& p);
-
-/// The size of a lattice: W x H level-0 cells, at most L refinements deep.
-/// Level-0 cells have side S = 2^(L+1); a level-l cell has side 2^(L+1-l), so
-/// every center, corner and side midpoint down to level L is an integer point.
-struct LatticeSize {
-  std::int64_t W = 1;
-  std::int64_t H = 1;
-  int L = 0;
-  friend bool operator==(const LatticeSize&, const LatticeSize&) = default;
-};
-
-/// Thrown when a lattice size is out of range (W, H < 1, L < 0, or a domain
-/// side W*S or H*S above 2^62). The message names the offending value.
-struct LatticeError : std::invalid_argument {
-  using std::invalid_argument::invalid_argument;
-};
-
-/// Largest allowed domain side W*S and H*S.
-inline constexpr std::int64_t kMaxDomainSide = std::int64_t{1} << 62;
-
-/// Throws LatticeError unless `size` is a valid lattice.
-void validate_lattice_size(const LatticeSize& size);
-
-/// Side of a level-0 cell of any dimension: S = 2^(L+1). A braced size,
-/// level0_side({W, H, L}), is a 2D LatticeSize.
-template <class Size = LatticeSize>
-requires requires(const Size& s) { s.L; }
-std::int64_t level0_side(const Size& size) { return std::int64_t{1} << (size.L + 1); }
-
-/// Side of a level-`level` cell of any dimension: 2^(L+1-level).
-template <class Size = LatticeSize>
-requires requires(const Size& s) { s.L; }
-std::int64_t cell_side(const Size& size, int level) { return std::int64_t{1} << (size.L + 1 - level); }
+// Point, LatticeSize, LatticeError, validate_lattice_size, level0_side and
+// cell_side: bccmis/point.h, one source for every dimension.
 
 /// The graph of §2 on the lattice of point type P and size type Size (one
 /// source for every dimension: Graph in 2D, d3::Graph in 3D): N, C, 𝒩(·)

@@ -3,7 +3,7 @@
 //
 // Layout: members and elements are separated by ", ", keys by ": ", on one
 // line, e.g. {"shape": "sphere r=1", "leaves": 12, "seconds": {"total": 0.5}}.
-// Strings are escaped by json_string (bccmis/format.h); doubles are written
+// Strings are escaped by json_string (bccmis/io/format.h); doubles are written
 // with 9 significant digits (%.9g), enough to tell apart any two numbers a
 // report compares; integers exactly.
 #pragma once
@@ -16,7 +16,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "bccmis/format.h"
+#include "bccmis/io/format.h"
 
 namespace bccmis {
 

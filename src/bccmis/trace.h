@@ -16,7 +16,7 @@
 #include <type_traits>
 #include <variant>
 
-#include "bccmis/format.h"
+#include "bccmis/io/format.h"
 #include "bccmis/lattice.h"
 
 namespace bccmis {

@@ -1,13 +1,10 @@
-# Included by tests/CMakeLists.txt: the apps' tests (issue 8, src/bccmis/apps).
-# The 66k-state corner-balance counts run under `exhaustive` (release build,
-# excluded from the default test presets), like tests/explore/exhaustive_test.cpp.
+# Included by tests/CMakeLists.txt: the apps' tests (src/bccmis/apps; the
+# balance cascade's are the core's, tests/balance_test.cpp).
 bccmis_add_gtest(apps_tests
-  SOURCES balance_test.cpp image_test.cpp heightfield_test.cpp moving_disk_test.cpp fast_test.cpp
+  SOURCES image_test.cpp heightfield_test.cpp moving_disk_test.cpp fast_test.cpp
   LIBS bccmis::apps bccmis::fast bccmis::core bccmis::invariants bccmis::oracle
   DEFINITIONS BCCMIS_APPS_SAMPLES="${PROJECT_SOURCE_DIR}/apps/samples"
-  FILTER "-*Exhaustive.*" TEST_LIST apps_tests_UNIT LABELS unit apps)
-bccmis_discover_gtests(apps_tests FILTER "*Exhaustive.*" TEST_LIST apps_tests_EXHAUSTIVE LABELS exhaustive apps
-                       TIMEOUT 1800)
+  LABELS unit apps)
 
 # The committed sample is what its generator script writes.
 find_package(Python3 COMPONENTS Interpreter QUIET)

@@ -17,8 +17,8 @@
 #include "bccmis/apps/heightfield.h"
 #include "bccmis/apps/image.h"
 #include "bccmis/fast/lattice.h"
-#include "bccmis/format.h"
 #include "bccmis/invariants/invariants.h"
+#include "bccmis/io/format.h"
 
 namespace bccmis {
 namespace {

@@ -18,8 +18,8 @@
 
 #include "bccmis/apps/heightfield.h"
 #include "bccmis/apps/triangulate.h"
-#include "bccmis/format.h"
 #include "bccmis/invariants/invariants.h"
+#include "bccmis/io/format.h"
 #include "bccmis/io/obj.h"
 #include "bccmis/io/ply.h"
 #include "bccmis/io/vtu.h"

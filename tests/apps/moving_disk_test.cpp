@@ -16,8 +16,8 @@
 #include "bccmis/apps/apps.h"
 #include "bccmis/apps/moving_disk.h"
 #include "bccmis/fast/lattice.h"
-#include "bccmis/format.h"
 #include "bccmis/invariants/invariants.h"
+#include "bccmis/io/format.h"
 
 namespace bccmis {
 namespace {

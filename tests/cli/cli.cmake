@@ -403,7 +403,7 @@ bccmis_add_test(cli.d3_render_docs_current
          LABELS cli)
 
 # bccmis render on a tetrahedral Medit mesh (spec/cli.md, render), counted as
-# above. tests/stuff/two_tets.mesh by hand (tests/stuff/render_test.cpp): 4 of
+# above. tests/stuff/two_tets.mesh by hand (tests/stuff/mesh_picture_test.cpp): 4 of
 # its 6 boundary triangles face the viewer (direction (1, -2, 1.5)), 2 of each
 # level, one legend entry per level; the cut z = 0.25 removes the first
 # tetrahedron and leaves 2 facing triangles of the second; the 12 dihedral

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "bccmis/d3/lattice.h"
-#include "bccmis/format.h"
+#include "bccmis/io/format.h"
 #include "bccmis/trace.h"
 
 namespace bccmis::d3 {

@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "bccmis/explore/explore.h"
-#include "bccmis/format.h"
+#include "bccmis/io/format.h"
 #include "bccmis/ops.h"
 #include "model/leaf_model.h"
 

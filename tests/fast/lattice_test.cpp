@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "bccmis/fast/lattice.h"
-#include "bccmis/format.h"
 #include "bccmis/invariants/invariants.h"
+#include "bccmis/io/format.h"
 #include "bccmis/lattice.h"
 #include "bccmis/ops.h"
 #include "bccmis/trace.h"

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "bccmis/fast/lattice.h"
-#include "bccmis/format.h"
+#include "bccmis/io/format.h"
 #include "bccmis/lattice.h"
 #include "bccmis/ops.h"
 #include "bccmis/text_writer.h"

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "bccmis/format.h"
 #include "bccmis/invariants/checked.h"
 #include "bccmis/invariants/invariants.h"
+#include "bccmis/io/format.h"
 #include "invariants/two_level_jump.h"
 
 namespace bccmis {

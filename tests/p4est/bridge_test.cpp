@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <random>
 
-#include "bccmis/format.h"
 #include "bccmis/invariants/invariants.h"
+#include "bccmis/io/format.h"
 #include "p4est/p4est_test_util.h"
 
 namespace bccmis::p4est_bridge {

@@ -1,8 +1,8 @@
 // Uses the installed library the way the README shows: refine, check, coarsen.
 #include <iostream>
 
-#include "bccmis/format.h"
 #include "bccmis/invariants/invariants.h"
+#include "bccmis/io/format.h"
 #include "bccmis/ops.h"
 
 int main() {

@@ -79,7 +79,7 @@ endif()
 
 # Reading back the Medit files and drawing them (bccmis render MESH.mesh):
 # a two-tetrahedron mesh drawn by hand (tests/stuff/two_tets.mesh).
-bccmis_add_gtest(stuff_render_tests SOURCES render_test.cpp LIBS bccmis::stuff bccmis::d3 bccmis::core
+bccmis_add_gtest(stuff_mesh_picture_tests SOURCES mesh_picture_test.cpp LIBS bccmis::stuff bccmis::d3 bccmis::core
                  DEFINITIONS BCCMIS_TEST_DIR="${CMAKE_CURRENT_LIST_DIR}" LABELS unit)
 
 # The fast path against the reference: the same lattice, graded mesh and

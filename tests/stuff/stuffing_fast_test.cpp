@@ -12,9 +12,9 @@
 #include <sstream>
 #include <string>
 
-#include "bccmis/d3/format.h"
 #include "bccmis/d3/mesh.h"
 #include "bccmis/fast/d3/mesh.h"
+#include "bccmis/io/d3/format.h"
 #include "bccmis/stuff/stuff.h"
 
 namespace bccmis::stuff {

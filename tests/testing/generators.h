@@ -33,9 +33,9 @@
 #include <utility>
 #include <vector>
 
-#include "bccmis/format.h"
 #include "bccmis/graph.h"
 #include "bccmis/invariants/invariants.h"
+#include "bccmis/io/format.h"
 #include "bccmis/ops.h"
 #include "model/leaf_model.h"
 

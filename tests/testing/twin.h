@@ -18,8 +18,8 @@
 #include <string>
 
 #include "bccmis/fast/lattice.h"
-#include "bccmis/format.h"
 #include "bccmis/graph.h"
+#include "bccmis/io/format.h"
 
 namespace bccmis::testing {
 

@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <map>
 
-#include "bccmis/format.h"
 #include "bccmis/invariants/invariants.h"
+#include "bccmis/io/format.h"
 
 namespace bccmis::cli {
 

@@ -14,17 +14,16 @@
 #include <variant>
 #include <vector>
 
-#include "bccmis/format.h"
+#include "bccmis/d3/point.h"
 #include "bccmis/graph.h"
 #include "bccmis/invariants/invariants.h"
 #include "bccmis/io/encoding.h"
+#include "bccmis/io/format.h"
 
 namespace bccmis::fast {
 class Lattice;
 }  // namespace bccmis::fast
 namespace bccmis::d3 {
-struct Point;
-struct LatticeSize;
 using Graph = BasicGraph<Point, LatticeSize>;
 namespace fast {
 class Lattice;

@@ -25,9 +25,9 @@
 #include <unordered_map>
 #include <vector>
 
-#include "bccmis/d3/format.h"
-#include "bccmis/format.h"
 #include "bccmis/graph.h"
+#include "bccmis/io/d3/format.h"
+#include "bccmis/io/format.h"
 
 namespace bccmis::cli {
 

@@ -16,7 +16,7 @@
 #include "bccmis/io/msh.h"
 #include "bccmis/io/vtu.h"
 #include "bccmis/oracle/oracle.h"
-#include "bccmis/stuff/render.h"
+#include "bccmis/stuff/mesh_picture.h"
 #include "bccmis/stuff/stuff.h"
 #include "commands.h"
 #include "io.h"

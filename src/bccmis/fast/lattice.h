@@ -45,8 +45,8 @@
 #include <vector>
 
 #include "bccmis/fast/small_points.h"
-#include "bccmis/format.h"
 #include "bccmis/graph.h"
+#include "bccmis/io/format.h"
 #include "bccmis/lattice.h"
 #include "bccmis/ops.h"
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "bccmis/format.h"
+#include "bccmis/io/format.h"
 #include "bccmis/oracle/view.h"
 
 namespace bccmis {

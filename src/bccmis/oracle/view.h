@@ -14,8 +14,8 @@
 #include <utility>
 #include <vector>
 
-#include "bccmis/format.h"
 #include "bccmis/invariants/invariants.h"
+#include "bccmis/io/format.h"
 
 namespace bccmis {
 

@@ -13,9 +13,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "bccmis/d3/format.h"
 #include "bccmis/d3/ops.h"
 #include "bccmis/fast/d3/lattice.h"
+#include "bccmis/io/d3/format.h"
 
 namespace {
 

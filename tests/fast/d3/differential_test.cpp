@@ -18,7 +18,7 @@
 
 #include "bccmis/d3/ops.h"
 #include "bccmis/fast/d3/lattice.h"
-#include "bccmis/format.h"
+#include "bccmis/io/format.h"
 #include "bccmis/trace.h"
 #include "testing/d3/twin.h"
 

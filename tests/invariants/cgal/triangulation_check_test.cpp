@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "bccmis/format.h"
 #include "bccmis/invariants/cgal/triangulation_check.h"
 #include "bccmis/invariants/invariants.h"
+#include "bccmis/io/format.h"
 #include "bccmis/ops.h"
 #include "invariants/two_level_jump.h"
 

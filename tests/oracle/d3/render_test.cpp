@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "bccmis/d3/format.h"
+#include "bccmis/io/d3/format.h"
 #include "bccmis/oracle/oracle.h"
 #include "d3/util.h"
 

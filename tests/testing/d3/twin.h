@@ -21,10 +21,10 @@
 #include <utility>
 #include <vector>
 
-#include "bccmis/d3/format.h"
 #include "bccmis/d3/lattice.h"
 #include "bccmis/fast/d3/lattice.h"
-#include "bccmis/format.h"
+#include "bccmis/io/d3/format.h"
+#include "bccmis/io/format.h"
 #include "bccmis/trace.h"
 
 namespace bccmis::d3::testing {

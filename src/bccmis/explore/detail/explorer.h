@@ -32,7 +32,7 @@
 #include <vector>
 
 #include "bccmis/explore/explore.h"
-#include "bccmis/format.h"
+#include "bccmis/io/format.h"
 #include "bccmis/json_writer.h"
 #include "bccmis/lattice.h"
 #include "bccmis/trace.h"

@@ -1,6 +1,6 @@
 // bccmis: the canonical-state writer of spec/formats.md ("Canonical state"
 // and its 3D extension) for a graph of either dimension (Graph, d3::Graph).
-// Internal: format.cpp and d3/format.cpp define write_canonical_state with it.
+// Internal: io/format.cpp and io/d3/format.cpp define write_canonical_state with it.
 #pragma once
 
 #include <cstdint>

@@ -1,11 +1,11 @@
-#include "bccmis/d3/format.h"
+#include "bccmis/io/d3/format.h"
 
 #include <string>
 
 #include "bccmis/d3/lattice.h"  // static_assert(AdaptiveLattice<Graph>)
-#include "bccmis/detail/parse.h"
-#include "bccmis/detail/state_writer.h"
-#include "bccmis/format.h"
+#include "bccmis/io/detail/parse.h"
+#include "bccmis/io/detail/state_writer.h"
+#include "bccmis/io/format.h"
 #include "bccmis/text_writer.h"
 
 namespace bccmis::d3 {

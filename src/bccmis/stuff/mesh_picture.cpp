@@ -1,6 +1,6 @@
-// The pictures of render.h: an orthographic view of the boundary with back
+// The pictures of mesh_picture.h: an orthographic view of the boundary with back
 // faces culled and the rest painted far to near, and the angle histogram.
-#include "bccmis/stuff/render.h"
+#include "bccmis/stuff/mesh_picture.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
-#include "bccmis/format.h"
+#include "bccmis/io/format.h"
 
 #include <ostream>
 
-#include "bccmis/detail/parse.h"
-#include "bccmis/detail/state_writer.h"
+#include "bccmis/io/detail/parse.h"
+#include "bccmis/io/detail/state_writer.h"
 #include "bccmis/lattice.h"
 #include "bccmis/text_writer.h"
 

@@ -1,6 +1,8 @@
-// refine_balanced, coarsen_where, edge_neighbors and boundary_after_coarsen
-// (src/bccmis/apps/balance.h), checked against an independent geometric closure
-// on quadtree cells (level, i, j) that never looks at the graph's sets.
+// The core's cascade refine_balanced, edge_neighbors and find_corner_imbalance
+// (src/bccmis/balance.h), and coarsen_where and
+// boundary_after_coarsen (src/bccmis/apps/balance.h), checked against an
+// independent geometric closure on quadtree cells (level, i, j) that never
+// looks at the graph's sets.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,9 +16,9 @@
 #include <vector>
 
 #include "bccmis/apps/balance.h"
-#include "bccmis/format.h"
 #include "bccmis/geometry.h"
 #include "bccmis/invariants/invariants.h"
+#include "bccmis/io/format.h"
 #include "bccmis/ops.h"
 
 namespace bccmis {

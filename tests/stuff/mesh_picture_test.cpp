@@ -1,4 +1,4 @@
-// The Medit reader and the mesh pictures of `bccmis render` (render.h,
+// The Medit reader and the mesh pictures of `bccmis render` (mesh_picture.h,
 // bccmis/io/medit.h) on meshes small enough to draw by hand.
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 
 #include "bccmis/io/medit.h"
 #include "bccmis/io/parse_error.h"
-#include "bccmis/stuff/render.h"
+#include "bccmis/stuff/mesh_picture.h"
 #include "bccmis/stuff/stuff.h"
 
 namespace bccmis::stuff {

@@ -1,6 +1,6 @@
 // bccmis: the tokenizers and the canonical-state parser shared by the 2D
-// formats (format.cpp) and the 3D ones (d3/format.cpp). Internal: include
-// bccmis/format.h or bccmis/d3/format.h instead.
+// formats (io/format.cpp) and the 3D ones (io/d3/format.cpp). Internal: include
+// bccmis/io/format.h or bccmis/io/d3/format.h instead.
 #pragma once
 
 #include <algorithm>

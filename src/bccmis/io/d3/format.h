@@ -1,7 +1,7 @@
 // bccmis::d3: the canonical state of a 3D lattice (spec/formats.md, "3D
 // extension"): printing and the strict parser; and the readers that take a
 // state of either dimension. The 3D trace and decision-log forms are in
-// bccmis/format.h beside the 2D ones (Trace, parse_trace, parse_any_trace).
+// bccmis/io/format.h beside the 2D ones (Trace, parse_trace, parse_any_trace).
 #pragma once
 
 #include <ostream>
