@@ -79,11 +79,11 @@ struct Meshed {
   std::size_t leaves = 0;                              ///< the background lattice's leaves (S3)
   Stuffed stuffed;                                     ///< the mesh and its counts (S5-S9)
   std::vector<std::array<std::uint32_t, 3>> boundary;  ///< S11, outward
-  io::Regions regions;                   ///< the components and the boundary by component (mesh3d.md M23), for the FEM writers
-  std::optional<Statistics> statistics;  ///< with Settings::statistics
-  std::optional<SoupReport> soup;        ///< the shape's soup report (S21), when it has one
-  MeshTopology topology;                 ///< S27: the boundary's components, Euler characteristic
-  std::vector<std::string> warnings;     ///< S27: a changed topology, one line each
+  io::Regions regions;  ///< the components and the boundary by component (mesh3d.md M23), for the FEM writers
+  std::optional<Statistics> statistics;   ///< with Settings::statistics
+  std::optional<SoupReport> soup;         ///< the shape's soup report (S21), when it has one
+  MeshTopology topology;                  ///< S27: the boundary's components, Euler characteristic
+  std::vector<std::string> warnings;      ///< S27: a changed topology, one line each
   std::optional<FeatureReport> features;  ///< S33, with Settings::features
   PhaseSeconds seconds;
 };
