@@ -7,13 +7,19 @@
 // encloses); the quality measures are tet_quality.h's, computed from the
 // output vertex positions.
 //
-//   stuff_peers cgal INPUT.off --cell-size S [--facet-distance D] [--seed N] [--verify [--tolerance T]]
+//   stuff_peers cgal INPUT.off --cell-size S [--facet-distance D] [--seed N] [--features [--feature-angle A]]
+//                   [--verify [--tolerance T]]
 //       CGAL Mesh_3 on a Polyhedral_mesh_domain_3: make_mesh_3 with
 //       facet_angle 25, facet_size S, facet_distance D (default S / 20),
 //       cell_radius_edge_ratio 3, cell_size S, then perturb() and exude();
 //       the finite cells in the complex. seconds (wall) and cpu_seconds:
 //       domain construction and make_mesh_3 (AABB tree, refinement,
-//       perturbation, exudation).
+//       perturbation, exudation). --features: the same on a
+//       Polyhedral_mesh_domain_with_features_3 whose detect_features(A)
+//       (default 60 degrees, as bccmis's --feature-angle) finds the creases
+//       and corners, which Mesh_3 protects with balls, edge_size S / 2 (the
+//       ratio of CGAL's own fandisk example); mesher "cgal-features", and
+//       the time includes the detection.
 //   stuff_peers tetgen INPUT.off --max-volume V [--verify [--tolerance T]]
 //       Debian's `tetgen` binary, `-pq1.414 -a<V> -Q` on a copy of INPUT in a
 //       temporary directory; reads the .node/.ele it writes. seconds: the
@@ -27,6 +33,13 @@
 // --verify: exit 1 unless the mesh has tetrahedra, every tetrahedron is
 // positively oriented (tet_quality.h, orient6 > 0) and |volume_rel_error|
 // is at most T (default 0.05). Numbers: bench/RESULTS.md, section 14.
+// GCC's optimizer reports a false "may be used uninitialized" inside
+// Boost.Graph's add_edge, which detect_features (CGAL's
+// split_graph_into_polylines) instantiates; the state is taken by the line
+// of the warning, in a standard header, so it is set before every include.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <time.h>
@@ -38,6 +51,7 @@
 #include <CGAL/Mesh_triangulation_3.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polyhedral_mesh_domain_3.h>
+#include <CGAL/Polyhedral_mesh_domain_with_features_3.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Random.h>
 #include <CGAL/make_mesh_3.h>
@@ -53,6 +67,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -169,9 +184,21 @@ Surface icosphere(long double r, int levels) {
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Polyhedron = CGAL::Polyhedron_3<K>;
 using MeshDomain = CGAL::Polyhedral_mesh_domain_3<Polyhedron, K>;
-using Tr = CGAL::Mesh_triangulation_3<MeshDomain, CGAL::Default, CGAL::Sequential_tag>::type;
-using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr>;
-using MeshCriteria = CGAL::Mesh_criteria_3<Tr>;
+using FeaturesDomain = CGAL::Polyhedral_mesh_domain_with_features_3<K>;
+
+// The triangulation, complex and criteria of Mesh_3 on Domain.
+template <class Domain>
+struct Mesh3Types {
+  using Tr = typename CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_tag>::type;
+  using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr, typename Domain::Corner_index, typename Domain::Curve_index>;
+  using Criteria = CGAL::Mesh_criteria_3<Tr>;
+};
+template <>
+struct Mesh3Types<MeshDomain> {
+  using Tr = CGAL::Mesh_triangulation_3<MeshDomain, CGAL::Default, CGAL::Sequential_tag>::type;
+  using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr>;
+  using Criteria = CGAL::Mesh_criteria_3<Tr>;
+};
 
 // CPU time of this process (user + system), seconds.
 double process_cpu_seconds() {
@@ -180,8 +207,15 @@ double process_cpu_seconds() {
   return static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec) * 1e-9;
 }
 
-TetMesh run_cgal(const Surface& s, double cell_size, double facet_distance, unsigned seed, double& seconds,
-                 double& cpu_seconds) {
+// CGAL Mesh_3 on a Domain built from the Polyhedron (see the header);
+// feature_angle > 0: Domain is FeaturesDomain, its features detected at that
+// angle and protected.
+template <class Domain, class InputPolyhedron>
+TetMesh run_cgal(const Surface& s, double cell_size, double facet_distance, double feature_angle, unsigned seed,
+                 double& seconds, double& cpu_seconds) {
+  using Tr = typename Mesh3Types<Domain>::Tr;
+  using C3t3 = typename Mesh3Types<Domain>::C3t3;
+  using Criteria = typename Mesh3Types<Domain>::Criteria;
   std::vector<K::Point_3> points;
   points.reserve(s.points.size());
   for (const Vec3L& p : s.points)
@@ -189,29 +223,37 @@ TetMesh run_cgal(const Surface& s, double cell_size, double facet_distance, unsi
   std::vector<std::vector<std::size_t>> polygons;
   polygons.reserve(s.triangles.size());
   for (const Tri& t : s.triangles) polygons.push_back({t[0], t[1], t[2]});
-  Polyhedron polyhedron;
+  InputPolyhedron polyhedron;
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, polyhedron);
   CGAL::get_default_random() = CGAL::Random(seed);
 
   namespace params = CGAL::parameters;
   const auto start = Clock::now();
   const double cpu_start = process_cpu_seconds();
-  MeshDomain domain(polyhedron);
-  MeshCriteria criteria(params::facet_angle = 25, params::facet_size = cell_size,
-                        params::facet_distance = facet_distance, params::cell_radius_edge_ratio = 3,
-                        params::cell_size = cell_size);
+  Domain domain(polyhedron);
+  const auto criteria = [&] {
+    if constexpr (std::is_same_v<Domain, FeaturesDomain>) {
+      domain.detect_features(feature_angle);
+      return Criteria(params::edge_size = cell_size / 2, params::facet_angle = 25, params::facet_size = cell_size,
+                      params::facet_distance = facet_distance, params::cell_radius_edge_ratio = 3,
+                      params::cell_size = cell_size);
+    } else {
+      return Criteria(params::facet_angle = 25, params::facet_size = cell_size, params::facet_distance = facet_distance,
+                      params::cell_radius_edge_ratio = 3, params::cell_size = cell_size);
+    }
+  }();
   C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_lloyd(), params::no_odt(), params::perturb(),
                                       params::exude());
   seconds = std::chrono::duration<double>(Clock::now() - start).count();
   cpu_seconds = process_cpu_seconds() - cpu_start;
 
   TetMesh m;
-  std::unordered_map<Tr::Vertex_handle, std::size_t> index;
+  std::unordered_map<typename Tr::Vertex_handle, std::size_t> index;
   const Tr& tr = c3t3.triangulation();
   for (auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
     Tet t{};
     for (int i = 0; i < 4; ++i) {
-      const Tr::Vertex_handle v = c->vertex(i);
+      const typename Tr::Vertex_handle v = c->vertex(i);
       auto [it, inserted] = index.emplace(v, m.points.size());
       if (inserted) {
         const K::Point_3 p = tr.geom_traits().construct_point_3_object()(tr.point(c, i));
@@ -434,8 +476,8 @@ bool selftest() {
 
 int usage() {
   std::fprintf(stderr,
-               "usage: stuff_peers cgal INPUT.off --cell-size S [--facet-distance D] [--seed N] [--verify "
-               "[--tolerance T]]\n"
+               "usage: stuff_peers cgal INPUT.off --cell-size S [--facet-distance D] [--seed N] [--features "
+               "[--feature-angle A]] [--verify [--tolerance T]]\n"
                "       stuff_peers tetgen INPUT.off --max-volume V [--verify [--tolerance T]]\n"
                "       stuff_peers sphere-off R N OUT.off\n"
                "       stuff_peers selftest\n");
@@ -456,9 +498,9 @@ int main(int argc, char** argv) {
     }
     if ((command != "cgal" && command != "tetgen") || argc < 3) return usage();
     const std::string input = argv[2];
-    double cell_size = 0, facet_distance = 0, max_volume = 0, tolerance = 0.05;
+    double cell_size = 0, facet_distance = 0, max_volume = 0, tolerance = 0.05, feature_angle = 60;
     unsigned seed = 0;
-    bool verify = false;
+    bool verify = false, features = false;
     for (int i = 3; i < argc; ++i) {
       const std::string a = argv[i];
       auto value = [&]() -> double {
@@ -477,6 +519,10 @@ int main(int argc, char** argv) {
         seed = static_cast<unsigned>(value());
       else if (a == "--verify")
         verify = true;
+      else if (a == "--features" && command == "cgal")
+        features = true;
+      else if (a == "--feature-angle" && command == "cgal")
+        feature_angle = value();
       else
         return usage();
     }
@@ -488,12 +534,15 @@ int main(int argc, char** argv) {
     if (command == "cgal") {
       if (!(cell_size > 0)) return usage();
       if (!(facet_distance > 0)) facet_distance = cell_size / 20;
-      m = run_cgal(s, cell_size, facet_distance, seed, seconds, cpu_seconds);
+      if (!(feature_angle > 0 && feature_angle < 180)) return usage();
+      m = features ? run_cgal<FeaturesDomain, FeaturesDomain::Polyhedron>(s, cell_size, facet_distance, feature_angle,
+                                                                          seed, seconds, cpu_seconds)
+                   : run_cgal<MeshDomain, Polyhedron>(s, cell_size, facet_distance, 0, seed, seconds, cpu_seconds);
     } else {
       if (!(max_volume > 0)) return usage();
       m = run_tetgen(input, max_volume, seconds, cpu_seconds);
     }
-    return report(command, input, s, m, seconds, cpu_seconds, verify, tolerance) ? 0 : 1;
+    return report(features ? "cgal-features" : command, input, s, m, seconds, cpu_seconds, verify, tolerance) ? 0 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "stuff_peers: %s\n", e.what());
     return 1;
