@@ -69,8 +69,8 @@ void refuse_what_will_not_fit(const Shape& shape, const StuffOptions& options, d
   std::snprintf(leaves, sizeof leaves, "%.3g", e.leaves);
   throw ShapeError("max level " + std::to_string(fit.size.L) + " needs about " + leaves + " leaves, " +
                    gigabytes(e.bytes()) + " by S25's estimate (" + std::to_string(static_cast<int>(kBytesPerLeaf)) +
-                   " bytes a leaf), more than the " + gigabytes(available_bytes) + " of memory available; -L " +
-                   std::to_string(fits) + " would fit");
+                   " bytes per estimated leaf), more than the " + gigabytes(available_bytes) +
+                   " of memory available; -L " + std::to_string(fits) + " would fit");
 }
 
 }  // namespace bccmis::stuff
