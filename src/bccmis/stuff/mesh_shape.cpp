@@ -26,19 +26,29 @@ namespace {
 /// S26/S27's hint for a part whose thinnest extent is `e` (`what` names
 /// it): the first level whose finest cell side is at most e/4, and at
 /// least one level finer than `fit`'s.
-std::string level_hint(double e, const std::string& what, const Fit& fit) {
+// S26: "<verdict> (the finest cell side h against the thinnest extent of
+// <what> e); -L N would resolve it", N the first level with h <= e/4.
+std::string level_hint(const std::string& verdict, double e, const std::string& what, const Fit& fit) {
   int level = fit.size.L;
   for (double h = fit.h; h > e / 4 && level < 64; h /= 2) ++level;
-  return "bad input for this level (the finest cell side " + number(fit.h) + " against the thinnest extent of " + what +
-         " " + number(e) + "); -L " + std::to_string(std::max(level, fit.size.L + 1)) + " would resolve it";
+  return verdict + " (the finest cell side " + number(fit.h) + " against the thinnest extent of " + what + " " +
+         number(e) + "); -L " + std::to_string(std::max(level, fit.size.L + 1)) + " would resolve it";
+}
+
+std::string level_hint(double e, const std::string& what, const Fit& fit) {
+  return level_hint("bad input for this level", e, what, fit);
+}
+
+double thinnest_extent(const Bounds& box) {
+  double e = box.hi[0] - box.lo[0];
+  for (std::size_t i = 1; i < 3; ++i) e = std::min(e, box.hi[i] - box.lo[i]);
+  return e;
 }
 
 }  // namespace
 
 std::string level_hint(const Bounds& box, const Fit& fit) {
-  double e = box.hi[0] - box.lo[0];
-  for (std::size_t i = 1; i < 3; ++i) e = std::min(e, box.hi[i] - box.lo[i]);
-  return level_hint(e, "the shape's box", fit);
+  return level_hint(thinnest_extent(box), "the shape's box", fit);
 }
 
 std::unique_ptr<Shape> load_mesh_file(const std::string& path, bool strict, std::optional<io::SurfaceFormat> format) {
@@ -172,6 +182,9 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
                          " non-manifold edges (parts meeting along a lattice edge; a finer level separates them)");
     if (settings.check && input_manifold) throw CheckError(world.describe() + ": " + r.warnings.back());
   }
+  // S26: a mesh made on cells coarser than a quarter of the shape's thinnest extent.
+  if (const double e = thinnest_extent(world.bounds()); r.fit.h > e / 4)
+    r.warnings.push_back(level_hint("the mesh is coarse", e, "the shape's box", r.fit));
   if (settings.statistics) {
     r.statistics = to_world(statistics(shape, r.stuffed.mesh, r.boundary, settings.hausdorff), n);
     if (r.features)  // S33, in world units
