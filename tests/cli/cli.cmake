@@ -134,6 +134,15 @@ if(TARGET bccmis::stuff_surface)
                      ${CMAKE_CURRENT_BINARY_DIR}/cli_work/stuff_ply_same_mesh.${_in}/cube.vtu
              LABELS cli PROPERTIES FIXTURES_REQUIRED cli_stuff_ply_same_mesh)
   endforeach()
+  # spec/stuffing.md S22: cube.off written one triangle at a time is welded
+  # (28 of its 36 vertices repeat an earlier one) and meshed as cube.off.
+  bccmis_cli_test(stuff_unwelded 0 ARGS stuff ${_good}/cube_unwelded.off -L 2 --cells 4 -o cube.vtu
+                  STDERR_REGEX "^bccmis stuff: [^\n]*cube_unwelded.off: 28 repeated vertices welded \\(the coordinates of an earlier vertex\\)\n")
+  bccmis_add_test(cli.stuff_unwelded_same_mesh_as_off
+           COMMAND ${CMAKE_COMMAND} -E compare_files ${CMAKE_CURRENT_BINARY_DIR}/cli_work/stuff_ply_same_mesh.cube.off/cube.vtu
+                   ${CMAKE_CURRENT_BINARY_DIR}/cli_work/stuff_unwelded/cube.vtu
+           LABELS cli PROPERTIES FIXTURES_REQUIRED "cli_stuff_ply_same_mesh;cli_stuff_unwelded")
+  set_tests_properties(cli.stuff_unwelded PROPERTIES FIXTURES_SETUP cli_stuff_unwelded)
   bccmis_cli_test(stuff_ply_point_cloud 2 ARGS stuff ${_cli}/point_cloud.ply --stats
                   STDERR_REGEX "point_cloud.ply:8:1: no element 'face' in the header \\(a point cloud is no surface\\)\n$")
   bccmis_cli_test(stuff_ply_stdin_sniffed 0 ARGS stuff - -L 1 --cells 6 -o cube.mesh STDIN_FILE ${_good}/cube_big_endian.ply

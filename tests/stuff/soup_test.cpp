@@ -251,6 +251,78 @@ TEST(SoupMeshing, OpenCube) {
   meshes_to(cube_vertices(), t, "open", 8, 24);
 }
 
+/// The cube written one triangle at a time: three vertices of its own per
+/// triangle, at the coordinates of cube_vertices().
+void unwelded_cube(std::vector<Vec3>& v, Tris& t) {
+  const std::vector<Vec3> corners = cube_vertices();
+  v.clear();
+  t.clear();
+  for (const auto& f : cube_triangles()) {
+    const auto base = static_cast<std::uint32_t>(v.size());
+    for (std::uint32_t c : f) v.push_back(corners[c]);
+    t.push_back({base, base + 1, base + 2});
+  }
+}
+
+TEST(SoupWeld, UnweldedCubeIsTheCube) {
+  // spec/stuffing.md S22: 36 corners at 8 points: 28 used vertices repeat an
+  // earlier one. Welded, the file passes §1's checks: the strict path's
+  // shape, the same mesh as the cube given with shared vertices.
+  std::vector<Vec3> v;
+  Tris t;
+  unwelded_cube(v, t);
+  const auto shape = make_soup_shape(v, t, "unwelded");
+  ASSERT_NE(shape->soup_report(), nullptr);
+  EXPECT_EQ(shape->soup_report()->welded_vertices, 28u);
+  EXPECT_EQ(shape->soup_report()->flaw_count(), 0u) << shape->soup_report()->summary();
+  Settings s;
+  s.lattice.max_level = 3;
+  s.check = true;
+  const Meshed got = mesh_shape(*shape, s);
+  const Meshed want = mesh_shape(*make_mesh_shape(cube_vertices(), cube_triangles(), "cube"), s);
+  EXPECT_EQ(got.stuffed.mesh.tets, want.stuffed.mesh.tets);
+  EXPECT_EQ(got.stuffed.mesh.vertices, want.stuffed.mesh.vertices);
+  EXPECT_EQ(got.topology.boundary_components, 1u);
+}
+
+TEST(SoupWeld, UnweldedOpenCubeIsInspectedWelded) {
+  // A face missing as well: the welded soup is inspected, so the border
+  // edges are the hole's 3 (not 33), one component, none inward; and the
+  // solid is the whole cube (see SoupMeshing.OpenCube).
+  std::vector<Vec3> v;
+  Tris t;
+  unwelded_cube(v, t);
+  t.erase(t.begin() + 1);
+  const auto shape = make_soup_shape(v, t, "unwelded open");
+  const SoupReport& r = *shape->soup_report();
+  // 33 corners at 8 points; the missing face's 3 corners stay in the list
+  // unused, and the first corner at (2, 0, 0) is one of them: 26 used
+  // vertices repeat an earlier one.
+  EXPECT_EQ(r.welded_vertices, 26u);
+  EXPECT_EQ(r.flaws[R::border_edges].count, 3u);
+  only(r, {R::border_edges});
+  EXPECT_EQ(r.components, 1u);
+  EXPECT_EQ(r.inward_components, 0u);
+  meshes_to(v, t, "unwelded open", 8, 24);
+}
+
+TEST(SoupWeld, OnlyUsedVerticesCount) {
+  // The cube with a copy of vertex 0 that no face uses: clean, nothing
+  // welded. With the faces of the corner (0, 0, 0) moved to the copy
+  // instead, the copy is unused and vertex 0 is used by them alone: still
+  // nothing to weld. With one face on the copy, one used vertex repeats.
+  std::vector<Vec3> v = cube_vertices();
+  v.push_back(v[0]);
+  const auto unused = make_soup_shape(v, cube_triangles(), "cube and a copy");
+  EXPECT_EQ(unused->soup_report()->welded_vertices, 0u);
+  EXPECT_EQ(unused->soup_report()->flaw_count(), 0u);
+  Tris one = cube_triangles();
+  one[0][0] = 8;  // face 0 (0, 2, 3) on the copy of vertex 0
+  const auto shape = make_soup_shape(v, one, "one face on the copy");
+  EXPECT_EQ(shape->soup_report()->welded_vertices, 1u);
+  EXPECT_EQ(shape->soup_report()->flaw_count(), 0u) << shape->soup_report()->summary();
+}
+
 TEST(SoupCrossing, AcrossAHoleOnTheLevelSet) {
   // The cube without its top (z = 2, both triangles): w = 1/2 exactly on
   // the missing square (see OpenCube), and no triangle lies between

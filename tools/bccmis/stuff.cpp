@@ -68,7 +68,8 @@ std::string soup_text(const stuff::SoupReport& r) {
     item(stuff::SoupReport::key(static_cast<stuff::SoupReport::Kind>(k)), r.flaws[k]);
   out += "soup_components " + std::to_string(r.components) + "\nsoup_inward_components " +
          std::to_string(r.inward_components) + "\nsoup_flipped_faces " + std::to_string(r.flipped_faces) +
-         "\nsoup_dropped_faces " + std::to_string(r.dropped_faces) + "\n";
+         "\nsoup_dropped_faces " + std::to_string(r.dropped_faces) + "\nsoup_welded_vertices " +
+         std::to_string(r.welded_vertices) + "\n";
   item("bad_normals", r.bad_normals);
   return out;
 }
@@ -227,6 +228,9 @@ int run(const StuffOptions& o) {
   if (const stuff::SoupReport* r = shape->soup_report(); r && r->flaw_count() > 0 && !o.stats && !o.quiet)
     std::cerr << "bccmis stuff: " << r->file << ": " << r->summary()
               << ": meshed as the solid where the winding number >= 1/2; --strict refuses\n";
+  if (const stuff::SoupReport* r = shape->soup_report(); r && r->welded_vertices > 0 && !o.stats && !o.quiet)
+    std::cerr << "bccmis stuff: " << r->file << ": " << r->welded_vertices
+              << " repeated vertices welded (the coordinates of an earlier vertex)\n";
   stuff::Settings settings;
   settings.lattice.max_level = o.max_level;
   settings.lattice.min_level = o.min_level;

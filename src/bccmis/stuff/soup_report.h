@@ -48,6 +48,7 @@ struct SoupReport {
   std::size_t inward_components = 0;  ///< components reversed to bound positive volume (S22)
   std::size_t flipped_faces = 0;      ///< faces turned to agree with their component's neighbours
   std::size_t dropped_faces = 0;      ///< degenerate, duplicate and back-to-back faces left out
+  std::size_t welded_vertices = 0;    ///< used vertices with the coordinates of an earlier one, merged into it
   SoupFlaw bad_normals;               ///< STL facet normals not finite, not numbers or against the vertex order
 
   /// The total count of flaws; 0 when the file passed the strict checks.

@@ -35,6 +35,7 @@ void soup_json(JsonWriter& w, const SoupReport& r) {
       .member("inward_components", r.inward_components)
       .member("flipped_faces", r.flipped_faces)
       .member("dropped_faces", r.dropped_faces)
+      .member("welded_vertices", r.welded_vertices)
       .key("bad_normals");
   instances_json(w, r.bad_normals);
   w.end_object();

@@ -955,33 +955,57 @@ Soup normalised_soup(Soup s, const Normalisation& n) {
   return s;
 }
 
-std::unique_ptr<Shape> local_soup_shape_of(const Soup& s, const std::string& name, bool force_soup);
+/// S22's weld: every triangle's corners renamed to the first vertex with
+/// the same coordinates (exactly equal doubles, as STL's corners are
+/// merged), and how many used vertices were merged so into an earlier one.
+std::pair<Soup, std::size_t> welded_soup(Soup s) {
+  std::map<Vec3, std::uint32_t> first;
+  std::vector<std::uint32_t> to(s.vertices.size());
+  for (std::size_t i = 0; i < s.vertices.size(); ++i)
+    to[i] = first.try_emplace(s.vertices[i], static_cast<std::uint32_t>(i)).first->second;
+  std::vector<char> merged(s.vertices.size(), 0);
+  for (auto& t : s.triangles)
+    for (auto& v : t) {
+      if (to[v] != v) merged[v] = 1;
+      v = to[v];
+    }
+  return {std::move(s), static_cast<std::size_t>(std::count(merged.begin(), merged.end(), 1))};
+}
+
+/// Today's shape of a soup in S24's local coordinates that passes today's
+/// checks, with the notes of a clean file (`welded`: S22's count); null
+/// when a check or the shape refuses it.
+std::unique_ptr<Shape> clean_shape_of(const Soup& s, const std::string& name, std::size_t welded) {
+  try {
+    Checker(s, name).run();
+    auto shape = std::make_unique<MeshShape>(s, name);
+    Repaired none;
+    none.report.file = name;
+    none.report.faces = s.triangles.size();
+    none.report.bad_normals = bad_normals_of(s);
+    none.report.welded_vertices = welded;
+    shape->set_report(std::move(none.report), s);
+    return shape;
+  } catch (const ShapeError&) {
+    return nullptr;
+  }
+}
 
 /// The default path (S21): the refusals of both modes, then today's shape
-/// when today's checks pass, else the soup's.
+/// when today's checks pass; else, with repeated vertices welded (S22),
+/// today's shape when they pass then, else the soup's (S20-S23).
 std::unique_ptr<Shape> soup_shape_of(const Soup& world, const std::string& name, bool force_soup) {
   Checker(world, name).basics();
   const Normalisation n = normalisation_of_soup(world, name);
-  return placed(local_soup_shape_of(normalised_soup(world, n), name, force_soup), n);
-}
-
-std::unique_ptr<Shape> local_soup_shape_of(const Soup& s, const std::string& name, bool force_soup) {
-  const Checker checker(s, name);
-  if (!force_soup) {
-    try {
-      checker.run();
-      auto shape = std::make_unique<MeshShape>(s, name);
-      Repaired none;  // the notes of a clean file
-      none.report.file = name;
-      none.report.faces = s.triangles.size();
-      none.report.bad_normals = bad_normals_of(s);
-      shape->set_report(std::move(none.report), s);
-      return shape;
-    } catch (const ShapeError&) {
-      // A flaw: the soup's shape below.
-    }
-  }
-  return std::make_unique<SoupShape>(s, inspect(s, name), name);
+  if (!force_soup)
+    if (auto shape = clean_shape_of(normalised_soup(world, n), name, 0)) return placed(std::move(shape), n);
+  auto [welded, count] = welded_soup(world);
+  const Soup local = normalised_soup(std::move(welded), n);
+  if (!force_soup && count > 0)
+    if (auto shape = clean_shape_of(local, name, count)) return placed(std::move(shape), n);
+  Repaired repaired = inspect(local, name);
+  repaired.report.welded_vertices = count;
+  return placed(std::make_unique<SoupShape>(local, std::move(repaired), name), n);
 }
 
 std::unique_ptr<Shape> shape_of(const Soup& world, const std::string& name) {
