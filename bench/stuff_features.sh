@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# bccmis stuff with and without sharp features (spec/stuffing.md S29-S33;
+# bccmis stuff with and without sharp features (spec/stuffing.md S29-S34;
 # bench/RESULTS.md, "Sharp features"): on each input and level, one run with
 # features (the default for a mesh file) and one with --no-features, and one
 # markdown row each: input | level | features | time | tets | min dihedral |

@@ -1,9 +1,9 @@
-// Sharp features (spec/stuffing.md S29-S33): detection on hand-built
+// Sharp features (spec/stuffing.md S29-S34): detection on hand-built
 // surfaces whose creases and corners are known (a cube, a fold standing on
 // the feature angle, a hexagonal prism with two loops), conformity on a
 // rotated cube (the conformed mesh's volume is the cube's) and on CGAL's
-// fandisk, with S10's dihedral bound on every mesh, and the checker's
-// feature layer catching a corner moved off and a curve not covered.
+// fandisk (S34: interior vertices moved to make room), with S10's dihedral
+// bound on every mesh, and the checker's feature layer catching a corner moved off and a curve not covered.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -212,13 +212,33 @@ TEST(FeatureConformity, HexagonalPrismKeepsItsTwoLoops) {
 
 //= spec/stuffing.md S30 type=test
 //= spec/stuffing.md S33 type=test
+//= spec/stuffing.md S34 type=test
 TEST(FeatureConformity, FandiskKeepsItsCornersWithinTheBound) {
   const auto fandisk = load_mesh_file(kCgal + "/fandisk.off");
   const Meshed without = mesh_with(*fandisk, 3, false);
   const Meshed with = mesh_with(*fandisk, 3, true);  // S32's checker passes
   ASSERT_TRUE(with.features);
+  EXPECT_EQ(with.features->corners, 25u);
+  EXPECT_EQ(with.features->curves, 35u);
   EXPECT_EQ(with.features->corners_conformed, with.features->corners);
-  EXPECT_GT(with.features->curves_conformed, with.features->curves / 2);
+  // S34's room: 27 curves conformed (26 with the snapped vertex moved alone).
+  EXPECT_GE(with.features->curves_conformed, 27u);
+  // The vertices S34 moved: interior (on no boundary triangle), lattice
+  // vertices not moved without features, and moved now (same tetrahedra,
+  // same numbering: S30 and S34 move vertices only).
+  ASSERT_EQ(with.stuffed.mesh.vertices.size(), without.stuffed.mesh.vertices.size());
+  std::vector<char> on_boundary(with.stuffed.mesh.vertices.size(), 0);
+  for (const auto& f : with.boundary)
+    for (const std::uint32_t v : f) on_boundary[v] = 1;
+  std::size_t room = 0;
+  for (std::size_t i = 0; i < with.stuffed.mesh.vertices.size(); ++i) {
+    if (with.stuffed.mesh.kind[i] != kRoomVertex) continue;
+    ++room;
+    EXPECT_FALSE(on_boundary[i]) << i;
+    EXPECT_EQ(without.stuffed.mesh.kind[i], 0) << i;
+    EXPECT_NE(with.stuffed.mesh.vertices[i], without.stuffed.mesh.vertices[i]) << i;
+  }
+  EXPECT_GT(room, 0u);
   EXPECT_GE(with.statistics->quality.min_dihedral, kDihedralBounds[0]);
   EXPECT_LE(with.statistics->quality.max_dihedral, kDihedralBounds[1]);
   // The creases kept make the volume error several times smaller.

@@ -58,7 +58,7 @@ if(TARGET bccmis::stuff_surface)
                    LABELS unit)
 endif()
 
-# Sharp features (spec/stuffing.md S29-S33): detection on hand-built
+# Sharp features (spec/stuffing.md S29-S34): detection on hand-built
 # surfaces, conformity on a turned cube and on fandisk at level 3 with S10's
 # bound and the feature checker, the checker's planted failures.
 if(TARGET bccmis::stuff_surface)

@@ -1,4 +1,4 @@
-// S30-S33: a stuffed mesh made to hold the sharp features (conform_features.h).
+// S30-S34: a stuffed mesh made to hold the sharp features (conform_features.h).
 #include "bccmis/stuff/conform_features.h"
 
 #include <algorithm>
@@ -100,22 +100,37 @@ class Snapper {
   }
 
   /// S31: v moved to x when every tetrahedron at it stays positively
-  /// oriented (S12) with its dihedral angles in S10's interval.
+  /// oriented (S12) with its dihedral angles in S10's interval; when not,
+  /// S34: v moved to x with its interior neighbours moved by w (x - v), for
+  /// the first w of kRoomWeights that S31 accepts for every tetrahedron at
+  /// a moved vertex.
   bool move(std::uint32_t v, const Vec3& x, FeatureConformity& r) {
-    for (const std::uint32_t t : tets_at_[v]) {
-      std::array<Vec3, 4> p;
-      for (std::size_t i = 0; i < 4; ++i) p[i] = mesh_.tets[t][i] == v ? x : mesh_.vertices[mesh_.tets[t][i]];
-      bool ok = orientation(p[0], p[1], p[2], p[3]) > 0;
-      for (const double a : ok ? d3::dihedral_angles(p) : std::array<double, 6>{})
-        ok = ok && a >= kDihedralBounds[0] && a <= kDihedralBounds[1];
-      if (!ok) {
+    Moves moved{{v, x}};
+    if (!accepted(moved)) {
+      const Vec3& y = mesh_.vertices[v];
+      const Vec3 d{x[0] - y[0], x[1] - y[1], x[2] - y[2]};
+      const std::vector<std::uint32_t> ring = interior_neighbours(v);
+      bool room = false;
+      for (const double w : kRoomWeights) {
+        if (ring.empty()) break;
+        moved = {{v, x}};
+        for (const std::uint32_t a : ring) {
+          const Vec3& p = mesh_.vertices[a];
+          moved.emplace(a, Vec3{p[0] + w * d[0], p[1] + w * d[1], p[2] + w * d[2]});
+        }
+        if ((room = accepted(moved))) break;
+      }
+      if (!room) {
         ++r.refused;
         return false;
       }
+      ++r.room_made;
     }
     ++r.moves;
-    mesh_.vertices[v] = x;
-    mesh_.kind[v] = kSnappedVertex;
+    for (const auto& [u, p] : moved) {
+      mesh_.vertices[u] = p;
+      mesh_.kind[u] = u == v ? kSnappedVertex : kRoomVertex;
+    }
     return true;
   }
 
@@ -213,6 +228,41 @@ class Snapper {
     }
     return true;
   }
+
+  /// New positions of some vertices (the others stay where they are).
+  using Moves = std::unordered_map<std::uint32_t, Vec3>;
+
+  /// S31's test of every tetrahedron at a vertex of `moved`, with the
+  /// vertices of `moved` at their new positions.
+  bool accepted(const Moves& moved) const {
+    for (const auto& [v, x] : moved)
+      for (const std::uint32_t t : tets_at_[v]) {
+        std::array<Vec3, 4> p;
+        for (std::size_t i = 0; i < 4; ++i) {
+          const auto it = moved.find(mesh_.tets[t][i]);
+          p[i] = it == moved.end() ? mesh_.vertices[mesh_.tets[t][i]] : it->second;
+        }
+        if (orientation(p[0], p[1], p[2], p[3]) <= 0) return false;
+        for (const double a : d3::dihedral_angles(p))
+          if (!(a >= kDihedralBounds[0] && a <= kDihedralBounds[1])) return false;
+      }
+    return true;
+  }
+
+  /// S34: the vertices sharing a tetrahedron with v that are not on the
+  /// boundary, in index order.
+  std::vector<std::uint32_t> interior_neighbours(std::uint32_t v) const {
+    std::vector<std::uint32_t> ring;
+    for (const std::uint32_t t : tets_at_[v])
+      for (const std::uint32_t a : mesh_.tets[t])
+        if (neighbours_[a].empty()) ring.push_back(a);
+    std::sort(ring.begin(), ring.end());
+    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+    return ring;
+  }
+
+  // S34: the fractions of v's move its interior neighbours make, in the order tried.
+  static constexpr std::array<double, 7> kRoomWeights{0.5, 1, 0.25, 0.75, 1.5, 2, -0.5};
 
   // S30.2: paths sought at most 8 times; an edge costs its length plus 4 times its ends' distances to C.
   static constexpr int kAttempts = 8;

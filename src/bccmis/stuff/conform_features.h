@@ -1,5 +1,5 @@
 // bccmis::stuff::conform_features: a stuffed mesh made to hold the sharp
-// features of its shape (spec/stuffing.md S30-S33): boundary vertices
+// features of its shape (spec/stuffing.md S30-S34): boundary vertices
 // snapped onto the corners and along the curves, each move guarded so that
 // S10's dihedral bound holds.
 #pragma once
@@ -16,6 +16,8 @@ namespace bccmis::stuff {
 
 /// S11's point data for a boundary vertex moved onto a feature (S30).
 inline constexpr std::uint8_t kSnappedVertex = 3;
+/// S11's point data for an interior vertex moved to make room for a snap (S34).
+inline constexpr std::uint8_t kRoomVertex = 4;
 
 /// What S30 made: the corners and curve pieces it conformed (a loop is
 /// split in two pieces), what the checker's feature layer verifies (S32).
@@ -25,6 +27,7 @@ struct FeatureConformity {
   std::size_t corners_conformed = 0;   ///< of Features::corners
   std::size_t curves_conformed = 0;    ///< of Features::curves, every piece conformed
   std::size_t moves = 0, refused = 0;  ///< the guard's answers (S31)
+  std::size_t room_made = 0;           ///< moves accepted with the interior neighbours moved (S34)
 };
 
 /// S30-S31 on `mesh` (a stuffed mesh, positively oriented tetrahedra, whose
