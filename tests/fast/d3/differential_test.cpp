@@ -145,4 +145,34 @@ TEST(Fast3Lattice, RefusedOperationsChangeNothingAndInvalidSizesThrow) {
   EXPECT_THROW(g.level_of({0, 0, 0}), std::out_of_range);
 }
 
+TEST(Fast3Lattice, LeafBoundaryIsTheReferenceNeighborSet) {
+  // spec/lattice3d.md §9.1: the mesh rule's view of a leaf
+  // (Lattice::boundary, read from the slots) against N(u) of the reference
+  // graph, on the 9 x 9 x 9 points a quarter side apart around every leaf of
+  // random states: every node of the cell's boundary is in, every other
+  // point (the center, points between slots, points outside the cube) out.
+  std::mt19937_64 rng(20261203);
+  for (int sequence = 0; sequence < 10; ++sequence) {
+    const d3::LatticeSize size{2, 1, 2, 3};
+    d3::Graph g(size);
+    d3::fast::Lattice lat(size);
+    for (int i = 0; i < 40; ++i) {
+      const d3::Point c = pick(rng, g.C);
+      d3::refine(g, c);
+      lat.refine(c);
+    }
+    for (const d3::Point& u : g.C) {
+      const auto boundary = leaf_boundary(lat, u);
+      const std::int64_t q = d3::cell_side(size, g.level.at(u)) / 4;
+      for (std::int64_t i = -4; i <= 4; ++i)
+        for (std::int64_t j = -4; j <= 4; ++j)
+          for (std::int64_t k = -4; k <= 4; ++k) {
+            const d3::Point p{u.x + i * q, u.y + j * q, u.z + k * q};
+            ASSERT_EQ(boundary.contains(p), g.nbr(u).contains(p)) << d3::to_string(u) << " " << d3::to_string(p);
+          }
+    }
+  }
+  EXPECT_THROW(d3::fast::Lattice({1, 1, 1, 1}).boundary({0, 0, 0}), std::out_of_range);
+}
+
 }  // namespace

@@ -1,7 +1,7 @@
 // bccmis::fast: refine (spec/lattice3d.md §4) and coarsen (§5) in 3D as fixed
 // slot reads and writes (the layout of §9).
 //
-// Directions (§9.1). An octant o has bit a set when it lies on the + side of
+// Directions (spec/lattice3d.md §9.1). An octant o has bit a set when it lies on the + side of
 // axis a (a = 0, 1, 2 for x, y, z); s_o is its sign vector. A direction d is
 // in {-1, 0, 1}^3 \ {0}; its nonzero axes form the mask nz(d). A center u of
 // half side h keeps in slot slot_of(d) the node at u + d h, if any.
@@ -106,7 +106,9 @@ int slot_toward(int t, int nz) {
   for (int a = 0; a < 3; ++a) d[a] = ((nz >> a) & 1) ? -sign(t, a) : 0;
   return slot_of(d[0], d[1], d[2]);
 }
-Point offset(const Point& p, const int d[3], std::int64_t h) { return {p.x + d[0] * h, p.y + d[1] * h, p.z + d[2] * h}; }
+Point offset(const Point& p, const int d[3], std::int64_t h) {
+  return {p.x + d[0] * h, p.y + d[1] * h, p.z + d[2] * h};
+}
 
 bool is_corner(int slot) { return kDir[static_cast<std::size_t>(slot)].nz == 7; }
 
@@ -121,9 +123,7 @@ void for_octants(int mask, int bits, F&& f) {
 
 // ---- Records and geometry (§9.2) --------------------------------------------------
 
-int Lattice::level(Index c) const {
-  return size_.L - std::countr_zero(static_cast<std::uint64_t>(centers_[c].p.x));
-}
+int Lattice::level(Index c) const { return size_.L - std::countr_zero(static_cast<std::uint64_t>(centers_[c].p.x)); }
 
 Point Lattice::node_position(Index n) const {
   const Node& r = nodes_[n];
@@ -142,8 +142,8 @@ Point Lattice::node_position(Index n) const {
 int Lattice::center_tz(const Point& p) const {
   if (p.x <= 0 || p.y <= 0 || p.z <= 0 || p.x >= extent_[0] || p.y >= extent_[1] || p.z >= extent_[2]) return -1;
   const int t = std::countr_zero(static_cast<std::uint64_t>(p.x));
-  if (t != std::countr_zero(static_cast<std::uint64_t>(p.y)) || t != std::countr_zero(static_cast<std::uint64_t>(p.z)) ||
-      t > size_.L)
+  if (t != std::countr_zero(static_cast<std::uint64_t>(p.y)) ||
+      t != std::countr_zero(static_cast<std::uint64_t>(p.z)) || t > size_.L)
     return -1;
   return t;
 }
@@ -157,7 +157,7 @@ std::size_t Lattice::home(const Point& p) const {
 std::size_t Lattice::home_at(const Point& p, int t) const {
   // p: a center position, every coordinate an odd multiple of 2^t.
   if (t >= size_.L) return table_.home_of_hash(mix(p));  // level 0: no parent
-  const std::int64_t s = std::int64_t{1} << (t + 2);      // the parent's side
+  const std::int64_t s = std::int64_t{1} << (t + 2);     // the parent's side
   const Point parent{(p.x & ~(s - 1)) | (s / 2), (p.y & ~(s - 1)) | (s / 2), (p.z & ~(s - 1)) | (s / 2)};
   const std::size_t o = ((p.x & (s / 2)) ? 1u : 0u) | ((p.y & (s / 2)) ? 2u : 0u) | ((p.z & (s / 2)) ? 4u : 0u);
   return table_.line_slot(table_.home_of_hash(mix(parent)), o);
@@ -176,7 +176,8 @@ Index Lattice::find_ref(const Point& p, bool node) const {
         home_at(p, t), [&](Index q) { return (q & kNodeBit) && node_position(q & ~kNodeBit) == p; }, home_of);
     return r == kNone ? kNone : r & ~kNodeBit;
   }
-  return table_.find(home_at(p, t), [&](Index q) { return !(q & kNodeBit) && centers_[q].p == p; }, home_of);
+  return table_.find(
+      home_at(p, t), [&](Index q) { return !(q & kNodeBit) && centers_[q].p == p; }, home_of);
 }
 
 Index Lattice::find_refined(const Point& p) const { return find_ref(p, true); }
@@ -581,7 +582,8 @@ std::optional<std::string> Lattice::audit() const {
         d[a] = diff == 0 ? 0 : diff > 0 ? 1 : -1;
       }
       if (centers_[x].nbr[slot_of(d[0], d[1], d[2])] != i)
-        return "node " + d3::to_string(p) + " lists center " + d3::to_string(centers_[x].p) + ", which does not list it";
+        return "node " + d3::to_string(p) + " lists center " + d3::to_string(centers_[x].p) +
+               ", which does not list it";
     }
     if (center_tz(p) >= 0) {
       ++refined;
@@ -645,7 +647,7 @@ void Lattice::write_canonical_state(std::ostream& out) const {
 
 std::string canonical_state(const Lattice& g) { return canonical_text(g); }
 
-// ---- Preconditions (§9.5) -------------------------------------------------------------
+// ---- Preconditions (§9.5, §9.6) -------------------------------------------------------------
 
 std::optional<RefineRefusal> Lattice::refine_refusal(const Point& c, Index& ci) const {
   // spec/lattice3d.md §4 preconditions, in the reference's order.
@@ -704,7 +706,7 @@ std::optional<CoarsenRefusal> Lattice::can_coarsen(const Point& n) const {
   return coarsen_refusal(n, ni, l);
 }
 
-// ---- Refine (§4 as §9.6) -------------------------------------------------------------------
+// ---- Refine (§4 as §9.5) -------------------------------------------------------------------
 
 RefineResult Lattice::refine(const Point& c) {
   RefineResult result;
@@ -747,7 +749,7 @@ RefineResult Lattice::refine(const Point& c) {
     for (int t = 0; t < 8; ++t) {
       if ((t & d.nz) == d.inside) continue;  // inside c: a child, below
       const Index x = corner.cell[(t & d.nz) | (7 & ~d.nz)];
-      nodes_[jp].cell[t] = x;                                           // R3d, R3g: X ⊆ N(j+)
+      nodes_[jp].cell[t] = x;                                      // R3d, R3g: X ⊆ N(j+)
       if (x != kNone) centers_[x].nbr[slot_toward(t, d.nz)] = jp;  // R3c, R3f
     }
   }
@@ -780,7 +782,7 @@ RefineResult Lattice::refine(const Point& c) {
   return result;
 }
 
-// ---- Coarsen (§5 as §9.7) --------------------------------------------------------------------
+// ---- Coarsen (§5 as §9.6) --------------------------------------------------------------------
 
 CoarsenResult Lattice::coarsen(const Point& n) {
   CoarsenResult result;
@@ -813,7 +815,7 @@ CoarsenResult Lattice::coarsen(const Point& n) {
   free_node(ni);
 
   // K2a, K4b: every node of B lists the merged cell in its octants inside it.
-  // K3a (§9.7): an edge midpoint or face center b stays iff a cell outside
+  // K3a (§9.6): an edge midpoint or face center b stays iff a cell outside
   // has it as a corner, that is iff the octants outside on one side of the
   // merged cube's boundary hold different cells.
   Center& rc = centers_[cc];

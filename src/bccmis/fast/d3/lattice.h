@@ -148,7 +148,7 @@ class Lattice {
    private:
     friend class Lattice;
     d3::Point u_{};
-    std::int64_t h_ = 0;      ///< half the cell's side
+    std::int64_t h_ = 0;       ///< half the cell's side
     std::uint32_t slots_ = 0;  ///< bit k: slot k holds a node
   };
   /// The boundary of cell u; throws std::out_of_range if u is not a center.
@@ -178,18 +178,18 @@ class Lattice {
     bool live() const { return cell[7] != kFreeMark; }
   };
 
-  int level(Index c) const;                          ///< of a live center
+  int level(Index c) const;  ///< of a live center
   std::int64_t half_side(int level) const { return std::int64_t{1} << (size_.L - level); }
-  d3::Point node_position(Index n) const;            ///< of a live node (§9.2)
+  d3::Point node_position(Index n) const;  ///< of a live node (§9.2)
   /// The trailing zeros t of a position where a cell center can be (level
   /// L - t), or -1 for any other position.
   int center_tz(const d3::Point& p) const;
-  std::size_t home(const d3::Point& p) const;        ///< p: a center position
+  std::size_t home(const d3::Point& p) const;  ///< p: a center position
   std::size_t home_at(const d3::Point& p, int t) const;
-  std::size_t ref_home(Index ref) const;             ///< the home of a table entry's key
+  std::size_t ref_home(Index ref) const;  ///< the home of a table entry's key
   Index find_ref(const d3::Point& p, bool node) const;
   Index find_center(const d3::Point& p) const { return find_ref(p, false); }
-  Index find_refined(const d3::Point& p) const;      ///< the node at a refined center, or kNone
+  Index find_refined(const d3::Point& p) const;  ///< the node at a refined center, or kNone
   /// The node at p, any kind, from the table and the geometry (§9.3), or kNone.
   Index find_node(const d3::Point& p) const;
   /// The leaf cell covering the finest cube at node position p toward

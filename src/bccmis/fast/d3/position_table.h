@@ -23,7 +23,7 @@ class PositionTable {
   using Ref = std::uint32_t;
   static constexpr Ref kNone = 0xFFFFFFFFu;
   static constexpr Ref kRefMask = (Ref{1} << 27) - 1;  ///< a slot's reference bits
-  static constexpr Ref kMaxRef = kRefMask;               ///< references are below this
+  static constexpr Ref kMaxRef = kRefMask;             ///< references are below this
 
   /// An empty table of `slots` slots (a power of two, at least 16).
   void reset(std::size_t slots);
