@@ -8,6 +8,7 @@
 // output, byte for byte.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -173,6 +174,37 @@ TEST(Fast3Lattice, LeafBoundaryIsTheReferenceNeighborSet) {
     }
   }
   EXPECT_THROW(d3::fast::Lattice({1, 1, 1, 1}).boundary({0, 0, 0}), std::out_of_range);
+}
+
+TEST(Fast3Lattice, NodeQueriesAtEveryPointOfTheFinestGrid) {
+  // spec/lattice3d.md §9.3: a node that is not a refined center is found from
+  // a leaf and a direction, not from the position table. Every integer point
+  // of the closed domain (and one layer outside) of random states, against the
+  // reference: is_node, is_center, N(p) and the coarsen guard.
+  std::mt19937_64 rng(20261204);
+  for (int sequence = 0; sequence < 6; ++sequence) {
+    const d3::LatticeSize size{2, 1, 1, 3};
+    d3::Graph g(size);
+    d3::fast::Lattice lat(size);
+    for (int i = 0; i < 30; ++i) {
+      const d3::Point c = pick(rng, g.C);
+      d3::refine(g, c);
+      lat.refine(c);
+    }
+    const std::int64_t S = d3::level0_side(size);
+    std::size_t nodes = 0;
+    for (std::int64_t x = -1; x <= size.W * S + 1; ++x)
+      for (std::int64_t y = -1; y <= size.H * S + 1; ++y)
+        for (std::int64_t z = -1; z <= size.D * S + 1; ++z) {
+          const d3::Point p{x, y, z};
+          ASSERT_EQ(lat.is_node(p), g.is_node(p)) << d3::to_string(p);
+          ASSERT_EQ(lat.is_center(p), g.is_center(p)) << d3::to_string(p);
+          ASSERT_TRUE(std::ranges::equal(lat.nbr(p), g.nbr(p))) << d3::to_string(p);
+          ASSERT_EQ(lat.can_coarsen(p), d3::can_coarsen(g, p)) << d3::to_string(p);
+          nodes += g.is_node(p);
+        }
+    EXPECT_EQ(nodes, g.N.size());
+  }
 }
 
 }  // namespace

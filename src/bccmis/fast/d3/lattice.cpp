@@ -202,12 +202,21 @@ void Lattice::rehash(std::size_t slots) {
 Index Lattice::locate(const Point& p, int o) const {
   const Point z{p.x + sign(o, 0), p.y + sign(o, 1), p.z + sign(o, 2)};
   if (center_tz(z) < 0) return kNone;  // outside the domain
-  for (int l = 0; l <= size_.L; ++l) {
+  // p's coordinates are multiples of 2^m: p is a corner, edge midpoint or
+  // face center of a cube of level L - m or finer only, so a coarser leaf
+  // holds p inside (§9.3) and the search starts at level L - m.
+  const int m =
+      std::min({std::countr_zero(static_cast<std::uint64_t>(p.x)), std::countr_zero(static_cast<std::uint64_t>(p.y)),
+                std::countr_zero(static_cast<std::uint64_t>(p.z))});
+  const auto home_of = [this](Index r) { return ref_home(r); };
+  for (int l = std::max(0, size_.L - m); l <= size_.L; ++l) {
     const std::int64_t s = cell_side(size_, l);
     const Point q{(z.x / s) * s + s / 2, (z.y / s) * s + s / 2, (z.z / s) * s + s / 2};
-    const Index c = find_center(q);
-    if (c != kNone) return c;
-    if (find_refined(q) == kNone) return kNone;
+    const Index r = table_.find(
+        home_at(q, size_.L - l),
+        [&](Index x) { return (x & kNodeBit) ? node_position(x & ~kNodeBit) == q : centers_[x].p == q; }, home_of);
+    if (r == kNone) return kNone;   // inside a coarser leaf
+    if (!(r & kNodeBit)) return r;  // the leaf
   }
   return kNone;
 }

@@ -193,7 +193,8 @@ class Lattice {
   /// The node at p, any kind, from the table and the geometry (§9.3), or kNone.
   Index find_node(const d3::Point& p) const;
   /// The leaf cell covering the finest cube at node position p toward
-  /// octant o, or kNone.
+  /// octant o, or kNone when that leaf is coarser than any cube with p on
+  /// its slots (§9.3).
   Index locate(const d3::Point& p, int o) const;
   void table_insert(Index ref, std::size_t at);
   void table_erase(Index ref, std::size_t at);
