@@ -15,6 +15,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bccmis/d3/ops.h"
@@ -146,6 +147,18 @@ TEST(Fast3Lattice, RefusedOperationsChangeNothingAndInvalidSizesThrow) {
   EXPECT_THROW(g.level_of({0, 0, 0}), std::out_of_range);
 }
 
+// The reference and the fast lattice after the same `refines` random
+// refines (most applied) from the initial lattice of `size`.
+std::pair<d3::Graph, d3::fast::Lattice> random_state(std::mt19937_64& rng, const d3::LatticeSize& size, int refines) {
+  std::pair<d3::Graph, d3::fast::Lattice> state{d3::Graph(size), d3::fast::Lattice(size)};
+  for (int i = 0; i < refines; ++i) {
+    const d3::Point c = pick(rng, state.first.C);
+    d3::refine(state.first, c);
+    state.second.refine(c);
+  }
+  return state;
+}
+
 TEST(Fast3Lattice, LeafBoundaryIsTheReferenceNeighborSet) {
   // spec/lattice3d.md §9.1: the mesh rule's view of a leaf
   // (Lattice::boundary, read from the slots) against N(u) of the reference
@@ -155,13 +168,7 @@ TEST(Fast3Lattice, LeafBoundaryIsTheReferenceNeighborSet) {
   std::mt19937_64 rng(20261203);
   for (int sequence = 0; sequence < 10; ++sequence) {
     const d3::LatticeSize size{2, 1, 2, 3};
-    d3::Graph g(size);
-    d3::fast::Lattice lat(size);
-    for (int i = 0; i < 40; ++i) {
-      const d3::Point c = pick(rng, g.C);
-      d3::refine(g, c);
-      lat.refine(c);
-    }
+    const auto [g, lat] = random_state(rng, size, 40);
     for (const d3::Point& u : g.C) {
       const auto boundary = leaf_boundary(lat, u);
       const std::int64_t q = d3::cell_side(size, g.level.at(u)) / 4;
@@ -184,13 +191,7 @@ TEST(Fast3Lattice, NodeQueriesAtEveryPointOfTheFinestGrid) {
   std::mt19937_64 rng(20261204);
   for (int sequence = 0; sequence < 6; ++sequence) {
     const d3::LatticeSize size{2, 1, 1, 3};
-    d3::Graph g(size);
-    d3::fast::Lattice lat(size);
-    for (int i = 0; i < 30; ++i) {
-      const d3::Point c = pick(rng, g.C);
-      d3::refine(g, c);
-      lat.refine(c);
-    }
+    const auto [g, lat] = random_state(rng, size, 30);
     const std::int64_t S = d3::level0_side(size);
     std::size_t nodes = 0;
     for (std::int64_t x = -1; x <= size.W * S + 1; ++x)

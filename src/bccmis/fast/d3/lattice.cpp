@@ -850,26 +850,33 @@ CoarsenResult Lattice::coarsen(const Point& n) {
 
 // ---- Batches ------------------------------------------------------------------------------
 
-std::size_t Lattice::refine_each(std::span<const Point> cells) {
+void Lattice::prefetch_home(const Point& p) const {
+  if (const int t = center_tz(p); t >= 0) table_.prefetch(home_at(p, t));
+}
+
+namespace {
+// op(p) for each p in order, the table line of the position kAhead later
+// prefetched first; how many op applied.
+template <class Prefetch, class Op>
+std::size_t apply_each(std::span<const Point> points, Prefetch prefetch, Op op) {
   constexpr std::size_t kAhead = 8;
   std::size_t applied = 0;
-  for (std::size_t i = 0; i < cells.size(); ++i) {
-    if (i + kAhead < cells.size())
-      if (const int t = center_tz(cells[i + kAhead]); t >= 0) table_.prefetch(home_at(cells[i + kAhead], t));
-    applied += refine(cells[i]).applied();
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (i + kAhead < points.size()) prefetch(points[i + kAhead]);
+    applied += op(points[i]);
   }
   return applied;
 }
+}  // namespace
+
+std::size_t Lattice::refine_each(std::span<const Point> cells) {
+  return apply_each(
+      cells, [this](const Point& p) { prefetch_home(p); }, [this](const Point& p) { return refine(p).applied(); });
+}
 
 std::size_t Lattice::coarsen_each(std::span<const Point> nodes) {
-  constexpr std::size_t kAhead = 8;
-  std::size_t applied = 0;
-  for (std::size_t i = 0; i < nodes.size(); ++i) {
-    if (i + kAhead < nodes.size())
-      if (const int t = center_tz(nodes[i + kAhead]); t >= 0) table_.prefetch(home_at(nodes[i + kAhead], t));
-    applied += coarsen(nodes[i]).applied();
-  }
-  return applied;
+  return apply_each(
+      nodes, [this](const Point& p) { prefetch_home(p); }, [this](const Point& p) { return coarsen(p).applied(); });
 }
 
 }  // namespace bccmis::d3::fast

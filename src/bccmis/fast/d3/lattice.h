@@ -196,6 +196,7 @@ class Lattice {
   /// octant o, or kNone when that leaf is coarser than any cube with p on
   /// its slots (§9.3).
   Index locate(const d3::Point& p, int o) const;
+  void prefetch_home(const d3::Point& p) const;  ///< the table line of p's home, if p can be a center
   void table_insert(Index ref, std::size_t at);
   void table_erase(Index ref, std::size_t at);
   void rehash(std::size_t slots);
