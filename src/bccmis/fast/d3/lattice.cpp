@@ -50,41 +50,83 @@ std::uint64_t mix(const Point& p) {
   return h;
 }
 
-std::int64_t coord(const Point& p, int a) { return a == 0 ? p.x : a == 1 ? p.y : p.z; }
-int sign(int o, int a) { return ((o >> a) & 1) ? 1 : -1; }
-
 // A direction d in {-1, 0, 1}^3 \ {0} and its slot (§9.1): the 27 points of
 // the 3 x 3 x 3 grid are numbered (dx+1) + 3(dy+1) + 9(dz+1); the slot skips
 // the middle one (13).
-struct Dir {
-  int d[3];
-  int nz;      // the axes where d is nonzero
-  int inside;  // the octant bits, on nz, of the octants that face the cell: t_a = -d_a
-};
 constexpr int grid_index(int dx, int dy, int dz) { return (dx + 1) + 3 * (dy + 1) + 9 * (dz + 1); }
 constexpr int slot_of_grid(int g) { return g < 13 ? g : g - 1; }
 constexpr int slot_of(int dx, int dy, int dz) { return slot_of_grid(grid_index(dx, dy, dz)); }
+constexpr int sign(int o, int a) { return ((o >> a) & 1) ? 1 : -1; }
+// The slot of corner o (direction s_o).
+constexpr int corner_slot(int o) { return slot_of(sign(o, 0), sign(o, 1), sign(o, 2)); }
 
-constexpr std::array<Dir, 26> make_dirs() {
-  std::array<Dir, 26> dirs{};
+// Everything refine and coarsen read or write for the node in slot k of a
+// cell c, worked out once from the direction d of slot k (§9.5, §9.6).
+struct SlotRule {
+  int d[3] = {0, 0, 0};
+  int nz = 0;      // the axes where d is nonzero (7: a corner)
+  int inside = 0;  // the bits on nz of the octants facing c: t_a = -d_a
+  // The corner of c with d's signs on nz and - elsewhere, and at it the
+  // octant across the face or edge next to c (d's signs on nz, + elsewhere).
+  int corner = 0;
+  int across = 0;
+  // The octants of the node inside c, and the child of c in each (t ^ nz).
+  int inside_count = 0;
+  int inside_octant[4] = {};
+  int inside_child[4] = {};
+  // The octants of the node outside c (edges and faces only): the octant of
+  // the same cell at `corner`, the slot toward the node of a cell there, and
+  // the octant beside it with + on the axes off nz (the same cell iff the
+  // node is inside that cell's edge or face).
+  int outside_count = 0;
+  int outside_octant[6] = {};
+  int outside_at_corner[6] = {};
+  int outside_toward[6] = {};
+  int outside_beside[6] = {};
+  // Coarsen: the node at n + d h is corner `child_corner` of child `child`.
+  int child = 0;
+  int child_corner = 0;
+};
+
+constexpr std::array<SlotRule, 26> make_rules() {
+  std::array<SlotRule, 26> rules{};
   for (int dz = -1; dz <= 1; ++dz)
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx) {
         if (dx == 0 && dy == 0 && dz == 0) continue;
-        Dir& r = dirs[static_cast<std::size_t>(slot_of(dx, dy, dz))];
+        SlotRule& r = rules[static_cast<std::size_t>(slot_of(dx, dy, dz))];
         const int d[3] = {dx, dy, dz};
-        r.nz = r.inside = 0;
         for (int a = 0; a < 3; ++a) {
           r.d[a] = d[a];
           if (d[a] != 0) r.nz |= 1 << a;
           if (d[a] < 0) r.inside |= 1 << a;
         }
+        const int outward = r.nz & ~r.inside, off = 7 & ~r.nz;
+        r.corner = corner_slot(outward);
+        r.across = outward | off;
+        r.child = outward;
+        r.child_corner = corner_slot(outward | off);
+        for (int t = 0; t < 8; ++t) {
+          if ((t & r.nz) == r.inside) {
+            r.inside_octant[r.inside_count] = t;
+            r.inside_child[r.inside_count++] = t ^ r.nz;
+          } else if (r.nz != 7) {
+            int toward[3] = {0, 0, 0};
+            for (int a = 0; a < 3; ++a) toward[a] = ((r.nz >> a) & 1) ? -sign(t, a) : 0;
+            r.outside_octant[r.outside_count] = t;
+            r.outside_at_corner[r.outside_count] = (t & r.nz) | off;
+            r.outside_toward[r.outside_count] = slot_of(toward[0], toward[1], toward[2]);
+            r.outside_beside[r.outside_count++] = t | off;
+          }
+        }
       }
-  return dirs;
+  return rules;
 }
-constexpr std::array<Dir, 26> kDir = make_dirs();
+constexpr std::array<SlotRule, 26> kRule = make_rules();
+const SlotRule& rule(int k) { return kRule[static_cast<std::size_t>(k)]; }
 
-// The slots in sorted order of the positions they name (x, then y, then z).
+// The slots in sorted order of the positions they name (x, then y, then z),
+// and the 18 edge and face slots in that order.
 constexpr std::array<int, 26> make_sorted_slots() {
   std::array<int, 26> out{};
   std::size_t k = 0;
@@ -95,29 +137,37 @@ constexpr std::array<int, 26> make_sorted_slots() {
   return out;
 }
 constexpr std::array<int, 26> kSortedSlots = make_sorted_slots();
+constexpr std::array<int, 18> make_sorted_midpoints() {
+  std::array<int, 18> out{};
+  std::size_t k = 0;
+  for (const int s : kSortedSlots)
+    if (kRule[static_cast<std::size_t>(s)].nz != 7) out[k++] = s;
+  return out;
+}
+constexpr std::array<int, 18> kSortedMidpoints = make_sorted_midpoints();
 // The octants in sorted order of the children's positions.
 constexpr int kSortedOctants[8] = {0, 4, 2, 6, 1, 5, 3, 7};
-// The slot of corner o (direction s_o).
-constexpr int corner_slot(int o) { return slot_of((o & 1) ? 1 : -1, (o & 2) ? 1 : -1, (o & 4) ? 1 : -1); }
-// The slot of direction -t on the axes of nz, 0 elsewhere: where a cell that
-// covers octant t of a node on its nz-boundary keeps that node.
-int slot_toward(int t, int nz) {
-  int d[3];
-  for (int a = 0; a < 3; ++a) d[a] = ((nz >> a) & 1) ? -sign(t, a) : 0;
-  return slot_of(d[0], d[1], d[2]);
+// Refine: corner e of child o is the node at grid point g of its parent
+// (g_a = s_o,a where e agrees with s_o, 0 elsewhere): its slot, or -1 for
+// the parent's center (g = 0).
+constexpr std::array<std::array<int, 8>, 8> make_child_corners() {
+  std::array<std::array<int, 8>, 8> out{};
+  for (int o = 0; o < 8; ++o)
+    for (int e = 0; e < 8; ++e) {
+      const int agree = ~(o ^ e) & 7;
+      int g[3] = {0, 0, 0};
+      for (int a = 0; a < 3; ++a) g[a] = ((agree >> a) & 1) ? sign(o, a) : 0;
+      out[static_cast<std::size_t>(o)][static_cast<std::size_t>(e)] = agree == 0 ? -1 : slot_of(g[0], g[1], g[2]);
+    }
+  return out;
 }
+constexpr std::array<std::array<int, 8>, 8> kChildCorner = make_child_corners();
+
+std::int64_t coord(const Point& p, int a) { return a == 0 ? p.x : a == 1 ? p.y : p.z; }
 Point offset(const Point& p, const int d[3], std::int64_t h) {
   return {p.x + d[0] * h, p.y + d[1] * h, p.z + d[2] * h};
 }
-
-bool is_corner(int slot) { return kDir[static_cast<std::size_t>(slot)].nz == 7; }
-
-// The octants t whose bits on `mask` equal `bits`: f(t) for each.
-template <class F>
-void for_octants(int mask, int bits, F&& f) {
-  for (int t = 0; t < 8; ++t)
-    if ((t & mask) == bits) f(t);
-}
+bool is_corner(int slot) { return rule(slot).nz == 7; }
 
 }  // namespace
 
@@ -316,7 +366,7 @@ void Lattice::reserve(std::size_t cells) {
   nodes_.reserve(std::min(kMaxPool, cells + cells / 4 + 64));
   // The keys: the cells and the refined centers (about a seventh of them).
   const std::size_t keys = cells + cells / 7 + 16;
-  std::size_t slots = std::max<std::size_t>(table_.slots(), 16);
+  std::size_t slots = std::max<std::size_t>(table_.slots(), 32);
   while (keys * 5 > slots * 3) slots *= 2;
   if (slots != table_.slots()) rehash(slots);
 }
@@ -372,7 +422,7 @@ Lattice::Lattice(const d3::LatticeSize& size) : size_(size) {
           nodes_[node_at(i, j, k)].cell[t] = cell_at(i - 1 + (t & 1), j - 1 + ((t >> 1) & 1), k - 1 + (t >> 2));
   cell_count_ = centers_.size();
   node_count_ = nodes_.size();
-  table_.reset(16);
+  table_.reset(32);
   ensure_room(0, 0, cell_count_);
   for (Index c = 0; c < centers_.size(); ++c) table_insert(c, home(centers_[c].p));
 }
@@ -416,10 +466,11 @@ Lattice Lattice::from_graph(const d3::Graph& g) {
       const int k = slot_of(d[0], d[1], d[2]);
       lat.centers_[ci].nbr[k] = id->second;
       Node& rn = lat.nodes_[id->second];
-      for_octants(kDir[static_cast<std::size_t>(k)].nz, kDir[static_cast<std::size_t>(k)].inside, [&](int o) {
-        if (rn.cell[o] != kNone) fail("two cells cover one octant of node " + d3::to_string(b));
-        rn.cell[o] = ci;
-      });
+      for (int i = 0; i < rule(k).inside_count; ++i) {
+        const int octant = rule(k).inside_octant[i];
+        if (rn.cell[octant] != kNone) fail("two cells cover one octant of node " + d3::to_string(b));
+        rn.cell[octant] = ci;
+      }
     }
     for (int o = 0; o < 8; ++o)
       if (lat.centers_[ci].nbr[corner_slot(o)] == kNone) fail("center " + d3::to_string(c) + " lacks a corner");
@@ -430,7 +481,7 @@ Lattice Lattice::from_graph(const d3::Graph& g) {
       fail("node " + d3::to_string(n) + " has no cell");
     if (lat.node_position(id) != n) fail("node " + d3::to_string(n) + " is not where its cells put it");
   }
-  lat.table_.reset(16);
+  lat.table_.reset(32);
   std::size_t keys = g.C.size();
   for (const auto& entry : node_id) keys += lat.center_tz(entry.first) >= 0;
   lat.ensure_room(0, 0, keys);
@@ -471,7 +522,7 @@ SmallPoints<26> Lattice::nbr(const Point& v) const {
     const Center& r = centers_[c];
     const std::int64_t h = half_side(level(c));
     for (const int k : kSortedSlots)
-      if (r.nbr[k] != kNone) out.push_back(offset(r.p, kDir[static_cast<std::size_t>(k)].d, h));
+      if (r.nbr[k] != kNone) out.push_back(offset(r.p, rule(k).d, h));
     return out;
   }
   if (const Index n = find_node(v); n != kNone)
@@ -568,9 +619,9 @@ std::optional<std::string> Lattice::audit() const {
         continue;
       }
       if (n >= nodes_.size() || !nodes_[n].live()) return name + " names a free node record";
-      const Dir& d = kDir[static_cast<std::size_t>(k)];
       bool mirrored = true;
-      for_octants(d.nz, d.inside, [&](int t) { mirrored = mirrored && nodes_[n].cell[t] == i; });
+      for (int j = 0; j < rule(k).inside_count; ++j)
+        mirrored = mirrored && nodes_[n].cell[rule(k).inside_octant[j]] == i;
       if (!mirrored) return name + ": its node in slot " + std::to_string(k) + " does not list it in every octant";
     }
   }
@@ -634,7 +685,7 @@ void Lattice::write_canonical_state(std::ostream& out) const {
     w.put(" :");
     for (const int k : kSortedSlots)
       if (c.nbr[k] != kNone) {
-        const Point b = offset(c.p, kDir[static_cast<std::size_t>(k)].d, h);
+        const Point b = offset(c.p, rule(k).d, h);
         w.put_point(b.x, b.y, b.z);
       }
     w.put('\n');
@@ -670,12 +721,8 @@ std::optional<RefineRefusal> Lattice::refine_refusal(const Point& c, Index& ci) 
   // corner with d's signs on nz(d) and - elsewhere. 6 faces + 12 edges.
   const Center& rc = centers_[ci];
   const std::int64_t coarse_mask = 2 * half_side(l) - 1;  // a coarser center's coordinates are multiples of 2h
-  for (int k = 0; k < 26; ++k) {
-    const Dir& d = kDir[static_cast<std::size_t>(k)];
-    if (d.nz == 7) continue;
-    const int outward = d.nz & ~d.inside;
-    const Index corner = rc.nbr[corner_slot(outward)];
-    const Index x = nodes_[corner].cell[outward | (7 & ~d.nz)];
+  for (const int k : kSortedMidpoints) {
+    const Index x = nodes_[rc.nbr[rule(k).corner]].cell[rule(k).across];
     if (x != kNone && (centers_[x].p.x & coarse_mask) == 0) return RefineRefusal::CoarserNeighbor;
   }
   return std::nullopt;
@@ -698,8 +745,8 @@ std::optional<CoarsenRefusal> Lattice::coarsen_refusal(const Point& n, Index& ni
     if (level(rn.cell[o]) != l + 1) return CoarsenRefusal::ChildrenRefined;
   for (int o = 0; o < 8; ++o) {  // |N(y)| = 8: no node but the corners
     const Center& y = centers_[rn.cell[o]];
-    for (int k = 0; k < 26; ++k)
-      if (!is_corner(k) && y.nbr[k] != kNone) return CoarsenRefusal::FinerNeighbor;
+    for (const int k : kSortedMidpoints)
+      if (y.nbr[k] != kNone) return CoarsenRefusal::FinerNeighbor;
   }
   return std::nullopt;
 }
@@ -723,7 +770,7 @@ RefineResult Lattice::refine(const Point& c) {
   result.refused = refine_refusal(c, ci);
   if (result.refused) return result;
   std::size_t new_nodes = 1;  // c, and a node on each edge and face that has none
-  for (int k = 0; k < 26; ++k) new_nodes += !is_corner(k) && centers_[ci].nbr[k] == kNone;
+  for (const int k : kSortedMidpoints) new_nodes += centers_[ci].nbr[k] == kNone;
   ensure_room(8, new_nodes, 8);  // c's table entry is renamed, the 8 children added
 
   const int l = level(ci);
@@ -748,41 +795,35 @@ RefineResult Lattice::refine(const Point& c) {
   // R3a-R3h: a new node j+ on each edge and face of c without one. The
   // cells around it outside c (X_e, X_f) are read at the corner with d's
   // signs on nz(d) and - elsewhere; each gets j+ in its slot toward it.
-  for (const int k : kSortedSlots) {
-    const Dir& d = kDir[static_cast<std::size_t>(k)];
-    if (d.nz == 7 || G[k] != kNone) continue;
+  for (const int k : kSortedMidpoints) {
+    if (G[k] != kNone) continue;
+    const SlotRule& r = rule(k);
     const Index jp = alloc_node();
     G[k] = jp;
-    result.J_plus.push_back(offset(c, d.d, h));
-    const Node& corner = nodes_[G[corner_slot(d.nz & ~d.inside)]];
-    for (int t = 0; t < 8; ++t) {
-      if ((t & d.nz) == d.inside) continue;  // inside c: a child, below
-      const Index x = corner.cell[(t & d.nz) | (7 & ~d.nz)];
-      nodes_[jp].cell[t] = x;                                      // R3d, R3g: X ⊆ N(j+)
-      if (x != kNone) centers_[x].nbr[slot_toward(t, d.nz)] = jp;  // R3c, R3f
+    result.J_plus.push_back(offset(c, r.d, h));
+    const Node& corner = nodes_[G[r.corner]];
+    Node& rj = nodes_[jp];
+    for (int i = 0; i < r.outside_count; ++i) {
+      const Index x = corner.cell[r.outside_at_corner[i]];
+      rj.cell[r.outside_octant[i]] = x;                           // R3d, R3g: X ⊆ N(j+)
+      if (x != kNone) centers_[x].nbr[r.outside_toward[i]] = jp;  // R3c, R3f
     }
   }
   // R2c-R2e, R3d-R3h, R4a: every node of c's boundary lists, in each of its
   // octants inside c, the child there (c's own node: all 8).
   for (int t = 0; t < 8; ++t) nodes_[cn].cell[t] = y[t];
   for (int k = 0; k < 26; ++k) {
-    const Dir& d = kDir[static_cast<std::size_t>(k)];
+    const SlotRule& r = rule(k);
     Node& b = nodes_[G[k]];
-    for_octants(d.nz, d.inside, [&](int t) { b.cell[t] = y[t ^ d.nz]; });
+    for (int i = 0; i < r.inside_count; ++i) b.cell[r.inside_octant[i]] = y[r.inside_child[i]];
   }
   // R2f, R3e, R3h, R4b: each child has its 8 corners: the grid point of c
   // with g_a = s_o,a where its corner's sign agrees with s_o, 0 elsewhere.
   for (int o = 0; o < 8; ++o) {
     Center& ry = centers_[y[o]];
     for (int e = 0; e < 8; ++e) {
-      const int agree = ~(o ^ e) & 7;  // axes where the corner points away from c's center
-      if (agree == 0) {
-        ry.nbr[corner_slot(e)] = cn;
-        continue;
-      }
-      int g[3];
-      for (int a = 0; a < 3; ++a) g[a] = ((agree >> a) & 1) ? sign(o, a) : 0;
-      ry.nbr[corner_slot(e)] = G[slot_of(g[0], g[1], g[2])];
+      const int g = kChildCorner[static_cast<std::size_t>(o)][static_cast<std::size_t>(e)];
+      ry.nbr[corner_slot(e)] = g < 0 ? cn : G[g];
     }
   }
   // The children's table entries last: a saturated displacement recomputes
@@ -810,11 +851,7 @@ CoarsenResult Lattice::coarsen(const Point& n) {
   std::copy(std::begin(nodes_[ni].cell), std::end(nodes_[ni].cell), y);
   for (const int o : kSortedOctants) result.Y.push_back(centers_[y[o]].p);
   Index B[26];
-  for (int k = 0; k < 26; ++k) {
-    const Dir& d = kDir[static_cast<std::size_t>(k)];
-    const int outward = d.nz & ~d.inside;
-    B[k] = centers_[y[outward]].nbr[corner_slot(outward | (7 & ~d.nz))];
-  }
+  for (int k = 0; k < 26; ++k) B[k] = centers_[y[rule(k).child]].nbr[rule(k).child_corner];
   // K2b, K2f: the children are deleted. K2c-K2e: n leaves N and joins C
   // (choice Q4), under the same table entry.
   for (int o = 0; o < 8; ++o) table_erase(y[o], table_.line_slot(base, static_cast<std::size_t>(o)));
@@ -829,19 +866,18 @@ CoarsenResult Lattice::coarsen(const Point& n) {
   // merged cube's boundary hold different cells.
   Center& rc = centers_[cc];
   for (const int k : kSortedSlots) {
-    const Dir& d = kDir[static_cast<std::size_t>(k)];
+    const SlotRule& r = rule(k);
     Node& b = nodes_[B[k]];
-    for_octants(d.nz, d.inside, [&](int t) { b.cell[t] = cc; });
+    for (int i = 0; i < r.inside_count; ++i) b.cell[r.inside_octant[i]] = cc;
     rc.nbr[k] = B[k];  // K4a
-    if (d.nz == 7) continue;
     bool corner_of_a_cell = false;
-    for (int t = 0; t < 8; ++t)
-      if ((t & d.nz) != d.inside) corner_of_a_cell = corner_of_a_cell || b.cell[t] != b.cell[t | (7 & ~d.nz)];
-    if (corner_of_a_cell) continue;
+    for (int i = 0; i < r.outside_count; ++i)
+      corner_of_a_cell = corner_of_a_cell || b.cell[r.outside_octant[i]] != b.cell[r.outside_beside[i]];
+    if (r.nz == 7 || corner_of_a_cell) continue;
     // K3b-K3e: j in J-: its cells outside drop it, it is deleted.
-    for (int t = 0; t < 8; ++t)
-      if ((t & d.nz) != d.inside && b.cell[t] != kNone) centers_[b.cell[t]].nbr[slot_toward(t, d.nz)] = kNone;
-    result.J_minus.push_back(offset(n, d.d, h));
+    for (int i = 0; i < r.outside_count; ++i)
+      if (const Index x = b.cell[r.outside_octant[i]]; x != kNone) centers_[x].nbr[r.outside_toward[i]] = kNone;
+    result.J_minus.push_back(offset(n, r.d, h));
     rc.nbr[k] = kNone;
     free_node(B[k]);
   }

@@ -25,18 +25,19 @@ class PositionTable {
   static constexpr Ref kRefMask = (Ref{1} << 27) - 1;  ///< a slot's reference bits
   static constexpr Ref kMaxRef = kRefMask;             ///< references are below this
 
-  /// An empty table of `slots` slots (a power of two, at least 16).
+  /// An empty table of at least `slots` slots (a power of two, at least 32).
   void reset(std::size_t slots);
   std::size_t slots() const { return slots_.size(); }
   std::size_t used() const { return used_; }
   std::size_t memory_bytes() const { return slots_.capacity() * sizeof(std::uint32_t); }
   /// The home slot of a 64-bit hash: its top bits.
   std::size_t home_of_hash(std::uint64_t hash) const { return static_cast<std::size_t>(hash >> shift_); }
-  /// Slot k (0..7) of the 16-slot (64-byte) line that holds slot `base`,
-  /// never `base` itself: the homes of the 8 children of a cell whose home is
-  /// `base` (2 slots apart, so their Robin Hood runs stay short).
+  /// Slot k (0..7) of the 32-slot (128-byte, two cache lines) block that
+  /// holds slot `base`, never `base` itself: the homes of the 8 children of
+  /// a cell whose hash has home `base` (4 slots apart, so that a family fills
+  /// a quarter of its block and the Robin Hood runs stay short).
   std::size_t line_slot(std::size_t base, std::size_t k) const {
-    return ((base & ~std::size_t{15}) | ((base + 1 + 2 * k) & 15)) & (slots_.size() - 1);
+    return ((base & ~std::size_t{31}) | ((base + 1 + 4 * k) & 31)) & (slots_.size() - 1);
   }
   void prefetch(std::size_t at) const { __builtin_prefetch(&slots_[at]); }
 
@@ -86,7 +87,7 @@ class PositionTable {
 // ---- Inline bodies ------------------------------------------------------------
 
 inline void PositionTable::reset(std::size_t slots) {
-  int bits = 4;
+  int bits = 5;
   while ((std::size_t{1} << bits) < slots) ++bits;
   bccmis::fast::detail::Array<std::uint32_t> fresh(std::size_t{1} << bits, 0);  // may throw: nothing changed
   slots_.swap(fresh);
