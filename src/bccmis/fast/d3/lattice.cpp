@@ -33,7 +33,6 @@ namespace bccmis::d3::fast {
 namespace {
 
 using Index = Lattice::Index;
-constexpr Index kNone = Lattice::kNone;
 
 // The position's hash: the three coordinates combined, then the splitmix64
 // finalizer, so that the top bits (the home slot) depend on every bit of
@@ -736,13 +735,18 @@ std::optional<CoarsenRefusal> Lattice::coarsen_refusal(const Point& n, Index& ni
   l = size_.L - t;
   if (l >= size_.L) return CoarsenRefusal::NotARefinedCenter;
   const Node& rn = nodes_[ni];
-  for (int o = 0; o < 8; ++o) {  // |N(n)| = 8: eight distinct cells
-    if (rn.cell[o] == kNone) return CoarsenRefusal::NotARefinedCenter;
-    for (int s = 0; s < o; ++s)
-      if (rn.cell[s] == rn.cell[o]) return CoarsenRefusal::NotARefinedCenter;
-  }
+  // |N(n)| = 8: eight distinct cells. Eight cells of level l + 1 around n
+  // are distinct (n is a corner of each), so the pairs are compared only
+  // when a level differs.
   for (int o = 0; o < 8; ++o)
-    if (level(rn.cell[o]) != l + 1) return CoarsenRefusal::ChildrenRefined;
+    if (rn.cell[o] == kNone) return CoarsenRefusal::NotARefinedCenter;
+  for (int o = 0; o < 8; ++o)
+    if (level(rn.cell[o]) != l + 1) {
+      for (int a = 0; a < 8; ++a)
+        for (int b = 0; b < a; ++b)
+          if (rn.cell[a] == rn.cell[b]) return CoarsenRefusal::NotARefinedCenter;
+      return CoarsenRefusal::ChildrenRefined;
+    }
   for (int o = 0; o < 8; ++o) {  // |N(y)| = 8: no node but the corners
     const Center& y = centers_[rn.cell[o]];
     for (const int k : kSortedMidpoints)

@@ -111,6 +111,10 @@ template <class HomeOf>
 void PositionTable::insert(Ref ref, std::size_t i, HomeOf&& home_of) {
   const std::size_t mask = slots_.size() - 1;
   ++used_;
+  if (slots_[i] == 0) [[likely]] {  // an empty home
+    slots_[i] = encode(ref, 0);
+    return;
+  }
   for (std::size_t d = 0;; ++d, i = (i + 1) & mask) {
     const std::uint32_t s = slots_[i];
     if (s == 0) {
@@ -129,6 +133,11 @@ void PositionTable::insert(Ref ref, std::size_t i, HomeOf&& home_of) {
 template <class HomeOf>
 void PositionTable::erase(Ref ref, std::size_t at, HomeOf&& home_of) {
   const std::size_t mask = slots_.size() - 1;
+  if (slots_[at] == encode(ref, 0) && (slots_[(at + 1) & mask] >> kDistShift) <= 1) [[likely]] {
+    slots_[at] = 0;  // at its home, nothing displaced behind it
+    --used_;
+    return;
+  }
   std::size_t i = slot_of(ref, at);
   for (std::size_t j = (i + 1) & mask;; i = j, j = (j + 1) & mask) {
     const std::uint32_t s = slots_[j];
