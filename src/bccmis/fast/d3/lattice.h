@@ -70,7 +70,7 @@ class Lattice {
 
   /// The initial lattice of d3::make_lattice(size): W x H x D level-0 cubes.
   /// Throws LatticeError on an invalid size, std::length_error when the
-  /// lattice would need 2^31 or more vertices of one kind.
+  /// lattice would need 2^26 or more vertices of one kind (the position table names records by 26 bits).
   explicit Lattice(const d3::LatticeSize& size);
 
   const d3::LatticeSize& size() const { return size_; }
@@ -114,8 +114,9 @@ class Lattice {
   /// e.g. parsed from a canonical state): every operation and the canonical
   /// state are then those of the graph. Throws std::invalid_argument when a
   /// center has no level, or one its position does not give, or a neighbor
-  /// of a center is not a node, or a vertex has more neighbors than a
-  /// lattice allows (26 for a center, 8 for a node).
+  /// of a center is not a node at its corner, edge midpoint or face center,
+  /// or a center lacks a corner, or two cells cover one octant of a node, or
+  /// a node has no cell or is not where its cells put it.
   static Lattice from_graph(const d3::Graph& g);
 
   // ---- Memory -----------------------------------------------------------------
