@@ -8,12 +8,14 @@
 // output, byte for byte.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <random>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bccmis/d3/ops.h"
@@ -143,6 +145,67 @@ TEST(Fast3Lattice, RefusedOperationsChangeNothingAndInvalidSizesThrow) {
   EXPECT_THROW(d3::fast::Lattice({0, 1, 1, 1}), LatticeError);
   EXPECT_THROW(d3::fast::Lattice({1, 1, 1, -1}), LatticeError);
   EXPECT_THROW(g.level_of({0, 0, 0}), std::out_of_range);
+}
+
+// The reference and the fast lattice after the same `refines` random
+// refines (most applied) from the initial lattice of `size`.
+std::pair<d3::Graph, d3::fast::Lattice> random_state(std::mt19937_64& rng, const d3::LatticeSize& size, int refines) {
+  std::pair<d3::Graph, d3::fast::Lattice> state{d3::Graph(size), d3::fast::Lattice(size)};
+  for (int i = 0; i < refines; ++i) {
+    const d3::Point c = pick(rng, state.first.C);
+    d3::refine(state.first, c);
+    state.second.refine(c);
+  }
+  return state;
+}
+
+TEST(Fast3Lattice, LeafBoundaryIsTheReferenceNeighborSet) {
+  // spec/lattice3d.md §9.1: the mesh rule's view of a leaf
+  // (Lattice::boundary, read from the slots) against N(u) of the reference
+  // graph, on the 9 x 9 x 9 points a quarter side apart around every leaf of
+  // random states: every node of the cell's boundary is in, every other
+  // point (the center, points between slots, points outside the cube) out.
+  std::mt19937_64 rng(20261203);
+  for (int sequence = 0; sequence < 10; ++sequence) {
+    const d3::LatticeSize size{2, 1, 2, 3};
+    const auto [g, lat] = random_state(rng, size, 40);
+    for (const d3::Point& u : g.C) {
+      const auto boundary = leaf_boundary(lat, u);
+      const std::int64_t q = d3::cell_side(size, g.level.at(u)) / 4;
+      for (std::int64_t i = -4; i <= 4; ++i)
+        for (std::int64_t j = -4; j <= 4; ++j)
+          for (std::int64_t k = -4; k <= 4; ++k) {
+            const d3::Point p{u.x + i * q, u.y + j * q, u.z + k * q};
+            ASSERT_EQ(boundary.contains(p), g.nbr(u).contains(p)) << d3::to_string(u) << " " << d3::to_string(p);
+          }
+    }
+  }
+  EXPECT_THROW(d3::fast::Lattice({1, 1, 1, 1}).boundary({0, 0, 0}), std::out_of_range);
+}
+
+TEST(Fast3Lattice, NodeQueriesAtEveryPointOfTheFinestGrid) {
+  // spec/lattice3d.md §9.3: a node that is not a refined center is found from
+  // a leaf and a direction, not from the position table. Every integer point
+  // of the closed domain (and one layer outside) of random states, against the
+  // reference: is_node, is_center, N(p) and the coarsen guard.
+  std::mt19937_64 rng(20261204);
+  for (int sequence = 0; sequence < 6; ++sequence) {
+    const d3::LatticeSize size{2, 1, 1, 3};
+    const auto [g, lat] = random_state(rng, size, 30);
+    const std::int64_t S = d3::level0_side(size);
+    std::size_t nodes = 0;
+    for (std::int64_t x = -1; x <= size.W * S + 1; ++x)
+      for (std::int64_t y = -1; y <= size.H * S + 1; ++y)
+        for (std::int64_t z = -1; z <= size.D * S + 1; ++z) {
+          const d3::Point p{x, y, z};
+          ASSERT_EQ(lat.is_node(p), g.is_node(p)) << d3::to_string(p);
+          ASSERT_EQ(lat.is_center(p), g.is_center(p)) << d3::to_string(p);
+          ASSERT_TRUE(std::ranges::equal(lat.nbr(p), g.nbr(p))) << d3::to_string(p);
+          ASSERT_EQ(lat.can_coarsen(p), d3::can_coarsen(g, p)) << d3::to_string(p);
+          nodes += g.is_node(p);
+        }
+    EXPECT_EQ(nodes, g.N.size());
+  }
 }
 
 }  // namespace

@@ -42,6 +42,14 @@ inline std::array<Point, 4> face_corners(const Point& u, std::int64_t h, int axi
   return out;
 }
 
+/// The nodes on leaf u's boundary as a set with contains(): N(u) by default;
+/// a lattice may offer a cheaper view of the same set (d3::fast::Lattice reads
+/// its slots), found by argument-dependent lookup.
+template <class G>
+decltype(auto) leaf_boundary(const G& g, const Point& u) {
+  return neighbors(g, u);
+}
+
 /// spec/mesh3d.md M1-M4, for one leaf: the tetrahedra of leaf u (those with
 /// u as vertex 0; they depend on u's level, the nodes on u's boundary and the
 /// centers across its faces), appended to out, sorted; `ring` is scratch.
@@ -51,7 +59,7 @@ void leaf_tetrahedra(const G& g, const Point& u, std::vector<Tet>& out, std::vec
   const std::size_t first = out.size();
   const int l = level_of(g, u);
   const std::int64_t s = cell_side(size, l), h = s / 2;
-  const auto& nu = neighbors(g, u);
+  const auto& nu = leaf_boundary(g, u);
   for (int axis = 0; axis < 3; ++axis)
     for (const bool high : {false, true}) {
       // spec/mesh3d.md M4: f is the center point of face F.

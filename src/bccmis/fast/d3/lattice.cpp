@@ -1,22 +1,31 @@
-// bccmis::fast: refine (spec/lattice3d.md §4) and coarsen (§5) in 3D on flat
-// records.
+// bccmis::fast: refine (spec/lattice3d.md §4) and coarsen (§5) in 3D as fixed
+// slot reads and writes (the layout of §9).
 //
-// Both follow the set equations of spec/equations3d.toml step by step, as the
-// reference does (src/bccmis/d3/refine.cpp, coarsen.cpp); each step names
-// the equation it implements (R1a-R4b, K1a-K4b). A set is a small array of
-// record ids; a union that cannot meet an element twice is an append, a
-// difference a removal. Every set is computed before the first write, so
-// that a lattice that is not valid (a logic_error) is left unchanged.
+// Directions (spec/lattice3d.md §9.1). An octant o has bit a set when it lies on the + side of
+// axis a (a = 0, 1, 2 for x, y, z); s_o is its sign vector. A direction d is
+// in {-1, 0, 1}^3 \ {0}; its nonzero axes form the mask nz(d). A center u of
+// half side h keeps in slot slot_of(d) the node at u + d h, if any.
+//
+// The one rule that links the two pools (§9.1): the node b = u + d h of cell
+// u has u in every octant t with t_a = -d_a on the axes of nz(d) (any sign on
+// the others): 1 octant for a corner, 2 for an edge midpoint, 4 for a face
+// center.
+//
+// Refinement of c (level l, half side h) in the 3 x 3 x 3 grid of points
+// c + g h, g in {-1, 0, 1}^3: G[g] is the node there (c itself once refined,
+// the corners P, the old junctions J and the new nodes J+). Child y_o is
+// centred at c + s_o h / 2; its corner in direction e is the grid point g with
+// g_a = s_o,a where e_a = s_o,a and 0 elsewhere; the node at grid point g
+// has, in each of its octants t inside c, the child y_(t XOR nz(g)).
 #include "bccmis/fast/d3/lattice.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
-#include <cstring>
-#include <initializer_list>
+#include <map>
 #include <new>
 #include <stdexcept>
 
-#include "bccmis/d3/geometry.h"
 #include "bccmis/text_writer.h"
 
 namespace bccmis::d3::fast {
@@ -26,7 +35,7 @@ namespace {
 using Index = Lattice::Index;
 
 // The position's hash: the three coordinates combined, then the splitmix64
-// finalizer, so that the low bits (the home slot) depend on every bit of
+// finalizer, so that the top bits (the home slot) depend on every bit of
 // every coordinate (lattice coordinates are multiples of powers of two).
 std::uint64_t mix(const Point& p) {
   std::uint64_t h = static_cast<std::uint64_t>(p.x) * 0x9E3779B97F4A7C15ull;
@@ -40,125 +49,325 @@ std::uint64_t mix(const Point& p) {
   return h;
 }
 
-// A junction's cardinality (spec/lattice3d.md §3, F2; choice V2): 3, 5, 6 or 7.
-bool is_junction_cardinality(std::uint32_t k) { return k == 3 || k == 5 || k == 6 || k == 7; }
+// A direction d in {-1, 0, 1}^3 \ {0} and its slot (§9.1): the 27 points of
+// the 3 x 3 x 3 grid are numbered (dx+1) + 3(dy+1) + 9(dz+1); the slot skips
+// the middle one (13).
+constexpr int grid_index(int dx, int dy, int dz) { return (dx + 1) + 3 * (dy + 1) + 9 * (dz + 1); }
+constexpr int slot_of_grid(int g) { return g < 13 ? g : g - 1; }
+constexpr int slot_of(int dx, int dy, int dz) { return slot_of_grid(grid_index(dx, dy, dz)); }
+constexpr int sign(int o, int a) { return ((o >> a) & 1) ? 1 : -1; }
+// The slot of corner o (direction s_o).
+constexpr int corner_slot(int o) { return slot_of(sign(o, 0), sign(o, 1), sign(o, 2)); }
 
-// A small set of ids (no heap).
-template <std::size_t N>
-struct Ids {
-  std::array<Index, N> v{};
-  std::size_t n = 0;
-  void push(Index i) { v[n++] = i; }
-  bool has(Index i) const { return std::find(v.begin(), v.begin() + n, i) != v.begin() + n; }
-  const Index* begin() const { return v.data(); }
-  const Index* end() const { return v.data() + n; }
+// Everything refine and coarsen read or write for the node in slot k of a
+// cell c, worked out once from the direction d of slot k (§9.5, §9.6).
+struct SlotRule {
+  int d[3] = {0, 0, 0};
+  int nz = 0;      // the axes where d is nonzero (7: a corner)
+  int inside = 0;  // the bits on nz of the octants facing c: t_a = -d_a
+  // The corner of c with d's signs on nz and - elsewhere, and at it the
+  // octant across the face or edge next to c (d's signs on nz, + elsewhere).
+  int corner = 0;
+  int across = 0;
+  // The octants of the node inside c, and the child of c in each (t ^ nz).
+  int inside_count = 0;
+  int inside_octant[4] = {};
+  int inside_child[4] = {};
+  // The octants of the node outside c (edges and faces only): the octant of
+  // the same cell at `corner`, the slot toward the node of a cell there, and
+  // the octant beside it with + on the axes off nz (the same cell iff the
+  // node is inside that cell's edge or face).
+  int outside_count = 0;
+  int outside_octant[6] = {};
+  int outside_at_corner[6] = {};
+  int outside_toward[6] = {};
+  int outside_beside[6] = {};
+  // Coarsen: the node at n + d h is corner `child_corner` of child `child`.
+  int child = 0;
+  int child_corner = 0;
 };
+
+constexpr std::array<SlotRule, 26> make_rules() {
+  std::array<SlotRule, 26> rules{};
+  for (int dz = -1; dz <= 1; ++dz)
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        if (dx == 0 && dy == 0 && dz == 0) continue;
+        SlotRule& r = rules[static_cast<std::size_t>(slot_of(dx, dy, dz))];
+        const int d[3] = {dx, dy, dz};
+        for (int a = 0; a < 3; ++a) {
+          r.d[a] = d[a];
+          if (d[a] != 0) r.nz |= 1 << a;
+          if (d[a] < 0) r.inside |= 1 << a;
+        }
+        const int outward = r.nz & ~r.inside, off = 7 & ~r.nz;
+        r.corner = corner_slot(outward);
+        r.across = outward | off;
+        r.child = outward;
+        r.child_corner = corner_slot(outward | off);
+        for (int t = 0; t < 8; ++t) {
+          if ((t & r.nz) == r.inside) {
+            r.inside_octant[r.inside_count] = t;
+            r.inside_child[r.inside_count++] = t ^ r.nz;
+          } else if (r.nz != 7) {
+            int toward[3] = {0, 0, 0};
+            for (int a = 0; a < 3; ++a) toward[a] = ((r.nz >> a) & 1) ? -sign(t, a) : 0;
+            r.outside_octant[r.outside_count] = t;
+            r.outside_at_corner[r.outside_count] = (t & r.nz) | off;
+            r.outside_toward[r.outside_count] = slot_of(toward[0], toward[1], toward[2]);
+            r.outside_beside[r.outside_count++] = t | off;
+          }
+        }
+      }
+  return rules;
+}
+constexpr std::array<SlotRule, 26> kRule = make_rules();
+const SlotRule& rule(int k) { return kRule[static_cast<std::size_t>(k)]; }
+
+// The slots in sorted order of the positions they name (x, then y, then z),
+// and the 18 edge and face slots in that order.
+constexpr std::array<int, 26> make_sorted_slots() {
+  std::array<int, 26> out{};
+  std::size_t k = 0;
+  for (int dx = -1; dx <= 1; ++dx)
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dz = -1; dz <= 1; ++dz)
+        if (dx != 0 || dy != 0 || dz != 0) out[k++] = slot_of(dx, dy, dz);
+  return out;
+}
+constexpr std::array<int, 26> kSortedSlots = make_sorted_slots();
+constexpr std::array<int, 18> make_sorted_midpoints() {
+  std::array<int, 18> out{};
+  std::size_t k = 0;
+  for (const int s : kSortedSlots)
+    if (kRule[static_cast<std::size_t>(s)].nz != 7) out[k++] = s;
+  return out;
+}
+constexpr std::array<int, 18> kSortedMidpoints = make_sorted_midpoints();
+// The octants in sorted order of the children's positions.
+constexpr int kSortedOctants[8] = {0, 4, 2, 6, 1, 5, 3, 7};
+// Refine: corner e of child o is the node at grid point g of its parent
+// (g_a = s_o,a where e agrees with s_o, 0 elsewhere): its slot, or -1 for
+// the parent's center (g = 0).
+constexpr std::array<std::array<int, 8>, 8> make_child_corners() {
+  std::array<std::array<int, 8>, 8> out{};
+  for (int o = 0; o < 8; ++o)
+    for (int e = 0; e < 8; ++e) {
+      const int agree = ~(o ^ e) & 7;
+      int g[3] = {0, 0, 0};
+      for (int a = 0; a < 3; ++a) g[a] = ((agree >> a) & 1) ? sign(o, a) : 0;
+      out[static_cast<std::size_t>(o)][static_cast<std::size_t>(e)] = agree == 0 ? -1 : slot_of(g[0], g[1], g[2]);
+    }
+  return out;
+}
+constexpr std::array<std::array<int, 8>, 8> kChildCorner = make_child_corners();
+
+std::int64_t coord(const Point& p, int a) { return a == 0 ? p.x : a == 1 ? p.y : p.z; }
+Point offset(const Point& p, const int d[3], std::int64_t h) {
+  return {p.x + d[0] * h, p.y + d[1] * h, p.z + d[2] * h};
+}
+bool is_corner(int slot) { return rule(slot).nz == 7; }
 
 }  // namespace
 
-// ---- Construction and memory --------------------------------------------------
+// ---- Records and geometry (§9.2) --------------------------------------------------
 
-Lattice::Lattice(const d3::LatticeSize& size) : size_(size) {
-  d3::validate_lattice_size(size);
-  const std::int64_t S = d3::level0_side(size);
-  // The number of cubes and of grid nodes, each below 2^31 (records are named by 31-bit ids).
-  constexpr std::int64_t kLimit = std::int64_t{1} << 31;
-  auto product_below_limit = [](std::int64_t a, std::int64_t b, std::int64_t c) {
-    return a < kLimit && b < kLimit && c < kLimit && a * b < kLimit && a * b * c < kLimit;
+int Lattice::level(Index c) const { return size_.L - std::countr_zero(static_cast<std::uint64_t>(centers_[c].p.x)); }
+
+Point Lattice::node_position(Index n) const {
+  const Node& r = nodes_[n];
+  int t = 0;
+  while (r.cell[t] == kNone) ++t;  // a live node has a cell in some octant
+  const Index x = r.cell[t];
+  const Point& p = centers_[x].p;
+  const std::int64_t h = half_side(level(x));
+  // x covers octant t; where it also covers the octant across axis a, the
+  // node lies on x's middle plane of that axis, otherwise on its side -t_a.
+  std::int64_t q[3];
+  for (int a = 0; a < 3; ++a) q[a] = r.cell[t ^ (1 << a)] == x ? coord(p, a) : coord(p, a) - sign(t, a) * h;
+  return {q[0], q[1], q[2]};
+}
+
+int Lattice::center_tz(const Point& p) const {
+  if (p.x <= 0 || p.y <= 0 || p.z <= 0 || p.x >= extent_[0] || p.y >= extent_[1] || p.z >= extent_[2]) return -1;
+  const int t = std::countr_zero(static_cast<std::uint64_t>(p.x));
+  if (t != std::countr_zero(static_cast<std::uint64_t>(p.y)) ||
+      t != std::countr_zero(static_cast<std::uint64_t>(p.z)) || t > size_.L)
+    return -1;
+  return t;
+}
+
+// ---- Position table (§9.4) -------------------------------------------------------------
+
+std::size_t Lattice::home(const Point& p) const {
+  return home_at(p, std::countr_zero(static_cast<std::uint64_t>(p.x)));
+}
+
+std::size_t Lattice::home_at(const Point& p, int t) const {
+  // p: a center position, every coordinate an odd multiple of 2^t.
+  if (t >= size_.L) return table_.home_of_hash(mix(p));  // level 0: no parent
+  const std::int64_t s = std::int64_t{1} << (t + 2);     // the parent's side
+  const Point parent{(p.x & ~(s - 1)) | (s / 2), (p.y & ~(s - 1)) | (s / 2), (p.z & ~(s - 1)) | (s / 2)};
+  const std::size_t o = ((p.x & (s / 2)) ? 1u : 0u) | ((p.y & (s / 2)) ? 2u : 0u) | ((p.z & (s / 2)) ? 4u : 0u);
+  return table_.line_slot(table_.home_of_hash(mix(parent)), o);
+}
+
+std::size_t Lattice::ref_home(Index ref) const {
+  return home((ref & kNodeBit) ? node_position(ref & ~kNodeBit) : centers_[ref].p);
+}
+
+Index Lattice::find_ref(const Point& p, bool node) const {
+  const int t = center_tz(p);
+  if (t < 0) return kNone;
+  const auto home_of = [this](Index r) { return ref_home(r); };
+  if (node) {
+    const Index r = table_.find(
+        home_at(p, t), [&](Index q) { return (q & kNodeBit) && node_position(q & ~kNodeBit) == p; }, home_of);
+    return r == kNone ? kNone : r & ~kNodeBit;
+  }
+  return table_.find(
+      home_at(p, t), [&](Index q) { return !(q & kNodeBit) && centers_[q].p == p; }, home_of);
+}
+
+Index Lattice::find_refined(const Point& p) const { return find_ref(p, true); }
+
+void Lattice::table_insert(Index ref, std::size_t at) {
+  table_.insert(ref, at, [this](Index r) { return ref_home(r); });
+}
+
+void Lattice::table_erase(Index ref, std::size_t at) {
+  table_.erase(ref, at, [this](Index r) { return ref_home(r); });
+}
+
+void Lattice::rehash(std::size_t slots) {
+  PositionTable old;
+  old.reset(slots);  // may throw: nothing changed yet
+  std::swap(old, table_);
+  old.for_each([&](Index ref) { table_insert(ref, ref_home(ref)); });
+}
+
+// ---- Finding nodes from the geometry (§9.3) -----------------------------------------------
+
+Index Lattice::locate(const Point& p, int o) const {
+  const Point z{p.x + sign(o, 0), p.y + sign(o, 1), p.z + sign(o, 2)};
+  if (center_tz(z) < 0) return kNone;  // outside the domain
+  // p's coordinates are multiples of 2^m: p is a corner, edge midpoint or
+  // face center of a cube of level L - m or finer only, so a coarser leaf
+  // holds p inside (§9.3) and the search starts at level L - m.
+  const int m =
+      std::min({std::countr_zero(static_cast<std::uint64_t>(p.x)), std::countr_zero(static_cast<std::uint64_t>(p.y)),
+                std::countr_zero(static_cast<std::uint64_t>(p.z))});
+  const auto home_of = [this](Index r) { return ref_home(r); };
+  for (int l = std::max(0, size_.L - m); l <= size_.L; ++l) {
+    const std::int64_t s = cell_side(size_, l);
+    const Point q{(z.x / s) * s + s / 2, (z.y / s) * s + s / 2, (z.z / s) * s + s / 2};
+    const Index r = table_.find(
+        home_at(q, size_.L - l),
+        [&](Index x) { return (x & kNodeBit) ? node_position(x & ~kNodeBit) == q : centers_[x].p == q; }, home_of);
+    if (r == kNone) return kNone;   // inside a coarser leaf
+    if (!(r & kNodeBit)) return r;  // the leaf
+  }
+  return kNone;
+}
+
+Index Lattice::find_node(const Point& p) const {
+  if (p.x < 0 || p.y < 0 || p.z < 0 || p.x > extent_[0] || p.y > extent_[1] || p.z > extent_[2]) return kNone;
+  if ((p.x | p.y | p.z) & 1) return kNone;  // a node is a corner of a cube of level <= L
+  if (center_tz(p) >= 0) return find_refined(p);
+  int o = 0;  // an octant at p inside the domain
+  for (int a = 0; a < 3; ++a)
+    if (coord(p, a) < extent_[a]) o |= 1 << a;
+  const Index x = locate(p, o);
+  if (x == kNone) return kNone;
+  const Point& q = centers_[x].p;
+  const std::int64_t h = half_side(level(x));
+  int d[3];
+  for (int a = 0; a < 3; ++a) {
+    const std::int64_t diff = coord(p, a) - coord(q, a);
+    if (diff != 0 && diff != h && diff != -h) return kNone;
+    d[a] = diff == 0 ? 0 : diff > 0 ? 1 : -1;
+  }
+  if (d[0] == 0 && d[1] == 0 && d[2] == 0) return kNone;
+  return centers_[x].nbr[slot_of(d[0], d[1], d[2])];
+}
+
+// ---- Pools ------------------------------------------------------------------------------
+
+Index Lattice::alloc_center(const Point& p) {
+  Index c;
+  if (free_centers_ == kNone) {
+    centers_.emplace_back();
+    c = static_cast<Index>(centers_.size() - 1);
+  } else {
+    c = free_centers_;
+    free_centers_ = centers_[c].nbr[0];
+    --free_center_count_;
+  }
+  Center& r = centers_[c];
+  r.p = p;
+  std::fill(std::begin(r.nbr), std::end(r.nbr), kNone);
+  ++cell_count_;
+  return c;
+}
+
+Index Lattice::alloc_node() {
+  Index n;
+  if (free_nodes_ == kNone) {
+    nodes_.emplace_back();
+    n = static_cast<Index>(nodes_.size() - 1);
+  } else {
+    n = free_nodes_;
+    free_nodes_ = nodes_[n].cell[0];
+    --free_node_count_;
+  }
+  std::fill(std::begin(nodes_[n].cell), std::end(nodes_[n].cell), kNone);
+  ++node_count_;
+  return n;
+}
+
+void Lattice::free_center(Index c) {
+  Center& r = centers_[c];
+  r.nbr[25] = kFreeMark;
+  r.nbr[0] = free_centers_;
+  free_centers_ = c;
+  ++free_center_count_;
+  --cell_count_;
+}
+
+void Lattice::free_node(Index n) {
+  Node& r = nodes_[n];
+  std::fill(std::begin(r.cell), std::end(r.cell), kNone);
+  r.cell[7] = kFreeMark;
+  r.cell[0] = free_nodes_;
+  free_nodes_ = n;
+  ++free_node_count_;
+  --node_count_;
+}
+
+void Lattice::ensure_room(std::size_t new_centers, std::size_t new_nodes, std::size_t new_keys) {
+  auto grow = [](auto& pool, std::size_t free_count, std::size_t wanted) {
+    if (free_count + (pool.capacity() - pool.size()) >= wanted) return;
+    const std::size_t need = pool.size() + (wanted - free_count);
+    if (need > kMaxPool) throw std::length_error("d3::fast::Lattice: 2^26 or more vertices of one kind");
+    // Grow by half: amortized O(1), at most 1.5x the size in capacity.
+    pool.reserve(std::min(kMaxPool, std::max(need, pool.capacity() + pool.capacity() / 2)));
   };
-  if (!product_below_limit(size.W, size.H, size.D) || !product_below_limit(size.W + 1, size.H + 1, size.D + 1))
-    throw std::length_error("d3::fast::Lattice: the initial lattice needs 2^31 or more vertices of one kind");
-  const std::int64_t cubes = size.W * size.H * size.D;
-  reserve(static_cast<std::size_t>(cubes));
-  for (std::int64_t i = 0; i <= size.W; ++i)
-    for (std::int64_t j = 0; j <= size.H; ++j)
-      for (std::int64_t k = 0; k <= size.D; ++k) table_insert(alloc_node({i * S, j * S, k * S}) | kNodeBit);
-  for (std::int64_t i = 0; i < size.W; ++i)
-    for (std::int64_t j = 0; j < size.H; ++j)
-      for (std::int64_t k = 0; k < size.D; ++k) {
-        const Index c = alloc_center({i * S + S / 2, j * S + S / 2, k * S + S / 2}, 0);
-        table_insert(c);
-        for (std::int64_t di = 0; di <= 1; ++di)
-          for (std::int64_t dj = 0; dj <= 1; ++dj)
-            for (std::int64_t dk = 0; dk <= 1; ++dk) link(c, find_node({(i + di) * S, (j + dj) * S, (k + dk) * S}));
-      }
+  grow(centers_, free_center_count_, new_centers);
+  grow(nodes_, free_node_count_, new_nodes);
+  std::size_t slots = table_.slots();
+  while ((table_.used() + new_keys) * 5 > slots * 3) slots *= 2;
+  if (slots != table_.slots()) rehash(slots);
 }
 
 void Lattice::reserve(std::size_t cells) {
+  cells = std::min(cells, kMaxPool);
   centers_.reserve(cells);
-  nodes_.reserve(cells + cells / 2 + 64);
-  const std::size_t keys = centers_.capacity() + nodes_.capacity();
-  std::size_t slots = std::max<std::size_t>(table_.size(), 64);
-  while (slots * 7 < keys * 10) slots *= 2;
-  if (slots != table_.size()) rehash(slots);
-}
-
-Lattice Lattice::from_graph(const d3::Graph& g) {
-  Lattice lat(g.size);  // validates the size
-  lat.centers_.clear();
-  lat.nodes_.clear();
-  lat.free_centers_ = lat.free_nodes_ = kNone;
-  lat.free_center_count_ = lat.free_node_count_ = 0;
-  lat.cell_count_ = lat.node_count_ = 0;
-  std::fill(lat.table_.begin(), lat.table_.end(), kNone);
-  lat.table_used_ = 0;
-  if (g.C.size() >= kNodeBit || g.N.size() >= kNodeBit)
-    throw std::invalid_argument("d3::fast::Lattice::from_graph: 2^31 or more vertices of one kind");
-  lat.centers_.reserve(g.C.size());
-  lat.nodes_.reserve(g.N.size());
-  lat.ensure_room(g.C.size(), g.N.size());
-  for (const Point& n : g.N) {
-    if (g.nbr(n).size() > 8)
-      throw std::invalid_argument("d3::fast::Lattice::from_graph: node " + d3::to_string(n) +
-                                  " has more than 8 neighbors");
-    lat.table_insert(lat.alloc_node(n) | kNodeBit);
-  }
-  const std::int64_t S = d3::level0_side(g.size);
-  for (const Point& c : g.C) {
-    const auto lv = g.level.find(c);
-    // A level-l center has odd multiples of 2^(L-l) as coordinates, inside the domain.
-    const auto zeros = [](std::int64_t v) { return v > 0 ? std::countr_zero(static_cast<std::uint64_t>(v)) : -1; };
-    const int tz = zeros(c.x);
-    const bool inside = c.x < g.size.W * S && c.y < g.size.H * S && c.z < g.size.D * S;
-    if (lv == g.level.end() || !inside || tz < 0 || zeros(c.y) != tz || zeros(c.z) != tz ||
-        g.size.L - tz != lv->second || lv->second < 0)
-      throw std::invalid_argument("d3::fast::Lattice::from_graph: center " + d3::to_string(c) +
-                                  " has no level in 0..L that matches its position");
-    const d3::PointSet& B = g.nbr(c);
-    if (B.size() > 26)
-      throw std::invalid_argument("d3::fast::Lattice::from_graph: center " + d3::to_string(c) +
-                                  " has more than 26 neighbors");
-    const Index ci = lat.alloc_center(c, lv->second);
-    lat.table_insert(ci);
-    for (const Point& b : B) {
-      const Index ni = lat.find_node(b);
-      if (ni == kNone)
-        throw std::invalid_argument("d3::fast::Lattice::from_graph: neighbor " + d3::to_string(b) + " of center " +
-                                    d3::to_string(c) + " is not a node");
-      lat.link(ci, ni);
-    }
-  }
-  return lat;
-}
-
-std::size_t Lattice::refine_each(std::span<const Point> cells) {
-  constexpr std::size_t kAhead = 8;
-  std::size_t applied = 0;
-  for (std::size_t i = 0; i < cells.size(); ++i) {
-    if (i + kAhead < cells.size()) __builtin_prefetch(&table_[home(cells[i + kAhead])]);
-    applied += refine(cells[i]).applied();
-  }
-  return applied;
-}
-
-std::size_t Lattice::coarsen_each(std::span<const Point> nodes) {
-  constexpr std::size_t kAhead = 8;
-  std::size_t applied = 0;
-  for (std::size_t i = 0; i < nodes.size(); ++i) {
-    if (i + kAhead < nodes.size()) __builtin_prefetch(&table_[home(nodes[i + kAhead])]);
-    applied += coarsen(nodes[i]).applied();
-  }
-  return applied;
+  nodes_.reserve(std::min(kMaxPool, cells + cells / 4 + 64));
+  // The keys: the cells and the refined centers (about a seventh of them).
+  const std::size_t keys = cells + cells / 7 + 16;
+  std::size_t slots = std::max<std::size_t>(table_.slots(), 32);
+  while (keys * 5 > slots * 3) slots *= 2;
+  if (slots != table_.slots()) rehash(slots);
 }
 
 void reserve(Lattice& g, std::size_t cells) {
@@ -170,145 +379,118 @@ void reserve(Lattice& g, std::size_t cells) {
 }
 
 std::size_t Lattice::memory_bytes() const {
-  return centers_.capacity() * sizeof(Center) + nodes_.capacity() * sizeof(Node) + table_.capacity() * sizeof(Index);
+  return centers_.capacity() * sizeof(Center) + nodes_.capacity() * sizeof(Node) + table_.memory_bytes();
 }
 
-void Lattice::ensure_room(std::size_t new_centers, std::size_t new_nodes) {
-  auto grow = [](auto& pool, std::size_t free_count, std::size_t needed) {
-    if (free_count + (pool.capacity() - pool.size()) < needed)
-      pool.reserve(std::max(2 * pool.capacity(), pool.size() + needed));
+// ---- Construction ----------------------------------------------------------------------
+
+Lattice::Lattice(const d3::LatticeSize& size) : size_(size) {
+  d3::validate_lattice_size(size);
+  const std::int64_t S = d3::level0_side(size);
+  extent_[0] = size.W * S;
+  extent_[1] = size.H * S;
+  extent_[2] = size.D * S;
+  const auto limit = static_cast<std::int64_t>(kMaxPool);
+  auto product_below_limit = [&](std::int64_t a, std::int64_t b, std::int64_t c) {
+    return a <= limit && b <= limit && c <= limit && a * b <= limit && a * b * c <= limit;
   };
-  grow(centers_, free_center_count_, new_centers);
-  grow(nodes_, free_node_count_, new_nodes);
-  std::size_t slots = table_.size();
-  while ((table_used_ + new_centers + new_nodes) * 10 > slots * 7) slots *= 2;
-  if (slots != table_.size()) rehash(slots);
+  if (!product_below_limit(size.W, size.H, size.D) || !product_below_limit(size.W + 1, size.H + 1, size.D + 1))
+    throw std::length_error("d3::fast::Lattice: the initial lattice needs 2^26 or more vertices of one kind");
+  const std::int64_t W = size.W, H = size.H, D = size.D;
+  const auto cell_at = [&](std::int64_t i, std::int64_t j, std::int64_t k) -> Index {
+    if (i < 0 || j < 0 || k < 0 || i >= W || j >= H || k >= D) return kNone;
+    return static_cast<Index>((k * H + j) * W + i);
+  };
+  const auto node_at = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
+    return static_cast<Index>((k * (H + 1) + j) * (W + 1) + i);
+  };
+  centers_.resize(static_cast<std::size_t>(W * H * D));
+  nodes_.resize(static_cast<std::size_t>((W + 1) * (H + 1) * (D + 1)));
+  for (std::int64_t k = 0; k < D; ++k)
+    for (std::int64_t j = 0; j < H; ++j)
+      for (std::int64_t i = 0; i < W; ++i) {
+        Center& c = centers_[cell_at(i, j, k)];
+        c.p = {i * S + S / 2, j * S + S / 2, k * S + S / 2};
+        std::fill(std::begin(c.nbr), std::end(c.nbr), kNone);
+        for (int o = 0; o < 8; ++o) c.nbr[corner_slot(o)] = node_at(i + (o & 1), j + ((o >> 1) & 1), k + (o >> 2));
+      }
+  for (std::int64_t k = 0; k <= D; ++k)
+    for (std::int64_t j = 0; j <= H; ++j)
+      for (std::int64_t i = 0; i <= W; ++i)
+        for (int t = 0; t < 8; ++t)
+          nodes_[node_at(i, j, k)].cell[t] = cell_at(i - 1 + (t & 1), j - 1 + ((t >> 1) & 1), k - 1 + (t >> 2));
+  cell_count_ = centers_.size();
+  node_count_ = nodes_.size();
+  table_.reset(32);
+  ensure_room(0, 0, cell_count_);
+  for (Index c = 0; c < centers_.size(); ++c) table_insert(c, home(centers_[c].p));
 }
 
-Index Lattice::alloc_center(const Point& p, int level) {
-  Index c;
-  if (free_centers_ == kNone) {
-    if (centers_.size() >= kNodeBit) throw std::length_error("d3::fast::Lattice: 2^31 centers");
-    centers_.emplace_back();
-    c = static_cast<Index>(centers_.size() - 1);
-  } else {
-    c = free_centers_;
-    free_centers_ = centers_[c].nbr[0];
-    --free_center_count_;
-  }
-  Center& r = centers_[c];
-  r.p = p;
-  r.level = level;
-  r.count = 0;
-  ++cell_count_;
-  return c;
-}
-
-Index Lattice::alloc_node(const Point& p) {
-  Index n;
-  if (free_nodes_ == kNone) {
-    if (nodes_.size() >= kNodeBit) throw std::length_error("d3::fast::Lattice: 2^31 nodes");
-    nodes_.emplace_back();
-    n = static_cast<Index>(nodes_.size() - 1);
-  } else {
-    n = free_nodes_;
-    free_nodes_ = nodes_[n].nbr[0];
-    --free_node_count_;
-  }
-  Node& r = nodes_[n];
-  r.p = p;
-  r.count = 0;
-  ++node_count_;
-  return n;
-}
-
-void Lattice::free_center(Index c) {
-  Center& r = centers_[c];
-  r.level = -1;
-  r.count = 0;
-  r.nbr[0] = free_centers_;
-  free_centers_ = c;
-  ++free_center_count_;
-  --cell_count_;
-}
-
-void Lattice::free_node(Index n) {
-  Node& r = nodes_[n];
-  r.count = kFree;
-  r.nbr[0] = free_nodes_;
-  free_nodes_ = n;
-  ++free_node_count_;
-  --node_count_;
-}
-
-void Lattice::add_id(Index* ids, std::uint32_t& count, std::uint32_t capacity, Index id) {
-  if (count >= capacity)
-    throw std::logic_error("d3::fast::Lattice: a neighbor list overflows; the lattice is not valid");
-  ids[count++] = id;
-}
-
-void Lattice::remove_id(Index* ids, std::uint32_t& count, Index id) {
-  for (std::uint32_t i = 0; i < count; ++i)
-    if (ids[i] == id) {
-      ids[i] = ids[--count];
-      return;
+Lattice Lattice::from_graph(const d3::Graph& g) {
+  d3::validate_lattice_size(g.size);
+  Lattice lat;
+  lat.size_ = g.size;
+  const std::int64_t S = d3::level0_side(g.size);
+  lat.extent_[0] = g.size.W * S;
+  lat.extent_[1] = g.size.H * S;
+  lat.extent_[2] = g.size.D * S;
+  if (g.C.size() > kMaxPool || g.N.size() > kMaxPool)
+    throw std::invalid_argument("d3::fast::Lattice::from_graph: 2^26 or more vertices of one kind");
+  const auto fail = [](const std::string& what) {
+    throw std::invalid_argument("d3::fast::Lattice::from_graph: " + what);
+  };
+  std::map<Point, Index> node_id;
+  lat.nodes_.reserve(g.N.size());
+  for (const Point& n : g.N) node_id.emplace(n, lat.alloc_node());
+  lat.centers_.reserve(g.C.size());
+  for (const Point& c : g.C) {
+    const auto lv = g.level.find(c);
+    const int t = lat.center_tz(c);
+    if (lv == g.level.end() || t < 0 || g.size.L - t != lv->second)
+      fail("center " + d3::to_string(c) + " has no level in 0..L that matches its position");
+    const Index ci = lat.alloc_center(c);
+    const std::int64_t h = lat.half_side(lv->second);
+    for (const Point& b : g.nbr(c)) {
+      const auto id = node_id.find(b);
+      int d[3];
+      bool on_boundary = id != node_id.end();
+      for (int a = 0; a < 3 && on_boundary; ++a) {
+        const std::int64_t diff = coord(b, a) - coord(c, a);
+        on_boundary = diff == 0 || diff == h || diff == -h;
+        d[a] = diff == 0 ? 0 : diff > 0 ? 1 : -1;
+      }
+      if (!on_boundary || (d[0] == 0 && d[1] == 0 && d[2] == 0))
+        fail("neighbor " + d3::to_string(b) + " of center " + d3::to_string(c) +
+             " is not a node at a corner, edge midpoint or face center of it");
+      const int k = slot_of(d[0], d[1], d[2]);
+      lat.centers_[ci].nbr[k] = id->second;
+      Node& rn = lat.nodes_[id->second];
+      for (int i = 0; i < rule(k).inside_count; ++i) {
+        const int octant = rule(k).inside_octant[i];
+        if (rn.cell[octant] != kNone) fail("two cells cover one octant of node " + d3::to_string(b));
+        rn.cell[octant] = ci;
+      }
     }
-}
-
-void Lattice::link(Index center, Index node) {
-  Center& c = centers_[center];
-  Node& n = nodes_[node];
-  add_id(c.nbr, c.count, 26, node);
-  add_id(n.nbr, n.count, 8, center);
-}
-
-// ---- Position table -------------------------------------------------------------
-
-std::size_t Lattice::home(const Point& p) const { return static_cast<std::size_t>(mix(p)) & (table_.size() - 1); }
-
-std::size_t Lattice::slot_of(const Point& p) const {
-  const std::size_t mask = table_.size() - 1;
-  for (std::size_t s = home(p);; s = (s + 1) & mask)
-    if (table_[s] == kNone || key_of(table_[s]) == p) return s;
-}
-
-void Lattice::table_insert(Index ref) {
-  const std::size_t mask = table_.size() - 1;
-  std::size_t s = home(key_of(ref));
-  while (table_[s] != kNone) s = (s + 1) & mask;
-  table_[s] = ref;
-  ++table_used_;
-}
-
-void Lattice::table_replace(const Point& p, Index ref) { table_[slot_of(p)] = ref; }
-
-void Lattice::table_erase(const Point& p) {
-  // Linear probing's deletion by backward shift: an entry after the hole
-  // moves into it unless its home lies cyclically in (hole, entry].
-  const std::size_t mask = table_.size() - 1;
-  std::size_t hole = slot_of(p);
-  if (table_[hole] == kNone) return;
-  for (std::size_t s = (hole + 1) & mask; table_[s] != kNone; s = (s + 1) & mask) {
-    const std::size_t h = home(key_of(table_[s]));
-    const bool stays = hole <= s ? (hole < h && h <= s) : (hole < h || h <= s);
-    if (!stays) {
-      table_[hole] = table_[s];
-      hole = s;
-    }
+    for (int o = 0; o < 8; ++o)
+      if (lat.centers_[ci].nbr[corner_slot(o)] == kNone) fail("center " + d3::to_string(c) + " lacks a corner");
   }
-  table_[hole] = kNone;
-  --table_used_;
+  for (const auto& [n, id] : node_id) {
+    const Node& rn = lat.nodes_[id];
+    if (std::all_of(std::begin(rn.cell), std::end(rn.cell), [](Index x) { return x == kNone; }))
+      fail("node " + d3::to_string(n) + " has no cell");
+    if (lat.node_position(id) != n) fail("node " + d3::to_string(n) + " is not where its cells put it");
+  }
+  lat.table_.reset(32);
+  std::size_t keys = g.C.size();
+  for (const auto& entry : node_id) keys += lat.center_tz(entry.first) >= 0;
+  lat.ensure_room(0, 0, keys);
+  for (Index c = 0; c < lat.centers_.size(); ++c) lat.table_insert(c, lat.home(lat.centers_[c].p));
+  for (const auto& [n, id] : node_id)
+    if (lat.center_tz(n) >= 0) lat.table_insert(id | kNodeBit, lat.home(n));
+  return lat;
 }
 
-void Lattice::rehash(std::size_t slots) {
-  std::vector<Index> old(slots, kNone);
-  old.swap(table_);
-  table_used_ = 0;
-  for (const Index ref : old)
-    if (ref != kNone) table_insert(ref);
-}
-
-// ---- Queries -----------------------------------------------------------------------
+// ---- Queries ------------------------------------------------------------------------------
 
 bool Lattice::is_center(const Point& v) const { return find_center(v) != kNone; }
 bool Lattice::is_node(const Point& v) const { return find_node(v) != kNone; }
@@ -316,22 +498,57 @@ bool Lattice::is_node(const Point& v) const { return find_node(v) != kNone; }
 int Lattice::level_of(const Point& c) const {
   const Index ci = find_center(c);
   if (ci == kNone) throw std::out_of_range("d3::fast::Lattice::level_of: " + d3::to_string(c) + " is not a center");
-  return centers_[ci].level;
+  return level(ci);
+}
+
+SmallPoints<8> Lattice::node_cells(Index n) const {
+  SmallPoints<8> out;
+  const Node& r = nodes_[n];
+  for (int t = 0; t < 8; ++t) {
+    const Index x = r.cell[t];
+    if (x == kNone) continue;
+    bool seen = false;
+    for (int s = 0; s < t; ++s) seen = seen || r.cell[s] == x;
+    if (!seen) out.push_back(centers_[x].p);
+  }
+  out.sort();
+  return out;
 }
 
 SmallPoints<26> Lattice::nbr(const Point& v) const {
   SmallPoints<26> out;
-  const Index r = find(v);
-  if (r == kNone) return out;
-  if (r & kNodeBit) {
-    const Node& n = nodes_[r & ~kNodeBit];
-    for (std::uint32_t i = 0; i < n.count; ++i) out.push_back(centers_[n.nbr[i]].p);
-  } else {
-    const Center& c = centers_[r];
-    for (std::uint32_t i = 0; i < c.count; ++i) out.push_back(nodes_[c.nbr[i]].p);
+  if (const Index c = find_center(v); c != kNone) {
+    const Center& r = centers_[c];
+    const std::int64_t h = half_side(level(c));
+    for (const int k : kSortedSlots)
+      if (r.nbr[k] != kNone) out.push_back(offset(r.p, rule(k).d, h));
+    return out;
   }
-  out.sort();
+  if (const Index n = find_node(v); n != kNone)
+    for (const Point& p : node_cells(n)) out.push_back(p);
   return out;
+}
+
+Lattice::Boundary Lattice::boundary(const Point& u) const {
+  const Index c = find_center(u);
+  if (c == kNone) throw std::out_of_range("d3::fast::Lattice::boundary: " + d3::to_string(u) + " is not a center");
+  Boundary b;
+  b.u_ = u;
+  b.h_ = half_side(level(c));
+  for (int k = 0; k < 26; ++k)
+    if (centers_[c].nbr[k] != kNone) b.slots_ |= 1u << k;
+  return b;
+}
+
+bool Lattice::Boundary::contains(const Point& p) const {
+  const std::int64_t diff[3] = {p.x - u_.x, p.y - u_.y, p.z - u_.z};
+  int g = 0, scale = 1;
+  for (const std::int64_t v : diff) {
+    if (v != 0 && v != h_ && v != -h_) return false;
+    g += (v == 0 ? 1 : v > 0 ? 2 : 0) * scale;
+    scale *= 3;
+  }
+  return g != 13 && ((slots_ >> slot_of_grid(g)) & 1u);
 }
 
 std::vector<Index> Lattice::sorted_centers() const {
@@ -343,13 +560,13 @@ std::vector<Index> Lattice::sorted_centers() const {
   return ids;
 }
 
-std::vector<Index> Lattice::sorted_nodes() const {
-  std::vector<Index> ids;
-  ids.reserve(node_count_);
+std::vector<std::pair<Point, Index>> Lattice::sorted_nodes() const {
+  std::vector<std::pair<Point, Index>> out;
+  out.reserve(node_count_);
   for (Index i = 0; i < nodes_.size(); ++i)
-    if (nodes_[i].live()) ids.push_back(i);
-  std::sort(ids.begin(), ids.end(), [&](Index a, Index b) { return nodes_[a].p < nodes_[b].p; });
-  return ids;
+    if (nodes_[i].live()) out.emplace_back(node_position(i), i);
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 std::vector<Point> Lattice::cells() const {
@@ -362,62 +579,81 @@ std::vector<Point> Lattice::cells() const {
 std::vector<Point> Lattice::nodes() const {
   std::vector<Point> out;
   out.reserve(node_count_);
-  for (const Index i : sorted_nodes()) out.push_back(nodes_[i].p);
+  for (const auto& entry : sorted_nodes()) out.push_back(entry.first);
   return out;
 }
 
 d3::Graph Lattice::to_graph() const {
   d3::Graph g;
   g.size = size_;
-  for (const Center& c : centers_) {
-    if (!c.live()) continue;
-    g.C.insert(c.p);
-    g.level[c.p] = c.level;
-    d3::PointSet& s = g.neighbors[c.p];
-    for (std::uint32_t i = 0; i < c.count; ++i) s.insert(nodes_[c.nbr[i]].p);
+  for (Index c = 0; c < centers_.size(); ++c) {
+    if (!centers_[c].live()) continue;
+    const Point& p = centers_[c].p;
+    g.C.insert(p);
+    g.level[p] = level(c);
+    d3::PointSet& s = g.neighbors[p];
+    for (const Point& b : nbr(p)) s.insert(b);
   }
-  for (const Node& n : nodes_) {
-    if (!n.live()) continue;
-    g.N.insert(n.p);
-    d3::PointSet& s = g.neighbors[n.p];
-    for (std::uint32_t i = 0; i < n.count; ++i) s.insert(centers_[n.nbr[i]].p);
+  for (const auto& [p, n] : sorted_nodes()) {
+    g.N.insert(p);
+    d3::PointSet& s = g.neighbors[p];
+    for (const Point& x : node_cells(n)) s.insert(x);
   }
   return g;
 }
 
 std::optional<std::string> Lattice::audit() const {
-  std::size_t live_cells = 0, live_nodes = 0;
+  std::size_t live_cells = 0, live_nodes = 0, refined = 0;
   for (Index i = 0; i < centers_.size(); ++i) {
     const Center& c = centers_[i];
     if (!c.live()) continue;
     ++live_cells;
-    if (find(c.p) != i) return "center " + d3::to_string(c.p) + " is not in the position table";
-    for (std::uint32_t k = 0; k < c.count; ++k) {
-      const Node& n = nodes_[c.nbr[k]];
-      if (!n.live()) return "center " + d3::to_string(c.p) + " lists a free node record";
-      if (std::find(n.nbr, n.nbr + n.count, i) == n.nbr + n.count)
-        return "center " + d3::to_string(c.p) + " lists node " + d3::to_string(n.p) + ", which does not list it";
-      if (std::find(c.nbr, c.nbr + k, c.nbr[k]) != c.nbr + k) return "center " + d3::to_string(c.p) + ": a repeat";
+    const std::string name = "center " + d3::to_string(c.p);
+    if (center_tz(c.p) < 0) return name + " is not at a center position";
+    if (find_center(c.p) != i) return name + " is not in the position table";
+    for (int k = 0; k < 26; ++k) {
+      const Index n = c.nbr[k];
+      if (n == kNone) {
+        if (is_corner(k)) return name + " lacks a corner";
+        continue;
+      }
+      if (n >= nodes_.size() || !nodes_[n].live()) return name + " names a free node record";
+      bool mirrored = true;
+      for (int j = 0; j < rule(k).inside_count; ++j)
+        mirrored = mirrored && nodes_[n].cell[rule(k).inside_octant[j]] == i;
+      if (!mirrored) return name + ": its node in slot " + std::to_string(k) + " does not list it in every octant";
     }
   }
   for (Index i = 0; i < nodes_.size(); ++i) {
     const Node& n = nodes_[i];
     if (!n.live()) continue;
     ++live_nodes;
-    if (find(n.p) != (i | kNodeBit)) return "node " + d3::to_string(n.p) + " is not in the position table";
-    for (std::uint32_t k = 0; k < n.count; ++k) {
-      const Center& c = centers_[n.nbr[k]];
-      if (!c.live()) return "node " + d3::to_string(n.p) + " lists a free center record";
-      if (std::find(c.nbr, c.nbr + c.count, i) == c.nbr + c.count)
-        return "node " + d3::to_string(n.p) + " lists center " + d3::to_string(c.p) + ", which does not list it";
-      if (std::find(n.nbr, n.nbr + k, n.nbr[k]) != n.nbr + k) return "node " + d3::to_string(n.p) + ": a repeat";
+    const Point p = node_position(i);
+    for (int t = 0; t < 8; ++t) {
+      const Index x = n.cell[t];
+      if (x == kNone) continue;
+      if (x >= centers_.size() || !centers_[x].live()) return "node " + d3::to_string(p) + " names a free center";
+      const std::int64_t h = half_side(level(x));
+      int d[3];
+      for (int a = 0; a < 3; ++a) {
+        const std::int64_t diff = coord(p, a) - coord(centers_[x].p, a);
+        if (diff != 0 && diff != h && diff != -h) return "node " + d3::to_string(p) + " is not on a cell it lists";
+        d[a] = diff == 0 ? 0 : diff > 0 ? 1 : -1;
+      }
+      if (centers_[x].nbr[slot_of(d[0], d[1], d[2])] != i)
+        return "node " + d3::to_string(p) + " lists center " + d3::to_string(centers_[x].p) +
+               ", which does not list it";
+    }
+    if (center_tz(p) >= 0) {
+      ++refined;
+      if (find_refined(p) != i) return "refined center " + d3::to_string(p) + " is not in the position table";
     }
   }
   if (live_cells != cell_count_ || live_nodes != node_count_) return std::string("the vertex counts do not add up");
-  if (table_used_ != live_cells + live_nodes) return std::string("the position table holds other entries");
+  if (table_.used() != live_cells + refined) return std::string("the position table holds other entries");
   std::size_t free_centers = 0, free_nodes = 0;
   for (Index i = free_centers_; i != kNone; i = centers_[i].nbr[0]) ++free_centers;
-  for (Index i = free_nodes_; i != kNone; i = nodes_[i].nbr[0]) ++free_nodes;
+  for (Index i = free_nodes_; i != kNone; i = nodes_[i].cell[0]) ++free_nodes;
   if (free_centers != free_center_count_ || live_cells + free_centers != centers_.size() ||
       free_nodes != free_node_count_ || live_nodes + free_nodes != nodes_.size())
     return std::string("the free lists do not add up");
@@ -437,28 +673,28 @@ void Lattice::write_canonical_state(std::ostream& out) const {
   w.put(' ');
   w.put_int(size_.L);
   w.put('\n');
-  std::array<Point, 26> around{};
-  auto neighbors = [&](std::size_t count) {
-    std::sort(around.begin(), around.begin() + static_cast<std::ptrdiff_t>(count));
-    w.put(" :");
-    for (std::size_t i = 0; i < count; ++i) w.put_point(around[i].x, around[i].y, around[i].z);
-    w.put('\n');
-  };
   for (const Index i : sorted_centers()) {
     const Center& c = centers_[i];
+    const int l = level(i);
+    const std::int64_t h = half_side(l);
     w.put('C');
     w.put_point(c.p.x, c.p.y, c.p.z);
     w.put(' ');
-    w.put_int(c.level);
-    for (std::uint32_t k = 0; k < c.count; ++k) around[k] = nodes_[c.nbr[k]].p;
-    neighbors(c.count);
+    w.put_int(l);
+    w.put(" :");
+    for (const int k : kSortedSlots)
+      if (c.nbr[k] != kNone) {
+        const Point b = offset(c.p, rule(k).d, h);
+        w.put_point(b.x, b.y, b.z);
+      }
+    w.put('\n');
   }
-  for (const Index i : sorted_nodes()) {
-    const Node& n = nodes_[i];
+  for (const auto& [p, n] : sorted_nodes()) {
     w.put('N');
-    w.put_point(n.p.x, n.p.y, n.p.z);
-    for (std::uint32_t k = 0; k < n.count; ++k) around[k] = centers_[n.nbr[k]].p;
-    neighbors(n.count);
+    w.put_point(p.x, p.y, p.z);
+    w.put(" :");
+    for (const Point& x : node_cells(n)) w.put_point(x.x, x.y, x.z);
+    w.put('\n');
   }
   w.put("end ");
   w.put_int(static_cast<std::int64_t>(cell_count_));
@@ -470,59 +706,52 @@ void Lattice::write_canonical_state(std::ostream& out) const {
 
 std::string canonical_state(const Lattice& g) { return canonical_text(g); }
 
-// ---- Preconditions -------------------------------------------------------------------
-
-std::optional<int> Lattice::refined_center_level(const Point& p) const {
-  const std::int64_t S = d3::level0_side(size_);
-  if (p.x <= 0 || p.y <= 0 || p.z <= 0 || p.x >= size_.W * S || p.y >= size_.H * S || p.z >= size_.D * S)
-    return std::nullopt;
-  const int tx = std::countr_zero(static_cast<std::uint64_t>(p.x));
-  const int ty = std::countr_zero(static_cast<std::uint64_t>(p.y));
-  const int tz = std::countr_zero(static_cast<std::uint64_t>(p.z));
-  if (tx != ty || tx != tz) return std::nullopt;
-  const int l = size_.L - tx;
-  if (l < 0 || l >= size_.L) return std::nullopt;
-  return l;
-}
+// ---- Preconditions (§9.5, §9.6) -------------------------------------------------------------
 
 std::optional<RefineRefusal> Lattice::refine_refusal(const Point& c, Index& ci) const {
   // spec/lattice3d.md §4 preconditions, in the reference's order.
   ci = find_center(c);
   if (ci == kNone) return RefineRefusal::NoSuchCell;
+  const int l = level(ci);
+  if (l >= size_.L) return RefineRefusal::MaxLevel;
+  // R1d, §9.5: a coarser cell of X shares a face or an edge of c, so it
+  // covers, at a corner of that face or edge, the octant across it: the
+  // octant t = (d's outward bits on nz(d)) | (+ on the other axes) of the
+  // corner with d's signs on nz(d) and - elsewhere. 6 faces + 12 edges.
   const Center& rc = centers_[ci];
-  if (rc.level >= size_.L) return RefineRefusal::MaxLevel;
-  // R1d: X = (union over b_i != b_j in B of N(b_i) ∩ N(b_j)) \ {c}, that is
-  // the cells other than c that have at least two of c's nodes. Every x in X
-  // must be at least as fine as c, so only the coarser cells around c are
-  // counted: c is refused when one of them has two of c's nodes.
-  std::array<Index, 26 * 8> coarser{};
-  std::size_t n = 0;
-  for (std::uint32_t i = 0; i < rc.count; ++i) {
-    const Node& b = nodes_[rc.nbr[i]];
-    for (std::uint32_t k = 0; k < b.count; ++k) {
-      const Index x = b.nbr[k];
-      if (x == ci || centers_[x].level >= rc.level) continue;
-      const auto end = coarser.begin() + static_cast<std::ptrdiff_t>(n);
-      if (std::find(coarser.begin(), end, x) != end) return RefineRefusal::CoarserNeighbor;  // x in X
-      coarser[n++] = x;
-    }
+  const std::int64_t coarse_mask = 2 * half_side(l) - 1;  // a coarser center's coordinates are multiples of 2h
+  for (const int k : kSortedMidpoints) {
+    const Index x = nodes_[rc.nbr[rule(k).corner]].cell[rule(k).across];
+    if (x != kNone && (centers_[x].p.x & coarse_mask) == 0) return RefineRefusal::CoarserNeighbor;
   }
   return std::nullopt;
 }
 
 std::optional<CoarsenRefusal> Lattice::coarsen_refusal(const Point& n, Index& ni, int& l) const {
   // spec/lattice3d.md §5 preconditions, in the reference's order.
-  ni = find_node(n);
-  if (ni == kNone) return CoarsenRefusal::NoSuchNode;
-  const std::optional<int> level = refined_center_level(n);
-  if (!level) return CoarsenRefusal::NotARefinedCenter;
-  l = *level;
+  const int t = center_tz(n);
+  ni = t >= 0 ? find_refined(n) : kNone;
+  if (ni == kNone) return find_node(n) != kNone ? CoarsenRefusal::NotARefinedCenter : CoarsenRefusal::NoSuchNode;
+  l = size_.L - t;
+  if (l >= size_.L) return CoarsenRefusal::NotARefinedCenter;
   const Node& rn = nodes_[ni];
-  if (rn.count != 8) return CoarsenRefusal::NotARefinedCenter;
-  for (std::uint32_t i = 0; i < 8; ++i)
-    if (centers_[rn.nbr[i]].level != l + 1) return CoarsenRefusal::ChildrenRefined;
-  for (std::uint32_t i = 0; i < 8; ++i)
-    if (centers_[rn.nbr[i]].count != 8) return CoarsenRefusal::FinerNeighbor;
+  // |N(n)| = 8: eight distinct cells. Eight cells of level l + 1 around n
+  // are distinct (n is a corner of each), so the pairs are compared only
+  // when a level differs.
+  for (int o = 0; o < 8; ++o)
+    if (rn.cell[o] == kNone) return CoarsenRefusal::NotARefinedCenter;
+  for (int o = 0; o < 8; ++o)
+    if (level(rn.cell[o]) != l + 1) {
+      for (int a = 0; a < 8; ++a)
+        for (int b = 0; b < a; ++b)
+          if (rn.cell[a] == rn.cell[b]) return CoarsenRefusal::NotARefinedCenter;
+      return CoarsenRefusal::ChildrenRefined;
+    }
+  for (int o = 0; o < 8; ++o) {  // |N(y)| = 8: no node but the corners
+    const Center& y = centers_[rn.cell[o]];
+    for (const int k : kSortedMidpoints)
+      if (y.nbr[k] != kNone) return CoarsenRefusal::FinerNeighbor;
+  }
   return std::nullopt;
 }
 
@@ -537,166 +766,77 @@ std::optional<CoarsenRefusal> Lattice::can_coarsen(const Point& n) const {
   return coarsen_refusal(n, ni, l);
 }
 
-// ---- Refine ----------------------------------------------------------------------------
+// ---- Refine (§4 as §9.5) -------------------------------------------------------------------
 
 RefineResult Lattice::refine(const Point& c) {
   RefineResult result;
   Index ci;
   result.refused = refine_refusal(c, ci);
   if (result.refused) return result;
-  // Room for the 8 children, c as a node and at most 18 new nodes.
-  ensure_room(8, 19);
+  std::size_t new_nodes = 1;  // c, and a node on each edge and face that has none
+  for (const int k : kSortedMidpoints) new_nodes += centers_[ci].nbr[k] == kNone;
+  ensure_room(8, new_nodes, 8);  // c's table entry is renamed, the 8 children added
 
-  const int l = centers_[ci].level;
-  const std::int64_t half = d3::cell_side(size_, l) / 2;
+  const int l = level(ci);
+  const std::int64_t h = half_side(l);
+  const std::size_t base = table_.home_of_hash(mix(c));  // the children's table line
+  table_.prefetch(table_.line_slot(base, 0));
 
-  // 1. The neighborhood of c (R1a-R1c): B = N(c), J the junctions of B, P = B \ J.
-  Ids<26> J;
-  std::array<Point, 8> p{};  // p_1..p_8, the corners, sorted by position
-  std::array<Index, 8> pid{};
-  {
-    std::size_t i = 0;
-    for (std::int64_t dx : {-half, half})
-      for (std::int64_t dy : {-half, half})
-        for (std::int64_t dz : {-half, half}) p[i++] = {c.x + dx, c.y + dy, c.z + dz};
-  }
-  std::size_t corners = 0;
-  const Center& rc = centers_[ci];
-  for (std::uint32_t k = 0; k < rc.count; ++k) {
-    const Index b = rc.nbr[k];
-    if (is_junction_cardinality(nodes_[b].count)) {
-      J.push(b);
-      continue;
-    }
-    const auto at = std::find(p.begin(), p.end(), nodes_[b].p);
-    if (at == p.end()) {
-      corners = 9;  // a pure node that is not a corner
-      break;
-    }
-    pid[static_cast<std::size_t>(at - p.begin())] = b;
-    ++corners;
-  }
-  // claim-P-has-8: P is exactly the 8 corners of c.
-  if (corners != 8)
-    throw std::logic_error(
-        "refine: P is not the 8 corners of c although no face or edge neighbour is "
-        "coarser; the graph is not a valid lattice");
-
-  // The edges and faces of c (choice Q2) with their midpoints m; an old
-  // junction at m (step 4), or the cells around m other than c (R1e, R1f)
-  // that the new node at m (step 3) joins.
-  struct Mid {
-    Point m;
-    Index old = kNone;  // the junction at m, if any
-    Ids<8> X;           // X_e or X_f
-  };
-  const std::array<d3::CubeEdge, 12> cube_edges = d3::cube_edges(p);
-  const std::array<d3::CubeFace, 6> cube_faces = d3::cube_faces(p);
-  std::array<Mid, 12> edges{};
-  std::array<Mid, 6> faces{};
-  std::size_t old_junctions = 0;
-  auto junction_at = [&](const Point& m) {
-    for (const Index j : J)
-      if (nodes_[j].p == m) return j;
-    return kNone;
-  };
-  // The cells other than c around every corner in `ids` (the intersection of
-  // their N(p_i), minus c).
-  auto common_cells = [&](Mid& mid, std::initializer_list<std::size_t> ids) {
-    const Node& first = nodes_[pid[*ids.begin()]];
-    for (std::uint32_t k = 0; k < first.count; ++k) {
-      const Index x = first.nbr[k];
-      if (x == ci) continue;
-      bool everywhere = true;
-      for (const std::size_t i : ids) {
-        const Node& other = nodes_[pid[i]];
-        everywhere = everywhere && std::find(other.nbr, other.nbr + other.count, x) != other.nbr + other.count;
-      }
-      if (everywhere) mid.X.push(x);
-    }
-  };
-  for (std::size_t e = 0; e < 12; ++e) {
-    Mid& mid = edges[e];
-    mid.m = d3::midpoint(p[cube_edges[e].i], p[cube_edges[e].j]);
-    mid.old = junction_at(mid.m);
-    if (mid.old != kNone) {
-      ++old_junctions;
-      continue;
-    }
-    // R1e: X_e = (N(p_i) ∩ N(p_j)) \ {c}.
-    common_cells(mid, {cube_edges[e].i, cube_edges[e].j});
-  }
-  for (std::size_t f = 0; f < 6; ++f) {
-    Mid& mid = faces[f];
-    const auto& q = cube_faces[f].corners;
-    mid.m = d3::midpoint(p[q[0]], p[q[3]]);  // opposite corners of the face
-    mid.old = junction_at(mid.m);
-    if (mid.old != kNone) {
-      ++old_junctions;
-      continue;
-    }
-    // R1f: X_f = (N(p_i) ∩ N(p_j) ∩ N(p_k) ∩ N(p_m)) \ {c}.
-    common_cells(mid, {q[0], q[1], q[2], q[3]});
-  }
-  // claim-J-on-edges-and-faces: every junction is an edge midpoint or a face center of c.
-  if (old_junctions != J.n)
-    throw std::logic_error(
-        "refine: a junction of c is not an edge midpoint or face center of c; "
-        "the graph is not a valid lattice");
-
-  // 2. Subdivide c (R2a-R2h). y_i, centred halfway between c and p_i
-  //    (choice Q1), is the child that holds corner p_i; Y is sorted as p.
-  std::array<Index, 8> y{};
-  for (std::size_t i = 0; i < 8; ++i) {
-    // R2a, R2b: Y = {y_1, ..., y_8}, C = C ∪ Y.
-    y[i] = alloc_center(d3::midpoint(c, p[i]), l + 1);
-    result.Y.push_back(centers_[y[i]].p);
-  }
-  // R2h: N = N ∪ {c}; R2c: N(c) = Y.
-  const Index cn = alloc_node(c);
-  // R2d: N(j) = N(j) \ {c} for all j in J.
-  for (const Index j : J) remove_id(nodes_[j].nbr, nodes_[j].count, ci);
-  for (std::size_t i = 0; i < 8; ++i) {
-    // R2e: N(p_i) = (N(p_i) ∪ {y_i}) \ {c}.
-    remove_id(nodes_[pid[i]].nbr, nodes_[pid[i]].count, ci);
-    // R2f: N(y_i) = {p_i, c}.
-    link(y[i], pid[i]);
-    link(y[i], cn);
-  }
-  // R2g: C = C \ {c}; c is named by its node record from now on.
-  table_replace(c, cn | kNodeBit);
+  // R1a-R1c: B = N(c) by slot: the corners P, the old junctions J (the
+  // edge and face slots that hold a node).
+  Index G[26];
+  std::copy(std::begin(centers_[ci].nbr), std::end(centers_[ci].nbr), G);
+  // R2g, R2h: c leaves C and joins N, under the same table entry.
+  const Index cn = alloc_node();
+  table_.replace(ci, home(c), cn | kNodeBit);
   free_center(ci);
-  for (const Index yi : y) table_insert(yi);
+  // R2a, R2b: Y = {y_o}, y_o centred at c + s_o h/2 (choice Q1).
+  Index y[8];
+  for (int o = 0; o < 8; ++o)
+    y[o] = alloc_center({c.x + sign(o, 0) * h / 2, c.y + sign(o, 1) * h / 2, c.z + sign(o, 2) * h / 2});
+  for (const int o : kSortedOctants) result.Y.push_back(centers_[y[o]].p);
 
-  // 3. New nodes on the edges and faces of c that had none (R3a-R3h), and
-  // 4. old junctions join the children beside them (R4a, R4b; choice Q3).
-  Ids<18> J_plus;
-  auto join = [&](const Mid& mid, std::initializer_list<std::size_t> ids) {
-    if (mid.old != kNone) {
-      // R4a: N(j) ∪= {y_i : p_i in e}; R4b: N(y_i) ∪= {j}.
-      for (const std::size_t i : ids) link(y[i], mid.old);
-      return;
+  // R3a-R3h: a new node j+ on each edge and face of c without one. The
+  // cells around it outside c (X_e, X_f) are read at the corner with d's
+  // signs on nz(d) and - elsewhere; each gets j+ in its slot toward it.
+  for (const int k : kSortedMidpoints) {
+    if (G[k] != kNone) continue;
+    const SlotRule& r = rule(k);
+    const Index jp = alloc_node();
+    G[k] = jp;
+    result.J_plus.push_back(offset(c, r.d, h));
+    const Node& corner = nodes_[G[r.corner]];
+    Node& rj = nodes_[jp];
+    for (int i = 0; i < r.outside_count; ++i) {
+      const Index x = corner.cell[r.outside_at_corner[i]];
+      rj.cell[r.outside_octant[i]] = x;                           // R3d, R3g: X ⊆ N(j+)
+      if (x != kNone) centers_[x].nbr[r.outside_toward[i]] = jp;  // R3c, R3f
     }
-    // R3a, R3b: J+ gets m, N = N ∪ J+.
-    const Index jp = alloc_node(mid.m);
-    table_insert(jp | kNodeBit);
-    J_plus.push(jp);
-    // R3c / R3f: N(x) ∪= {j+} for x in X_e (X_f); R3d / R3g: N(j+) = X ∪ {y_i ...}.
-    for (const Index x : mid.X) link(x, jp);
-    // R3e / R3h: N(y) ∪= {j+} for the children of the edge (face).
-    for (const std::size_t i : ids) link(y[i], jp);
-  };
-  for (std::size_t e = 0; e < 12; ++e) join(edges[e], {cube_edges[e].i, cube_edges[e].j});
-  for (std::size_t f = 0; f < 6; ++f) {
-    const auto& q = cube_faces[f].corners;
-    join(faces[f], {q[0], q[1], q[2], q[3]});
   }
-  for (const Index j : J_plus) result.J_plus.push_back(nodes_[j].p);
-  result.J_plus.sort();
+  // R2c-R2e, R3d-R3h, R4a: every node of c's boundary lists, in each of its
+  // octants inside c, the child there (c's own node: all 8).
+  for (int t = 0; t < 8; ++t) nodes_[cn].cell[t] = y[t];
+  for (int k = 0; k < 26; ++k) {
+    const SlotRule& r = rule(k);
+    Node& b = nodes_[G[k]];
+    for (int i = 0; i < r.inside_count; ++i) b.cell[r.inside_octant[i]] = y[r.inside_child[i]];
+  }
+  // R2f, R3e, R3h, R4b: each child has its 8 corners: the grid point of c
+  // with g_a = s_o,a where its corner's sign agrees with s_o, 0 elsewhere.
+  for (int o = 0; o < 8; ++o) {
+    Center& ry = centers_[y[o]];
+    for (int e = 0; e < 8; ++e) {
+      const int g = kChildCorner[static_cast<std::size_t>(o)][static_cast<std::size_t>(e)];
+      ry.nbr[corner_slot(e)] = g < 0 ? cn : G[g];
+    }
+  }
+  // The children's table entries last: a saturated displacement recomputes
+  // the home of another entry's key, which needs every node consistent.
+  for (int o = 0; o < 8; ++o) table_insert(y[o], table_.line_slot(base, static_cast<std::size_t>(o)));
   return result;
 }
 
-// ---- Coarsen ---------------------------------------------------------------------------
+// ---- Coarsen (§5 as §9.6) --------------------------------------------------------------------
 
 CoarsenResult Lattice::coarsen(const Point& n) {
   CoarsenResult result;
@@ -704,68 +844,79 @@ CoarsenResult Lattice::coarsen(const Point& n) {
   int l = 0;
   result.refused = coarsen_refusal(n, ni, l);
   if (result.refused) return result;
-  ensure_room(1, 0);
+  // Coarsening frees 8 centers, takes 1 and adds no table entry: no room to make.
+  const std::int64_t h = half_side(l);
+  const std::size_t base = table_.home_of_hash(mix(n));
 
-  // 1. K1a: Y = N(n). K1b: B = (union of N(y_i)) \ {n}. K1c: M = the b in
-  //    two or four children (edge midpoints and face centers; choice V4).
-  Ids<8> Y;
-  for (std::uint32_t k = 0; k < 8; ++k) Y.push(nodes_[ni].nbr[k]);
-  Ids<26 * 8> B;
-  for (const Index yi : Y) {
-    const Center& ry = centers_[yi];
-    for (std::uint32_t k = 0; k < ry.count; ++k)
-      if (ry.nbr[k] != ni && !B.has(ry.nbr[k])) B.push(ry.nbr[k]);
-  }
-  Ids<26 * 8> M;
-  for (const Index b : B) {
-    const Node& rb = nodes_[b];
-    std::size_t k = 0;
-    for (std::uint32_t i = 0; i < rb.count; ++i) k += Y.has(rb.nbr[i]);
-    if (k == 2 || k == 4) M.push(b);
-  }
-  if (B.n != 26 || M.n != 18)
-    throw std::logic_error(
-        "coarsen: the children's boundary is not 8 corners, 12 edge midpoints and "
-        "6 face centers; the graph is not a valid lattice");
-
-  for (const Index yi : Y) result.Y.push_back(centers_[yi].p);
-  result.Y.sort();
-
-  // 2. K2a: N(b) = N(b) \ Y for all b in B.
-  for (const Index b : B)
-    for (const Index yi : Y) remove_id(nodes_[b].nbr, nodes_[b].count, yi);
-  // K2b, K2f: the children are deleted (C = C \ Y).
-  for (const Index yi : Y) {
-    table_erase(centers_[yi].p);
-    free_center(yi);
-  }
-  // K2c, K2d, K2e: n leaves N and joins C as a level-l cell (choice Q4).
-  const Index cc = alloc_center(n, l);
-  table_replace(n, cc);
+  // K1a: Y = N(n), y_o in octant o. K1b: B, the 26 nodes of the merged
+  // cube's boundary: grid point d is corner (d on nz(d), + elsewhere) of the
+  // child with d's signs on nz(d) and - elsewhere.
+  Index y[8];
+  std::copy(std::begin(nodes_[ni].cell), std::end(nodes_[ni].cell), y);
+  for (const int o : kSortedOctants) result.Y.push_back(centers_[y[o]].p);
+  Index B[26];
+  for (int k = 0; k < 26; ++k) B[k] = centers_[y[rule(k).child]].nbr[rule(k).child_corner];
+  // K2b, K2f: the children are deleted. K2c-K2e: n leaves N and joins C
+  // (choice Q4), under the same table entry.
+  for (int o = 0; o < 8; ++o) table_erase(y[o], table_.line_slot(base, static_cast<std::size_t>(o)));
+  for (int o = 0; o < 8; ++o) free_center(y[o]);
+  const Index cc = alloc_center(n);
+  table_.replace(ni | kNodeBit, home(n), cc);
   free_node(ni);
 
-  // 3. K3a: J- = {b in M : level(x) <= l for all x in N(b)} (choice V3).
-  Ids<18> J_minus;
-  for (const Index b : M) {
-    const Node& rb = nodes_[b];
+  // K2a, K4b: every node of B lists the merged cell in its octants inside it.
+  // K3a (§9.6): an edge midpoint or face center b stays iff a cell outside
+  // has it as a corner, that is iff the octants outside on one side of the
+  // merged cube's boundary hold different cells.
+  Center& rc = centers_[cc];
+  for (const int k : kSortedSlots) {
+    const SlotRule& r = rule(k);
+    Node& b = nodes_[B[k]];
+    for (int i = 0; i < r.inside_count; ++i) b.cell[r.inside_octant[i]] = cc;
+    rc.nbr[k] = B[k];  // K4a
     bool corner_of_a_cell = false;
-    for (std::uint32_t i = 0; i < rb.count; ++i) corner_of_a_cell = corner_of_a_cell || centers_[rb.nbr[i]].level > l;
-    if (!corner_of_a_cell) J_minus.push(b);
+    for (int i = 0; i < r.outside_count; ++i)
+      corner_of_a_cell = corner_of_a_cell || b.cell[r.outside_octant[i]] != b.cell[r.outside_beside[i]];
+    if (r.nz == 7 || corner_of_a_cell) continue;
+    // K3b-K3e: j in J-: its cells outside drop it, it is deleted.
+    for (int i = 0; i < r.outside_count; ++i)
+      if (const Index x = b.cell[r.outside_octant[i]]; x != kNone) centers_[x].nbr[r.outside_toward[i]] = kNone;
+    result.J_minus.push_back(offset(n, r.d, h));
+    rc.nbr[k] = kNone;
+    free_node(B[k]);
   }
-  for (const Index j : J_minus) result.J_minus.push_back(nodes_[j].p);
-  result.J_minus.sort();
-  // K3b-K3e: N = N \ J-; N(x) = N(x) \ {j} for x in N(j); the j are deleted.
-  for (const Index j : J_minus) {
-    Node& rj = nodes_[j];
-    for (std::uint32_t i = 0; i < rj.count; ++i) remove_id(centers_[rj.nbr[i]].nbr, centers_[rj.nbr[i]].count, j);
-    table_erase(rj.p);
-    free_node(j);
-  }
-
-  // 4. K4a: N(n) = B \ J-; K4b: N(b) = N(b) ∪ {n}.
-  for (const Index b : B)
-    if (!J_minus.has(b)) link(cc, b);
   return result;
+}
+
+// ---- Batches ------------------------------------------------------------------------------
+
+void Lattice::prefetch_home(const Point& p) const {
+  if (const int t = center_tz(p); t >= 0) table_.prefetch(home_at(p, t));
+}
+
+namespace {
+// op(p) for each p in order, the table line of the position kAhead later
+// prefetched first; how many op applied.
+template <class Prefetch, class Op>
+std::size_t apply_each(std::span<const Point> points, Prefetch prefetch, Op op) {
+  constexpr std::size_t kAhead = 8;
+  std::size_t applied = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (i + kAhead < points.size()) prefetch(points[i + kAhead]);
+    applied += op(points[i]);
+  }
+  return applied;
+}
+}  // namespace
+
+std::size_t Lattice::refine_each(std::span<const Point> cells) {
+  return apply_each(
+      cells, [this](const Point& p) { prefetch_home(p); }, [this](const Point& p) { return refine(p).applied(); });
+}
+
+std::size_t Lattice::coarsen_each(std::span<const Point> nodes) {
+  return apply_each(
+      nodes, [this](const Point& p) { prefetch_home(p); }, [this](const Point& p) { return coarsen(p).applied(); });
 }
 
 }  // namespace bccmis::d3::fast

@@ -1,26 +1,25 @@
-// bccmis::fast: the 3D lattice of spec/lattice3d.md on flat records.
+// bccmis::fast: the 3D lattice of spec/lattice3d.md with fixed neighbor slots.
 //
 // The reference (src/bccmis/d3) writes refine and coarsen as the set
 // equations of spec/equations3d.toml on std::set and is the oracle. This is
-// the same graph, the same operations and the same decisions, stored for
-// speed:
+// the same graph, the same operations and the same decisions, laid out for
+// the machine (spec/lattice3d.md §9):
 //
-//   - a center is one record: its position, its level and up to 26 node ids
-//     (8 corners, 12 edge midpoints, 6 face centers); a node is one record:
-//     its position and up to 8 center ids (spec/lattice3d.md §3, F2: at most
-//     8 cells meet at a node). Neighbor ids are kept unsorted; they are
-//     sorted by position only where a sorted set is asked for (nbr(), the
-//     canonical state).
-//   - centers and nodes live in two flat pools with free lists; a vertex that
-//     changes kind (c in refine, n in coarsen) moves to the other pool. Its
-//     old neighbors never refer to it afterwards (R2c-R2e, K2a-K2c), so no
-//     id has to be rewritten.
-//   - a position -> record table (open addressing, linear probing, deletion
-//     by backward shift) over every vertex serves the trace interface.
-//   - refine and coarsen first make room (pools and table) for every vertex
-//     they can create and compute every set they need; then they only write.
-//     In steady state (free slots for the vertices an operation creates) they
-//     allocate nothing, and a throwing allocation leaves the lattice as it was.
+//   - every neighbor has a fixed slot by direction. A center keeps 26 node
+//     slots, one per direction d in {-1, 0, 1}^3 \ {0} (its 8 corners, 12
+//     edge midpoints and 6 face centers; kNone where its boundary has no
+//     node there): 128 bytes with its position. A node keeps, per octant
+//     around it, the leaf cell that covers that octant (8 slots, 32 bytes); a
+//     cell covering several octants fills each. The set equations become
+//     fixed slot reads and writes, with no search.
+//   - only centers store a position; a cell's level follows from it, and a
+//     node's position from any cell around it and the octants that cell fills.
+//   - the position table holds the cells and the refined centers (nodes at a
+//     center's position) only; the other nodes are found from a cell and a
+//     direction. The 8 children of a cell share one 128-byte block of it.
+//   - refine and coarsen make room first (pools, table) and then only write,
+//     so in steady state they allocate nothing and a throwing allocation
+//     leaves the lattice as it was.
 //
 // The preconditions and refusal codes are those of the reference (bccmis/ops.h),
 // Y and J+ / J- are returned sorted by position, and the canonical state is
@@ -41,6 +40,7 @@
 #include "bccmis/d3/graph.h"
 #include "bccmis/d3/ops.h"  // d3::RefineResult, d3::CoarsenResult (to_sets)
 #include "bccmis/d3/point.h"
+#include "bccmis/fast/d3/position_table.h"
 #include "bccmis/fast/lattice.h"  // kMaxReserveHint
 #include "bccmis/fast/small_points.h"
 #include "bccmis/lattice.h"
@@ -70,7 +70,7 @@ class Lattice {
 
   /// The initial lattice of d3::make_lattice(size): W x H x D level-0 cubes.
   /// Throws LatticeError on an invalid size, std::length_error when the
-  /// lattice would need 2^31 or more vertices of one kind.
+  /// lattice would need 2^26 or more vertices of one kind (the position table names records by 26 bits).
   explicit Lattice(const d3::LatticeSize& size);
 
   const d3::LatticeSize& size() const { return size_; }
@@ -114,8 +114,9 @@ class Lattice {
   /// e.g. parsed from a canonical state): every operation and the canonical
   /// state are then those of the graph. Throws std::invalid_argument when a
   /// center has no level, or one its position does not give, or a neighbor
-  /// of a center is not a node, or a vertex has more neighbors than a
-  /// lattice allows (26 for a center, 8 for a node).
+  /// of a center is not a node at its corner, edge midpoint or face center,
+  /// or a center lacks a corner, or two cells cover one octant of a node, or
+  /// a node has no cell or is not where its cells put it.
   static Lattice from_graph(const d3::Graph& g);
 
   // ---- Memory -----------------------------------------------------------------
@@ -137,83 +138,102 @@ class Lattice {
   using Index = std::uint32_t;
   static constexpr Index kNone = 0xFFFFFFFFu;
 
- private:
-  static constexpr Index kNodeBit = 0x80000000u;  ///< a table entry naming a node
-  static constexpr std::uint32_t kFree = 0xFFFFFFFFu;
+  /// The nodes on the closed boundary of a cell, read from its slots: what
+  /// the mesh rule asks of a leaf (d3/detail/tetrahedra.h), with no sorting
+  /// and no table lookup per question.
+  class Boundary {
+   public:
+    /// Whether node p is on the cell's boundary (p ∈ N(u)).
+    bool contains(const d3::Point& p) const;
 
-  /// A cell center: position, level and its node ids. A free record has
-  /// level -1 and nbr[0] linking the free list.
+   private:
+    friend class Lattice;
+    d3::Point u_{};
+    std::int64_t h_ = 0;       ///< half the cell's side
+    std::uint32_t slots_ = 0;  ///< bit k: slot k holds a node
+  };
+  /// The boundary of cell u; throws std::out_of_range if u is not a center.
+  Boundary boundary(const d3::Point& u) const;
+
+ private:
+  Lattice() = default;
+
+  static constexpr Index kNodeBit = Index{1} << 26;  ///< a table reference naming a node
+  static constexpr Index kFreeMark = 0xFFFFFFFEu;
+  static constexpr std::size_t kMaxPool = kNodeBit - 1;
+
+  /// A cell center: its position and its 26 node slots, slot slot_of(d) for
+  /// direction d (spec/lattice3d.md §9.1). 128 bytes. A free record has
+  /// nbr[25] == kFreeMark and nbr[0] linking the free list.
   struct Center {
     d3::Point p;
-    std::int32_t level = -1;
-    std::uint32_t count = 0;
     Index nbr[26];
-    bool live() const { return level >= 0; }
+    bool live() const { return nbr[25] != kFreeMark; }
   };
-  /// A node: position and its center ids. A free record has count == kFree
-  /// and nbr[0] linking the free list.
+  /// A node: the leaf cell covering each octant around it, octant o with
+  /// bit a set when it lies on the + side of axis a (kNone outside the
+  /// domain). 32 bytes. A free record has cell[7] == kFreeMark and cell[0]
+  /// linking the free list.
   struct Node {
-    d3::Point p;
-    std::uint32_t count = 0;
-    Index nbr[8];
-    bool live() const { return count != kFree; }
+    Index cell[8];
+    bool live() const { return cell[7] != kFreeMark; }
   };
 
-  // Position table: a slot holds kNone or a reference (a center index, or
-  // kNodeBit | a node index); the key is read from the record.
-  const d3::Point& key_of(Index ref) const { return (ref & kNodeBit) ? nodes_[ref & ~kNodeBit].p : centers_[ref].p; }
-  std::size_t home(const d3::Point& p) const;
-  /// The slot holding p, or the empty slot where p would go.
-  std::size_t slot_of(const d3::Point& p) const;
-  /// The reference at p, or kNone.
-  Index find(const d3::Point& p) const { return table_[slot_of(p)]; }
-  Index find_center(const d3::Point& p) const {
-    const Index r = find(p);
-    return r != kNone && !(r & kNodeBit) ? r : kNone;
-  }
-  Index find_node(const d3::Point& p) const {
-    const Index r = find(p);
-    return r != kNone && (r & kNodeBit) ? r & ~kNodeBit : kNone;
-  }
-  void table_insert(Index ref);  ///< its key must be absent, with room
-  void table_erase(const d3::Point& p);
-  void table_replace(const d3::Point& p, Index ref);
+  int level(Index c) const;  ///< of a live center
+  std::int64_t half_side(int level) const { return std::int64_t{1} << (size_.L - level); }
+  d3::Point node_position(Index n) const;  ///< of a live node (§9.2)
+  /// The trailing zeros t of a position where a cell center can be (level
+  /// L - t), or -1 for any other position.
+  int center_tz(const d3::Point& p) const;
+  std::size_t home(const d3::Point& p) const;  ///< p: a center position
+  std::size_t home_at(const d3::Point& p, int t) const;
+  std::size_t ref_home(Index ref) const;  ///< the home of a table entry's key
+  Index find_ref(const d3::Point& p, bool node) const;
+  Index find_center(const d3::Point& p) const { return find_ref(p, false); }
+  Index find_refined(const d3::Point& p) const;  ///< the node at a refined center, or kNone
+  /// The node at p, any kind, from the table and the geometry (§9.3), or kNone.
+  Index find_node(const d3::Point& p) const;
+  /// The leaf cell covering the finest cube at node position p toward
+  /// octant o, or kNone when that leaf is coarser than any cube with p on
+  /// its slots (§9.3).
+  Index locate(const d3::Point& p, int o) const;
+  void prefetch_home(const d3::Point& p) const;  ///< the table line of p's home, if p can be a center
+  void table_insert(Index ref, std::size_t at);
+  void table_erase(Index ref, std::size_t at);
   void rehash(std::size_t slots);
 
-  /// Makes room for the vertices an operation may create, so that the update
-  /// that follows cannot allocate. Table load factor at most 0.7.
-  void ensure_room(std::size_t new_centers, std::size_t new_nodes);
-  Index alloc_center(const d3::Point& p, int level);
-  Index alloc_node(const d3::Point& p);
-  void free_center(Index c);
-  void free_node(Index n);
-
-  // Neighbor-list edits (unsorted lists; a removal moves the last id in).
-  static void add_id(Index* ids, std::uint32_t& count, std::uint32_t capacity, Index id);
-  static void remove_id(Index* ids, std::uint32_t& count, Index id);
-  void link(Index center, Index node);  ///< N(center) ∪= {node}, N(node) ∪= {center}
-
-  /// The level of the refined cell centered at p, from its position alone
-  /// (choice Q4 of spec/choices3d.toml), as d3::refined_center_level.
-  std::optional<int> refined_center_level(const d3::Point& p) const;
   std::optional<RefineRefusal> refine_refusal(const d3::Point& c, Index& ci) const;
   std::optional<CoarsenRefusal> coarsen_refusal(const d3::Point& n, Index& ni, int& l) const;
 
+  /// Room for that many more centers, nodes and table entries, so that the
+  /// update that follows cannot allocate. Load factor at most 0.6.
+  void ensure_room(std::size_t new_centers, std::size_t new_nodes, std::size_t new_keys);
+  Index alloc_center(const d3::Point& p);
+  Index alloc_node();
+  void free_center(Index c);
+  void free_node(Index n);
+
+  /// The live center (node) records sorted by position.
   std::vector<Index> sorted_centers() const;
-  std::vector<Index> sorted_nodes() const;
+  std::vector<std::pair<d3::Point, Index>> sorted_nodes() const;
+  /// The distinct cells of node n, sorted by position.
+  SmallPoints<8> node_cells(Index n) const;
 
   d3::LatticeSize size_;
-  std::vector<Center> centers_;
-  std::vector<Node> nodes_;
+  std::int64_t extent_[3] = {0, 0, 0};  ///< the domain: W*S, H*S, D*S
+  bccmis::fast::detail::Array<Center> centers_;
+  bccmis::fast::detail::Array<Node> nodes_;
   Index free_centers_ = kNone;
   Index free_nodes_ = kNone;
   std::size_t free_center_count_ = 0;
   std::size_t free_node_count_ = 0;
   std::size_t cell_count_ = 0;
   std::size_t node_count_ = 0;
-  std::vector<Index> table_;  ///< size a power of two
-  std::size_t table_used_ = 0;
+  PositionTable table_;
 };
+
+/// The mesh rule's view of leaf u (d3/detail/tetrahedra.h): its slots.
+inline Lattice::Boundary leaf_boundary(const Lattice& g, const d3::Point& u) { return g.boundary(u); }
 
 // ---- The lattice vocabulary (bccmis/lattice.h): Lattice models AdaptiveLattice
 
