@@ -73,6 +73,32 @@ INSTANTIATE_TEST_SUITE_P(Shapes, StuffLeaves,
                          ::testing::Values(Case{"torus", 2, 6, "torus"}, Case{"spheres:r=0.7,d=1", 2, 6, "spheres"}),
                          [](const auto& p) { return std::string(p.param.name); });
 
+// D9: a layer one cell too thin (the own leaves alone) changes the
+// gathered mesh of two interleaved pieces (every leaf's neighbours on the
+// other piece); D9's leaves give the serial mesh there.
+TEST(StuffLeavesLayer, ThinnerLayersAreCaught) {
+  const auto shape = stuff::make_builtin("torus");
+  stuff::StuffOptions options;
+  options.max_level = 2;
+  options.cells = 6;
+  const stuff::Fit fit = stuff::fit_lattice(shape->bounds(), options);
+  const d3::fast::Lattice g = stuff::background_fast(*shape, fit, options);
+  const d3::TetMeshF serial = stuff::stuff(*shape, fit, g, options).mesh;
+  const std::vector<d3::Point> leaves = g.cells();
+  const auto gathered = [&](std::size_t parts, bool runs, LayerDepth depth) {
+    std::vector<LeafPiece> pieces;
+    for (const auto& own : split(leaves, parts, runs))
+      pieces.push_back(
+          stuff_leaves(*shape, fit, g, options, own, leaves_to_stuff(*shape, fit, g, options, own, depth)));
+    return gather_pieces(pieces);
+  };
+  const auto same = [&serial](const d3::TetMeshF& m) {
+    return m.vertices == serial.vertices && m.kind == serial.kind && m.tets == serial.tets;
+  };
+  EXPECT_FALSE(same(gathered(2, false, LayerDepth::none)));
+  EXPECT_TRUE(same(gathered(2, false, LayerDepth::closed)));
+}
+
 TEST(PieceBytes, TruncatedOrInconsistentBytesAreRefused) {
   LeafPiece piece;
   piece.mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};

@@ -29,10 +29,32 @@ struct LeafPiece {
   std::vector<std::uint32_t> leaf_begin;
 };
 
-/// D3: S5-S9 on the tetrahedra of the leaves `own` (centers of leaves of g,
-/// any order) and of every level-L leaf of g, keeping the output of the
-/// leaves `own`: exactly those tetrahedra of stuff(shape, fit, g, options)
-/// made by them. Throws as stuff() does (std::logic_error, S4, S12).
+/// D9: how far beyond the own leaves a rank stuffs. `closed` is the rule
+/// that makes a piece the serial one; `none` exists to show that the tests
+/// catch a layer one cell too thin.
+enum class LayerDepth {
+  none,    ///< the own leaves alone
+  closed,  ///< the ghost layer and the closure of S6's dependencies (D9)
+};
+
+/// D9: the leaves whose lattice tetrahedra a rank stuffs to decide its own
+/// leaves' output as the serial run does: `own` (centers of leaves of g,
+/// any order, no repeats) and the ghosts `depth` asks for, sorted. Reads
+/// the shape's side at the ghost layer's vertices and its crossing on the
+/// cut edges that leave the closure's set.
+std::vector<d3::Point> leaves_to_stuff(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
+                                       const stuff::StuffOptions& options, std::span<const d3::Point> own,
+                                       LayerDepth depth = LayerDepth::closed);
+
+/// D3: S5-S9 on the tetrahedra of the leaves `stuffed` (sorted, holding
+/// `own`), keeping the output of the leaves `own`. With
+/// stuffed = leaves_to_stuff(..., own): exactly those tetrahedra of
+/// stuff(shape, fit, g, options) made by the own leaves. Throws as stuff()
+/// does (std::logic_error, S4, S12).
+LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
+                       const stuff::StuffOptions& options, std::span<const d3::Point> own,
+                       std::span<const d3::Point> stuffed);
+/// The same with stuffed = leaves_to_stuff(shape, fit, g, options, own).
 LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
                        const stuff::StuffOptions& options, std::span<const d3::Point> own);
 

@@ -1,4 +1,5 @@
-// spec/distributed.md D3: what one rank stuffs, from the replicated lattice.
+// spec/distributed.md D3: what one rank stuffs: its own leaves and the
+// leaves of D9, keeping the output of its own.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -11,27 +12,29 @@ namespace bccmis::distributed {
 
 LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
                        const stuff::StuffOptions& options, std::span<const d3::Point> own) {
+  return stuff_leaves(shape, fit, g, options, own, leaves_to_stuff(shape, fit, g, options, own));
+}
+
+LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
+                       const stuff::StuffOptions& options, std::span<const d3::Point> own,
+                       std::span<const d3::Point> stuffed) {
   std::vector<d3::Point> mine(own.begin(), own.end());
   std::sort(mine.begin(), mine.end());
-  // T_r (D3): the tetrahedra of the own leaves and of every level-L leaf (the
-  // band of S3, which holds every tetrahedron with a cut edge), leaf by leaf
-  // in the order of cells(g); own_range[i]: where own leaf i's lattice
-  // tetrahedra are in `tets`.
+  // T_r (D3): the tetrahedra of the stuffed leaves, leaf by leaf in the
+  // order of cells(g); own_range[i]: where own leaf i's lattice tetrahedra
+  // are in `tets`.
   std::vector<d3::Tet> tets;
   std::vector<std::array<std::size_t, 2>> own_range;
   std::vector<d3::Point> ring;
   ring.reserve(8);
-  const int L = fit.size.L;
-  for (const d3::Point& u : g.cells()) {
-    const bool is_own = std::binary_search(mine.begin(), mine.end(), u);
-    if (!is_own && g.level_of(u) != L) continue;
+  for (const d3::Point& u : stuffed) {
     const std::size_t first = tets.size();
     d3::detail::leaf_tetrahedra(g, u, tets, ring);
-    if (is_own) own_range.push_back({first, tets.size()});
+    if (std::binary_search(mine.begin(), mine.end(), u)) own_range.push_back({first, tets.size()});
   }
   const stuff::StuffedPart part = stuff::stuff_part(shape, fit, g, options, tets);
+  tets = {};
   const d3::TetMeshF& all = part.stuffed.mesh;
-
   // Keep the output of the own leaves and the vertices it uses, in the
   // part's vertex order (S8's key order).
   LeafPiece piece;
