@@ -42,8 +42,9 @@ std::optional<d3::Point> leaf_at(const d3::fast::Lattice& g, const d3::Point& q)
 
 /// D9: star(x), the leaves with a lattice tetrahedron at vertex x
 /// (spec/mesh3d.md M2-M4): for a center, its leaf and the leaves across
-/// its equal faces; for a node or hull point, the leaves whose closed cube
-/// holds it.
+/// its equal faces; for a node, its neighbours (the leaves with x on their
+/// boundary: M4 builds a leaf's tetrahedra from its neighbours, so N is
+/// symmetric); for a hull point, the leaves whose closed cube holds it.
 template <class Add>
 void each_star_leaf(const d3::fast::Lattice& g, const d3::Point& x, Add&& add) {
   if (g.is_center(x)) {
@@ -55,6 +56,10 @@ void each_star_leaf(const d3::fast::Lattice& g, const d3::Point& x, Add&& add) {
         d3::detail::coord(w, axis) += step;
         if (g.is_center(w)) add(w);
       }
+    return;
+  }
+  if (g.is_node(x)) {
+    for (const d3::Point& u : g.nbr(x)) add(u);
     return;
   }
   for (const std::int64_t dx : {-1, 1})
