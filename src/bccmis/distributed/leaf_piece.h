@@ -29,6 +29,11 @@ struct LeafPiece {
   std::vector<std::uint32_t> leaf_begin;
 };
 
+/// D3: the own leaves a rank stuffs at once: with about 13 lattice
+/// tetrahedra a leaf (96 bytes each) and its D9 leaves, a block's
+/// tetrahedra stay within a few tens of megabytes.
+inline constexpr std::size_t kLeavesPerBlock = 32768;
+
 /// D9: how far beyond the own leaves a rank stuffs. `closed` is the rule
 /// that makes a piece the serial one; `none` exists to show that the tests
 /// catch a layer one cell too thin.
@@ -54,13 +59,21 @@ std::vector<d3::Point> leaves_to_stuff(const stuff::Shape& shape, const stuff::F
 LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
                        const stuff::StuffOptions& options, std::span<const d3::Point> own,
                        std::span<const d3::Point> stuffed);
-/// The same with stuffed = leaves_to_stuff(shape, fit, g, options, own).
+/// D3: the same piece made block by block: the own leaves in sorted order
+/// in blocks of `block` leaves, each stuffed with its own D9 leaves
+/// (leaves_to_stuff of the block) and the pieces merged (merge_pieces), so
+/// that a rank holds the lattice tetrahedra of one block at a time.
 LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
-                       const stuff::StuffOptions& options, std::span<const d3::Point> own);
+                       const stuff::StuffOptions& options, std::span<const d3::Point> own,
+                       std::size_t block = kLeavesPerBlock);
 
-/// D5: the whole mesh from pieces whose leaves do not overlap: vertices in
-/// key order, tetrahedra leaf by leaf in leaf order. Pieces of every leaf of
-/// the lattice give stuff()'s mesh exactly.
+/// D5: pieces whose leaves do not overlap as one piece: vertices in key
+/// order, tetrahedra leaf by leaf in leaf order. Throws std::logic_error
+/// when a leaf is in two pieces.
+LeafPiece merge_pieces(std::span<const LeafPiece> pieces);
+
+/// D5: the whole mesh from the pieces (merge_pieces' mesh). Pieces of every
+/// leaf of the lattice give stuff()'s mesh exactly.
 d3::TetMeshF gather_pieces(std::span<const LeafPiece> pieces);
 
 /// A piece as bytes (host byte order, for MPI_BYTE between ranks of one
