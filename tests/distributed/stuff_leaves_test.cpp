@@ -105,6 +105,7 @@ TEST(PieceBytes, TruncatedOrInconsistentBytesAreRefused) {
   piece.mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   piece.mesh.kind = {0, 0, 0, 0};
   piece.keys.resize(4);
+  piece.shared.resize(4);
   piece.mesh.tets = {{0, 1, 2, 3}};
   piece.mesh.level = {2};
   piece.leaves = {{1, 1, 1}};

@@ -28,7 +28,9 @@ LeafPiece merge_pieces(std::span<const LeafPiece> pieces) {
       out.vertices.push_back(pieces[p].mesh.vertices[v]);
       out.kind.push_back(pieces[p].mesh.kind[v]);
       merged.keys.push_back(key);
+      merged.shared.push_back(0);
     }
+    merged.shared.back() |= pieces[p].shared[v];
     global[p][v] = static_cast<std::uint32_t>(out.vertices.size() - 1);
   }
   // The leaves in the order of cells(g): (center, piece, index in piece).

@@ -27,6 +27,9 @@ struct LeafPiece {
   std::vector<std::array<d3::Point, 2>> keys;
   std::vector<d3::Point> leaves;  ///< sorted (the order of cells(g))
   std::vector<std::uint32_t> leaf_begin;
+  /// D7: 1 when another piece may use vertex i (its key's first point is a
+  /// vertex of a ghost's tetrahedron), 0 when no other piece does.
+  std::vector<std::uint8_t> shared;
 };
 
 /// D3: the own leaves a rank stuffs at once: with about 13 lattice

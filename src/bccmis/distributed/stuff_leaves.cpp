@@ -42,6 +42,15 @@ LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d
     if (std::binary_search(mine.begin(), mine.end(), u)) own_range.push_back({first, tets.size()});
   }
   const stuff::StuffedPart part = stuff::stuff_part(shape, fit, g, options, tets);
+  // D7: the vertices of the ghosts' tetrahedra, sorted.
+  std::vector<d3::Point> ghost_points;
+  for (std::size_t k = 0, next = 0; k < tets.size(); ++k) {
+    while (next < own_range.size() && own_range[next][1] <= k) ++next;
+    if (next < own_range.size() && own_range[next][0] <= k) continue;
+    ghost_points.insert(ghost_points.end(), tets[k].begin(), tets[k].end());
+  }
+  std::sort(ghost_points.begin(), ghost_points.end());
+  ghost_points.erase(std::unique(ghost_points.begin(), ghost_points.end()), ghost_points.end());
   tets = {};
   const d3::TetMeshF& all = part.stuffed.mesh;
   // Keep the output of the own leaves and the vertices it uses, in the
@@ -59,6 +68,7 @@ LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d
     piece.mesh.vertices.push_back(all.vertices[v]);
     piece.mesh.kind.push_back(all.kind[v]);
     piece.keys.push_back(part.keys[v]);
+    piece.shared.push_back(std::binary_search(ghost_points.begin(), ghost_points.end(), part.keys[v][0]) ? 1 : 0);
   }
   for (const auto& [first, last] : own_range) {
     piece.leaf_begin.push_back(static_cast<std::uint32_t>(piece.mesh.tets.size()));
