@@ -9,7 +9,9 @@
       mesh's tetrahedra (by vertex positions, bit for bit, with their levels)
       and each boundary vertex at one position; every triangle lies in one
       tetrahedron (the serial boundary) or two, and some interior triangles
-      join tetrahedra of two pieces (D3, D7). With PIECES, exactly that many
+      join tetrahedra of two pieces (D3, D7); the point data global_id is one
+      number a position across the pieces, 0 .. n-1 over the serial mesh's
+      vertices, and on one rank the serial numbering (D7). With PIECES, exactly that many
       pieces (fewer than RANKS: a rank whose leaves make no tetrahedron writes
       none, D1).
   mpi_stuff_test.py errors MPIRUN BCCMIS BCCMIS_MPI RANKS
@@ -98,6 +100,21 @@ def pvtu(mpirun, bccmis, bccmis_mpi, ranks, pieces, args, work):
         sys.exit(f"FAIL: {boundary} triangles in one tetrahedron across the pieces, {serial_boundary} in the serial mesh")
     if ranks > 1 and across == 0:
         sys.exit("FAIL: no interior triangle joins two pieces: the partition is not exercised")
+    # D7: one global_id a position across the pieces, 0 .. n-1, and on one
+    # rank the serial numbering.
+    serial_mesh = meshio.read(serial_path)
+    serial_index = {tuple(map(float, p)): i for i, p in enumerate(serial_mesh.points)}
+    id_of = {}
+    for source in sources:
+        piece = meshio.read(os.path.join(work, source))
+        for p, i in zip(piece.points, piece.point_data["global_id"]):
+            key = tuple(map(float, p))
+            if id_of.setdefault(key, int(i)) != int(i):
+                sys.exit(f"FAIL: the vertex at {key} has global_id {id_of[key]} and {int(i)} in two pieces")
+    if sorted(id_of.values()) != list(range(len(serial_index))) or set(id_of) != set(serial_index):
+        sys.exit(f"FAIL: the global_ids are not 0 .. {len(serial_index) - 1} over the serial mesh's vertices")
+    if ranks == 1 and any(id_of[k] != i for k, i in serial_index.items()):
+        sys.exit("FAIL: on one rank the global_ids are not the serial numbering")
     print(f"ok: {ranks} ranks, {len(sources)} pieces: {len(union)} tetrahedra as in the serial mesh; {across} interior triangles "
           f"join two pieces, none lies in three tetrahedra; {boundary} boundary triangles")
 

@@ -1,5 +1,5 @@
 // spec/distributed.md D3-D5 in one process: the pieces of a split of the
-// leaves, gathered, are stuff()'s mesh exactly (the same vertices in the
+// leaves, each stuffed in blocks, gathered, are stuff()'s mesh exactly (the same vertices in the
 // same order, bit for bit, the same tetrahedra in the same order), for
 // splits in runs (as p8est partitions) and interleaved (every leaf's
 // neighbours on other pieces); a piece survives its byte encoding.
@@ -60,7 +60,8 @@ TEST_P(StuffLeaves, GatheredPiecesAreTheSerialMesh) {
     SCOPED_TRACE(std::to_string(parts) + (runs ? " runs" : " interleaved"));
     std::vector<LeafPiece> pieces;
     for (const auto& own : split(leaves, parts, runs)) {
-      pieces.push_back(from_bytes(to_bytes(stuff_leaves(*shape, fit, g, options, own))));
+      // In blocks of 1,500 leaves (D3): a piece is stuffed a block at a time.
+      pieces.push_back(from_bytes(to_bytes(stuff_leaves(*shape, fit, g, options, own, 1500))));
       if (parts > 1) {
         EXPECT_LT(pieces.back().mesh.tets.size(), serial.mesh.tets.size());
       }
@@ -73,11 +74,38 @@ INSTANTIATE_TEST_SUITE_P(Shapes, StuffLeaves,
                          ::testing::Values(Case{"torus", 2, 6, "torus"}, Case{"spheres:r=0.7,d=1", 2, 6, "spheres"}),
                          [](const auto& p) { return std::string(p.param.name); });
 
+// D9: a layer one cell too thin (the own leaves alone) changes the
+// gathered mesh of two interleaved pieces (every leaf's neighbours on the
+// other piece); D9's leaves give the serial mesh there.
+TEST(StuffLeavesLayer, ThinnerLayersAreCaught) {
+  const auto shape = stuff::make_builtin("torus");
+  stuff::StuffOptions options;
+  options.max_level = 2;
+  options.cells = 6;
+  const stuff::Fit fit = stuff::fit_lattice(shape->bounds(), options);
+  const d3::fast::Lattice g = stuff::background_fast(*shape, fit, options);
+  const d3::TetMeshF serial = stuff::stuff(*shape, fit, g, options).mesh;
+  const std::vector<d3::Point> leaves = g.cells();
+  const auto gathered = [&](std::size_t parts, bool runs, LayerDepth depth) {
+    std::vector<LeafPiece> pieces;
+    for (const auto& own : split(leaves, parts, runs))
+      pieces.push_back(
+          stuff_leaves(*shape, fit, g, options, own, leaves_to_stuff(*shape, fit, g, options, own, depth)));
+    return gather_pieces(pieces);
+  };
+  const auto same = [&serial](const d3::TetMeshF& m) {
+    return m.vertices == serial.vertices && m.kind == serial.kind && m.tets == serial.tets;
+  };
+  EXPECT_FALSE(same(gathered(2, false, LayerDepth::none)));
+  EXPECT_TRUE(same(gathered(2, false, LayerDepth::closed)));
+}
+
 TEST(PieceBytes, TruncatedOrInconsistentBytesAreRefused) {
   LeafPiece piece;
   piece.mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   piece.mesh.kind = {0, 0, 0, 0};
   piece.keys.resize(4);
+  piece.shared.resize(4);
   piece.mesh.tets = {{0, 1, 2, 3}};
   piece.mesh.level = {2};
   piece.leaves = {{1, 1, 1}};

@@ -115,6 +115,11 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
       const std::vector<d3::Point> own = distributed::own_leaves(lattice->lattice, comm);
       piece = distributed::stuff_piece(*lattice, own);
     });
+    // D7: the pieces' global vertex numbers (collective on every rank).
+    std::vector<std::int64_t> ids;
+    stage(comm, [&] {
+      if (!gather) ids = distributed::global_ids(piece, comm);
+    });
     // (3) the outputs, into their temporaries.
     // Every rank's tetrahedra: a rank whose leaves make none writes no piece (D1).
     const std::uint64_t mine = piece.mesh.tets.size();
@@ -136,7 +141,8 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
       }
       if (!gather) {
         if (mine > 0)
-          pieces.add(piece_path(out, rank), [&](std::ostream& s) { io::write_vtu(s, piece.mesh, encoding(o)); });
+          pieces.add(piece_path(out, rank),
+                     [&](std::ostream& s) { io::write_vtu_piece(s, piece.mesh, ids, encoding(o)); });
         if (rank == 0) {
           std::vector<std::string> names;
           for (int r = 0; r < size; ++r)

@@ -1,4 +1,5 @@
-// spec/distributed.md D5: the whole mesh from the pieces of the ranks.
+// spec/distributed.md D5: pieces merged into one (the whole mesh from the
+// pieces of the ranks; a rank's piece from its blocks of leaves, D3).
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -10,14 +11,15 @@
 
 namespace bccmis::distributed {
 
-d3::TetMeshF gather_pieces(std::span<const LeafPiece> pieces) {
+LeafPiece merge_pieces(std::span<const LeafPiece> pieces) {
   // Every vertex of every piece, in key order: (key, piece, local index).
   using Entry = std::tuple<std::array<d3::Point, 2>, std::uint32_t, std::uint32_t>;
   std::vector<Entry> entries;
   for (std::uint32_t p = 0; p < pieces.size(); ++p)
     for (std::uint32_t v = 0; v < pieces[p].keys.size(); ++v) entries.emplace_back(pieces[p].keys[v], p, v);
   std::sort(entries.begin(), entries.end());
-  d3::TetMeshF out;
+  LeafPiece merged;
+  d3::TetMeshF& out = merged.mesh;
   std::vector<std::vector<std::uint32_t>> global(pieces.size());
   for (std::size_t p = 0; p < pieces.size(); ++p) global[p].resize(pieces[p].keys.size());
   for (std::size_t i = 0; i < entries.size(); ++i) {
@@ -25,7 +27,10 @@ d3::TetMeshF gather_pieces(std::span<const LeafPiece> pieces) {
     if (i == 0 || std::get<0>(entries[i - 1]) != key) {
       out.vertices.push_back(pieces[p].mesh.vertices[v]);
       out.kind.push_back(pieces[p].mesh.kind[v]);
+      merged.keys.push_back(key);
+      merged.shared.push_back(0);
     }
+    merged.shared.back() |= pieces[p].shared[v];
     global[p][v] = static_cast<std::uint32_t>(out.vertices.size() - 1);
   }
   // The leaves in the order of cells(g): (center, piece, index in piece).
@@ -40,6 +45,8 @@ d3::TetMeshF gather_pieces(std::span<const LeafPiece> pieces) {
                              " is in two pieces (spec/distributed.md D2)");
   for (const auto& [center, p, i] : leaves) {
     const LeafPiece& piece = pieces[p];
+    merged.leaves.push_back(center);
+    merged.leaf_begin.push_back(static_cast<std::uint32_t>(out.tets.size()));
     for (std::uint32_t k = piece.leaf_begin[i]; k < piece.leaf_begin[i + 1]; ++k) {
       std::array<std::uint32_t, 4> t = piece.mesh.tets[k];
       for (std::uint32_t& v : t) v = global[p][v];
@@ -47,7 +54,10 @@ d3::TetMeshF gather_pieces(std::span<const LeafPiece> pieces) {
       out.level.push_back(piece.mesh.level[k]);
     }
   }
-  return out;
+  merged.leaf_begin.push_back(static_cast<std::uint32_t>(out.tets.size()));
+  return merged;
 }
+
+d3::TetMeshF gather_pieces(std::span<const LeafPiece> pieces) { return merge_pieces(pieces).mesh; }
 
 }  // namespace bccmis::distributed

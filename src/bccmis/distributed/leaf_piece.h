@@ -27,18 +27,56 @@ struct LeafPiece {
   std::vector<std::array<d3::Point, 2>> keys;
   std::vector<d3::Point> leaves;  ///< sorted (the order of cells(g))
   std::vector<std::uint32_t> leaf_begin;
+  /// D7: 1 when another piece may use vertex i (its key's first point is a
+  /// vertex of a ghost's tetrahedron), 0 when no other piece does.
+  std::vector<std::uint8_t> shared;
 };
 
-/// D3: S5-S9 on the tetrahedra of the leaves `own` (centers of leaves of g,
-/// any order) and of every level-L leaf of g, keeping the output of the
-/// leaves `own`: exactly those tetrahedra of stuff(shape, fit, g, options)
-/// made by them. Throws as stuff() does (std::logic_error, S4, S12).
-LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
-                       const stuff::StuffOptions& options, std::span<const d3::Point> own);
+/// D3: the own leaves a rank stuffs at once: with about 13 lattice
+/// tetrahedra a leaf (96 bytes each) and its D9 leaves, a block's
+/// tetrahedra stay within a few tens of megabytes.
+inline constexpr std::size_t kLeavesPerBlock = 32768;
 
-/// D5: the whole mesh from pieces whose leaves do not overlap: vertices in
-/// key order, tetrahedra leaf by leaf in leaf order. Pieces of every leaf of
-/// the lattice give stuff()'s mesh exactly.
+/// D9: how far beyond the own leaves a rank stuffs. `closed` is the rule
+/// that makes a piece the serial one; `none` exists to show that the tests
+/// catch a layer one cell too thin.
+enum class LayerDepth {
+  none,    ///< the own leaves alone
+  closed,  ///< the ghost layer and the closure of S6's dependencies (D9)
+};
+
+/// D9: the leaves whose lattice tetrahedra a rank stuffs to decide its own
+/// leaves' output as the serial run does: `own` (centers of leaves of g,
+/// any order, no repeats) and the ghosts `depth` asks for, sorted. Reads
+/// the shape's side at the ghost layer's vertices and its crossing on the
+/// cut edges that leave the closure's set.
+std::vector<d3::Point> leaves_to_stuff(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
+                                       const stuff::StuffOptions& options, std::span<const d3::Point> own,
+                                       LayerDepth depth = LayerDepth::closed);
+
+/// D3: S5-S9 on the tetrahedra of the leaves `stuffed` (sorted, holding
+/// `own`), keeping the output of the leaves `own`. With
+/// stuffed = leaves_to_stuff(..., own): exactly those tetrahedra of
+/// stuff(shape, fit, g, options) made by the own leaves. Throws as stuff()
+/// does (std::logic_error, S4, S12).
+LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
+                       const stuff::StuffOptions& options, std::span<const d3::Point> own,
+                       std::span<const d3::Point> stuffed);
+/// D3: the same piece made block by block: the own leaves in sorted order
+/// in blocks of `block` leaves, each stuffed with its own D9 leaves
+/// (leaves_to_stuff of the block) and the pieces merged (merge_pieces), so
+/// that a rank holds the lattice tetrahedra of one block at a time.
+LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
+                       const stuff::StuffOptions& options, std::span<const d3::Point> own,
+                       std::size_t block = kLeavesPerBlock);
+
+/// D5: pieces whose leaves do not overlap as one piece: vertices in key
+/// order, tetrahedra leaf by leaf in leaf order. Throws std::logic_error
+/// when a leaf is in two pieces.
+LeafPiece merge_pieces(std::span<const LeafPiece> pieces);
+
+/// D5: the whole mesh from the pieces (merge_pieces' mesh). Pieces of every
+/// leaf of the lattice give stuff()'s mesh exactly.
 d3::TetMeshF gather_pieces(std::span<const LeafPiece> pieces);
 
 /// A piece as bytes (host byte order, for MPI_BYTE between ranks of one

@@ -43,6 +43,7 @@ void each_array(Piece& piece, Visit&& visit) {
   visit(piece.keys);
   visit(piece.leaves);
   visit(piece.leaf_begin);
+  visit(piece.shared);
 }
 
 }  // namespace
@@ -57,7 +58,7 @@ LeafPiece from_bytes(std::span<const std::byte> in) {
   LeafPiece piece;
   each_array(piece, [&in](auto& values) { take(in, values); });
   const std::size_t n = piece.mesh.vertices.size();
-  bool ok = in.empty() && piece.mesh.kind.size() == n && piece.keys.size() == n &&
+  bool ok = in.empty() && piece.mesh.kind.size() == n && piece.keys.size() == n && piece.shared.size() == n &&
             piece.mesh.level.size() == piece.mesh.tets.size() && piece.leaf_begin.size() == piece.leaves.size() + 1 &&
             piece.leaf_begin.back() == piece.mesh.tets.size();
   for (std::size_t i = 0; ok && i + 1 < piece.leaf_begin.size(); ++i)

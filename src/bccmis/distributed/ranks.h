@@ -6,11 +6,13 @@
 #include <mpi.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "bccmis/d3/point.h"
+#include "bccmis/distributed/leaf_piece.h"
 #include "bccmis/fast/d3/lattice.h"
 
 namespace bccmis::distributed {
@@ -29,6 +31,11 @@ struct Agreement {
   bool ok() const { return rank < 0; }
 };
 Agreement agree(int code, MPI_Comm comm);
+
+/// D7: the global number of each vertex of this rank's piece (in the
+/// piece's order): 0 .. n-1 over the n vertices of the mesh, the same for
+/// one key on every rank, the serial numbering on one rank.
+std::vector<std::int64_t> global_ids(const LeafPiece& piece, MPI_Comm comm);
 
 /// D5: every rank's bytes on `root` (in rank order; empty elsewhere).
 /// Throws std::length_error (on every rank) when the ranks hold 2^31 or

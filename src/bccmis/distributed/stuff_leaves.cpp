@@ -1,7 +1,9 @@
-// spec/distributed.md D3: what one rank stuffs, from the replicated lattice.
+// spec/distributed.md D3: what one rank stuffs: its own leaves and the
+// leaves of D9, keeping the output of its own.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "bccmis/d3/detail/tetrahedra.h"
@@ -10,28 +12,47 @@
 namespace bccmis::distributed {
 
 LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
-                       const stuff::StuffOptions& options, std::span<const d3::Point> own) {
+                       const stuff::StuffOptions& options, std::span<const d3::Point> own, std::size_t block) {
   std::vector<d3::Point> mine(own.begin(), own.end());
   std::sort(mine.begin(), mine.end());
-  // T_r (D3): the tetrahedra of the own leaves and of every level-L leaf (the
-  // band of S3, which holds every tetrahedron with a cut edge), leaf by leaf
-  // in the order of cells(g); own_range[i]: where own leaf i's lattice
-  // tetrahedra are in `tets`.
+  std::vector<LeafPiece> pieces;
+  for (std::size_t first = 0; first < mine.size() || first == 0; first += std::max<std::size_t>(block, 1)) {
+    const std::span<const d3::Point> leaves =
+        std::span<const d3::Point>(mine).subspan(first, std::min(block, mine.size() - first));
+    pieces.push_back(stuff_leaves(shape, fit, g, options, leaves, leaves_to_stuff(shape, fit, g, options, leaves)));
+  }
+  return pieces.size() == 1 ? std::move(pieces[0]) : merge_pieces(pieces);
+}
+
+LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
+                       const stuff::StuffOptions& options, std::span<const d3::Point> own,
+                       std::span<const d3::Point> stuffed) {
+  std::vector<d3::Point> mine(own.begin(), own.end());
+  std::sort(mine.begin(), mine.end());
+  // T_r (D3): the tetrahedra of the stuffed leaves, leaf by leaf in the
+  // order of cells(g); own_range[i]: where own leaf i's lattice tetrahedra
+  // are in `tets`.
   std::vector<d3::Tet> tets;
   std::vector<std::array<std::size_t, 2>> own_range;
   std::vector<d3::Point> ring;
   ring.reserve(8);
-  const int L = fit.size.L;
-  for (const d3::Point& u : g.cells()) {
-    const bool is_own = std::binary_search(mine.begin(), mine.end(), u);
-    if (!is_own && g.level_of(u) != L) continue;
+  for (const d3::Point& u : stuffed) {
     const std::size_t first = tets.size();
     d3::detail::leaf_tetrahedra(g, u, tets, ring);
-    if (is_own) own_range.push_back({first, tets.size()});
+    if (std::binary_search(mine.begin(), mine.end(), u)) own_range.push_back({first, tets.size()});
   }
   const stuff::StuffedPart part = stuff::stuff_part(shape, fit, g, options, tets);
+  // D7: the vertices of the ghosts' tetrahedra, sorted.
+  std::vector<d3::Point> ghost_points;
+  for (std::size_t k = 0, next = 0; k < tets.size(); ++k) {
+    while (next < own_range.size() && own_range[next][1] <= k) ++next;
+    if (next < own_range.size() && own_range[next][0] <= k) continue;
+    ghost_points.insert(ghost_points.end(), tets[k].begin(), tets[k].end());
+  }
+  std::sort(ghost_points.begin(), ghost_points.end());
+  ghost_points.erase(std::unique(ghost_points.begin(), ghost_points.end()), ghost_points.end());
+  tets = {};
   const d3::TetMeshF& all = part.stuffed.mesh;
-
   // Keep the output of the own leaves and the vertices it uses, in the
   // part's vertex order (S8's key order).
   LeafPiece piece;
@@ -47,6 +68,7 @@ LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d
     piece.mesh.vertices.push_back(all.vertices[v]);
     piece.mesh.kind.push_back(all.kind[v]);
     piece.keys.push_back(part.keys[v]);
+    piece.shared.push_back(std::binary_search(ghost_points.begin(), ghost_points.end(), part.keys[v][0]) ? 1 : 0);
   }
   for (const auto& [first, last] : own_range) {
     piece.leaf_begin.push_back(static_cast<std::uint32_t>(piece.mesh.tets.size()));
