@@ -38,11 +38,12 @@ bccmis_cli_test(stuff_animate_notice 0 ARGS stuff --shape sphere -L 2 --animate 
 # S26: a mesh on cells coarser than a quarter of the shape's thinnest extent
 # is made with a warning. The unit sphere (extent 2): --cells 3 -L 2 gives
 # h = 1 (24 tetrahedra, 36 % short), --cells 13 -L 0 gives h = 2/3, both
-# warned; --cells 7 -L 1 gives h = 0.5 = e/4 exactly, no warning.
+# warned (under --check too, and still exit 0: a warning, not an error);
+# --cells 7 -L 1 gives h = 0.5 = e/4 exactly, no warning.
 bccmis_cli_test(stuff_coarse_warning 0 ARGS stuff --shape sphere --cells 3 -L 2 --stats
                 STDERR_REGEX "warning: the mesh is coarse \\(the finest cell side 1 against the thinnest extent of the shape's box 2\\); -L 3 would resolve it\n"
                 STDOUT_REGEX "\nwarning the mesh is coarse \\(the finest cell side 1 against")
-bccmis_cli_test(stuff_coarse_warning_above 0 ARGS stuff --shape sphere --cells 13 -L 0 -o x.vtu
+bccmis_cli_test(stuff_coarse_warning_above 0 ARGS stuff --shape sphere --cells 13 -L 0 --check -o x.vtu
                 STDERR_REGEX "warning: the mesh is coarse \\(the finest cell side 0\\.666666667 against the thinnest extent of the shape's box 2\\); -L 1 would resolve it\n")
 bccmis_cli_test(stuff_coarse_line 0 ARGS stuff --shape sphere --cells 7 -L 1 -o x.vtu
                 STDERR_REGEX "^bccmis stuff: sphere r=1: lattice 7 x 7 x 7, max level 1, finest side 0\\.5\n[^\n]* leaves [^\n]*\n[^\n]* tetrahedra [^\n]*\n[^\n]* written to 1 file\n$")

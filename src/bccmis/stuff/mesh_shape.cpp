@@ -24,10 +24,9 @@ std::string number(double x) { return JsonWriter::number(x); }
 namespace {
 
 /// S26/S27's hint for a part whose thinnest extent is `e` (`what` names
-/// it): the first level whose finest cell side is at most e/4, and at
-/// least one level finer than `fit`'s.
-// S26: "<verdict> (the finest cell side h against the thinnest extent of
-// <what> e); -L N would resolve it", N the first level with h <= e/4.
+/// it): "<verdict> (the finest cell side h against the thinnest extent of
+/// <what> e); -L N would resolve it", N the first level whose finest cell
+/// side is at most e/4, and at least one level finer than `fit`'s.
 std::string level_hint(const std::string& verdict, double e, const std::string& what, const Fit& fit) {
   int level = fit.size.L;
   for (double h = fit.h; h > e / 4 && level < 64; h /= 2) ++level;
