@@ -5,6 +5,8 @@
 // dimensions; the 3D graph and its operations are the bccmis_d3 library.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <set>
 
 #include "bccmis/point.h"
@@ -14,6 +16,17 @@ namespace bccmis::d3 {
 /// A 3D lattice position, ordered by (x, y, z).
 using Point = BasicPoint<Dimension>;
 using PointSet = std::set<Point>;
+
+/// A hash of a 3D lattice position for hash tables: each coordinate times
+/// an odd constant of its own, xor-ed, then the high bits folded down.
+struct PointHash {
+  std::size_t operator()(const Point& p) const noexcept {
+    const std::uint64_t h = static_cast<std::uint64_t>(p.x) * 0x9E3779B97F4A7C15ull ^
+                            static_cast<std::uint64_t>(p.y) * 0xC2B2AE3D27D4EB4Full ^
+                            static_cast<std::uint64_t>(p.z) * 0x165667B19E3779F9ull;
+    return static_cast<std::size_t>(h ^ (h >> 29));
+  }
+};
 
 /// The size of a 3D lattice: W x H x D level-0 cubes, at most L refinements
 /// deep.

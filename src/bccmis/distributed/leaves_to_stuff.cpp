@@ -16,15 +16,7 @@ namespace bccmis::distributed {
 
 namespace {
 
-struct PointHash {
-  std::size_t operator()(const d3::Point& p) const {
-    const std::uint64_t h = static_cast<std::uint64_t>(p.x) * 0x9E3779B97F4A7C15ull ^
-                            static_cast<std::uint64_t>(p.y) * 0xC2B2AE3D27D4EB4Full ^
-                            static_cast<std::uint64_t>(p.z) * 0x165667B19E3779F9ull;
-    return static_cast<std::size_t>(h ^ (h >> 29));
-  }
-};
-using PointSet = std::unordered_set<d3::Point, PointHash>;
+using PointHashSet = std::unordered_set<d3::Point, d3::PointHash>;
 
 /// The leaf whose cube holds q, a point inside a level-L cube (odd
 /// coordinates), or nothing outside the lattice's box.
@@ -83,9 +75,9 @@ std::vector<d3::Point> leaves_to_stuff(const stuff::Shape& shape, const stuff::F
   std::vector<d3::Point> mine(own.begin(), own.end());
   std::sort(mine.begin(), mine.end());
   const auto is_own = [&mine](const d3::Point& u) { return std::binary_search(mine.begin(), mine.end(), u); };
-  PointSet stuffed(own.begin(), own.end());
+  PointHashSet stuffed(own.begin(), own.end());
   std::vector<d3::Point> ghosts;    // stuffed leaves that are not own, in order of discovery
-  PointSet needed;                  // D: the vertices whose S6 decision must be the serial one
+  PointHashSet needed;              // D: the vertices whose S6 decision must be the serial one
   std::vector<d3::Point> frontier;  // vertices of D with a leaf that is not own in their star
   const auto need = [&](const d3::Point& x) {
     if (!needed.insert(x).second) return;
@@ -113,7 +105,7 @@ std::vector<d3::Point> leaves_to_stuff(const stuff::Shape& shape, const stuff::F
   // lies in a tetrahedron of a leaf of star(x), and an edge of an own
   // leaf's tetrahedron has both ends in D: only the leaves of star(x) that
   // are not own hold edges to look at, and only at the frontier's vertices.
-  std::unordered_map<d3::Point, int, PointHash> sign;
+  std::unordered_map<d3::Point, int, d3::PointHash> sign;
   const auto side = [&](const d3::Point& p) {
     const auto [at, added] = sign.try_emplace(p, 0);
     if (added) at->second = shape.side(fit.to_space(p));

@@ -32,12 +32,6 @@ StuffOptions with_level(StuffOptions o, int level) {
 double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
-std::size_t mix(std::uint64_t h) { return static_cast<std::size_t>(h ^ (h >> 29)); }
-std::uint64_t point_hash(const d3::Point& p) {
-  return static_cast<std::uint64_t>(p.x) * 0x9E3779B97F4A7C15ull ^
-         static_cast<std::uint64_t>(p.y) * 0xC2B2AE3D27D4EB4Full ^
-         static_cast<std::uint64_t>(p.z) * 0x165667B19E3779F9ull;
-}
 d3::Point shifted(const d3::Point& c, std::int64_t dx, std::int64_t dy, std::int64_t dz) {
   return {c.x + dx, c.y + dy, c.z + dz};
 }
@@ -49,8 +43,6 @@ std::array<d3::Point, 8> children(const d3::Point& c, std::int64_t s) {
   return out;
 }
 }  // namespace
-
-std::size_t MovingLattice::PointHash::operator()(const d3::Point& p) const noexcept { return mix(point_hash(p)); }
 
 void check_moving_fit(const Fit& fit) {
   const std::int64_t S = d3::level0_side(fit.size);

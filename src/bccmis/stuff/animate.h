@@ -52,9 +52,6 @@ class MovingLattice {
   const Shape& shape() const { return *moved_; }
 
  private:
-  struct PointHash {
-    std::size_t operator()(const d3::Point& p) const noexcept;
-  };
   /// What S16 keeps of a leaf between frames.
   struct Leaf {
     std::vector<d3::Tet> lattice;  ///< its tetrahedra (spec/mesh3d.md)
@@ -101,7 +98,7 @@ class MovingLattice {
   Vec3 offset_{};
   /// The cells refined or coarsened in this step, with their levels.
   std::vector<std::pair<d3::Point, int>> changed_;
-  std::unordered_map<d3::Point, Leaf, PointHash> leaves_;
+  std::unordered_map<d3::Point, Leaf, d3::PointHash> leaves_;
   std::vector<d3::Point> active_;  ///< S16's active leaves of the last frame
   /// Packed lattice point -> pool index: open addressing with linear
   /// probing, deletion by backward shift.

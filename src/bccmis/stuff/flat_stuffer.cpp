@@ -166,12 +166,7 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
   }
   void number(std::span<const d3::Tet> tets) {
     const std::size_t mask = table_.size() - 1;
-    const auto hash = [&](const d3::Point& p) {
-      const std::uint64_t h = static_cast<std::uint64_t>(p.x) * 0x9E3779B97F4A7C15ull ^
-                              static_cast<std::uint64_t>(p.y) * 0xC2B2AE3D27D4EB4Full ^
-                              static_cast<std::uint64_t>(p.z) * 0x165667B19E3779F9ull;
-      return static_cast<std::size_t>(h ^ (h >> 29)) & mask;
-    };
+    const auto hash = [&](const d3::Point& p) { return d3::PointHash{}(p)&mask; };
     for (const d3::Tet& t : tets) {
       Ids ids{};
       for (std::size_t i = 0; i < 4; ++i) {
