@@ -16,6 +16,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -433,6 +434,72 @@ TEST(D3Mesh, AGraphWithoutTheSplitFaceCenterIsRefused) {
   fine_side.neighbors[{6, 2, 2}].erase({8, 4, 4});
   EXPECT_THROW(tetrahedra(coarse_side), std::logic_error);
   EXPECT_THROW(tetrahedra(fine_side), std::logic_error);
+}
+
+// The face (axis, side) a tetrahedron (u, v, a, b) was made on: the axis
+// of v - u when it has one nonzero coordinate, else (the fine side of a
+// split face, M7) the one coordinate v, a and b share.
+std::pair<int, bool> face_of(const Tet& t) {
+  int axis = -1, nonzero = 0;
+  for (int k = 0; k < 3; ++k)
+    if (coord(t[1], k) != coord(t[0], k)) ++nonzero, axis = k;
+  if (nonzero != 1)
+    for (int k = 0; k < 3; ++k)
+      if (coord(t[1], k) == coord(t[2], k) && coord(t[1], k) == coord(t[3], k)) axis = k;
+  return {axis, coord(t[1], axis) > coord(t[0], axis)};
+}
+
+TEST(MeshOrientation, DerivedOrientationAndOrderAreTheExactTestAndSort) {
+  // spec/mesh3d.md M24: the extraction orients each tetrahedron from its face's side and
+  // orders them from the faces' apexes and the ring's places, with no
+  // determinant and no sort. Here M3's way is applied to what it emits
+  // (each tetrahedron turned by the sign of its exact determinant, the
+  // leaf's list sorted): nothing may change, on graded lattices where every
+  // face (axis, side) meets every case of M4.
+  std::map<std::tuple<int, bool, Case>, std::size_t> faces;
+  std::size_t checked = 0;
+  for (const LatticeSize size : {LatticeSize{2, 2, 2, 3}, LatticeSize{3, 2, 1, 3}})
+    for (const std::uint64_t seed : {29u, 2009u}) {
+      std::mt19937_64 rng(seed);
+      Graph g(size);
+      for (int step = 0; step < 120; ++step) {
+        const bool do_refine = std::uniform_int_distribution<int>(0, 99)(rng) < 80;
+        const PointSet& from = do_refine ? g.C : g.N;
+        auto it = from.begin();
+        std::advance(it, static_cast<long>(std::uniform_int_distribution<std::size_t>(0, from.size() - 1)(rng)));
+        if (do_refine)
+          refine(g, *it);
+        else
+          coarsen(g, *it);
+      }
+      const Tets emitted = tetrahedra(g);
+      Tets exact = emitted;
+      for (Tet& t : exact) {
+        const int o = orientation(t[0], t[1], t[2], t[3]);
+        ASSERT_NE(o, 0);
+        if (o < 0) std::swap(t[2], t[3]);
+      }
+      std::sort(exact.begin(), exact.end());
+      exact.erase(std::unique(exact.begin(), exact.end()), exact.end());
+      ASSERT_EQ(emitted.size(), exact.size()) << "seed " << seed;
+      for (std::size_t i = 0; i < emitted.size(); ++i) {
+        const auto [axis, high] = face_of(exact[i]);
+        ++faces[{axis, high, case_of(g, exact[i])}];
+        ASSERT_EQ(emitted[i], exact[i]) << "seed " << seed << ", tetrahedron " << i << " of leaf "
+                                        << to_string(exact[i][0]) << ", face axis " << axis
+                                        << (high ? " high" : " low");
+      }
+      checked += emitted.size();
+    }
+  // Every face (axis, side) occurred in every case it can have.
+  for (int axis = 0; axis < 3; ++axis)
+    for (const bool high : {false, true})
+      for (const Case c : {Case::equal, Case::coarse, Case::fine, Case::hull})
+        if (c != Case::equal || high) {  // M3: an equal face is emitted from its lower leaf, as its high face
+          EXPECT_GT((faces[{axis, high, c}]), 10u)
+              << "axis " << axis << (high ? " high" : " low") << ", case " << static_cast<int>(c);
+        }
+  EXPECT_GT(checked, 10000u);
 }
 
 TEST(D3Mesh, ExactOrientationNear2To62) {

@@ -89,14 +89,12 @@ std::vector<d3::Point> leaves_to_stuff(const stuff::Shape& shape, const stuff::F
     if (beyond) frontier.push_back(x);
   };
   std::vector<d3::Tet> tets;
-  std::vector<d3::Point> ring;
-  ring.reserve(8);
   // (a) D starts as the vertices of the own leaves' tetrahedra; their stars
   // are the ghost layer.
   if (depth == LayerDepth::none) return mine;
   for (const d3::Point& u : own) {
     tets.clear();
-    d3::detail::leaf_tetrahedra(g, u, tets, ring);
+    d3::detail::leaf_tetrahedra(g, u, tets);
     for (const d3::Tet& t : tets)
       for (const d3::Point& x : t) need(x);
   }
@@ -130,7 +128,7 @@ std::vector<d3::Point> leaves_to_stuff(const stuff::Shape& shape, const stuff::F
     });
     for (const d3::Point& u : star) {
       tets.clear();
-      d3::detail::leaf_tetrahedra(g, u, tets, ring);
+      d3::detail::leaf_tetrahedra(g, u, tets);
       for (const d3::Tet& t : tets) {
         if (std::find(t.begin(), t.end(), x) == t.end()) continue;
         for (const d3::Point& y : t)

@@ -34,11 +34,9 @@ LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d
   // are in `tets`.
   std::vector<d3::Tet> tets;
   std::vector<std::array<std::size_t, 2>> own_range;
-  std::vector<d3::Point> ring;
-  ring.reserve(8);
   for (const d3::Point& u : stuffed) {
     const std::size_t first = tets.size();
-    d3::detail::leaf_tetrahedra(g, u, tets, ring);
+    d3::detail::leaf_tetrahedra(g, u, tets);
     if (std::binary_search(mine.begin(), mine.end(), u)) own_range.push_back({first, tets.size()});
   }
   const stuff::StuffedPart part = stuff::stuff_part(shape, fit, g, options, tets);

@@ -327,7 +327,6 @@ std::uint32_t MovingLattice::acquire(const d3::Point& p) {
 // lattice tetrahedra computed again where the lattice changed; then stuff
 // the active leaves and put the frame's mesh together.
 void MovingLattice::restuff(const std::vector<Candidate>& candidates, FrameReport& report) {
-  std::vector<d3::Point> ring;
   std::vector<d3::Tet>& tets = tets_;
   std::vector<d3::Tet> fresh;
   tets.clear();
@@ -348,7 +347,7 @@ void MovingLattice::restuff(const std::vector<Candidate>& candidates, FrameRepor
     }
     if (leaf.stale) {
       fresh.clear();
-      d3::detail::leaf_tetrahedra(g_, u, fresh, ring);
+      d3::detail::leaf_tetrahedra(g_, u, fresh);
       if (fresh != leaf.lattice) {
         release(leaf);
         std::swap(leaf.lattice, fresh);

@@ -5,11 +5,11 @@
 // (fast/d3/mesh.cpp, on d3::fast::Lattice) extract the same tetrahedra.
 #pragma once
 
-#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "bccmis/d3/geometry.h"
@@ -50,23 +50,36 @@ decltype(auto) leaf_boundary(const G& g, const Point& u) {
   return neighbors(g, u);
 }
 
-/// spec/mesh3d.md M1-M4, for one leaf: the tetrahedra of leaf u (those with
-/// u as vertex 0; they depend on u's level, the nodes on u's boundary and the
-/// centers across its faces), appended to out, sorted; `ring` is scratch.
+/// spec/mesh3d.md M24: the 8 places of a face's boundary nodes in cyclic
+/// order (even: the corners of face_corners, odd: the midpoint after each),
+/// listed in the order of their positions, for a face whose normal is along
+/// x or z (tangential coordinates compared a then b) and along y (b then a).
+inline constexpr std::array<int, 8> kRingOrderXZ = {0, 7, 6, 1, 5, 2, 3, 4};
+inline constexpr std::array<int, 8> kRingOrderY = {0, 1, 2, 7, 3, 6, 5, 4};
+
+/// spec/mesh3d.md M1-M4 and M24, for one leaf: the tetrahedra of leaf u
+/// (those with u as vertex 0; they depend on u's level, the nodes on u's
+/// boundary and the centers across its faces), appended to out, positively
+/// oriented and sorted, with no orientation test and no sort.
 template <class G>
-void leaf_tetrahedra(const G& g, const Point& u, std::vector<Tet>& out, std::vector<Point>& ring) {
+void leaf_tetrahedra(const G& g, const Point& u, std::vector<Tet>& out) {
   const LatticeSize& size = size_of(g);
-  const std::size_t first = out.size();
   const int l = level_of(g, u);
   const std::int64_t s = cell_side(size, l), h = s / 2;
   const auto& nu = leaf_boundary(g, u);
+  struct Face {
+    Point apex;
+    int axis;
+    bool high;
+  };
+  std::array<Face, 6> faces{};
+  std::size_t count = 0;
   for (int axis = 0; axis < 3; ++axis)
     for (const bool high : {false, true}) {
       // spec/mesh3d.md M4: f is the center point of face F.
       Point f = u;
       coord(f, axis) += high ? h : -h;
       Point apex;
-      bool emit = true;
       if (coord(f, axis) == 0 || coord(f, axis) == extent(size, axis)) {
         apex = f;  // M4.1, M8: a hull face
       } else if (nu.contains(f)) {
@@ -75,8 +88,8 @@ void leaf_tetrahedra(const G& g, const Point& u, std::vector<Tet>& out, std::vec
         Point w = u;
         coord(w, axis) += high ? s : -s;
         if (is_center(g, w)) {
-          apex = w;      // M4.3, M5: an equal face
-          emit = u < w;  // M3: emitted once, from the smaller center
+          if (w < u) continue;  // M3: an equal face is emitted once, from the smaller center
+          apex = w;             // M4.3, M5: an equal face
         } else {
           // M4.4, M7: a split face, fine side; m is the coarse face's center.
           if (l == 0) throw std::logic_error("tetrahedra: no leaf across a face of level-0 cell " + to_string(u));
@@ -89,43 +102,60 @@ void leaf_tetrahedra(const G& g, const Point& u, std::vector<Tet>& out, std::vec
           apex = m;
         }
       }
-      if (!emit) continue;
-      // The boundary nodes of F in cyclic order: corners and the edge
-      // midpoints that are nodes of N(u).
-      const std::array<Point, 4> corners = face_corners(u, h, axis, high);
-      ring.clear();
-      for (std::size_t i = 0; i < 4; ++i) {
-        ring.push_back(corners[i]);
-        const Point e = midpoint(corners[i], corners[(i + 1) % 4]);
-        if (nu.contains(e)) ring.push_back(e);
-      }
-      // spec/mesh3d.md M2: one tetrahedron per segment ab not through the
-      // apex. The apex of a fine side is a corner of the face (M7), so it
-      // is on ab iff it is one of its ends.
-      for (std::size_t i = 0; i < ring.size(); ++i) {
-        Point a = ring[i], b = ring[(i + 1) % ring.size()];
-        if (apex == a || apex == b) continue;
-        const int o = orientation(u, apex, a, b);
-        if (o == 0) throw std::logic_error("tetrahedra: degenerate tetrahedron at " + to_string(u));
-        if (o < 0) std::swap(a, b);  // M3
-        out.push_back({u, apex, a, b});
-      }
+      faces[count++] = {apex, axis, high};
     }
-  const auto from = out.begin() + static_cast<std::ptrdiff_t>(first);
-  std::sort(from, out.end());
-  out.erase(std::unique(from, out.end()), out.end());
+  // spec/mesh3d.md M24: the faces' apexes differ, so the faces in the order
+  // of their apexes give their tetrahedra in sorted order.
+  for (std::size_t i = 1; i < count; ++i)
+    for (std::size_t j = i; j > 0 && faces[j].apex < faces[j - 1].apex; --j) std::swap(faces[j], faces[j - 1]);
+  for (std::size_t i = 0; i < count; ++i) {
+    const auto [apex, axis, high] = faces[i];
+    // The boundary nodes of F at their places: corners and the edge
+    // midpoints that are nodes of N(u).
+    const std::array<Point, 4> corners = face_corners(u, h, axis, high);
+    std::array<Point, 8> ring{};
+    std::array<bool, 8> present{};
+    for (std::size_t k = 0; k < 4; ++k) {
+      ring[2 * k] = corners[k];
+      present[2 * k] = true;
+      ring[2 * k + 1] = midpoint(corners[k], corners[(k + 1) % 4]);
+      present[2 * k + 1] = nu.contains(ring[2 * k + 1]);
+    }
+    // spec/mesh3d.md M2, M24: one tetrahedron (u, apex, a, b) per segment ab
+    // not through the apex, a the segment's end that comes first in the
+    // cyclic order on a high face and second on a low one (then
+    // det[apex - u, a - u, b - u] > 0, M3), taken in the order of a.
+    for (const int j : axis == 1 ? kRingOrderY : kRingOrderXZ) {
+      if (!present[static_cast<std::size_t>(j)]) continue;
+      int k = j;
+      do k = high ? (k + 1) % 8 : (k + 7) % 8;
+      while (!present[static_cast<std::size_t>(k)]);
+      const Point& a = ring[static_cast<std::size_t>(j)];
+      const Point& b = ring[static_cast<std::size_t>(k)];
+      // The apex of a fine side is a corner of the face (M7), so it is on
+      // ab iff it is one of its ends.
+      if (apex == a || apex == b) continue;
+#ifndef NDEBUG
+      // The exact test M24 replaces, kept in debug builds.
+      if (orientation(u, apex, a, b) <= 0)
+        throw std::logic_error("tetrahedra: M24 orients a tetrahedron of " + to_string(u) + " wrongly");
+      if (!out.empty() && out.back()[0] == u && !(out.back() < Tet{u, apex, a, b}))
+        throw std::logic_error("tetrahedra: M24 emits the tetrahedra of " + to_string(u) + " out of order");
+#endif
+      out.push_back({u, apex, a, b});
+    }
+  }
 }
 
 /// spec/mesh3d.md M1-M4: every tetrahedron of the graded mesh of g, each
 /// once, positively oriented, sorted. Vertex 0 of a tetrahedron is the leaf
 /// that made it and the leaves come in sorted order (cells(g) is sorted on
-/// every lattice), so sorting each leaf's tetrahedra sorts them all.
+/// every lattice), so each leaf's tetrahedra in their order (M24) sort
+/// them all.
 template <class G>
 std::vector<Tet> tetrahedra_of(const G& g) {
   std::vector<Tet> out;
-  std::vector<Point> ring;
-  ring.reserve(8);
-  for (const Point& u : cells(g)) leaf_tetrahedra(g, u, out, ring);
+  for (const Point& u : cells(g)) leaf_tetrahedra(g, u, out);
   return out;
 }
 

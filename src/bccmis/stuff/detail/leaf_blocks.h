@@ -40,10 +40,8 @@ void for_each_block(const G& g, int threads, Visit&& visit) {
     try {
       std::vector<d3::Tet>& out = blocks[slot];
       out.clear();
-      std::vector<d3::Point> ring;
-      ring.reserve(8);
       const std::size_t last = std::min(leaves.size(), first + kLeavesPerBlock);
-      for (std::size_t i = first; i < last; ++i) d3::detail::leaf_tetrahedra(g, leaves[i], out, ring);
+      for (std::size_t i = first; i < last; ++i) d3::detail::leaf_tetrahedra(g, leaves[i], out);
     } catch (...) {
       errors[slot] = std::current_exception();
     }
