@@ -14,6 +14,7 @@
 #include "bccmis/d3/point.h"
 #include "bccmis/fast/d3/lattice.h"
 #include "bccmis/stuff/detail/leaf_blocks.h"
+#include "bccmis/stuff/detail/parallel_ranges.h"
 #include "bccmis/stuff/detail/stencils.h"
 #include "bccmis/stuff/detail/stuffer.h"
 #include "bccmis/stuff/stuff.h"
@@ -77,6 +78,9 @@ class EdgeTable {
   std::vector<std::uint32_t> values_;
   std::size_t used_ = 0;
 };
+
+/// Below this many vertices or cut points a thread is not worth starting.
+inline constexpr std::size_t kLeastPerThread = 256;
 
 /// S5-S9 on the graded mesh of a lattice G (d3::Graph or d3::fast::Lattice,
 /// through the vocabulary: is_center, level_of). The lattice's vertices are
@@ -195,13 +199,16 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
     level_.assign(points_.size(), -1);
   }
 
+  // S28: each vertex on its own, so on `threads` threads.
   void evaluate() {
     value_.resize(points_.size());
     pos_.resize(points_.size());
-    for (std::size_t i = 0; i < points_.size(); ++i) {
-      pos_[i] = fit_.to_space(points_[i]);
-      value_[i] = shape_.side(pos_[i]);  // S5: only the sign enters
-    }
+    detail::for_each_range(points_.size(), options_.threads, kLeastPerThread, [this](std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i) {
+        pos_[i] = fit_.to_space(points_[i]);
+        value_[i] = shape_.side(pos_[i]);  // S5: only the sign enters
+      }
+    });
   }
 
   // S5
@@ -218,19 +225,23 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
           has_cut = true;
           const VKey k = cut_key(x, y);
           if (cut_index_.find(k) != EdgeTable::kNone) continue;
-          const Vec3 &px = pos_[x], &py = pos_[y];
-          const double s = std::clamp(shape_.crossing(px, py), 0.0, 1.0);
-          detail::Cut c;
-          c.t = s;
-          for (std::size_t d = 0; d < 3; ++d) c.pos[d] = px[d] + s * (py[d] - px[d]);
           cut_index_.insert(k, static_cast<std::uint32_t>(cuts_.size()));
-          cuts_.push_back(c);
+          cuts_.emplace_back();
           edges_.push_back({x, y});
           ends_.push_back({x, y});
           ends_.push_back({y, x});
         }
       if (has_cut) detail::check_regular(lattice_tet(ti), fit_.size.L);
     }
+    // S28: the cut points, each on its own, so on `threads` threads.
+    detail::for_each_range(cuts_.size(), options_.threads, kLeastPerThread, [this](std::size_t b, std::size_t e) {
+      for (std::size_t c = b; c < e; ++c) {
+        const Vec3 &px = pos_[edges_[c].first], &py = pos_[edges_[c].second];
+        const double s = std::clamp(shape_.crossing(px, py), 0.0, 1.0);
+        cuts_[c].t = s;
+        for (std::size_t d = 0; d < 3; ++d) cuts_[c].pos[d] = px[d] + s * (py[d] - px[d]);
+      }
+    });
   }
 
   // S6, in increasing position order of v, the other ends w in increasing

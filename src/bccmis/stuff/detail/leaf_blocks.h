@@ -11,17 +11,13 @@
 #include <vector>
 
 #include "bccmis/d3/detail/tetrahedra.h"
+#include "bccmis/stuff/detail/parallel_ranges.h"
 
 namespace bccmis::stuff::detail {
 
 /// The leaves a block holds: a block's tetrahedra (about 13 a leaf, 96
 /// bytes each) stay within a few megabytes.
 inline constexpr std::size_t kLeavesPerBlock = 4096;
-
-/// The threads a run uses: `threads`, or every core when it is 0 (at least 1).
-inline int thread_count(int threads) {
-  return threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-}
 
 /// visit(block) for consecutive blocks of the tetrahedra of g, leaf by leaf
 /// in the order of cells(g), so that the blocks joined are
