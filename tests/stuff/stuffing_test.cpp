@@ -330,32 +330,31 @@ TEST(StuffAnimate, LocalStuffingEqualsTheReferenceStuffingOfEachFrame) {
 TEST(StuffAnimate, FramesAreTheSameOnAnyNumberOfThreads) {
   // S28: a step's stuffing computes the vertex values and the cut points on
   // `threads` threads, each over a range of items; the frames are the same,
-  // bit for bit, on 1, 2 and 3 threads (uneven ranges).
+  // bit for bit, on 1 and 3 threads (uneven ranges; the default, every core,
+  // is held to the reference stuffing by the test above).
   const std::shared_ptr<const Shape> ball = make_sphere({0, 0, 0}, 0.4);
   const Vec3 path{0.3, -0.1, 0.05};
   StuffOptions o;
   o.max_level = 3;
   o.cells = 4;
   const Fit fit = fit_lattice(swept_bounds(*ball, path), o);
-  std::vector<d3::TetMeshF> frames[3];
-  for (const int threads : {1, 2, 3}) {
+  std::vector<d3::TetMeshF> frames[2];
+  for (const int threads : {1, 3}) {
     o.threads = threads;
     MovingLattice moving(ball, fit, o);
     for (const double t : {0.5, 1.0}) {
       const FrameReport r = moving.step({path[0] * t, path[1] * t, path[2] * t});
       EXPECT_GT(r.restuffed_tetrahedra, 3000U);  // enough vertices and cuts to split
-      frames[threads - 1].push_back(moving.stuffed().mesh);
+      frames[threads == 1 ? 0 : 1].push_back(moving.stuffed().mesh);
     }
   }
-  for (std::size_t f = 0; f < 2; ++f)
-    for (std::size_t k = 1; k < 3; ++k) {
-      SCOPED_TRACE(f);
-      SCOPED_TRACE(k + 1);
-      EXPECT_EQ(frames[k][f].vertices, frames[0][f].vertices);
-      EXPECT_EQ(frames[k][f].kind, frames[0][f].kind);
-      EXPECT_EQ(frames[k][f].tets, frames[0][f].tets);
-      EXPECT_EQ(frames[k][f].level, frames[0][f].level);
-    }
+  for (std::size_t f = 0; f < 2; ++f) {
+    SCOPED_TRACE(f);
+    EXPECT_EQ(frames[1][f].vertices, frames[0][f].vertices);
+    EXPECT_EQ(frames[1][f].kind, frames[0][f].kind);
+    EXPECT_EQ(frames[1][f].tets, frames[0][f].tets);
+    EXPECT_EQ(frames[1][f].level, frames[0][f].level);
+  }
 }
 
 }  // namespace
