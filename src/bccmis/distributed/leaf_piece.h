@@ -70,6 +70,11 @@ LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d
 LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
                        const stuff::StuffOptions& options, std::span<const d3::Point> own,
                        std::size_t block = kLeavesPerBlock);
+/// The blocks' pieces of that stuff_leaves(), before merge_pieces (which
+/// needs no lattice, so a caller can release it first).
+std::vector<LeafPiece> stuff_blocks(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
+                                    const stuff::StuffOptions& options, std::span<const d3::Point> own,
+                                    std::size_t block = kLeavesPerBlock);
 
 /// D5: pieces whose leaves do not overlap as one piece: vertices in key
 /// order, tetrahedra leaf by leaf in leaf order. Throws std::logic_error

@@ -11,8 +11,9 @@
 
 namespace bccmis::distributed {
 
-LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
-                       const stuff::StuffOptions& options, std::span<const d3::Point> own, std::size_t block) {
+std::vector<LeafPiece> stuff_blocks(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
+                                    const stuff::StuffOptions& options, std::span<const d3::Point> own,
+                                    std::size_t block) {
   // The blocks follow the order of `own` (D3: any split gives the same
   // piece): p8est's Morton order (D2) makes a block compact, so its ghost
   // layer is thin.
@@ -21,6 +22,12 @@ LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d
     const std::span<const d3::Point> leaves = own.subspan(first, std::min(block, own.size() - first));
     pieces.push_back(stuff_leaves(shape, fit, g, options, leaves, leaves_to_stuff(shape, fit, g, options, leaves)));
   }
+  return pieces;
+}
+
+LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
+                       const stuff::StuffOptions& options, std::span<const d3::Point> own, std::size_t block) {
+  std::vector<LeafPiece> pieces = stuff_blocks(shape, fit, g, options, own, block);
   return pieces.size() == 1 ? std::move(pieces[0]) : merge_pieces(pieces);
 }
 
