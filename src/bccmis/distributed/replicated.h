@@ -33,7 +33,7 @@ Replicated replicate(const stuff::Shape& world, const stuff::StuffOptions& optio
 /// D3, D4: stuff_leaves() on the replicated lattice, the piece's vertices
 /// mapped to world coordinates (S24's to_world; ShapeError as there). The
 /// lattice is released once the blocks are stuffed, before their pieces
-/// are merged (D3): its bytes and the merge's are not held at once.
+/// are merged (D3, D10): its bytes and the merge's are not held at once.
 LeafPiece stuff_piece(Replicated& r, std::span<const d3::Point> own);
 
 }  // namespace bccmis::distributed
