@@ -112,7 +112,7 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
     });
     // (2) the partition and this rank's piece.
     stage(comm, [&] {
-      const std::vector<d3::Point> own = distributed::own_leaves(lattice->lattice, comm);
+      const std::vector<d3::Point> own = distributed::own_leaves(*lattice->lattice, comm);
       piece = distributed::stuff_piece(*lattice, own);
     });
     // D7: the pieces' global vertex numbers (collective on every rank).

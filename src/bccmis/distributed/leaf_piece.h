@@ -62,13 +62,19 @@ std::vector<d3::Point> leaves_to_stuff(const stuff::Shape& shape, const stuff::F
 LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
                        const stuff::StuffOptions& options, std::span<const d3::Point> own,
                        std::span<const d3::Point> stuffed);
-/// D3: the same piece made block by block: the own leaves in sorted order
-/// in blocks of `block` leaves, each stuffed with its own D9 leaves
+/// D3: the same piece made block by block: the own leaves in the order
+/// given (p8est's Morton order makes a block compact) in blocks of `block`
+/// leaves, each stuffed with its own D9 leaves
 /// (leaves_to_stuff of the block) and the pieces merged (merge_pieces), so
 /// that a rank holds the lattice tetrahedra of one block at a time.
 LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
                        const stuff::StuffOptions& options, std::span<const d3::Point> own,
                        std::size_t block = kLeavesPerBlock);
+/// The blocks' pieces of that stuff_leaves(), before merge_pieces (which
+/// needs no lattice, so a caller can release it first).
+std::vector<LeafPiece> stuff_blocks(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
+                                    const stuff::StuffOptions& options, std::span<const d3::Point> own,
+                                    std::size_t block = kLeavesPerBlock);
 
 /// D5: pieces whose leaves do not overlap as one piece: vertices in key
 /// order, tetrahedra leaf by leaf in leaf order. Throws std::logic_error

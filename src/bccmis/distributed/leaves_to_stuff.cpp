@@ -2,6 +2,8 @@
 // ghost layer (the stars of its tetrahedra's vertices) and the closure of
 // S6's dependencies across the partition's boundary.
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -17,6 +19,43 @@ namespace bccmis::distributed {
 namespace {
 
 using PointHashSet = std::unordered_set<d3::Point, d3::PointHash>;
+
+/// A set of lattice points: open addressing (linear probing, load at most
+/// 1/2, no deletion), the lookups of D9's ghost layer (several per vertex
+/// of every own tetrahedron) without a node per point.
+class FlatPointSet {
+ public:
+  /// Room for `expected` points before the first growth.
+  explicit FlatPointSet(std::size_t expected) : slots_(std::bit_ceil(std::max<std::size_t>(16, 2 * expected)), kEmpty) {}
+  /// Adds p; true when it was not there.
+  bool insert(const d3::Point& p) {
+    std::size_t i = slot(p);
+    if (slots_[i] == p) return false;
+    if (2 * (used_ + 1) > slots_.size()) {
+      std::vector<d3::Point> old = std::move(slots_);
+      slots_.assign(2 * old.size(), kEmpty);
+      for (const d3::Point& q : old)
+        if (!(q == kEmpty)) slots_[slot(q)] = q;
+      i = slot(p);
+    }
+    slots_[i] = p;
+    ++used_;
+    return true;
+  }
+  bool contains(const d3::Point& p) const { return slots_[slot(p)] == p; }
+
+ private:
+  /// Where p is, or the empty slot where it would go.
+  std::size_t slot(const d3::Point& p) const {
+    const std::size_t mask = slots_.size() - 1;
+    std::size_t i = d3::PointHash{}(p)&mask;
+    while (!(slots_[i] == kEmpty) && !(slots_[i] == p)) i = (i + 1) & mask;
+    return i;
+  }
+  static constexpr d3::Point kEmpty{-1, -1, -1};  // no lattice point: coordinates are >= 0
+  std::vector<d3::Point> slots_;
+  std::size_t used_ = 0;
+};
 
 /// The leaf whose cube holds q, a point inside a level-L cube (odd
 /// coordinates), or nothing outside the lattice's box.
@@ -60,10 +99,12 @@ void each_star_leaf(const d3::fast::Lattice& g, const d3::Point& x, Add&& add) {
         if (const auto u = leaf_at(g, {x.x + dx, x.y + dy, x.z + dz})) add(*u);
 }
 
-/// The own leaves and the ghosts, sorted (the order of cells(g)).
+/// The own leaves and the ghosts (with repeats), sorted, each once (the
+/// order of cells(g)).
 std::vector<d3::Point> sorted_union(std::span<const d3::Point> own, std::vector<d3::Point> ghosts) {
   ghosts.insert(ghosts.end(), own.begin(), own.end());
   std::sort(ghosts.begin(), ghosts.end());
+  ghosts.erase(std::unique(ghosts.begin(), ghosts.end()), ghosts.end());
   return ghosts;
 }
 
@@ -74,35 +115,50 @@ std::vector<d3::Point> leaves_to_stuff(const stuff::Shape& shape, const stuff::F
                                        LayerDepth depth) {
   std::vector<d3::Point> mine(own.begin(), own.end());
   std::sort(mine.begin(), mine.end());
-  const auto is_own = [&mine](const d3::Point& u) { return std::binary_search(mine.begin(), mine.end(), u); };
-  PointHashSet stuffed(own.begin(), own.end());
-  std::vector<d3::Point> ghosts;    // stuffed leaves that are not own, in order of discovery
-  PointHashSet needed;              // D: the vertices whose S6 decision must be the serial one
+  if (depth == LayerDepth::none) return mine;
+  FlatPointSet own_set(own.size());
+  for (const d3::Point& u : own) own_set.insert(u);
+  const auto is_own = [&own_set](const d3::Point& u) { return own_set.contains(u); };
+  std::vector<d3::Tet> tets;
+  // (a) D starts as the vertices of the own leaves' tetrahedra (`first`,
+  // each once, however many tetrahedra share it); their stars are the
+  // ghost layer. A leaf's tetrahedra have its center, the nodes on its
+  // boundary (at most 26 apart from a finer neighbour's) and the centers
+  // or hull points across its faces: a few vertices a leaf in all.
+  std::vector<d3::Point> first;
+  {
+    FlatPointSet seen(4 * own.size());
+    for (const d3::Point& u : mine) {
+      tets.clear();
+      d3::detail::leaf_tetrahedra(g, u, tets);
+      for (const d3::Tet& t : tets)
+        for (const d3::Point& x : t)
+          if (seen.insert(x)) first.push_back(x);
+    }
+  }
+  FlatPointSet first_set(first.size());
+  for (const d3::Point& x : first) first_set.insert(x);
+  PointHashSet later;               // D's vertices added by the closure
+  std::vector<d3::Point> ghosts;    // stuffed leaves that are not own, repeats allowed
   std::vector<d3::Point> frontier;  // vertices of D with a leaf that is not own in their star
-  const auto need = [&](const d3::Point& x) {
-    if (!needed.insert(x).second) return;
+  const auto star_of = [&](const d3::Point& x) {
     bool beyond = false;
     each_star_leaf(g, x, [&](const d3::Point& u) {
-      if (stuffed.insert(u).second) ghosts.push_back(u);
-      beyond = beyond || !is_own(u);
+      if (!is_own(u)) ghosts.push_back(u), beyond = true;
     });
     if (beyond) frontier.push_back(x);
   };
-  std::vector<d3::Tet> tets;
-  // (a) D starts as the vertices of the own leaves' tetrahedra; their stars
-  // are the ghost layer.
-  if (depth == LayerDepth::none) return mine;
-  for (const d3::Point& u : own) {
-    tets.clear();
-    d3::detail::leaf_tetrahedra(g, u, tets);
-    for (const d3::Tet& t : tets)
-      for (const d3::Point& x : t) need(x);
-  }
+  for (const d3::Point& x : first) star_of(x);
+  const auto in_d = [&](const d3::Point& y) {
+    return first_set.contains(y) || later.contains(y);
+  };
   // (b) The closure: y < x joins D when x is in D and the cut point on xy
   // violates x (S5, S6), with star(y); until no vertex joins. An edge at x
   // lies in a tetrahedron of a leaf of star(x), and an edge of an own
   // leaf's tetrahedron has both ends in D: only the leaves of star(x) that
   // are not own hold edges to look at, and only at the frontier's vertices.
+  // A ghost's tetrahedra are extracted once (`extracted`: where they are in
+  // `ghost_tets`), however many frontier vertices its star holds.
   std::unordered_map<d3::Point, int, d3::PointHash> sign;
   const auto side = [&](const d3::Point& p) {
     const auto [at, added] = sign.try_emplace(p, 0);
@@ -119,24 +175,34 @@ std::vector<d3::Point> leaves_to_stuff(const stuff::Shape& shape, const stuff::F
     const bool same_kind = g.is_center(x) == g.is_center(y);
     return from_x < (same_kind ? options.alpha_long : options.alpha_short);
   };
+  std::unordered_map<d3::Point, std::array<std::size_t, 2>, d3::PointHash> extracted;
+  std::vector<d3::Tet> ghost_tets;
+  std::vector<d3::Point> star;
   while (!frontier.empty()) {
     const d3::Point x = frontier.back();
     frontier.pop_back();
-    std::vector<d3::Point> star;
+    star.clear();
     each_star_leaf(g, x, [&](const d3::Point& u) {
       if (!is_own(u)) star.push_back(u);
     });
     for (const d3::Point& u : star) {
-      tets.clear();
-      d3::detail::leaf_tetrahedra(g, u, tets);
-      for (const d3::Tet& t : tets) {
+      const auto [at, added] = extracted.try_emplace(u, std::array<std::size_t, 2>{ghost_tets.size(), 0});
+      if (added) {
+        d3::detail::leaf_tetrahedra(g, u, ghost_tets);
+        at->second[1] = ghost_tets.size();
+      }
+      for (std::size_t k = at->second[0]; k < at->second[1]; ++k) {
+        const d3::Tet t = ghost_tets[k];
         if (std::find(t.begin(), t.end(), x) == t.end()) continue;
         for (const d3::Point& y : t)
-          if (y < x && !needed.contains(y) && violated_by(x, y)) need(y);
+          if (y < x && !in_d(y) && violated_by(x, y)) {
+            later.insert(y);
+            star_of(y);
+          }
       }
     }
   }
-  return sorted_union(mine, ghosts);
+  return sorted_union(mine, std::move(ghosts));
 }
 
 }  // namespace bccmis::distributed

@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "bccmis/stuff/mesh_shape.h"
 
@@ -32,8 +34,11 @@ Replicated replicate(const stuff::Shape& world, const stuff::StuffOptions& optio
   return Replicated{n, std::move(local), o, fit, std::move(g)};
 }
 
-LeafPiece stuff_piece(const Replicated& r, std::span<const d3::Point> own) {
-  LeafPiece piece = stuff_leaves(*r.shape, r.fit, r.lattice, r.options, own);
+LeafPiece stuff_piece(Replicated& r, std::span<const d3::Point> own) {
+  std::vector<LeafPiece> blocks = stuff_blocks(*r.shape, r.fit, *r.lattice, r.options, own);
+  r.lattice.reset();
+  LeafPiece piece = blocks.size() == 1 ? std::move(blocks[0]) : merge_pieces(blocks);
+  blocks = {};
   stuff::to_world(piece.mesh, r.normalisation, std::ldexp(r.fit.h, r.normalisation.exponent));
   return piece;
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <span>
 
 #include "bccmis/distributed/leaf_piece.h"
@@ -20,7 +21,7 @@ struct Replicated {
   std::unique_ptr<stuff::Shape> shape;  ///< in local coordinates
   stuff::StuffOptions options;          ///< max_level: the level used
   stuff::Fit fit;                       ///< local
-  d3::fast::Lattice lattice;            ///< S3
+  std::optional<d3::fast::Lattice> lattice;  ///< S3; released by stuff_piece()
 };
 
 /// S24, S2, S3 for `world` as mesh_shape() does them. Throws ShapeError as
@@ -30,7 +31,9 @@ struct Replicated {
 Replicated replicate(const stuff::Shape& world, const stuff::StuffOptions& options, int deepest);
 
 /// D3, D4: stuff_leaves() on the replicated lattice, the piece's vertices
-/// mapped to world coordinates (S24's to_world; ShapeError as there).
-LeafPiece stuff_piece(const Replicated& r, std::span<const d3::Point> own);
+/// mapped to world coordinates (S24's to_world; ShapeError as there). The
+/// lattice is released once the blocks are stuffed, before their pieces
+/// are merged (D3, D10): its bytes and the merge's are not held at once.
+LeafPiece stuff_piece(Replicated& r, std::span<const d3::Point> own);
 
 }  // namespace bccmis::distributed

@@ -11,16 +11,23 @@
 
 namespace bccmis::distributed {
 
-LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
-                       const stuff::StuffOptions& options, std::span<const d3::Point> own, std::size_t block) {
-  std::vector<d3::Point> mine(own.begin(), own.end());
-  std::sort(mine.begin(), mine.end());
+std::vector<LeafPiece> stuff_blocks(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
+                                    const stuff::StuffOptions& options, std::span<const d3::Point> own,
+                                    std::size_t block) {
+  // The blocks follow the order of `own` (D3: any split gives the same
+  // piece): p8est's Morton order (D2) makes a block compact, so its ghost
+  // layer is thin.
   std::vector<LeafPiece> pieces;
-  for (std::size_t first = 0; first < mine.size() || first == 0; first += std::max<std::size_t>(block, 1)) {
-    const std::span<const d3::Point> leaves =
-        std::span<const d3::Point>(mine).subspan(first, std::min(block, mine.size() - first));
+  for (std::size_t first = 0; first < own.size() || first == 0; first += std::max<std::size_t>(block, 1)) {
+    const std::span<const d3::Point> leaves = own.subspan(first, std::min(block, own.size() - first));
     pieces.push_back(stuff_leaves(shape, fit, g, options, leaves, leaves_to_stuff(shape, fit, g, options, leaves)));
   }
+  return pieces;
+}
+
+LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
+                       const stuff::StuffOptions& options, std::span<const d3::Point> own, std::size_t block) {
+  std::vector<LeafPiece> pieces = stuff_blocks(shape, fit, g, options, own, block);
   return pieces.size() == 1 ? std::move(pieces[0]) : merge_pieces(pieces);
 }
 
