@@ -12,7 +12,7 @@
 // tetrahedra not positively oriented (--verify).
 //
 //   stuff_peers cgal INPUT.off --cell-size S [--facet-distance D] [--seed N] [--features [--feature-angle A]]
-//                   [--verify [--tolerance T]]
+//                   [--verify [--tolerance T] [--max-hausdorff H]]
 //       CGAL Mesh_3 on a Polyhedral_mesh_domain_3: make_mesh_3 with
 //       facet_angle 25, facet_size S, facet_distance D (default S / 20),
 //       cell_radius_edge_ratio 3, cell_size S, then perturb() and exude();
@@ -24,7 +24,7 @@
 //       and corners, which Mesh_3 protects with balls, edge_size S / 2 (the
 //       ratio of CGAL's own fandisk example); mesher "cgal-features", and
 //       the time includes the detection.
-//   stuff_peers tetgen INPUT.off --max-volume V [--feature-angle A] [--verify [--tolerance T]]
+//   stuff_peers tetgen INPUT.off --max-volume V [--feature-angle A] [--verify [--tolerance T] [--max-hausdorff H]]
 //       Debian's `tetgen` binary, `-pq1.414 -a<V> -Q` on a copy of INPUT in a
 //       temporary directory; reads the .node/.ele it writes. seconds: the
 //       tetgen process's wall time, cpu_seconds its user + system time.
@@ -35,8 +35,10 @@
 //       The dihedral-angle function on tetrahedra whose angles are known.
 //
 // --verify: exit 1 unless the mesh has tetrahedra, every tetrahedron is
-// positively oriented (tet_quality.h, orient6 > 0) and |volume_rel_error|
-// is at most T (default 0.05). Numbers: bench/RESULTS.md, section 14.
+// positively oriented (tet_quality.h, orient6 > 0), |volume_rel_error|
+// is at most T (default 0.05) and, with --max-hausdorff H, both sampled
+// Hausdorff distances are at most H. Numbers: bench/RESULTS.md, sections 14
+// and 24.
 // GCC's optimizer reports a false "may be used uninitialized" inside
 // Boost.Graph's add_edge, which detect_features (CGAL's
 // split_graph_into_polylines) instantiates; the state is taken by the line
@@ -395,7 +397,7 @@ bccmis::d3::TetMeshF to_mesh(const TetMesh& m) {
 
 // Prints the JSON object; returns false when --verify fails.
 bool report(const std::string& mesher, const std::string& input, const TetMesh& m, double seconds, double cpu_seconds,
-            double feature_angle, bool verify, double tolerance) {
+            double feature_angle, bool verify, double tolerance, double max_hausdorff) {
   const std::size_t inverted = bccmis::bench::measure(m.points, m.tets).inverted;
   std::vector<char> used(m.points.size(), 0);
   for (const Tet& t : m.tets)
@@ -430,6 +432,11 @@ bool report(const std::string& mesher, const std::string& input, const TetMesh& 
   if (!(std::fabs(rel) <= tolerance)) {
     std::fprintf(stderr, "stuff_peers: %s: volume error %.3e above the tolerance %.3g\n", mesher.c_str(), rel,
                  tolerance);
+    ok = false;
+  }
+  if (!(s.hausdorff.from_boundary <= max_hausdorff && s.hausdorff.from_surface <= max_hausdorff)) {
+    std::fprintf(stderr, "stuff_peers: %s: Hausdorff distance %.3g, %.3g above %.3g\n", mesher.c_str(),
+                 s.hausdorff.from_boundary, s.hausdorff.from_surface, max_hausdorff);
     ok = false;
   }
   return ok;
@@ -503,8 +510,9 @@ bool selftest() {
 int usage() {
   std::fprintf(stderr,
                "usage: stuff_peers cgal INPUT.off --cell-size S [--facet-distance D] [--seed N] [--features "
-               "[--feature-angle A]] [--verify [--tolerance T]]\n"
-               "       stuff_peers tetgen INPUT.off --max-volume V [--feature-angle A] [--verify [--tolerance T]]\n"
+               "[--feature-angle A]] [--verify [--tolerance T] [--max-hausdorff H]]\n"
+               "       stuff_peers tetgen INPUT.off --max-volume V [--feature-angle A] [--verify [--tolerance T] "
+               "[--max-hausdorff H]]\n"
                "       stuff_peers sphere-off R N OUT.off\n"
                "       stuff_peers selftest\n");
   return 2;
@@ -524,7 +532,8 @@ int main(int argc, char** argv) {
     }
     if ((command != "cgal" && command != "tetgen") || argc < 3) return usage();
     const std::string input = argv[2];
-    double cell_size = 0, facet_distance = 0, max_volume = 0, tolerance = 0.05, feature_angle = 60;
+    double cell_size = 0, facet_distance = 0, max_volume = 0, tolerance = 0.05, feature_angle = 60,
+           max_hausdorff = HUGE_VAL;
     unsigned seed = 0;
     bool verify = false, features = false;
     for (int i = 3; i < argc; ++i) {
@@ -541,6 +550,8 @@ int main(int argc, char** argv) {
         max_volume = value();
       else if (a == "--tolerance")
         tolerance = value();
+      else if (a == "--max-hausdorff")
+        max_hausdorff = value();
       else if (a == "--seed")
         seed = static_cast<unsigned>(value());
       else if (a == "--verify")
@@ -570,7 +581,7 @@ int main(int argc, char** argv) {
     }
     if (!(feature_angle > 0 && feature_angle < 180)) return usage();
     return report(features ? "cgal-features" : command, input, m, seconds, cpu_seconds, feature_angle, verify,
-                  tolerance)
+                  tolerance, max_hausdorff)
                ? 0
                : 1;
   } catch (const std::exception& e) {
