@@ -3,12 +3,16 @@
 // surface, measured the same way as bccmis. One JSON object per run on stdout
 // (mesher, input, seconds of meshing, vertices, tetrahedra, min/max dihedral
 // angle, fraction of tetrahedra with a dihedral angle below 10 degrees,
-// volume and its relative error against the volume the input surface
-// encloses); the quality measures are tet_quality.h's, computed from the
-// output vertex positions.
+// volume and its relative error against the shape's volume, the sampled
+// Hausdorff distance both ways, the features found and the largest
+// feature-point distance): bccmis::stuff::measure_mesh, the functions that
+// measure `bccmis stuff --stats --hausdorff`'s own mesh (spec/stuffing.md
+// S13, S33), on the input read as `bccmis stuff` reads it; the features at
+// --feature-angle (default 60, as bccmis's). tet_quality.h counts the
+// tetrahedra not positively oriented (--verify).
 //
 //   stuff_peers cgal INPUT.off --cell-size S [--facet-distance D] [--seed N] [--features [--feature-angle A]]
-//                   [--verify [--tolerance T]]
+//                   [--verify [--tolerance T] [--max-hausdorff H]]
 //       CGAL Mesh_3 on a Polyhedral_mesh_domain_3: make_mesh_3 with
 //       facet_angle 25, facet_size S, facet_distance D (default S / 20),
 //       cell_radius_edge_ratio 3, cell_size S, then perturb() and exude();
@@ -20,7 +24,7 @@
 //       and corners, which Mesh_3 protects with balls, edge_size S / 2 (the
 //       ratio of CGAL's own fandisk example); mesher "cgal-features", and
 //       the time includes the detection.
-//   stuff_peers tetgen INPUT.off --max-volume V [--verify [--tolerance T]]
+//   stuff_peers tetgen INPUT.off --max-volume V [--feature-angle A] [--verify [--tolerance T] [--max-hausdorff H]]
 //       Debian's `tetgen` binary, `-pq1.414 -a<V> -Q` on a copy of INPUT in a
 //       temporary directory; reads the .node/.ele it writes. seconds: the
 //       tetgen process's wall time, cpu_seconds its user + system time.
@@ -31,8 +35,10 @@
 //       The dihedral-angle function on tetrahedra whose angles are known.
 //
 // --verify: exit 1 unless the mesh has tetrahedra, every tetrahedron is
-// positively oriented (tet_quality.h, orient6 > 0) and |volume_rel_error|
-// is at most T (default 0.05). Numbers: bench/RESULTS.md, section 14.
+// positively oriented (tet_quality.h, orient6 > 0), |volume_rel_error|
+// is at most T (default 0.05) and, with --max-hausdorff H, both sampled
+// Hausdorff distances are at most H. Numbers: bench/RESULTS.md, sections 14
+// and 24.
 // GCC's optimizer reports a false "may be used uninitialized" inside
 // Boost.Graph's add_edge, which detect_features (CGAL's
 // split_graph_into_polylines) instantiates; the state is taken by the line
@@ -72,6 +78,8 @@
 #include <utility>
 #include <vector>
 
+#include "bccmis/stuff/measure_mesh.h"
+#include "bccmis/stuff/mesh_shape.h"
 #include "testing/icosphere.h"
 #include "tet_quality.h"
 
@@ -371,39 +379,64 @@ std::string json_string(const std::string& s) {
   return out + "\"";
 }
 
+// The peer's mesh as bccmis's meshes are held (double coordinates, 32-bit
+// indices), for measure_mesh.
+bccmis::d3::TetMeshF to_mesh(const TetMesh& m) {
+  bccmis::d3::TetMeshF out;
+  out.vertices.reserve(m.points.size());
+  for (const Vec3L& p : m.points)
+    out.vertices.push_back({static_cast<double>(p[0]), static_cast<double>(p[1]), static_cast<double>(p[2])});
+  out.tets.reserve(m.tets.size());
+  for (const Tet& t : m.tets)
+    out.tets.push_back({static_cast<std::uint32_t>(t[0]), static_cast<std::uint32_t>(t[1]),
+                        static_cast<std::uint32_t>(t[2]), static_cast<std::uint32_t>(t[3])});
+  out.kind.assign(out.vertices.size(), 0);
+  out.level.assign(out.tets.size(), 0);
+  return out;
+}
+
 // Prints the JSON object; returns false when --verify fails.
-bool report(const std::string& mesher, const std::string& input, const Surface& s, const TetMesh& m, double seconds,
-            double cpu_seconds, bool verify, double tolerance) {
-  const auto q = bccmis::bench::measure(m.points, m.tets);
+bool report(const std::string& mesher, const std::string& input, const TetMesh& m, double seconds, double cpu_seconds,
+            double feature_angle, bool verify, double tolerance, double max_hausdorff) {
+  const std::size_t inverted = bccmis::bench::measure(m.points, m.tets).inverted;
   std::vector<char> used(m.points.size(), 0);
   for (const Tet& t : m.tets)
     for (const std::size_t v : t) used[v] = 1;
   std::size_t vertices = 0;
   for (const char u : used) vertices += static_cast<std::size_t>(u);
-  const long double input_volume = bccmis::bench::enclosed_volume(s.points, s.triangles);
-  const long double rel = (q.volume - input_volume) / input_volume;
-  const long double below10 = q.tetrahedra ? static_cast<long double>(q.below10) / q.tetrahedra : 0;
+  const auto shape = bccmis::stuff::load_mesh_file(input);
+  const auto measured = bccmis::stuff::measure_mesh(*shape, to_mesh(m), feature_angle);
+  const auto& s = measured.statistics;
+  const double rel = s.volume_rel_error();
   std::printf(
       "{\"mesher\": %s, \"input\": %s, \"seconds\": %.6f, \"cpu_seconds\": %.6f, \"vertices\": %zu, \"tetrahedra\": "
-      "%zu, "
-      "\"min_dihedral\": %.6Lf, \"max_dihedral\": %.6Lf, \"below10\": %.8Lf, \"volume\": %.12Lg, "
-      "\"input_volume\": %.12Lg, \"volume_rel_error\": %.8Le, \"inverted\": %zu}\n",
-      json_string(mesher).c_str(), json_string(input).c_str(), seconds, cpu_seconds, vertices, q.tetrahedra,
-      q.min_dihedral, q.max_dihedral, below10, q.volume, input_volume, rel, q.inverted);
+      "%zu, \"min_dihedral\": %.6f, \"max_dihedral\": %.6f, \"below10\": %.8f, \"volume\": %.12g, "
+      "\"input_volume\": %.12g, \"volume_rel_error\": %.8e, \"inverted\": %zu, "
+      "\"hausdorff\": {\"from_boundary\": %.6g, \"from_surface\": %.6g}, \"feature_angle\": %g, "
+      "\"feature_curves\": %zu, \"feature_corners\": %zu, \"feature_distance\": %.6g}\n",
+      json_string(mesher).c_str(), json_string(input).c_str(), seconds, cpu_seconds, vertices, s.tetrahedra,
+      s.quality.min_dihedral, s.quality.max_dihedral, s.below10(), s.quality.volume, s.shape_volume, rel, inverted,
+      s.hausdorff.from_boundary, s.hausdorff.from_surface, feature_angle, measured.feature_curves,
+      measured.feature_corners, measured.feature_distance);
   std::fflush(stdout);
   if (!verify) return true;
   bool ok = true;
-  if (q.tetrahedra == 0) {
+  if (s.tetrahedra == 0) {
     std::fprintf(stderr, "stuff_peers: %s: no tetrahedra\n", mesher.c_str());
     ok = false;
   }
-  if (q.inverted != 0) {
-    std::fprintf(stderr, "stuff_peers: %s: %zu tetrahedra not positively oriented\n", mesher.c_str(), q.inverted);
+  if (inverted != 0) {
+    std::fprintf(stderr, "stuff_peers: %s: %zu tetrahedra not positively oriented\n", mesher.c_str(), inverted);
     ok = false;
   }
   if (!(std::fabs(rel) <= tolerance)) {
-    std::fprintf(stderr, "stuff_peers: %s: volume error %.3Le above the tolerance %.3g\n", mesher.c_str(), rel,
+    std::fprintf(stderr, "stuff_peers: %s: volume error %.3e above the tolerance %.3g\n", mesher.c_str(), rel,
                  tolerance);
+    ok = false;
+  }
+  if (!(s.hausdorff.from_boundary <= max_hausdorff && s.hausdorff.from_surface <= max_hausdorff)) {
+    std::fprintf(stderr, "stuff_peers: %s: Hausdorff distance %.3g, %.3g above %.3g\n", mesher.c_str(),
+                 s.hausdorff.from_boundary, s.hausdorff.from_surface, max_hausdorff);
     ok = false;
   }
   return ok;
@@ -477,8 +510,9 @@ bool selftest() {
 int usage() {
   std::fprintf(stderr,
                "usage: stuff_peers cgal INPUT.off --cell-size S [--facet-distance D] [--seed N] [--features "
-               "[--feature-angle A]] [--verify [--tolerance T]]\n"
-               "       stuff_peers tetgen INPUT.off --max-volume V [--verify [--tolerance T]]\n"
+               "[--feature-angle A]] [--verify [--tolerance T] [--max-hausdorff H]]\n"
+               "       stuff_peers tetgen INPUT.off --max-volume V [--feature-angle A] [--verify [--tolerance T] "
+               "[--max-hausdorff H]]\n"
                "       stuff_peers sphere-off R N OUT.off\n"
                "       stuff_peers selftest\n");
   return 2;
@@ -498,7 +532,8 @@ int main(int argc, char** argv) {
     }
     if ((command != "cgal" && command != "tetgen") || argc < 3) return usage();
     const std::string input = argv[2];
-    double cell_size = 0, facet_distance = 0, max_volume = 0, tolerance = 0.05, feature_angle = 60;
+    double cell_size = 0, facet_distance = 0, max_volume = 0, tolerance = 0.05, feature_angle = 60,
+           max_hausdorff = HUGE_VAL;
     unsigned seed = 0;
     bool verify = false, features = false;
     for (int i = 3; i < argc; ++i) {
@@ -515,13 +550,15 @@ int main(int argc, char** argv) {
         max_volume = value();
       else if (a == "--tolerance")
         tolerance = value();
+      else if (a == "--max-hausdorff")
+        max_hausdorff = value();
       else if (a == "--seed")
         seed = static_cast<unsigned>(value());
       else if (a == "--verify")
         verify = true;
       else if (a == "--features" && command == "cgal")
         features = true;
-      else if (a == "--feature-angle" && command == "cgal")
+      else if (a == "--feature-angle")
         feature_angle = value();
       else
         return usage();
@@ -542,7 +579,11 @@ int main(int argc, char** argv) {
       if (!(max_volume > 0)) return usage();
       m = run_tetgen(input, max_volume, seconds, cpu_seconds);
     }
-    return report(features ? "cgal-features" : command, input, s, m, seconds, cpu_seconds, verify, tolerance) ? 0 : 1;
+    if (!(feature_angle > 0 && feature_angle < 180)) return usage();
+    return report(features ? "cgal-features" : command, input, m, seconds, cpu_seconds, feature_angle, verify,
+                  tolerance, max_hausdorff)
+               ? 0
+               : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "stuff_peers: %s\n", e.what());
     return 1;

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The README's pictures of sharp features (spec/stuffing.md S29-S34): CGAL's
+# The README's pictures of sharp features (spec/stuffing.md S29-S35): CGAL's
 # fandisk stuffed at level 4 with features (the default for a mesh file) and
 # with --no-features, the boundary of each, and the dihedral-angle histogram
 # of the mesh with features; then the numbers the README quotes, from the

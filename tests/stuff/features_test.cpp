@@ -1,8 +1,9 @@
-// Sharp features (spec/stuffing.md S29-S34): detection on hand-built
+// Sharp features (spec/stuffing.md S29-S35): detection on hand-built
 // surfaces whose creases and corners are known (a cube, a fold standing on
 // the feature angle, a hexagonal prism with two loops), conformity on a
 // rotated cube (the conformed mesh's volume is the cube's) and on CGAL's
-// fandisk (S34: interior vertices moved to make room), with S10's dihedral
+// fandisk (S34: interior vertices moved to make room; S35: boundary edges
+// split onto the creases), with S10's dihedral
 // bound on every mesh, and the checker's feature layer catching a corner moved off and a curve not covered.
 #include <gtest/gtest.h>
 
@@ -213,6 +214,7 @@ TEST(FeatureConformity, HexagonalPrismKeepsItsTwoLoops) {
 //= spec/stuffing.md S30 type=test
 //= spec/stuffing.md S33 type=test
 //= spec/stuffing.md S34 type=test
+//= spec/stuffing.md S35 type=test
 TEST(FeatureConformity, FandiskKeepsItsCornersWithinTheBound) {
   const auto fandisk = load_mesh_file(kCgal + "/fandisk.off");
   const Meshed without = mesh_with(*fandisk, 3, false);
@@ -221,17 +223,30 @@ TEST(FeatureConformity, FandiskKeepsItsCornersWithinTheBound) {
   EXPECT_EQ(with.features->corners, 25u);
   EXPECT_EQ(with.features->curves, 35u);
   EXPECT_EQ(with.features->corners_conformed, with.features->corners);
-  // S34's room: 27 curves conformed (26 with the snapped vertex moved alone).
-  EXPECT_GE(with.features->curves_conformed, 27u);
+  // S35's splits: 29 curves conformed (27 with S34's room alone, 26 with
+  // the snapped vertex moved alone).
+  EXPECT_GE(with.features->curves_conformed, 29u);
   // The vertices S34 moved: interior (on no boundary triangle), lattice
-  // vertices not moved without features, and moved now (same tetrahedra,
-  // same numbering: S30 and S34 move vertices only).
-  ASSERT_EQ(with.stuffed.mesh.vertices.size(), without.stuffed.mesh.vertices.size());
+  // vertices not moved without features, and moved now (S30 and S34 move
+  // vertices only; S35 appends its vertices after S8's numbering).
+  const std::size_t lattice_vertices = without.stuffed.mesh.vertices.size();
+  ASSERT_GT(with.stuffed.mesh.vertices.size(), lattice_vertices);
   std::vector<char> on_boundary(with.stuffed.mesh.vertices.size(), 0);
   for (const auto& f : with.boundary)
     for (const std::uint32_t v : f) on_boundary[v] = 1;
+  // S35's vertices: snapped, on the boundary, on a crease (within 1e-9 h of
+  // a curve of the input's features, found here on its own triangles).
+  const Features creases = detect_features(fandisk->surface_triangles());
+  for (std::size_t i = lattice_vertices; i < with.stuffed.mesh.vertices.size(); ++i) {
+    EXPECT_EQ(with.stuffed.mesh.kind[i], kSnappedVertex) << i;
+    EXPECT_TRUE(on_boundary[i]) << i;
+    double nearest = HUGE_VAL;
+    for (const FeatureCurve& C : creases.curves)
+      nearest = std::min(nearest, nearest_on_curve(C, with.stuffed.mesh.vertices[i]).distance);
+    EXPECT_LE(nearest, 1e-9 * with.fit.h) << i;
+  }
   std::size_t room = 0;
-  for (std::size_t i = 0; i < with.stuffed.mesh.vertices.size(); ++i) {
+  for (std::size_t i = 0; i < lattice_vertices; ++i) {
     if (with.stuffed.mesh.kind[i] != kRoomVertex) continue;
     ++room;
     EXPECT_FALSE(on_boundary[i]) << i;

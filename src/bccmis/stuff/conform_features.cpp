@@ -1,4 +1,4 @@
-// S30-S34: a stuffed mesh made to hold the sharp features (conform_features.h).
+// S30-S35: a stuffed mesh made to hold the sharp features (conform_features.h).
 #include "bccmis/stuff/conform_features.h"
 
 #include <algorithm>
@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <queue>
+#include <tuple>
 #include <unordered_map>
 #include <utility>
 
@@ -59,6 +60,39 @@ std::pair<Vec3, Vec3> box_around(const Vec3& p, double r) {
   return {{p[0] - r, p[1] - r, p[2] - r}, {p[0] + r, p[1] + r, p[2] + r}};
 }
 
+/// The closest points of the segments [p1, q1] and [p2, q2]: their
+/// parameters (t1 along the first, t2 along the second, each in [0, 1]) and
+/// their distance (Ericson, "Real-Time Collision Detection", 5.1.9).
+struct SegmentPair {
+  double t1 = 0, t2 = 0, distance = HUGE_VAL;
+};
+SegmentPair closest_between(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2) {
+  const auto sub = [](const Vec3& a, const Vec3& b) { return Vec3{a[0] - b[0], a[1] - b[1], a[2] - b[2]}; };
+  const auto dot = [](const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  const Vec3 d1 = sub(q1, p1), d2 = sub(q2, p2), r = sub(p1, p2);
+  const double a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r);
+  double s = 0, t = 0;
+  if (a > 0 && e > 0) {
+    const double c = dot(d1, r), b = dot(d1, d2), denom = a * e - b * b;
+    s = denom > 0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+    t = (b * s + f) / e;
+    if (t < 0) {
+      t = 0;
+      s = std::clamp(-c / a, 0.0, 1.0);
+    } else if (t > 1) {
+      t = 1;
+      s = std::clamp((b - c) / a, 0.0, 1.0);
+    }
+  } else if (a > 0) {
+    s = std::clamp(-dot(d1, r) / a, 0.0, 1.0);
+  } else if (e > 0) {
+    t = std::clamp(f / e, 0.0, 1.0);
+  }
+  const Vec3 x{p1[0] + s * d1[0], p1[1] + s * d1[1], p1[2] + s * d1[2]};
+  const Vec3 y{p2[0] + t * d2[0], p2[1] + t * d2[1], p2[2] + t * d2[2]};
+  return {s, t, distance(x, y)};
+}
+
 /// The point of C at arc length s (0 <= s <= its length).
 Vec3 point_at(const FeatureCurve& C, double s) {
   for (std::size_t i = 1; i < C.points.size(); ++i) {
@@ -82,10 +116,14 @@ class Snapper {
         h_(h),
         tets_at_(mesh.vertices.size()),
         neighbours_(mesh.vertices.size()),
+        triangles_(boundary),
+        triangles_at_(mesh.vertices.size()),
         taken_(mesh.vertices.size(), 0),
         grid_(h) {
     for (std::uint32_t t = 0; t < mesh.tets.size(); ++t)
       for (const std::uint32_t v : mesh.tets[t]) tets_at_[v].push_back(t);
+    for (std::uint32_t i = 0; i < triangles_.size(); ++i)
+      for (const std::uint32_t v : triangles_[i]) triangles_at_[v].push_back(i);
     for (const auto& f : boundary)
       for (std::size_t i = 0; i < 3; ++i) {
         neighbours_[f[i]].push_back(f[(i + 1) % 3]);
@@ -154,24 +192,24 @@ class Snapper {
   /// vertices, already on them): the cheapest boundary path through free
   /// vertices within h of C, its interior moved onto C; a vertex whose move
   /// is refused (or breaks the order along C) is left out and the path
-  /// sought again, up to kAttempts times. True when conformed.
+  /// sought again, up to kAttempts times. When no path is conformed, S35:
+  /// the boundary edges crossing C split onto it, and the path sought again.
+  /// True when conformed.
   bool snap_piece(const FeatureCurve& C, std::uint32_t from, std::uint32_t to, FeatureConformity& r) {
-    // d(v, C) of the free boundary vertices near C (a box around it first).
-    Vec3 lo = C.points.front(), hi = lo;
-    for (const Vec3& p : C.points)
-      for (std::size_t k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-    std::unordered_map<std::uint32_t, double> near;
-    for (const std::uint32_t v :
-         grid_.in_box({lo[0] - h_, lo[1] - h_, lo[2] - h_}, {hi[0] + h_, hi[1] + h_, hi[2] + h_})) {
-      const Vec3& x = mesh_.vertices[v];
-      bool in_box = true;
-      for (std::size_t k = 0; k < 3; ++k) in_box = in_box && x[k] >= lo[k] - h_ && x[k] <= hi[k] + h_;
-      if (in_box && (v == from || v == to || !taken_[v]))
-        if (const double d = nearest_on_curve(C, x).distance; d <= h_ || v == from || v == to) near[v] = d;
-    }
+    if (const auto done = follow(C, from, to, r)) return *done;
+    if (split_crossings(C, r) == 0) return false;
+    return follow(C, from, to, r).value_or(false);
+  }
+
+ private:
+  /// S30.2's attempts on the piece C from `from` to `to`: nothing when every
+  /// attempt failed (no vertex taken); otherwise whether the path taken
+  /// meets S32's chord condition.
+  std::optional<bool> follow(const FeatureCurve& C, std::uint32_t from, std::uint32_t to, FeatureConformity& r) {
+    std::unordered_map<std::uint32_t, double> near = near_vertices(C, from, to);
     for (int attempt = 0; attempt < kAttempts; ++attempt) {
       const std::optional<std::vector<std::uint32_t>> found = cheapest_path(from, to, near);
-      if (!found) return false;
+      if (!found) return std::nullopt;
       const std::vector<std::uint32_t>& path = *found;
       // The interior onto C, in order, arc lengths strictly increasing.
       double s = 0;
@@ -202,10 +240,146 @@ class Snapper {
       }
       near.erase(static_cast<std::uint32_t>(failed));
     }
-    return false;
+    return std::nullopt;
   }
 
- private:
+  /// d(v, C) of the free boundary vertices within h of C (a box around it
+  /// first), and of the ends `from` and `to`; with `taken`, of the taken ones too.
+  std::unordered_map<std::uint32_t, double> near_vertices(const FeatureCurve& C, std::uint32_t from, std::uint32_t to,
+                                                          bool taken = false) const {
+    Vec3 lo = C.points.front(), hi = lo;
+    for (const Vec3& p : C.points)
+      for (std::size_t k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+    std::unordered_map<std::uint32_t, double> near;
+    for (const std::uint32_t v :
+         grid_.in_box({lo[0] - h_, lo[1] - h_, lo[2] - h_}, {hi[0] + h_, hi[1] + h_, hi[2] + h_})) {
+      const Vec3& x = mesh_.vertices[v];
+      bool in_box = true;
+      for (std::size_t k = 0; k < 3; ++k) in_box = in_box && x[k] >= lo[k] - h_ && x[k] <= hi[k] + h_;
+      if (in_box && (v == from || v == to || taken || !taken_[v]))
+        if (const double d = nearest_on_curve(C, x).distance; d <= h_ || v == from || v == to) near[v] = d;
+    }
+    return near;
+  }
+
+  /// S35: the boundary edges uw crossing C (u and w within h of C, not both
+  /// taken; the closest points of uw and C at a parameter of uw in [1/4, 3/4]
+  /// and within h/2 of each other, at an arc length strictly inside C), split
+  /// in the order of that arc length (ties by u, w) at the point c of C, each
+  /// split made only when S31's test passes every tetrahedron it changes or
+  /// makes. The number of splits made.
+  std::size_t split_crossings(const FeatureCurve& C, FeatureConformity& r) {
+    struct Crossing {
+      double s;
+      std::uint32_t u, w;
+      Vec3 c;
+      bool operator<(const Crossing& o) const { return std::tie(s, u, w) < std::tie(o.s, o.u, o.w); }
+    };
+    const auto near = near_vertices(C, 0, 0, true);
+    std::vector<Crossing> crossings;
+    std::vector<double> s_vertex{0};
+    for (std::size_t i = 1; i < C.points.size(); ++i)
+      s_vertex.push_back(s_vertex.back() + distance(C.points[i - 1], C.points[i]));
+    for (const auto& [u, du] : near) {
+      if (du > h_ || neighbours_[u].empty()) continue;
+      for (const std::uint32_t w : neighbours_[u]) {
+        const auto nw = near.find(w);
+        if (w < u || nw == near.end() || nw->second > h_ || (taken_[u] && taken_[w])) continue;
+        SegmentPair best;
+        std::size_t segment = 0;
+        for (std::size_t i = 1; i < C.points.size(); ++i) {
+          const SegmentPair p = closest_between(mesh_.vertices[u], mesh_.vertices[w], C.points[i - 1], C.points[i]);
+          if (p.distance < best.distance) best = p, segment = i;
+        }
+        if (!(best.t1 >= 0.25 && best.t1 <= 0.75 && best.distance <= h_ / 2)) continue;
+        const Vec3 &a = C.points[segment - 1], &b = C.points[segment];
+        const double s = s_vertex[segment - 1] + best.t2 * (s_vertex[segment] - s_vertex[segment - 1]);
+        if (!(s > 0 && s < C.length())) continue;
+        crossings.push_back({s, u, w, {a[0] + best.t2 * (b[0] - a[0]), a[1] + best.t2 * (b[1] - a[1]),
+                                       a[2] + best.t2 * (b[2] - a[2])}});
+      }
+    }
+    std::sort(crossings.begin(), crossings.end());
+    std::size_t made = 0;
+    for (const Crossing& x : crossings)
+      if (split(x.u, x.w, x.c)) ++made;
+    r.splits += made;
+    return made;
+  }
+
+  /// S35's split of the boundary edge uw at c: a new vertex p at c (kind
+  /// kSnappedVertex, appended); every tetrahedron at uw becomes the two with
+  /// u and with w replaced by p (the one without u appended), every boundary
+  /// triangle at uw likewise. Made only when S31's test passes all of them;
+  /// false (nothing changed) when uw is no longer a boundary edge or the
+  /// test fails.
+  bool split(std::uint32_t u, std::uint32_t w, const Vec3& c) {
+    const auto& nu = neighbours_[u];
+    if (!std::binary_search(nu.begin(), nu.end(), w)) return false;
+    std::vector<std::uint32_t> at_edge;
+    for (const std::uint32_t t : tets_at_[u])
+      if (std::find(mesh_.tets[t].begin(), mesh_.tets[t].end(), w) != mesh_.tets[t].end()) at_edge.push_back(t);
+    const auto replaced = [](std::array<std::uint32_t, 4> t, std::uint32_t from, std::uint32_t to) {
+      for (auto& v : t)
+        if (v == from) v = to;
+      return t;
+    };
+    const std::uint32_t p = static_cast<std::uint32_t>(mesh_.vertices.size());
+    const auto at = [&](std::uint32_t v) { return v == p ? c : mesh_.vertices[v]; };
+    for (const std::uint32_t t : at_edge)
+      for (const auto& half : {replaced(mesh_.tets[t], u, p), replaced(mesh_.tets[t], w, p)})
+        if (!passes({at(half[0]), at(half[1]), at(half[2]), at(half[3])})) return false;
+    // Made: the vertex, the tetrahedra, the boundary triangles, the graph.
+    mesh_.vertices.push_back(c);
+    mesh_.kind.push_back(kSnappedVertex);
+    tets_at_.emplace_back();
+    neighbours_.emplace_back();
+    triangles_at_.emplace_back();
+    taken_.push_back(0);
+    for (const std::uint32_t t : at_edge) {
+      const auto t_id = static_cast<std::uint32_t>(mesh_.tets.size());
+      mesh_.tets.push_back(replaced(mesh_.tets[t], w, p));  // keeps u
+      mesh_.level.push_back(mesh_.level[t]);
+      mesh_.tets[t] = replaced(mesh_.tets[t], u, p);  // keeps w
+      for (const std::uint32_t v : mesh_.tets[t_id])
+        if (v != u && v != p) tets_at_[v].push_back(t_id);
+      std::replace(tets_at_[u].begin(), tets_at_[u].end(), t, t_id);
+      tets_at_[p].push_back(t);
+      tets_at_[p].push_back(t_id);
+    }
+    std::vector<std::uint32_t> opposite;
+    for (const std::uint32_t f : std::vector<std::uint32_t>(triangles_at_[u])) {
+      auto& tri = triangles_[f];
+      if (std::find(tri.begin(), tri.end(), w) == tri.end()) continue;
+      auto other = tri;  // keeps w
+      for (auto& v : other)
+        if (v == u) v = p;
+      for (auto& v : tri)  // keeps u
+        if (v == w) v = p;
+      const auto f_id = static_cast<std::uint32_t>(triangles_.size());
+      triangles_.push_back(other);
+      for (const std::uint32_t v : other)
+        if (v != p && v != w) opposite.push_back(v), triangles_at_[v].push_back(f_id);
+      std::replace(triangles_at_[w].begin(), triangles_at_[w].end(), f, f_id);
+      triangles_at_[p].push_back(f);
+      triangles_at_[p].push_back(f_id);
+    }
+    const auto link = [this](std::uint32_t a, std::uint32_t b) {
+      auto& n = neighbours_[a];
+      n.insert(std::upper_bound(n.begin(), n.end(), b), b);
+    };
+    const auto unlink = [this](std::uint32_t a, std::uint32_t b) {
+      auto& n = neighbours_[a];
+      n.erase(std::lower_bound(n.begin(), n.end(), b));
+    };
+    unlink(u, w);
+    unlink(w, u);
+    for (const std::uint32_t v : std::vector<std::uint32_t>{u, w}) link(v, p), link(p, v);
+    for (const std::uint32_t v : opposite) link(v, p), link(p, v);
+    grid_.insert(p, c, c);
+    return true;
+  }
+
   /// S32's chord condition on the path from -> path -> to, whose vertices
   /// lie on C in order: every vertex of C between two consecutive ones
   /// within h/4 of the edge joining them.
@@ -242,10 +416,17 @@ class Snapper {
           const auto it = moved.find(mesh_.tets[t][i]);
           p[i] = it == moved.end() ? mesh_.vertices[mesh_.tets[t][i]] : it->second;
         }
-        if (orientation(p[0], p[1], p[2], p[3]) <= 0) return false;
-        for (const double a : d3::dihedral_angles(p))
-          if (!(a >= kDihedralBounds[0] && a <= kDihedralBounds[1])) return false;
+        if (!passes(p)) return false;
       }
+    return true;
+  }
+
+  /// S31's test of one tetrahedron: positively oriented (S12), its six
+  /// dihedral angles in S10's interval.
+  static bool passes(const std::array<Vec3, 4>& p) {
+    if (orientation(p[0], p[1], p[2], p[3]) <= 0) return false;
+    for (const double a : d3::dihedral_angles(p))
+      if (!(a >= kDihedralBounds[0] && a <= kDihedralBounds[1])) return false;
     return true;
   }
 
@@ -312,6 +493,8 @@ class Snapper {
   double h_;
   std::vector<std::vector<std::uint32_t>> tets_at_;
   std::vector<std::vector<std::uint32_t>> neighbours_;
+  std::vector<std::array<std::uint32_t, 3>> triangles_;    ///< the boundary triangles, S35's splits included
+  std::vector<std::vector<std::uint32_t>> triangles_at_;  ///< those at each vertex
   std::vector<char> taken_;
   BoxGrid grid_;  ///< the boundary vertices, in cubes of side h
 };

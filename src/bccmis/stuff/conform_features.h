@@ -1,7 +1,8 @@
 // bccmis::stuff::conform_features: a stuffed mesh made to hold the sharp
-// features of its shape (spec/stuffing.md S30-S34): boundary vertices
-// snapped onto the corners and along the curves, each move guarded so that
-// S10's dihedral bound holds.
+// features of its shape (spec/stuffing.md S30-S35): boundary vertices
+// snapped onto the corners and along the curves, boundary edges split onto
+// the curves where no path of snapped vertices holds them, each change
+// guarded so that S10's dihedral bound holds.
 #pragma once
 
 #include <array>
@@ -28,11 +29,15 @@ struct FeatureConformity {
   std::size_t curves_conformed = 0;    ///< of Features::curves, every piece conformed
   std::size_t moves = 0, refused = 0;  ///< the guard's answers (S31)
   std::size_t room_made = 0;           ///< moves accepted with the interior neighbours moved (S34)
+  std::size_t splits = 0;              ///< boundary edges split onto a crease (S35)
 };
 
-/// S30-S31 on `mesh` (a stuffed mesh, positively oriented tetrahedra, whose
-/// boundary triangles are `boundary`), `h` the finest side: moves boundary
-/// vertices onto `features` and marks them kSnappedVertex.
+/// S30-S31, S34 and S35 on `mesh` (a stuffed mesh, positively oriented
+/// tetrahedra, whose boundary triangles are `boundary`), `h` the finest
+/// side: moves boundary vertices onto `features` and marks them
+/// kSnappedVertex; S35's splits append vertices (kSnappedVertex) and
+/// tetrahedra, and change tetrahedra at the split edges, so that `boundary`
+/// is the mesh's only while `splits` is 0.
 FeatureConformity conform_features(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
                                    const Features& features, double h);
 

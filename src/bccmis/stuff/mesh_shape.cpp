@@ -129,7 +129,7 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
   if (r.stuffed.mesh.tets.empty())
     throw ShapeError(world.describe() + ": the mesh is empty: " + level_hint(world.bounds(), r.fit));
   // One grouping of the faces for S11's boundary and M23's regions (the
-  // feature snapping below moves vertices only), timed with the statistics.
+  // feature snapping below moves vertices only; S35's splits group them again), timed with the statistics.
   const auto t_faces = Clock::now();
   r.regions = io::regions_of(r.stuffed.mesh.tets, &r.boundary);
   const double face_seconds = seconds_since(t_faces);
@@ -140,6 +140,8 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
     const auto t0 = Clock::now();
     features = detect_features(shape.surface_triangles(), settings.features.angle);
     conformity = conform_features(r.stuffed.mesh, r.boundary, features, fit.h);
+    // S35's splits changed the tetrahedra: their boundary and regions again.
+    if (conformity.splits > 0) r.regions = io::regions_of(r.stuffed.mesh.tets, &r.boundary);
     r.features = FeatureReport{features.angle,
                                features.edges,
                                features.curves.size(),
@@ -150,7 +152,8 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
     say(std::to_string(features.edges) + " feature edges, " + std::to_string(features.corners.size()) +
         " corners; conformed " + std::to_string(conformity.corners_conformed) + " corners, " +
         std::to_string(conformity.curves_conformed) + " of " + std::to_string(features.curves.size()) + " curves; " +
-        std::to_string(conformity.moves) + " moves, " + std::to_string(conformity.refused) + " refused by the guard");
+        std::to_string(conformity.moves) + " moves, " + std::to_string(conformity.refused) + " refused by the guard, " +
+        std::to_string(conformity.splits) + " edges split");
   }
   const auto t1 = Clock::now();
   // S11 first, so that S27's topology errors below come from meshes that pass it.
