@@ -20,6 +20,8 @@ packages=(
   pybind11-dev python3-pybind11 python3-dev python3-pytest python3-matplotlib
   # the peers of `bccmis stuff` in the comparison benchmark (bench/stuff_peers.cpp)
   tetgen
+  # peak memory and CPU seconds of a run in bench/replay_e2e.sh (also its smoke test)
+  time
   # optional components: the p4est bridge (p4est is built with OpenMPI, whose
   # headers libp4est-dev does not pull in) and the browser test of the viewer
   libp4est-dev libopenmpi-dev openmpi-bin chromium
