@@ -84,7 +84,7 @@ bccmis_add_gtest(stuff_mesh_picture_tests SOURCES mesh_picture_test.cpp LIBS bcc
 
 # The fast path against the reference: the same lattice, graded mesh and
 # stuffed mesh, exactly.
-bccmis_add_gtest(stuffing_fast_tests SOURCES stuffing_fast_test.cpp LIBS bccmis::stuff bccmis::d3 bccmis::fast
+bccmis_add_gtest(stuffing_fast_tests SOURCES stuffing_fast_test.cpp position_order_test.cpp LIBS bccmis::stuff bccmis::d3 bccmis::fast
                  LABELS unit)
 
 # Sharp features (spec/stuffing.md S29-S33, spec/cli.md): the cube's 12

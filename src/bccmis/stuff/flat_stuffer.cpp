@@ -15,6 +15,7 @@
 #include "bccmis/fast/d3/lattice.h"
 #include "bccmis/stuff/detail/leaf_blocks.h"
 #include "bccmis/stuff/detail/parallel_ranges.h"
+#include "bccmis/stuff/detail/position_order.h"
 #include "bccmis/stuff/detail/stencils.h"
 #include "bccmis/stuff/detail/stuffer.h"
 #include "bccmis/stuff/stuff.h"
@@ -187,9 +188,8 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
   }
   void end_numbering() {
     table_ = {};
-    std::vector<std::uint32_t> order(points_.size());
-    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return points_[a] < points_[b]; });
+    // S8a: the rank of each point by position, by a radix sort.
+    const std::vector<std::uint32_t> order = detail::position_order(points_);
     std::vector<std::uint32_t> rank(points_.size());
     std::vector<d3::Point> sorted(points_.size());
     for (std::uint32_t r = 0; r < order.size(); ++r) rank[order[r]] = r, sorted[r] = points_[order[r]];
