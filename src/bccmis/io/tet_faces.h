@@ -8,7 +8,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace bccmis::io {
@@ -24,41 +24,69 @@ inline std::array<std::uint32_t, 3> outward_face(const Tets& tets, std::size_t i
   return {t[f[0]], t[f[1]], t[f[2]]};
 }
 
+/// Tetrahedron t's vertices sorted (a five-comparator network), with the
+/// index in t of each: the face opposite sorted[k] is face 4 t + at[k] and
+/// its sorted vertex triple is `sorted` without sorted[k].
+struct SortedCorners {
+  std::array<std::uint32_t, 4> sorted;
+  std::array<std::uint8_t, 4> at{0, 1, 2, 3};
+  explicit SortedCorners(const std::array<std::uint32_t, 4>& t) : sorted(t) {
+    const auto order = [this](std::size_t a, std::size_t b) {
+      if (sorted[b] < sorted[a]) std::swap(sorted[a], sorted[b]), std::swap(at[a], at[b]);
+    };
+    order(0, 1), order(2, 3), order(0, 2), order(1, 3), order(1, 2);
+  }
+};
+
 /// visit(first, last) for every group of face ids [first, last) with the same
 /// three vertices, the groups in increasing order of their sorted vertex
-/// triples. `vertex_count` exceeds every vertex index. Every face is filed
-/// under its smallest vertex (a counting sort), then each vertex's faces are
-/// sorted by the other two.
+/// triples. `vertex_count` exceeds every vertex index. Each tetrahedron's
+/// vertices are sorted once (SortedCorners); every face is filed under its
+/// smallest vertex (a counting sort) with the other two packed in one key
+/// (mid << 32 | high, ordered as the pair), then each vertex's few faces are
+/// sorted by that key.
 template <class Visit>
 void for_each_face_group(const Tets& tets, std::size_t vertex_count, const Visit& visit) {
   struct Filed {
-    std::uint32_t mid, high;
+    std::uint64_t key;  // mid << 32 | high
     std::size_t id;
   };
   std::vector<std::size_t> start(vertex_count + 1, 0);
-  for (std::size_t id = 0; id < 4 * tets.size(); ++id) {
-    const auto f = outward_face(tets, id);
-    ++start[std::min({f[0], f[1], f[2]}) + std::size_t{1}];
+  for (const auto& t : tets) {
+    const SortedCorners c(t);
+    start[c.sorted[0] + std::size_t{1}] += 3;  // the faces without sorted[1], [2], [3]
+    start[c.sorted[1] + std::size_t{1}] += 1;  // the face without sorted[0]
   }
   for (std::size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
   std::vector<Filed> filed(start.back());
   std::vector<std::size_t> next(start.begin(), start.end() - 1);
-  for (std::size_t id = 0; id < 4 * tets.size(); ++id) {
-    auto key = outward_face(tets, id);
-    std::sort(key.begin(), key.end());
-    filed[next[key[0]]++] = {key[1], key[2], id};
+  const auto pack = [](std::uint32_t mid, std::uint32_t high) { return std::uint64_t{mid} << 32 | high; };
+  for (std::size_t t = 0; t < tets.size(); ++t) {
+    const SortedCorners c(tets[t]);
+    const auto& s = c.sorted;
+    filed[next[s[1]]++] = {pack(s[2], s[3]), 4 * t + c.at[0]};
+    filed[next[s[0]]++] = {pack(s[2], s[3]), 4 * t + c.at[1]};
+    filed[next[s[0]]++] = {pack(s[1], s[3]), 4 * t + c.at[2]};
+    filed[next[s[0]]++] = {pack(s[1], s[2]), 4 * t + c.at[3]};
   }
-  const auto before = [](const Filed& a, const Filed& b) { return std::tie(a.mid, a.high) < std::tie(b.mid, b.high); };
   std::vector<std::size_t> group;
   for (std::size_t v = 0; v < vertex_count; ++v) {
-    const auto first = filed.begin() + static_cast<std::ptrdiff_t>(start[v]),
-               last = filed.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
-    std::sort(first, last, before);
-    for (auto run = first; run != last;) {
-      auto end = run + 1;
-      while (end != last && !before(*run, *end)) ++end;
+    Filed* const first = filed.data() + start[v];
+    Filed* const last = filed.data() + start[v + 1];
+    // A lattice mesh's vertex files a few dozen faces: insertion sort them;
+    // std::sort a vertex of any other mesh's that files many.
+    if (last - first > 64) std::sort(first, last, [](const Filed& a, const Filed& b) { return a.key < b.key; });
+    for (Filed* f = first + 1; f < last; ++f) {
+      const Filed x = *f;
+      Filed* g = f;
+      for (; g > first && x.key < (g - 1)->key; --g) *g = *(g - 1);
+      *g = x;
+    }
+    for (Filed* run = first; run != last;) {
+      Filed* end = run + 1;
+      while (end != last && end->key == run->key) ++end;
       group.clear();
-      for (auto f = run; f != end; ++f) group.push_back(f->id);
+      for (Filed* f = run; f != end; ++f) group.push_back(f->id);
       visit(group.data(), group.data() + group.size());
       run = end;
     }
