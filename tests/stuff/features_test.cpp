@@ -7,6 +7,7 @@
 // bound on every mesh, and the checker's feature layer catching a corner moved off and a curve not covered.
 #include <gtest/gtest.h>
 
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -259,6 +260,34 @@ TEST(FeatureConformity, FandiskKeepsItsCornersWithinTheBound) {
   // The creases kept make the volume error several times smaller.
   EXPECT_LT(std::abs(with.statistics->relative_volume_error), std::abs(without.statistics->relative_volume_error) / 4);
   EXPECT_FALSE(without.features);
+}
+
+//= spec/stuffing.md S35 type=test
+TEST(FeatureConformity, SplitsThatConformNothingAreUndone) {
+  // S35.4: a piece its splits leave unconformed is left as if they had not
+  // been tried. On an input where S35's splits conform no piece (they are
+  // made, then undone), the mesh with S35 is the mesh without it, byte for
+  // byte: the same vertices (positions, kinds), tetrahedra and levels.
+  // Fandisk at level 2 is such an input: one split made and undone (at
+  // level 3, 1 split of 44 is kept and conforms a piece, 43 are undone).
+  const auto shape = load_mesh_file(kCgal + "/fandisk.off");
+  Settings s;
+  s.lattice.max_level = 2;
+  s.check = true;
+  s.features.on = true;
+  const Meshed with = mesh_shape(*shape, s);
+  s.features.split_edges = false;
+  const Meshed without = mesh_shape(*shape, s);
+  ASSERT_TRUE(with.features && without.features);
+  EXPECT_EQ(with.features->splits, 0u);
+  EXPECT_GT(with.features->splits_undone, 0u);  // S35 was tried, and undone
+  EXPECT_EQ(without.features->splits_undone, 0u);
+  EXPECT_EQ(with.features->curves_conformed, without.features->curves_conformed);
+  EXPECT_TRUE(with.stuffed.mesh.vertices == without.stuffed.mesh.vertices);  // exact doubles
+  EXPECT_TRUE(with.stuffed.mesh.kind == without.stuffed.mesh.kind);
+  EXPECT_TRUE(with.stuffed.mesh.tets == without.stuffed.mesh.tets);
+  EXPECT_TRUE(with.stuffed.mesh.level == without.stuffed.mesh.level);
+  EXPECT_TRUE(with.boundary == without.boundary);
 }
 
 //= spec/stuffing.md S32 type=test
