@@ -290,6 +290,35 @@ TEST(FeatureConformity, SplitsThatConformNothingAreUndone) {
   EXPECT_TRUE(with.boundary == without.boundary);
 }
 
+//= spec/stuffing.md S35 type=test
+TEST(FeatureConformity, SplitsUndoneCurveByCurve) {
+  // S35.4 in S30's order: fandisk's level-2 mesh (world coordinates, its
+  // corners) made to hold its first k curves, k = 1, 2, ... until S35 keeps
+  // a split; for every k at which splits were made and undone (12 of the
+  // 35), the mesh is the mesh S30-S34 alone make, byte for byte.
+  const auto shape = load_mesh_file(kCgal + "/fandisk.off");
+  const Meshed m = mesh_with(*shape, 2, false);
+  const Features all = detect_features(shape->surface_triangles());
+  std::size_t undone = 0;
+  for (std::size_t k = 1; k <= all.curves.size(); ++k) {
+    Features first = all;
+    first.curves.resize(k);
+    d3::TetMeshF with = m.stuffed.mesh, without = m.stuffed.mesh;
+    const FeatureConformity a = conform_features(with, m.boundary, first, m.fit.h);
+    if (a.splits > 0) break;
+    if (a.splits_undone == 0) continue;
+    ++undone;
+    const FeatureConformity b = conform_features(without, m.boundary, first, m.fit.h, false);
+    EXPECT_EQ(a.curves_conformed, b.curves_conformed) << k;
+    EXPECT_EQ(a.moves, b.moves) << k;
+    EXPECT_TRUE(with.vertices == without.vertices) << k;
+    EXPECT_TRUE(with.kind == without.kind) << k;
+    EXPECT_TRUE(with.tets == without.tets) << k;
+    EXPECT_TRUE(with.level == without.level) << k;
+  }
+  EXPECT_GE(undone, 12u);
+}
+
 //= spec/stuffing.md S32 type=test
 TEST(FeatureChecker, CatchesACornerMovedOffAndAnUncoveredCurve) {
   const auto cube = make_mesh_shape(turned_cube(), kCubeTriangles, "turned cube");

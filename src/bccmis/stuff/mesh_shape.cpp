@@ -155,8 +155,8 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
         " corners; conformed " + std::to_string(conformity.corners_conformed) + " corners, " +
         std::to_string(conformity.curves_conformed) + " of " + std::to_string(features.curves.size()) + " curves; " +
         std::to_string(conformity.moves) + " moves, " + std::to_string(conformity.refused) + " refused by the guard, " +
-        std::to_string(conformity.splits) + " edges split (" + std::to_string(conformity.splits_undone) +
-        " more undone)");
+        std::to_string(conformity.splits) + " edges split, " + std::to_string(conformity.splits_undone) +
+        " splits undone");
   }
   const auto t1 = Clock::now();
   // S11 first, so that S27's topology errors below come from meshes that pass it.
