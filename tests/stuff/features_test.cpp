@@ -3,9 +3,11 @@
 // the feature angle, a hexagonal prism with two loops), conformity on a
 // rotated cube (the conformed mesh's volume is the cube's) and on CGAL's
 // fandisk (S34: interior vertices moved to make room; S35: boundary edges
-// split onto the creases), with S10's dihedral
+// split onto the creases, undone on CGAL's anchor where they conform
+// nothing), with S10's dihedral
 // bound on every mesh, and the checker's feature layer catching a corner moved off and a curve not covered.
 #include <gtest/gtest.h>
+
 
 #include <algorithm>
 #include <array>
@@ -259,6 +261,33 @@ TEST(FeatureConformity, FandiskKeepsItsCornersWithinTheBound) {
   // The creases kept make the volume error several times smaller.
   EXPECT_LT(std::abs(with.statistics->relative_volume_error), std::abs(without.statistics->relative_volume_error) / 4);
   EXPECT_FALSE(without.features);
+}
+
+//= spec/stuffing.md S35 type=test
+TEST(FeatureConformity, SplitsThatConformNothingAreUndone) {
+  // S35.4: a piece its splits leave unconformed is left as if they had not
+  // been tried. On an input where S35's splits conform no piece (they are
+  // made, then undone), the mesh with S35 is the mesh without it, byte for
+  // byte: the same vertices (positions, kinds), tetrahedra, levels and
+  // boundary. CGAL's anchor at level 2 is such an input: 5 splits made and
+  // undone (at level 4, 11 of 16 are kept and conform a piece).
+  const auto shape = load_mesh_file(kCgal + "/anchor.off");
+  Settings s;
+  s.lattice.max_level = 2;
+  s.features.on = true;
+  const Meshed with = mesh_shape(*shape, s);
+  s.features.split_edges = false;
+  const Meshed without = mesh_shape(*shape, s);
+  ASSERT_TRUE(with.features && without.features);
+  EXPECT_EQ(with.features->splits, 0u);
+  EXPECT_GE(with.features->splits_undone, 5u);  // S35 was tried, and undone
+  EXPECT_EQ(without.features->splits_undone, 0u);
+  EXPECT_EQ(with.features->curves_conformed, without.features->curves_conformed);
+  EXPECT_TRUE(with.stuffed.mesh.vertices == without.stuffed.mesh.vertices);  // exact doubles
+  EXPECT_TRUE(with.stuffed.mesh.kind == without.stuffed.mesh.kind);
+  EXPECT_TRUE(with.stuffed.mesh.tets == without.stuffed.mesh.tets);
+  EXPECT_TRUE(with.stuffed.mesh.level == without.stuffed.mesh.level);
+  EXPECT_TRUE(with.boundary == without.boundary);
 }
 
 //= spec/stuffing.md S32 type=test

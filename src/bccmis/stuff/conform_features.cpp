@@ -32,6 +32,13 @@ class BoxGrid {
       for (std::int64_t y = a[1]; y <= b[1]; ++y)
         for (std::int64_t z = a[2]; z <= b[2]; ++z) cells_[{x, y, z}].push_back(id);
   }
+  /// The item `id` inserted with the box [lo, hi] taken out again.
+  void erase(std::uint32_t id, const Vec3& lo, const Vec3& hi) {
+    const auto a = cell(lo), b = cell(hi);
+    for (std::int64_t x = a[0]; x <= b[0]; ++x)
+      for (std::int64_t y = a[1]; y <= b[1]; ++y)
+        for (std::int64_t z = a[2]; z <= b[2]; ++z) std::erase(cells_[{x, y, z}], id);
+  }
   /// The items filed in the cubes that meet the box [lo, hi], in id order.
   std::vector<std::uint32_t> in_box(const Vec3& lo, const Vec3& hi) const {
     std::vector<std::uint32_t> out;
@@ -111,9 +118,10 @@ Vec3 point_at(const FeatureCurve& C, double s) {
 /// vertex, and the guard of S31.
 class Snapper {
  public:
-  Snapper(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary, double h)
+  Snapper(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary, double h, bool split_edges)
       : mesh_(mesh),
         h_(h),
+        split_edges_(split_edges),
         tets_at_(mesh.vertices.size()),
         neighbours_(mesh.vertices.size()),
         triangles_(boundary),
@@ -166,6 +174,8 @@ class Snapper {
     }
     ++r.moves;
     for (const auto& [u, p] : moved) {
+      keep(mesh_.vertices, u);
+      keep(mesh_.kind, u);
       mesh_.vertices[u] = p;
       mesh_.kind[u] = u == v ? kSnappedVertex : kRoomVertex;
     }
@@ -193,12 +203,24 @@ class Snapper {
   /// vertices within h of C, its interior moved onto C; a vertex whose move
   /// is refused (or breaks the order along C) is left out and the path
   /// sought again, up to kAttempts times. When no path is conformed, S35:
-  /// the boundary edges crossing C split onto it, and the path sought again.
-  /// True when conformed.
+  /// the boundary edges crossing C split onto it, and the path sought again;
+  /// still not conformed, the splits and everything after them undone
+  /// (S35.4), `r` included but for its count of splits undone. True when
+  /// conformed.
   bool snap_piece(const FeatureCurve& C, std::uint32_t from, std::uint32_t to, FeatureConformity& r) {
     if (const auto done = follow(C, from, to, r)) return *done;
-    if (split_crossings(C, r) == 0) return false;
-    return follow(C, from, to, r).value_or(false);
+    if (!split_edges_) return false;
+    const FeatureConformity before = r;
+    journal_.emplace(Journal{mesh_.vertices.size(), mesh_.tets.size(), triangles_.size(), {}});
+    const std::size_t made = split_crossings(C, r);
+    const bool conformed = made > 0 && follow(C, from, to, r).value_or(false);
+    if (!conformed) {
+      roll_back();
+      r = before;
+      r.splits_undone += made;
+    }
+    journal_.reset();
+    return conformed;
   }
 
  private:
@@ -235,7 +257,7 @@ class Snapper {
         near[v] = 0;
       }
       if (failed < 0) {
-        for (const std::uint32_t v : path) taken_[v] = 1;
+        for (const std::uint32_t v : path) keep(taken_, v), taken_[v] = 1;
         return chords_within(C, from, path, to);
       }
       near.erase(static_cast<std::uint32_t>(failed));
@@ -340,17 +362,20 @@ class Snapper {
       const auto t_id = static_cast<std::uint32_t>(mesh_.tets.size());
       mesh_.tets.push_back(replaced(mesh_.tets[t], w, p));  // keeps u
       mesh_.level.push_back(mesh_.level[t]);
+      keep(mesh_.tets, t);
       mesh_.tets[t] = replaced(mesh_.tets[t], u, p);  // keeps w
       for (const std::uint32_t v : mesh_.tets[t_id])
-        if (v != u && v != p) tets_at_[v].push_back(t_id);
+        if (v != u && v != p) keep(tets_at_, v), tets_at_[v].push_back(t_id);
+      keep(tets_at_, u);
       std::replace(tets_at_[u].begin(), tets_at_[u].end(), t, t_id);
       tets_at_[p].push_back(t);
       tets_at_[p].push_back(t_id);
     }
     std::vector<std::uint32_t> opposite;
     for (const std::uint32_t f : std::vector<std::uint32_t>(triangles_at_[u])) {
+      if (std::find(triangles_[f].begin(), triangles_[f].end(), w) == triangles_[f].end()) continue;
+      keep(triangles_, f);
       auto& tri = triangles_[f];
-      if (std::find(tri.begin(), tri.end(), w) == tri.end()) continue;
       auto other = tri;  // keeps w
       for (auto& v : other)
         if (v == u) v = p;
@@ -359,16 +384,19 @@ class Snapper {
       const auto f_id = static_cast<std::uint32_t>(triangles_.size());
       triangles_.push_back(other);
       for (const std::uint32_t v : other)
-        if (v != p && v != w) opposite.push_back(v), triangles_at_[v].push_back(f_id);
+        if (v != p && v != w) opposite.push_back(v), keep(triangles_at_, v), triangles_at_[v].push_back(f_id);
+      keep(triangles_at_, w);
       std::replace(triangles_at_[w].begin(), triangles_at_[w].end(), f, f_id);
       triangles_at_[p].push_back(f);
       triangles_at_[p].push_back(f_id);
     }
     const auto link = [this](std::uint32_t a, std::uint32_t b) {
+      keep(neighbours_, a);
       auto& n = neighbours_[a];
       n.insert(std::upper_bound(n.begin(), n.end(), b), b);
     };
     const auto unlink = [this](std::uint32_t a, std::uint32_t b) {
+      keep(neighbours_, a);
       auto& n = neighbours_[a];
       n.erase(std::lower_bound(n.begin(), n.end(), b));
     };
@@ -377,7 +405,37 @@ class Snapper {
     for (const std::uint32_t v : std::vector<std::uint32_t>{u, w}) link(v, p), link(p, v);
     for (const std::uint32_t v : opposite) link(v, p), link(p, v);
     grid_.insert(p, c, c);
+    if (journal_) journal_->steps.emplace_back([this, p, c] { grid_.erase(p, c, c); });
     return true;
+  }
+
+  /// S35.4's record of a piece's splits and what followed them: the sizes
+  /// before (everything appended after them is taken off) and, for every
+  /// element changed, a step putting back its value before the change.
+  struct Journal {
+    std::size_t vertices, tets, triangles;
+    std::vector<std::function<void()>> steps;
+  };
+
+  /// Element i of `items` about to change: its value now kept in the
+  /// journal, when one is open.
+  template <class T>
+  void keep(std::vector<T>& items, std::size_t i) {
+    if (journal_) journal_->steps.emplace_back([&items, i, old = items[i]] { items[i] = old; });
+  }
+
+  /// S35.4: the journal's steps in reverse order (each element back to its
+  /// value before its first change), then what was appended taken off.
+  void roll_back() {
+    Journal& j = *journal_;
+    for (auto step = j.steps.rbegin(); step != j.steps.rend(); ++step) (*step)();
+    for (auto* per_vertex : {&tets_at_, &neighbours_, &triangles_at_}) per_vertex->resize(j.vertices);
+    mesh_.vertices.resize(j.vertices);
+    mesh_.kind.resize(j.vertices);
+    taken_.resize(j.vertices);
+    mesh_.tets.resize(j.tets);
+    mesh_.level.resize(j.tets);
+    triangles_.resize(j.triangles);
   }
 
   /// S32's chord condition on the path from -> path -> to, whose vertices
@@ -491,12 +549,14 @@ class Snapper {
  private:
   d3::TetMeshF& mesh_;
   double h_;
+  bool split_edges_;  ///< S35 on
   std::vector<std::vector<std::uint32_t>> tets_at_;
   std::vector<std::vector<std::uint32_t>> neighbours_;
   std::vector<std::array<std::uint32_t, 3>> triangles_;    ///< the boundary triangles, S35's splits included
   std::vector<std::vector<std::uint32_t>> triangles_at_;  ///< those at each vertex
   std::vector<char> taken_;
   BoxGrid grid_;  ///< the boundary vertices, in cubes of side h
+  std::optional<Journal> journal_;  ///< open while a piece's splits may be undone (S35.4)
 };
 
 /// The corner of `features` at p, if any (its index), by exact equality.
@@ -508,9 +568,9 @@ std::int64_t corner_index(const Features& features, const Vec3& p) {
 }  // namespace
 
 FeatureConformity conform_features(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
-                                   const Features& features, double h) {
+                                   const Features& features, double h, bool split_edges) {
   FeatureConformity r;
-  Snapper snapper(mesh, boundary, h);
+  Snapper snapper(mesh, boundary, h, split_edges);
   // S30.1: the corners, in order.
   std::vector<std::int64_t> corner_vertex;
   for (const Vec3& c : features.corners) {

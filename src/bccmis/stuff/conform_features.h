@@ -29,7 +29,8 @@ struct FeatureConformity {
   std::size_t curves_conformed = 0;    ///< of Features::curves, every piece conformed
   std::size_t moves = 0, refused = 0;  ///< the guard's answers (S31)
   std::size_t room_made = 0;           ///< moves accepted with the interior neighbours moved (S34)
-  std::size_t splits = 0;              ///< boundary edges split onto a crease (S35)
+  std::size_t splits = 0;              ///< boundary edges split onto a crease and kept (S35)
+  std::size_t splits_undone = 0;       ///< splits undone, their piece still not conformed (S35.4)
 };
 
 /// S30-S31, S34 and S35 on `mesh` (a stuffed mesh, positively oriented
@@ -37,9 +38,11 @@ struct FeatureConformity {
 /// side: moves boundary vertices onto `features` and marks them
 /// kSnappedVertex; S35's splits append vertices (kSnappedVertex) and
 /// tetrahedra, and change tetrahedra at the split edges, so that `boundary`
-/// is the mesh's only while `splits` is 0.
+/// is the mesh's only while `splits` is 0. A piece its splits do not
+/// conform is left as if they had not been tried (S35.4); `split_edges`
+/// false: no splits at all (S30-S34 only).
 FeatureConformity conform_features(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
-                                   const Features& features, double h);
+                                   const Features& features, double h, bool split_edges = true);
 
 /// S33: the largest distance from a point of a feature curve's polyline to
 /// the nearest edge of the boundary triangles; 0 without features. `h`
@@ -53,6 +56,7 @@ struct FeatureReport {
   std::size_t edges = 0, curves = 0, corners = 0;
   std::size_t corners_conformed = 0, curves_conformed = 0;
   double distance = -1;  ///< with the statistics, in world units; -1 when not computed
+  std::size_t splits = 0, splits_undone = 0;  ///< S35's splits kept, and undone (S35.4)
 };
 
 }  // namespace bccmis::stuff

@@ -43,6 +43,7 @@ namespace bccmis::stuff {
 struct FeatureSettings {
   bool on = false;
   double angle = kDefaultFeatureAngle;  ///< phi, degrees (S29)
+  bool split_edges = true;              ///< S35's splits; false: S30-S34 only
 };
 
 /// Everything a run is told.
