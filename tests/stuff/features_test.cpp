@@ -8,7 +8,6 @@
 // bound on every mesh, and the checker's feature layer catching a corner moved off and a curve not covered.
 #include <gtest/gtest.h>
 
-
 #include <algorithm>
 #include <array>
 #include <cmath>

@@ -26,7 +26,8 @@ using PointHashSet = std::unordered_set<d3::Point, d3::PointHash>;
 class FlatPointSet {
  public:
   /// Room for `expected` points before the first growth.
-  explicit FlatPointSet(std::size_t expected) : slots_(std::bit_ceil(std::max<std::size_t>(16, 2 * expected)), kEmpty) {}
+  explicit FlatPointSet(std::size_t expected)
+      : slots_(std::bit_ceil(std::max<std::size_t>(16, 2 * expected)), kEmpty) {}
   /// Adds p; true when it was not there.
   bool insert(const d3::Point& p) {
     std::size_t i = slot(p);
@@ -149,9 +150,7 @@ std::vector<d3::Point> leaves_to_stuff(const stuff::Shape& shape, const stuff::F
     if (beyond) frontier.push_back(x);
   };
   for (const d3::Point& x : first) star_of(x);
-  const auto in_d = [&](const d3::Point& y) {
-    return first_set.contains(y) || later.contains(y);
-  };
+  const auto in_d = [&](const d3::Point& y) { return first_set.contains(y) || later.contains(y); };
   // (b) The closure: y < x joins D when x is in D and the cut point on xy
   // violates x (S5, S6), with star(y); until no vertex joins. An edge at x
   // lies in a tetrahedron of a leaf of star(x), and an edge of an own

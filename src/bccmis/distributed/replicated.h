@@ -17,10 +17,10 @@
 namespace bccmis::distributed {
 
 struct Replicated {
-  stuff::Normalisation normalisation;   ///< S24
-  std::unique_ptr<stuff::Shape> shape;  ///< in local coordinates
-  stuff::StuffOptions options;          ///< max_level: the level used
-  stuff::Fit fit;                       ///< local
+  stuff::Normalisation normalisation;        ///< S24
+  std::unique_ptr<stuff::Shape> shape;       ///< in local coordinates
+  stuff::StuffOptions options;               ///< max_level: the level used
+  stuff::Fit fit;                            ///< local
   std::optional<d3::fast::Lattice> lattice;  ///< S3; released by stuff_piece()
 };
 

@@ -317,8 +317,11 @@ class Snapper {
         const Vec3 &a = C.points[segment - 1], &b = C.points[segment];
         const double s = s_vertex[segment - 1] + best.t2 * (s_vertex[segment] - s_vertex[segment - 1]);
         if (!(s > 0 && s < C.length())) continue;
-        crossings.push_back({s, u, w, {a[0] + best.t2 * (b[0] - a[0]), a[1] + best.t2 * (b[1] - a[1]),
-                                       a[2] + best.t2 * (b[2] - a[2])}});
+        crossings.push_back(
+            {s,
+             u,
+             w,
+             {a[0] + best.t2 * (b[0] - a[0]), a[1] + best.t2 * (b[1] - a[1]), a[2] + best.t2 * (b[2] - a[2])}});
       }
     }
     std::sort(crossings.begin(), crossings.end());
@@ -552,10 +555,10 @@ class Snapper {
   bool split_edges_;  ///< S35 on
   std::vector<std::vector<std::uint32_t>> tets_at_;
   std::vector<std::vector<std::uint32_t>> neighbours_;
-  std::vector<std::array<std::uint32_t, 3>> triangles_;    ///< the boundary triangles, S35's splits included
+  std::vector<std::array<std::uint32_t, 3>> triangles_;   ///< the boundary triangles, S35's splits included
   std::vector<std::vector<std::uint32_t>> triangles_at_;  ///< those at each vertex
   std::vector<char> taken_;
-  BoxGrid grid_;  ///< the boundary vertices, in cubes of side h
+  BoxGrid grid_;                    ///< the boundary vertices, in cubes of side h
   std::optional<Journal> journal_;  ///< open while a piece's splits may be undone (S35.4)
 };
 

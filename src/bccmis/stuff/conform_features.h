@@ -55,7 +55,7 @@ struct FeatureReport {
   double angle = 0;
   std::size_t edges = 0, curves = 0, corners = 0;
   std::size_t corners_conformed = 0, curves_conformed = 0;
-  double distance = -1;  ///< with the statistics, in world units; -1 when not computed
+  double distance = -1;                       ///< with the statistics, in world units; -1 when not computed
   std::size_t splits = 0, splits_undone = 0;  ///< S35's splits kept, and undone (S35.4)
 };
 

@@ -32,7 +32,8 @@ inline std::vector<std::uint32_t> position_order(std::span<const d3::Point> poin
   // o_x << (b_y + b_z) | o_y << b_z | o_z, then the index below it.
   std::array<int, 3> bits{};
   for (std::size_t d = 0; d < 3; ++d)
-    bits[d] = static_cast<int>(std::bit_width(static_cast<std::uint64_t>(high[d]) - static_cast<std::uint64_t>(low[d])));
+    bits[d] =
+        static_cast<int>(std::bit_width(static_cast<std::uint64_t>(high[d]) - static_cast<std::uint64_t>(low[d])));
   const int index_bits = static_cast<int>(std::bit_width(n - 1));
   const int key_bits = bits[0] + bits[1] + bits[2];
   if (key_bits + index_bits > 64) {
