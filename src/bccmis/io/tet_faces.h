@@ -73,6 +73,7 @@ void for_each_face_group(const Tets& tets, std::size_t vertex_count, const Visit
   for (std::size_t v = 0; v < vertex_count; ++v) {
     Filed* const first = filed.data() + start[v];
     Filed* const last = filed.data() + start[v + 1];
+    if (first == last) continue;  // no face filed here (first + 1 would pass the end)
     // A lattice mesh's vertex files a few dozen faces: insertion sort them;
     // std::sort a vertex of any other mesh's that files many.
     if (last - first > 64) std::sort(first, last, [](const Filed& a, const Filed& b) { return a.key < b.key; });
