@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <set>
@@ -139,6 +140,36 @@ TEST(Regions, CubesJoinThroughFacesOnlyNotEdgesOrCorners) {
   // an edge only, one at a corner only, one apart: 4 components.
   const Mesh m = kuhn_cubes({{0, 0, 0}, {1, 0, 0}, {2, 1, 0}, {3, 2, 1}, {6, 0, 0}});
   check_against_independent_count(m, 4);
+}
+
+/// `count` tetrahedra (0, i, i + 1, apex) around the axis through vertex 0
+/// and the apex, over an open arc of a circle: each tetrahedron shares the
+/// triangle (0, i + 1, apex) with the next; the fan is centred at x = x0.
+void add_fan(Mesh& m, std::uint32_t count, double x0) {
+  const auto first = static_cast<std::uint32_t>(m.vertices.size());
+  m.vertices.push_back({x0, 0, 0});
+  for (std::uint32_t i = 0; i <= count; ++i) {
+    const double a = 6.0 * i / count;  // radians, short of a full turn
+    m.vertices.push_back({x0 + std::cos(a), std::sin(a), 0.5});
+  }
+  const auto apex = static_cast<std::uint32_t>(m.vertices.size());
+  m.vertices.push_back({x0, 0, 1});
+  for (std::uint32_t i = 1; i <= count; ++i) {
+    Tet t{first, first + i, first + i + 1, apex};
+    if (orient(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]], m.vertices[t[3]]) < 0) std::swap(t[2], t[3]);
+    m.tets.push_back(t);
+  }
+}
+
+TEST(Regions, AVertexWithManyFacesIsGroupedAsAnyOther) {
+  // 40 tetrahedra file 120 faces under their smallest vertex, more than
+  // the 64 the grouping sorts by insertion alone (spec/mesh3d.md M23); a
+  // second fan apart is a second component.
+  Mesh m;
+  add_fan(m, 40, 0);
+  add_fan(m, 3, 5);
+  check_against_independent_count(m, 2);
+  EXPECT_EQ(regions_of(m.tets).boundary.size(), 2U * 40 + 2 + 2U * 3 + 2);
 }
 
 TEST(Regions, AnEmptyMeshHasNothing) {
