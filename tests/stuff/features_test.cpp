@@ -4,7 +4,8 @@
 // rotated cube (the conformed mesh's volume is the cube's) and on CGAL's
 // fandisk (S34: interior vertices moved to make room; S35: boundary edges
 // split onto the creases, undone on CGAL's anchor where they conform
-// nothing), with S10's dihedral
+// nothing, and on CGAL's turbine where vertices moved after them are put
+// back), with S10's dihedral
 // bound on every mesh, and the checker's feature layer catching a corner moved off and a curve not covered.
 #include <gtest/gtest.h>
 
@@ -281,6 +282,34 @@ TEST(FeatureConformity, SplitsThatConformNothingAreUndone) {
   EXPECT_EQ(with.features->splits, 0u);
   EXPECT_GE(with.features->splits_undone, 5u);  // S35 was tried, and undone
   EXPECT_EQ(without.features->splits_undone, 0u);
+  EXPECT_EQ(with.features->curves_conformed, without.features->curves_conformed);
+  EXPECT_TRUE(with.stuffed.mesh.vertices == without.stuffed.mesh.vertices);  // exact doubles
+  EXPECT_TRUE(with.stuffed.mesh.kind == without.stuffed.mesh.kind);
+  EXPECT_TRUE(with.stuffed.mesh.tets == without.stuffed.mesh.tets);
+  EXPECT_TRUE(with.stuffed.mesh.level == without.stuffed.mesh.level);
+  EXPECT_TRUE(with.boundary == without.boundary);
+}
+
+//= spec/stuffing.md S35 type=test
+TEST(FeatureConformity, MovesAfterUndoneSplitsAreUndone) {
+  // S35.4 with moves to undo: on CGAL's turbine at level 3 S35's splits
+  // conform no piece, but after the splits of one piece S30.2 finds a path
+  // and moves vertices of the mesh onto the crease (and S34 their interior
+  // neighbours) before a later move is refused. Undone, every such vertex
+  // is back at its place with its kind, so the mesh is the one without S35,
+  // byte for byte.
+  const auto shape = load_mesh_file(kCgal + "/turbine.off");
+  Settings s;
+  s.lattice.max_level = 3;
+  s.features.on = true;
+  const Meshed with = mesh_shape(*shape, s);
+  s.features.split_edges = false;
+  const Meshed without = mesh_shape(*shape, s);
+  ASSERT_TRUE(with.features && without.features);
+  EXPECT_EQ(with.features->splits, 0u);
+  EXPECT_GT(with.features->splits_undone, 0u);
+  EXPECT_GT(with.features->moves_undone, 0u);  // vertices were moved after the splits, then put back
+  EXPECT_EQ(without.features->moves_undone, 0u);
   EXPECT_EQ(with.features->curves_conformed, without.features->curves_conformed);
   EXPECT_TRUE(with.stuffed.mesh.vertices == without.stuffed.mesh.vertices);  // exact doubles
   EXPECT_TRUE(with.stuffed.mesh.kind == without.stuffed.mesh.kind);

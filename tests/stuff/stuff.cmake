@@ -8,7 +8,7 @@ if(TARGET bccmis::stuff_surface)
   set(BCCMIS_CGAL_DATA_TAR /usr/share/doc/libcgal-dev/data.tar.gz CACHE FILEPATH
       "data.tar.gz of libcgal-demo, CGAL's sample meshes")
   set(bccmis_cgal_meshes elephant.off double-torus-example.off icosahedron.off corner_poly.off prim.off 3torus.off
-                         fandisk.off anchor.off # sharp features (features_test.cpp)
+                         fandisk.off anchor.off turbine.off # sharp features (features_test.cpp)
                          # flawed files for cli.stuff_wild_files (below)
                          bones.off blob.off mpi.off cube4-shuffled.off colored_tetra.ply)
   set(bccmis_cgal_data ${CMAKE_CURRENT_BINARY_DIR}/cgal_data)

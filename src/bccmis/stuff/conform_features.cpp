@@ -174,10 +174,13 @@ class Snapper {
     }
     ++r.moves;
     for (const auto& [u, p] : moved) {
+      const std::uint8_t kind = u == v ? kSnappedVertex : kRoomVertex;
+      // S35.4's count: a vertex older than the splits changed (a move onto its own place with its own kind is none).
+      if (journal_ && u < journal_->vertices && (p != mesh_.vertices[u] || kind != mesh_.kind[u])) ++journal_->moved;
       keep(mesh_.vertices, u);
       keep(mesh_.kind, u);
       mesh_.vertices[u] = p;
-      mesh_.kind[u] = u == v ? kSnappedVertex : kRoomVertex;
+      mesh_.kind[u] = kind;
     }
     return true;
   }
@@ -205,19 +208,20 @@ class Snapper {
   /// sought again, up to kAttempts times. When no path is conformed, S35:
   /// the boundary edges crossing C split onto it, and the path sought again;
   /// still not conformed, the splits and everything after them undone
-  /// (S35.4), `r` included but for its count of splits undone. True when
+  /// (S35.4), `r` included but for its counts of splits and moves undone. True when
   /// conformed.
   bool snap_piece(const FeatureCurve& C, std::uint32_t from, std::uint32_t to, FeatureConformity& r) {
     if (const auto done = follow(C, from, to, r)) return *done;
     if (!split_edges_) return false;
     const FeatureConformity before = r;
-    journal_.emplace(Journal{mesh_.vertices.size(), mesh_.tets.size(), triangles_.size(), {}});
+    journal_.emplace(Journal{mesh_.vertices.size(), mesh_.tets.size(), triangles_.size(), {}, 0});
     const std::size_t made = split_crossings(C, r);
     const bool conformed = made > 0 && follow(C, from, to, r).value_or(false);
     if (!conformed) {
       roll_back();
       r = before;
       r.splits_undone += made;
+      r.moves_undone += journal_->moved;
     }
     journal_.reset();
     return conformed;
@@ -418,6 +422,7 @@ class Snapper {
   struct Journal {
     std::size_t vertices, tets, triangles;
     std::vector<std::function<void()>> steps;
+    std::size_t moved;  ///< vertices older than the splits moved or given a new kind by S30.2 and S34, per move
   };
 
   /// Element i of `items` about to change: its value now kept in the

@@ -31,6 +31,8 @@ struct FeatureConformity {
   std::size_t room_made = 0;           ///< moves accepted with the interior neighbours moved (S34)
   std::size_t splits = 0;              ///< boundary edges split onto a crease and kept (S35)
   std::size_t splits_undone = 0;       ///< splits undone, their piece still not conformed (S35.4)
+  std::size_t moves_undone =
+      0;  ///< moves of older vertices made after those splits (S30.2, S34), undone with them (S35.4)
 };
 
 /// S30-S31, S34 and S35 on `mesh` (a stuffed mesh, positively oriented
@@ -57,6 +59,7 @@ struct FeatureReport {
   std::size_t corners_conformed = 0, curves_conformed = 0;
   double distance = -1;                       ///< with the statistics, in world units; -1 when not computed
   std::size_t splits = 0, splits_undone = 0;  ///< S35's splits kept, and undone (S35.4)
+  std::size_t moves_undone = 0;               ///< moves undone with them (S35.4)
 };
 
 }  // namespace bccmis::stuff

@@ -150,6 +150,7 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
                                conformity.curves_conformed};
     r.features->splits = conformity.splits;
     r.features->splits_undone = conformity.splits_undone;
+    r.features->moves_undone = conformity.moves_undone;
     r.seconds.emplace_back("features", seconds_since(t0));
     say(std::to_string(features.edges) + " feature edges, " + std::to_string(features.corners.size()) +
         " corners; conformed " + std::to_string(conformity.corners_conformed) + " corners, " +
