@@ -5,7 +5,7 @@
 // fandisk (S34: interior vertices moved to make room; S35: boundary edges
 // split onto the creases, undone on CGAL's anchor where they conform
 // nothing, and on CGAL's turbine where vertices moved after them are put
-// back), with S10's dihedral
+// back; a piece conformed from its other end on CGAL's anchor), with S10's dihedral
 // bound on every mesh, and the checker's feature layer catching a corner moved off and a curve not covered.
 #include <gtest/gtest.h>
 
@@ -269,9 +269,10 @@ TEST(FeatureConformity, SplitsThatConformNothingAreUndone) {
   // been tried. On an input where S35's splits conform no piece (they are
   // made, then undone), the mesh with S35 is the mesh without it, byte for
   // byte: the same vertices (positions, kinds), tetrahedra, levels and
-  // boundary. CGAL's anchor at level 2 is such an input: 5 splits made and
-  // undone (at level 4, 11 of 16 are kept and conform a piece).
-  const auto shape = load_mesh_file(kCgal + "/anchor.off");
+  // boundary. CGAL's fandisk at level 2 is such an input: splits made and
+  // undone (S35.2-4 and S35.5's from the other end), no piece conformed by
+  // them.
+  const auto shape = load_mesh_file(kCgal + "/fandisk.off");
   Settings s;
   s.lattice.max_level = 2;
   s.features.on = true;
@@ -280,7 +281,7 @@ TEST(FeatureConformity, SplitsThatConformNothingAreUndone) {
   const Meshed without = mesh_shape(*shape, s);
   ASSERT_TRUE(with.features && without.features);
   EXPECT_EQ(with.features->splits, 0u);
-  EXPECT_GE(with.features->splits_undone, 5u);  // S35 was tried, and undone
+  EXPECT_GE(with.features->splits_undone, 2u);  // S35 was tried, and undone
   EXPECT_EQ(without.features->splits_undone, 0u);
   EXPECT_EQ(with.features->curves_conformed, without.features->curves_conformed);
   EXPECT_TRUE(with.stuffed.mesh.vertices == without.stuffed.mesh.vertices);  // exact doubles
@@ -316,6 +317,23 @@ TEST(FeatureConformity, MovesAfterUndoneSplitsAreUndone) {
   EXPECT_TRUE(with.stuffed.mesh.tets == without.stuffed.mesh.tets);
   EXPECT_TRUE(with.stuffed.mesh.level == without.stuffed.mesh.level);
   EXPECT_TRUE(with.boundary == without.boundary);
+}
+
+//= spec/stuffing.md S35 type=test
+TEST(FeatureConformity, APieceRefusedFromOneEndIsConformedFromTheOther) {
+  // S35.5: on CGAL's anchor at level 3, one piece neither S30.2 nor S35's
+  // splits conform from its start is conformed from its end (with splits):
+  // 27 of 32 curves against 26 without 5. The checker (S32, run by
+  // Settings::check) finds every piece claimed conformed covered and every
+  // corner a vertex; S10's interval holds.
+  const auto shape = load_mesh_file(kCgal + "/anchor.off");
+  const Meshed m = mesh_with(*shape, 3, true);
+  ASSERT_TRUE(m.features);
+  EXPECT_EQ(m.features->curves, 32u);
+  EXPECT_GE(m.features->curves_conformed, 27u);
+  EXPECT_GT(m.features->splits, 0u);  // the piece's splits, kept
+  EXPECT_GE(m.statistics->quality.min_dihedral, kDihedralBounds[0]);
+  EXPECT_LE(m.statistics->quality.max_dihedral, kDihedralBounds[1]);
 }
 
 //= spec/stuffing.md S32 type=test

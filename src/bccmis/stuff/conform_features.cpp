@@ -208,15 +208,40 @@ class Snapper {
   /// sought again, up to kAttempts times. When no path is conformed, S35:
   /// the boundary edges crossing C split onto it, and the path sought again;
   /// still not conformed, the splits and everything after them undone
-  /// (S35.4), `r` included but for its counts of splits and moves undone. True when
+  /// (S35.4), `r` included but for its counts of splits and moves undone;
+  /// then S35.5: the same from `to` to `from` along C reversed, without
+  /// splits and with them, each undone unless it conforms C. True when
   /// conformed.
   bool snap_piece(const FeatureCurve& C, std::uint32_t from, std::uint32_t to, FeatureConformity& r) {
     if (const auto done = follow(C, from, to, r)) return *done;
     if (!split_edges_) return false;
+    std::size_t made = 0;
+    if (undone_unless(r, made, [&] {
+          made = split_crossings(C, r);
+          return made > 0 && follow(C, from, to, r).value_or(false);
+        }))
+      return true;
+    // S35.5: from the other end, without splits and then with them.
+    const FeatureCurve reversed{{C.points.rbegin(), C.points.rend()}, false};
+    for (const bool with_splits : {false, true}) {
+      made = 0;
+      if (undone_unless(r, made, [&] {
+            if (with_splits && (made = split_crossings(reversed, r)) == 0) return false;
+            return follow(reversed, to, from, r).value_or(false);
+          }))
+        return true;
+    }
+    return false;
+  }
+
+  /// S35.4: `step` run with a journal open; when it returns false, everything
+  /// it did is undone, `r` included but for its counts of the `made` splits
+  /// and the moves undone.
+  template <class Step>
+  bool undone_unless(FeatureConformity& r, std::size_t& made, Step step) {
     const FeatureConformity before = r;
     journal_.emplace(Journal{mesh_.vertices.size(), mesh_.tets.size(), triangles_.size(), {}, 0});
-    const std::size_t made = split_crossings(C, r);
-    const bool conformed = made > 0 && follow(C, from, to, r).value_or(false);
+    const bool conformed = step();
     if (!conformed) {
       roll_back();
       r = before;
