@@ -41,8 +41,9 @@ struct FeatureConformity {
 /// kSnappedVertex; S35's splits append vertices (kSnappedVertex) and
 /// tetrahedra, and change tetrahedra at the split edges, so that `boundary`
 /// is the mesh's only while `splits` is 0. A piece its splits do not
-/// conform is left as if they had not been tried (S35.4); `split_edges`
-/// false: no splits at all (S30-S34 only).
+/// conform is left as if they had not been tried (S35.4), then tried from
+/// its other end, undone alike (S35.5); `split_edges` false: none of S35
+/// (S30-S34 only).
 FeatureConformity conform_features(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
                                    const Features& features, double h, bool split_edges = true);
 
