@@ -25,33 +25,29 @@
 namespace bccmis::distributed {
 namespace {
 
-/// A leaf of G: its center and the half side of its cube.
-struct Cube {
-  d3::Point c;
-  std::int64_t half;
-};
-
 /// The leaves of g whose closed cube meets the closed cube of a leaf of
-/// `stuffed`; `corners`: also those meeting one only at a corner point.
+/// `stuffed` (|c - u| <= the sum of the half sides on every axis), tried
+/// level by level at every center position in reach; `corners`: also those
+/// meeting one only at a corner point.
 std::vector<d3::Point> touching(const d3::fast::Lattice& g, const std::vector<d3::Point>& stuffed, bool corners) {
-  std::vector<Cube> all;
-  std::int64_t widest = 0;
-  for (const d3::Point& c : g.cells()) {  // sorted by x first
-    all.push_back({c, d3::cell_side(g.size(), g.level_of(c)) / 2});
-    widest = std::max(widest, all.back().half);
-  }
   std::vector<d3::Point> out;
   for (const d3::Point& u : stuffed) {
     const std::int64_t hu = d3::cell_side(g.size(), g.level_of(u)) / 2;
-    auto it = std::lower_bound(all.begin(), all.end(), u.x - hu - widest,
-                               [](const Cube& a, std::int64_t x) { return a.c.x < x; });
-    for (; it != all.end() && it->c.x <= u.x + hu + widest; ++it) {
-      const std::int64_t reach = hu + it->half;
-      const std::int64_t d[3] = {std::abs(it->c.x - u.x), std::abs(it->c.y - u.y), std::abs(it->c.z - u.z)};
-      if (d[0] > reach || d[1] > reach || d[2] > reach) continue;
-      const int at_contact = (d[0] == reach) + (d[1] == reach) + (d[2] == reach);
-      if (at_contact == 3 && !corners) continue;  // meets u at one point
-      out.push_back(it->c);
+    for (int l = 0; l <= g.size().L; ++l) {
+      const std::int64_t s = d3::cell_side(g.size(), l), reach = hu + s / 2;
+      // Level-l centers k s + s/2 within `reach` of u on each axis.
+      const auto first = [&](std::int64_t x) { return std::max<std::int64_t>(0, (x - reach - s / 2 + s - 1) / s); };
+      for (std::int64_t i = first(u.x); i * s + s / 2 <= u.x + reach; ++i)
+        for (std::int64_t j = first(u.y); j * s + s / 2 <= u.y + reach; ++j)
+          for (std::int64_t k = first(u.z); k * s + s / 2 <= u.z + reach; ++k) {
+            const d3::Point c{i * s + s / 2, j * s + s / 2, k * s + s / 2};
+            if (c.x < u.x - reach || c.y < u.y - reach || c.z < u.z - reach || !g.is_center(c) || g.level_of(c) != l)
+              continue;
+            const int at_contact =
+                (std::abs(c.x - u.x) == reach) + (std::abs(c.y - u.y) == reach) + (std::abs(c.z - u.z) == reach);
+            if (at_contact == 3 && !corners) continue;  // meets u at one point
+            out.push_back(c);
+          }
     }
   }
   std::sort(out.begin(), out.end());

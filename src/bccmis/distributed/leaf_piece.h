@@ -1,7 +1,7 @@
 // bccmis::distributed: isosurface stuffing split by leaves
-// (spec/distributed.md D3-D5), without MPI: what one rank stuffs from the
-// replicated lattice, a piece as bytes, and the whole mesh gathered from the
-// pieces.
+// (spec/distributed.md D3-D5), without MPI: what one rank stuffs from a
+// lattice (the whole one, or its own, D10), a piece as bytes, and the whole
+// mesh gathered from the pieces.
 #pragma once
 
 #include <array>
