@@ -6,6 +6,15 @@
 # pieces by vertex positions and conformity, and the failures.
 bccmis_add_gtest(distributed_tests SOURCES stuff_leaves_test.cpp LIBS bccmis::distributed bccmis::stuff PREFIX distributed. NO_PRETTY_VALUES
                  LABELS unit mpi)
+# D10: a rank's lattice from the leaves it knows, against the whole lattice.
+if(TARGET bccmis::stuff_surface)
+  bccmis_add_gtest(distributed_local_lattice_tests SOURCES local_lattice_test.cpp
+                   LIBS bccmis::distributed bccmis::stuff bccmis::stuff_surface PREFIX distributed. NO_PRETTY_VALUES
+                   DEFINITIONS BCCMIS_CGAL_MESHES_DIR="${bccmis_cgal_data}/data/meshes" LABELS unit mpi)
+else()
+  bccmis_add_gtest(distributed_local_lattice_tests SOURCES local_lattice_test.cpp
+                   LIBS bccmis::distributed bccmis::stuff PREFIX distributed. NO_PRETTY_VALUES LABELS unit mpi)
+endif()
 
 if(NOT TARGET bccmis_mpi OR NOT BCCMIS_MPIRUN)
   return()
@@ -43,5 +52,14 @@ if(TARGET bccmis::stuff_surface)  # a CGAL sample mesh (tests/stuff/stuff.cmake 
                           ${bccmis_cgal_data}/data/meshes/double-torus-example.off -L 2 --cells 6
                   ${_bccmis_mpi_props})
 endif()
+# D10: the forest refined by S3's test against G, and each rank's lattice.
+add_executable(bccmis_distributed_forest_test ${CMAKE_CURRENT_LIST_DIR}/forest_mpi_test.cpp)
+target_link_libraries(bccmis_distributed_forest_test PRIVATE bccmis::distributed_mpi bccmis::stuff bccmis::warnings)
+foreach(ranks 2 3)
+  bccmis_add_test(mpi.forest_${ranks}_ranks
+                  COMMAND ${BCCMIS_MPIRUN} -np ${ranks} --allow-run-as-root --oversubscribe
+                          $<TARGET_FILE:bccmis_distributed_forest_test>
+                  ${_bccmis_mpi_props} FAIL_REGULAR_EXPRESSION "FAIL")
+endforeach()
 bccmis_add_test(mpi.stuff_errors_3_ranks COMMAND ${_bccmis_mpi_test} errors ${_bccmis_mpi_tools} 3
                 ${_bccmis_mpi_props})

@@ -1,7 +1,7 @@
 // bccmis-mpi stuff: the stages of one run on every rank and the agreement
 // after each (spec/distributed.md D6); the library does the work
-// (bccmis/distributed/): the replicated lattice, the partition (D2), the
-// pieces (D3, D4) and their gathering (D5).
+// (bccmis/distributed/): the fit, the partitioned forest and each rank's
+// lattice (D2, D10), the pieces (D3, D4) and their gathering (D5).
 #include "stuff_mpi.h"
 
 #include <algorithm>
@@ -11,10 +11,12 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "bccmis/distributed/leaf_piece.h"
+#include "bccmis/distributed/local_lattice.h"
 #include "bccmis/distributed/ranks.h"
 #include "bccmis/distributed/replicated.h"
 #include "bccmis/io/pvtu.h"
@@ -108,13 +110,35 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
       so.cells = o.cells;
       if (o.size > 0) so.size = o.size;
       so.threads = o.threads;
-      lattice.emplace(distributed::replicate(*shape, so, P8EST_QMAXLEVEL));
+      lattice.emplace(distributed::fitted(*shape, so, P8EST_QMAXLEVEL));
     });
-    // (2) the partition and this rank's piece.
+    // (2) the partitioned forest (D10), then this rank's piece on its own
+    // lattice, with one more layer of ghosts while some rank's leaves reach
+    // beyond the leaves it knows.
+    std::unique_ptr<distributed::Forest> forest;
+    std::vector<d3::Point> own;
     stage(comm, [&] {
-      const std::vector<d3::Point> own = distributed::own_leaves(*lattice->lattice, comm);
-      piece = distributed::stuff_piece(*lattice, own);
+      forest = std::make_unique<distributed::Forest>(*lattice->shape, lattice->fit, lattice->options, comm);
+      own = forest->own();
     });
+    for (bool have = false;;) {
+      stage(comm, [&] {
+        if (have) return;
+        const std::vector<d3::Point> known = forest->known();
+        lattice->lattice.emplace(distributed::local_lattice(lattice->fit.size, known));
+        if (std::optional<distributed::LeafPiece> p = distributed::stuff_piece(*lattice, own, known)) {
+          piece = std::move(*p);
+          have = true;
+        } else if (static_cast<std::int64_t>(known.size()) == forest->global_leaves()) {
+          throw std::logic_error("every leaf is known and the stuffed leaves are still open (spec/distributed.md D10)");
+        }
+      });
+      int open = have ? 0 : 1;
+      MPI_Allreduce(MPI_IN_PLACE, &open, 1, MPI_INT, MPI_MAX, comm);
+      if (open == 0) break;
+      forest->expand();
+    }
+    forest.reset();
     // D7: the pieces' global vertex numbers (collective on every rank).
     std::vector<std::int64_t> ids;
     stage(comm, [&] {

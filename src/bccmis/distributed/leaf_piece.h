@@ -1,13 +1,14 @@
 // bccmis::distributed: isosurface stuffing split by leaves
-// (spec/distributed.md D3-D5), without MPI: what one rank stuffs from the
-// replicated lattice, a piece as bytes, and the whole mesh gathered from the
-// pieces.
+// (spec/distributed.md D3-D5), without MPI: what one rank stuffs from a
+// lattice (the whole one, or its own, D10), a piece as bytes, and the whole
+// mesh gathered from the pieces.
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <stdexcept>
 #include <vector>
 
 #include "bccmis/d3/point.h"
@@ -71,10 +72,23 @@ LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d
                        const stuff::StuffOptions& options, std::span<const d3::Point> own,
                        std::size_t block = kLeavesPerBlock);
 /// The blocks' pieces of that stuff_leaves(), before merge_pieces (which
-/// needs no lattice, so a caller can release it first).
+/// needs no lattice, so a caller can release it first). With `known` (sorted,
+/// not empty), g is a rank's lattice L_r built from those leaves (D10) and
+/// each block's D9 leaves are checked first: NotClosed when one of them or a
+/// leaf touching it is not known (first_open).
 std::vector<LeafPiece> stuff_blocks(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
                                     const stuff::StuffOptions& options, std::span<const d3::Point> own,
-                                    std::size_t block = kLeavesPerBlock);
+                                    std::size_t block = kLeavesPerBlock, std::span<const d3::Point> known = {});
+
+/// D10: the leaves a block stuffs reach beyond the leaves its rank knows
+/// (`leaf`, the first open one): a wider ghost layer is needed.
+struct NotClosed : std::runtime_error {
+  explicit NotClosed(const d3::Point& u)
+      : std::runtime_error("the leaves stuffed reach beyond the known leaves at " + d3::to_string(u) +
+                           " (spec/distributed.md D10)"),
+        leaf(u) {}
+  d3::Point leaf;
+};
 
 /// D5: pieces whose leaves do not overlap as one piece: vertices in key
 /// order, tetrahedra leaf by leaf in leaf order. Throws std::logic_error

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <mpi.h>
+#include <p8est_ghost.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -14,6 +15,8 @@
 #include "bccmis/d3/point.h"
 #include "bccmis/distributed/leaf_piece.h"
 #include "bccmis/fast/d3/lattice.h"
+#include "bccmis/p4est/bridge.h"
+#include "bccmis/stuff/stuff.h"
 
 namespace bccmis::distributed {
 
@@ -22,6 +25,42 @@ namespace bccmis::distributed {
 /// brick of its level-0 cubes. Throws std::invalid_argument when L is above
 /// P8EST_QMAXLEVEL (18).
 std::vector<d3::Point> own_leaves(const d3::fast::Lattice& g, MPI_Comm comm);
+
+/// D10: the forest of the S3 lattice built by p8est on every rank at once
+/// (p8est_new on the brick of the level-0 cubes, p8est_refine with S3's
+/// test, p8est_balance in edge mode, repeated until no leaf passes the test;
+/// p8est_partition uniform by count, D2), and this rank's ghost layer
+/// (p8est_ghost, P8EST_CONNECT_FULL, expanded to kGhostLayers layers),
+/// widened by expand(). No rank holds
+/// the whole lattice. Collective over `comm` (construction and expand()).
+/// D10: the layers of leaves around the own ones a rank knows from the
+/// start: D9's leaves reach two layers out (an own leaf, a center across
+/// its face, the leaves across that center's faces) and each needs its
+/// touching leaves known, one more.
+inline constexpr int kGhostLayers = 4;
+
+class Forest {
+ public:
+  /// Throws std::invalid_argument when L is above P8EST_QMAXLEVEL (18).
+  Forest(const stuff::Shape& shape, const stuff::Fit& fit, const stuff::StuffOptions& options, MPI_Comm comm);
+  ~Forest();
+  Forest(const Forest&) = delete;
+  Forest& operator=(const Forest&) = delete;
+
+  /// This rank's leaves (centers) in p8est's order (D2).
+  std::vector<d3::Point> own() const;
+  /// N_r: the own leaves and the ghost layer's, sorted.
+  std::vector<d3::Point> known() const;
+  /// One more layer of ghosts (p8est_ghost_expand). Collective.
+  void expand();
+  /// The leaves of every rank.
+  std::int64_t global_leaves() const;
+
+ private:
+  p4est_bridge::Brick3 brick_;
+  p4est_bridge::Forest3Ptr forest_;
+  p8est_ghost_t* ghost_ = nullptr;
+};
 
 /// D6: what the ranks agree on after a stage: the lowest rank whose `code`
 /// is not 0 and its code, or {-1, 0} when every rank succeeded.

@@ -22,7 +22,7 @@ stuff::Fit fit_of(const stuff::Shape& local, const stuff::Normalisation& n, stuf
 
 }  // namespace
 
-Replicated replicate(const stuff::Shape& world, const stuff::StuffOptions& options, int deepest) {
+Replicated fitted(const stuff::Shape& world, const stuff::StuffOptions& options, int deepest) {
   const stuff::Normalisation n = stuff::normalisation_of(world.bounds());
   std::unique_ptr<stuff::Shape> local = world.normalised(n);
   stuff::StuffOptions o = options;
@@ -30,17 +30,42 @@ Replicated replicate(const stuff::Shape& world, const stuff::StuffOptions& optio
   if (fit.size.L > deepest)
     throw stuff::ShapeError("max level " + std::to_string(fit.size.L) + ": the partition (p8est) reaches level " +
                             std::to_string(deepest) + " at most (spec/distributed.md D1)");
-  d3::fast::Lattice g = stuff::background_fast(*local, fit, o);
-  return Replicated{n, std::move(local), o, fit, std::move(g)};
+  return Replicated{n, std::move(local), o, fit, std::nullopt};
 }
 
-LeafPiece stuff_piece(Replicated& r, std::span<const d3::Point> own) {
-  std::vector<LeafPiece> blocks = stuff_blocks(*r.shape, r.fit, *r.lattice, r.options, own);
-  r.lattice.reset();
+Replicated replicate(const stuff::Shape& world, const stuff::StuffOptions& options, int deepest) {
+  Replicated r = fitted(world, options, deepest);
+  r.lattice.emplace(stuff::background_fast(*r.shape, r.fit, r.options));
+  return r;
+}
+
+namespace {
+
+LeafPiece merged_in_world(const Replicated& r, std::vector<LeafPiece> blocks) {
   LeafPiece piece = blocks.size() == 1 ? std::move(blocks[0]) : merge_pieces(blocks);
   blocks = {};
   stuff::to_world(piece.mesh, r.normalisation, std::ldexp(r.fit.h, r.normalisation.exponent));
   return piece;
+}
+
+}  // namespace
+
+LeafPiece stuff_piece(Replicated& r, std::span<const d3::Point> own) {
+  std::vector<LeafPiece> blocks = stuff_blocks(*r.shape, r.fit, *r.lattice, r.options, own);
+  r.lattice.reset();
+  return merged_in_world(r, std::move(blocks));
+}
+
+std::optional<LeafPiece> stuff_piece(Replicated& r, std::span<const d3::Point> own, std::span<const d3::Point> known) {
+  std::vector<LeafPiece> blocks;
+  try {
+    blocks = stuff_blocks(*r.shape, r.fit, *r.lattice, r.options, own, kLeavesPerBlock, known);
+  } catch (const NotClosed&) {
+    r.lattice.reset();
+    return std::nullopt;
+  }
+  r.lattice.reset();
+  return merged_in_world(r, std::move(blocks));
 }
 
 }  // namespace bccmis::distributed

@@ -1,7 +1,7 @@
-// bccmis::distributed: the lattice every rank builds alike in this slice
-// (spec/distributed.md, "This slice replicates the lattice"): the shape in
-// S24's local coordinates, the fit (S2) and the background (S3), as
-// mesh_shape() makes them.
+// bccmis::distributed: what every rank holds alike (spec/distributed.md):
+// the shape in S24's local coordinates and the fit (S2), as mesh_shape()
+// makes them, and a lattice: the whole background (S3, replicate()) or the
+// rank's own (D10, local_lattice()).
 #pragma once
 
 #include <memory>
@@ -21,8 +21,13 @@ struct Replicated {
   std::unique_ptr<stuff::Shape> shape;       ///< in local coordinates
   stuff::StuffOptions options;               ///< max_level: the level used
   stuff::Fit fit;                            ///< local
-  std::optional<d3::fast::Lattice> lattice;  ///< S3; released by stuff_piece()
+  std::optional<d3::fast::Lattice> lattice;  ///< S3 or D10's L_r; released by stuff_piece()
 };
+
+/// S24 and S2 for `world` as mesh_shape() does them, without the lattice
+/// (D10: each rank then builds its own, local_lattice()). Throws as
+/// replicate() does.
+Replicated fitted(const stuff::Shape& world, const stuff::StuffOptions& options, int deepest);
 
 /// S24, S2, S3 for `world` as mesh_shape() does them. Throws ShapeError as
 /// fit_lattice() does, and, before building anything, when the level used
@@ -35,5 +40,9 @@ Replicated replicate(const stuff::Shape& world, const stuff::StuffOptions& optio
 /// lattice is released once the blocks are stuffed, before their pieces
 /// are merged (D3, D10): its bytes and the merge's are not held at once.
 LeafPiece stuff_piece(Replicated& r, std::span<const d3::Point> own);
+/// D10: the same on a rank's lattice r.lattice = local_lattice(known):
+/// nothing (the lattice released) when a block's leaves are not closed in
+/// `known` (stuff_blocks' NotClosed): the rank needs a wider ghost layer.
+std::optional<LeafPiece> stuff_piece(Replicated& r, std::span<const d3::Point> own, std::span<const d3::Point> known);
 
 }  // namespace bccmis::distributed

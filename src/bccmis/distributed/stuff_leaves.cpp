@@ -3,24 +3,42 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
 #include "bccmis/d3/detail/tetrahedra.h"
 #include "bccmis/distributed/leaf_piece.h"
+#include "bccmis/distributed/local_lattice.h"
 
 namespace bccmis::distributed {
 
 std::vector<LeafPiece> stuff_blocks(const stuff::Shape& shape, const stuff::Fit& fit, const d3::fast::Lattice& g,
                                     const stuff::StuffOptions& options, std::span<const d3::Point> own,
-                                    std::size_t block) {
+                                    std::size_t block, std::span<const d3::Point> known) {
   // The blocks follow the order of `own` (D3: any split gives the same
   // piece): p8est's Morton order (D2) makes a block compact, so its ghost
   // layer is thin.
   std::vector<LeafPiece> pieces;
   for (std::size_t first = 0; first < own.size() || first == 0; first += std::max<std::size_t>(block, 1)) {
     const std::span<const d3::Point> leaves = own.subspan(first, std::min(block, own.size() - first));
-    pieces.push_back(stuff_leaves(shape, fit, g, options, leaves, leaves_to_stuff(shape, fit, g, options, leaves)));
+    // D10: on a rank's lattice, the stuffed leaves' tetrahedra (and with
+    // them D9's closure, read from them) are G's when every leaf touching
+    // one is known. Beyond the known leaves the lattice is coarser than G,
+    // where D9's walk may ask a point that is no center: that walk is open.
+    std::vector<d3::Point> stuffed;
+    if (known.empty()) {
+      stuffed = leaves_to_stuff(shape, fit, g, options, leaves);
+    } else {
+      try {
+        stuffed = leaves_to_stuff(shape, fit, g, options, leaves);
+      } catch (const std::out_of_range&) {
+        throw NotClosed(leaves.front());
+      }
+      if (const std::optional<d3::Point> open = first_open(g, known, stuffed)) throw NotClosed(*open);
+    }
+    pieces.push_back(stuff_leaves(shape, fit, g, options, leaves, stuffed));
   }
   return pieces;
 }

@@ -64,6 +64,13 @@ Fit fit_lattice(const Bounds& box, const StuffOptions& options) {
   return fit;
 }
 
+bool s3_refines(const Shape& shape, const Fit& fit, const StuffOptions& options, const d3::Point& c, int l) {
+  if (l >= fit.size.L) return false;
+  if (l < options.min_level) return true;
+  const double r = 0.5 * static_cast<double>(d3::cell_side(fit.size, l)) * fit.scale;
+  return shape.distance(fit.to_space(c)) <= std::sqrt(3.0) * r + 4 * fit.h;
+}
+
 namespace {
 
 /// S3 on either lattice: the same passes, the same refines in the same order
@@ -71,7 +78,6 @@ namespace {
 /// leaf set on d3::Graph and d3::fast::Lattice.
 template <class G>
 void refine_near(const Shape& shape, const Fit& fit, const StuffOptions& options, G& g) {
-  const int L = fit.size.L;
   std::vector<d3::Point> snapshot;
   for (bool changed = true; changed;) {
     changed = false;
@@ -81,11 +87,7 @@ void refine_near(const Shape& shape, const Fit& fit, const StuffOptions& options
     }
     for (const d3::Point& c : snapshot) {
       if (!is_center(g, c)) continue;  // refined by the cascade earlier in this pass
-      const int l = level_of(g, c);
-      if (l >= L) continue;
-      const double r = 0.5 * static_cast<double>(d3::cell_side(fit.size, l)) * fit.scale;
-      const bool near = shape.distance(fit.to_space(c)) <= std::sqrt(3.0) * r + 4 * fit.h;
-      if (near || l < options.min_level) {
+      if (s3_refines(shape, fit, options, c, level_of(g, c))) {
         d3::refine_balanced(g, c);
         changed = true;
       }

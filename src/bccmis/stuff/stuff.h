@@ -47,6 +47,12 @@ struct Fit {
 /// box is empty or not finite.
 Fit fit_lattice(const Bounds& box, const StuffOptions& options);
 
+/// S3's test on one leaf (center c, level l): refine it when l < L and it
+/// lies near the surface (|f(c)| <= sqrt(3) r + 4h) or l < --min-level. A
+/// function of the leaf alone, so p8est can ask it of a partitioned forest
+/// (spec/distributed.md D10).
+bool s3_refines(const Shape& shape, const Fit& fit, const StuffOptions& options, const d3::Point& c, int l);
+
 /// S3: the initial lattice of `fit`, refined (through the balance cascade)
 /// until no leaf passes the test.
 d3::Graph background(const Shape& shape, const Fit& fit, const StuffOptions& options);

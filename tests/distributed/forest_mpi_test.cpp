@@ -1,0 +1,102 @@
+// spec/distributed.md D10 on MPI ranks (run under mpirun): the forest that
+// p8est refines by S3's test has, rank by rank, the leaves D2 gives each
+// rank from the whole lattice G (built here on every rank to compare), and
+// on each rank's lattice L_r (from its own leaves and p8est's ghost layer,
+// kGhostLayers deep) the leaves it stuffs (D9) are closed and have G's
+// lattice tetrahedra.
+// Prints FAIL and exits 1 on a difference; the torus and two spheres.
+#include <mpi.h>
+
+#include <cstdio>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "bccmis/d3/detail/tetrahedra.h"
+#include "bccmis/distributed/leaf_piece.h"
+#include "bccmis/distributed/local_lattice.h"
+#include "bccmis/distributed/ranks.h"
+#include "bccmis/stuff/stuff.h"
+
+namespace {
+
+using namespace bccmis;
+
+int failures = 0;
+
+void expect(bool ok, int rank, const std::string& what) {
+  if (!ok) {
+    std::printf("FAIL rank %d: %s\n", rank, what.c_str());
+    ++failures;
+  }
+}
+
+void check(const char* name, int level, int cells) {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  const auto shape = stuff::make_builtin(name);
+  stuff::StuffOptions options;
+  options.max_level = level;
+  options.cells = cells;
+  const stuff::Fit fit = stuff::fit_lattice(shape->bounds(), options);
+  const d3::fast::Lattice g = stuff::background_fast(*shape, fit, options);
+  distributed::Forest forest(*shape, fit, options, MPI_COMM_WORLD);
+  const std::vector<d3::Point> own = forest.own();
+  const std::string at = std::string(name) + " -L " + std::to_string(level) + ": ";
+  expect(forest.global_leaves() == static_cast<std::int64_t>(g.cell_count()), rank, at + "the forest's leaf count");
+  expect(own == distributed::own_leaves(g, MPI_COMM_WORLD), rank, at + "the own leaves differ from D2's of G");
+  // As bccmis-mpi stuff does: one more layer of ghosts while some rank's
+  // stuffed leaves are open (D10), a few rounds at most.
+  std::vector<d3::Point> known, stuffed;
+  std::optional<d3::fast::Lattice> l;
+  int rounds = 0;
+  for (;; ++rounds) {
+    known = forest.known();
+    l.emplace(distributed::local_lattice(fit.size, known));
+    int open = 0;
+    try {
+      stuffed = distributed::leaves_to_stuff(*shape, fit, *l, options, own);
+      open = distributed::first_open(*l, known, stuffed) ? 1 : 0;
+    } catch (const std::out_of_range&) {
+      open = 1;
+    }
+    MPI_Allreduce(MPI_IN_PLACE, &open, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    if (open == 0 || rounds == 8) {
+      expect(open == 0, rank, at + "stuffed leaves still open after 8 rounds");
+      break;
+    }
+    forest.expand();
+  }
+  if (rank == 0) std::printf("%s%d rounds\n", at.c_str(), rounds);
+  expect(stuffed == distributed::leaves_to_stuff(*shape, fit, g, options, own), rank, at + "D9's leaves differ");
+  std::vector<d3::Tet> got, want;
+  std::size_t differ = 0;
+  for (const d3::Point& u : stuffed) {
+    got.clear();
+    want.clear();
+    d3::detail::leaf_tetrahedra(*l, u, got);
+    d3::detail::leaf_tetrahedra(g, u, want);
+    differ += got != want;
+  }
+  expect(differ == 0, rank, at + std::to_string(differ) + " leaves' tetrahedra differ");
+  int size = 0;
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  if (size > 1 && level == 2)
+    expect(l->cell_count() < g.cell_count(), rank, at + "the rank's lattice is the whole lattice");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const p4est_bridge::Session session(&argc, &argv);
+  check("torus", 2, 6);
+  check("torus", 3, 2);
+  check("spheres:r=0.7,d=1", 2, 6);
+  int all = failures;
+  MPI_Allreduce(MPI_IN_PLACE, &all, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank == 0) std::printf("%s\n", all == 0 ? "forest_mpi_test: ok" : "forest_mpi_test: FAIL");
+  return all == 0 ? 0 : 1;
+}
