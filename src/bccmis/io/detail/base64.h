@@ -13,14 +13,26 @@ namespace bccmis::io::detail {
 
 inline constexpr char kBase64Digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
 
-/// The 4 digits of each of the `triples` 3-byte groups at `in`, to `out`.
+/// The two digits of each 12-bit value: kBase64Digits[v >> 6], then
+/// kBase64Digits[v & 63].
+inline const std::array<std::array<char, 2>, 4096>& base64_pairs() {
+  static const std::array<std::array<char, 2>, 4096> pairs = [] {
+    std::array<std::array<char, 2>, 4096> p{};
+    for (std::size_t v = 0; v < p.size(); ++v) p[v] = {kBase64Digits[v >> 6], kBase64Digits[v & 63]};
+    return p;
+  }();
+  return pairs;
+}
+
+/// The 4 digits of each of the `triples` 3-byte groups at `in`, to `out`:
+/// each group's 24 bits as two 12-bit halves, two digits each.
 inline char* base64_triples(const unsigned char* in, std::size_t triples, char* out) {
-  for (std::size_t t = 0; t < triples; ++t, in += 3) {
+  const auto& pairs = base64_pairs();
+  for (std::size_t t = 0; t < triples; ++t, in += 3, out += 4) {
     const unsigned v = unsigned{in[0]} << 16 | unsigned{in[1]} << 8 | unsigned{in[2]};
-    *out++ = kBase64Digits[(v >> 18) & 63];
-    *out++ = kBase64Digits[(v >> 12) & 63];
-    *out++ = kBase64Digits[(v >> 6) & 63];
-    *out++ = kBase64Digits[v & 63];
+    const std::array<char, 2>& high = pairs[v >> 12];
+    const std::array<char, 2>& low = pairs[v & 4095];
+    out[0] = high[0], out[1] = high[1], out[2] = low[0], out[3] = low[1];
   }
   return out;
 }
