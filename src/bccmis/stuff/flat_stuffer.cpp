@@ -225,6 +225,11 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
     cut_index_.reserve(points_.size() / 4);
     for (std::size_t ti = 0; ti < ids_.size(); ++ti) {
       const Ids& t = ids_[ti];
+      // An edge is cut only between a negative and a positive end: a
+      // tetrahedron without both has none (most of them).
+      bool negative = false, positive = false;
+      for (const std::uint32_t p : t) negative = negative || value_[p] < 0, positive = positive || value_[p] > 0;
+      if (!(negative && positive)) continue;
       bool has_cut = false;
       for (std::size_t i = 0; i < 4; ++i)
         for (std::size_t j = i + 1; j < 4; ++j) {
