@@ -1,5 +1,6 @@
 // base64 (spec/mesh3d.md M20's binary DataArrays): RFC 4648 §10's test
-// vectors, written by hand from the RFC, and the streaming writer against
+// vectors, written by hand from the RFC, every byte value against the RFC's
+// bit-by-bit rule, and the streaming writer against
 // the whole-string encoder for every way of cutting an input into pieces.
 #include <gtest/gtest.h>
 
@@ -25,6 +26,40 @@ TEST(Base64, Rfc4648TestVectors) {
                                                                  {"foobar", "Zm9vYmFy"},
                                                                  {std::string("\xfb\xff\xbf", 3), "+/+/"}};
   for (const auto& [bytes, text] : vectors) EXPECT_EQ(base64(bytes), text) << bytes;
+}
+
+/// RFC 4648 §4 read literally: the bits of `bytes`, most significant first,
+/// six at a time (zeros appended), each an index into the alphabet, then
+/// '=' to a multiple of 4 digits. Independent of base64_triples' tables.
+std::string base64_by_bits(const std::string& bytes) {
+  static const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::vector<int> bits;
+  for (const char c : bytes)
+    for (int b = 7; b >= 0; --b) bits.push_back((static_cast<unsigned char>(c) >> b) & 1);
+  while (bits.size() % 6 != 0) bits.push_back(0);
+  std::string out;
+  for (std::size_t i = 0; i < bits.size(); i += 6) {
+    std::size_t index = 0;
+    for (std::size_t k = 0; k < 6; ++k) index = 2 * index + static_cast<std::size_t>(bits[i + k]);
+    out += alphabet[index];
+  }
+  while (out.size() % 4 != 0) out += '=';
+  return out;
+}
+
+TEST(Base64, EveryByteAtEveryPlaceAsTheBitsSay) {
+  // Every byte value at each of the 6 places of two groups (the encoder
+  // takes two groups at a time), and lengths 0..13 of a mixed string.
+  for (int value = 0; value < 256; ++value)
+    for (std::size_t place = 0; place < 6; ++place) {
+      std::string bytes("\x5a\xa5\x0f\xf0\x33\xcc", 6);
+      bytes[place] = static_cast<char>(value);
+      ASSERT_EQ(base64(bytes), base64_by_bits(bytes)) << "byte " << value << " at " << place;
+    }
+  std::string mixed;
+  for (int i = 0; i < 13; ++i) mixed += static_cast<char>((i * 97 + 200) & 0xff);
+  for (std::size_t n = 0; n <= mixed.size(); ++n)
+    EXPECT_EQ(base64(mixed.substr(0, n)), base64_by_bits(mixed.substr(0, n))) << "length " << n;
 }
 
 /// The writer's text for `bytes` given in pieces of the lengths `cuts` (then

@@ -10,9 +10,9 @@
 #include <set>
 #include <vector>
 
-#include "bccmis/stuff/detail/position_order.h"
+#include "bccmis/d3/detail/position_order.h"
 
-namespace bccmis::stuff::detail {
+namespace bccmis::d3::detail {
 namespace {
 
 /// n distinct points with coordinates in [low, low + span) on each axis.
@@ -56,4 +56,4 @@ TEST(PositionOrder, ExtremeCoordinatesTakeTheFallback) {
 }
 
 }  // namespace
-}  // namespace bccmis::stuff::detail
+}  // namespace bccmis::d3::detail

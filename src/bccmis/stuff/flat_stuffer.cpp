@@ -11,11 +11,11 @@
 #include <utility>
 #include <vector>
 
+#include "bccmis/d3/detail/position_order.h"
 #include "bccmis/d3/point.h"
 #include "bccmis/fast/d3/lattice.h"
 #include "bccmis/stuff/detail/leaf_blocks.h"
 #include "bccmis/stuff/detail/parallel_ranges.h"
-#include "bccmis/stuff/detail/position_order.h"
 #include "bccmis/stuff/detail/stencils.h"
 #include "bccmis/stuff/detail/stuffer.h"
 #include "bccmis/stuff/stuff.h"
@@ -172,9 +172,17 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
   void number(std::span<const d3::Tet> tets) {
     const std::size_t mask = table_.size() - 1;
     const auto hash = [&](const d3::Point& p) { return d3::PointHash{}(p)&mask; };
+    // A leaf's tetrahedra come together, all with the leaf as vertex 0 and
+    // a face's with its apex as vertex 1 (spec/mesh3d.md M24): those two are
+    // most often the previous tetrahedron's, numbered already.
+    const d3::Tet* previous = nullptr;
     for (const d3::Tet& t : tets) {
       Ids ids{};
       for (std::size_t i = 0; i < 4; ++i) {
+        if (i < 2 && previous && (*previous)[i] == t[i]) {
+          ids[i] = ids_.back()[i];
+          continue;
+        }
         std::size_t k = hash(t[i]);
         while (table_[k] != EdgeTable::kNone && !(points_[table_[k]] == t[i])) k = (k + 1) & mask;
         if (table_[k] == EdgeTable::kNone) {
@@ -184,12 +192,13 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
         ids[i] = table_[k];
       }
       ids_.push_back(ids);
+      previous = &t;
     }
   }
   void end_numbering() {
     table_ = {};
     // S8a: the rank of each point by position, by a radix sort.
-    const std::vector<std::uint32_t> order = detail::position_order(points_);
+    const std::vector<std::uint32_t> order = d3::detail::position_order(points_);
     std::vector<std::uint32_t> rank(points_.size());
     std::vector<d3::Point> sorted(points_.size());
     for (std::uint32_t r = 0; r < order.size(); ++r) rank[order[r]] = r, sorted[r] = points_[order[r]];
@@ -216,6 +225,11 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
     cut_index_.reserve(points_.size() / 4);
     for (std::size_t ti = 0; ti < ids_.size(); ++ti) {
       const Ids& t = ids_[ti];
+      // An edge is cut only between a negative and a positive end: a
+      // tetrahedron without both has none (most of them).
+      bool negative = false, positive = false;
+      for (const std::uint32_t p : t) negative = negative || value_[p] < 0, positive = positive || value_[p] > 0;
+      if (!(negative && positive)) continue;
       bool has_cut = false;
       for (std::size_t i = 0; i < 4; ++i)
         for (std::size_t j = i + 1; j < 4; ++j) {

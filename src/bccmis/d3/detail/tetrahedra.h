@@ -50,6 +50,19 @@ decltype(auto) leaf_boundary(const G& g, const Point& u) {
   return neighbors(g, u);
 }
 
+/// The level of leaf u and M4.3's test (is w, across a face of u, a leaf?)
+/// by the vocabulary; a lattice may answer both from what leaf_boundary
+/// read (d3::fast::Lattice: spec/mesh3d.md M25), found by argument-dependent
+/// lookup.
+template <class G, class B>
+int leaf_level(const G& g, const Point& u, const B&) {
+  return level_of(g, u);
+}
+template <class G, class B>
+bool equal_across(const G& g, const B&, int, bool, const Point& w) {
+  return is_center(g, w);
+}
+
 /// spec/mesh3d.md M24: the 8 places of a face's boundary nodes in cyclic
 /// order (even: the corners of face_corners, odd: the midpoint after each),
 /// listed in the order of their positions, for a face whose normal is along
@@ -64,9 +77,9 @@ inline constexpr std::array<int, 8> kRingOrderY = {0, 1, 2, 7, 3, 6, 5, 4};
 template <class G>
 void leaf_tetrahedra(const G& g, const Point& u, std::vector<Tet>& out) {
   const LatticeSize& size = size_of(g);
-  const int l = level_of(g, u);
-  const std::int64_t s = cell_side(size, l), h = s / 2;
   const auto& nu = leaf_boundary(g, u);
+  const int l = leaf_level(g, u, nu);
+  const std::int64_t s = cell_side(size, l), h = s / 2;
   struct Face {
     Point apex;
     int axis;
@@ -87,7 +100,13 @@ void leaf_tetrahedra(const G& g, const Point& u, std::vector<Tet>& out) {
       } else {
         Point w = u;
         coord(w, axis) += high ? s : -s;
-        if (is_center(g, w)) {
+        const bool equal = equal_across(g, nu, axis, high, w);
+#ifndef NDEBUG
+        // M4.3's look-up that M25 replaces, kept in debug builds.
+        if (equal != is_center(g, w) || l != level_of(g, u))
+          throw std::logic_error("tetrahedra: M25 reads a wrong equal face or level at " + to_string(u));
+#endif
+        if (equal) {
           if (w < u) continue;  // M3: an equal face is emitted once, from the smaller center
           apex = w;             // M4.3, M5: an equal face
         } else {

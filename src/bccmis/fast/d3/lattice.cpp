@@ -26,6 +26,7 @@
 #include <new>
 #include <stdexcept>
 
+#include "bccmis/d3/detail/position_order.h"
 #include "bccmis/text_writer.h"
 
 namespace bccmis::d3::fast {
@@ -533,8 +534,11 @@ Lattice::Boundary Lattice::boundary(const Point& u) const {
   const Index c = find_center(u);
   if (c == kNone) throw std::out_of_range("d3::fast::Lattice::boundary: " + d3::to_string(u) + " is not a center");
   Boundary b;
+  b.g_ = this;
+  b.c_ = c;
   b.u_ = u;
-  b.h_ = half_side(level(c));
+  b.level_ = level(c);
+  b.h_ = half_side(b.level_);
   for (int k = 0; k < 26; ++k)
     if (centers_[c].nbr[k] != kNone) b.slots_ |= 1u << k;
   return b;
@@ -551,13 +555,33 @@ bool Lattice::Boundary::contains(const Point& p) const {
   return g != 13 && ((slots_ >> slot_of_grid(g)) & 1u);
 }
 
+bool Lattice::Boundary::equal_across(int axis, bool high, const Point& w) const {
+  // spec/mesh3d.md M25.2: b, the corner of the face at -h on its tangential
+  // axes i and j; t, the octant at b across the face and toward its center.
+  const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+  int d[3];
+  d[axis] = high ? 1 : -1;
+  d[i] = -1;
+  d[j] = -1;
+  const Index b = g_->centers_[c_].nbr[slot_of(d[0], d[1], d[2])];
+  const int t = (high ? 1 << axis : 0) | 1 << i | 1 << j;
+  const Index x = g_->nodes_[b].cell[t];
+  return x != kNone && g_->centers_[x].p == w;
+}
+
 std::vector<Index> Lattice::sorted_centers() const {
+  // §9.7: the order of S8a's radix sort of the live centers' positions.
   std::vector<Index> ids;
+  std::vector<Point> positions;
   ids.reserve(cell_count_);
+  positions.reserve(cell_count_);
   for (Index i = 0; i < centers_.size(); ++i)
-    if (centers_[i].live()) ids.push_back(i);
-  std::sort(ids.begin(), ids.end(), [&](Index a, Index b) { return centers_[a].p < centers_[b].p; });
-  return ids;
+    if (centers_[i].live()) ids.push_back(i), positions.push_back(centers_[i].p);
+  const std::vector<std::uint32_t> order = d3::detail::position_order(positions);
+  positions = {};
+  std::vector<Index> sorted(ids.size());
+  for (std::size_t r = 0; r < order.size(); ++r) sorted[r] = ids[order[r]];
+  return sorted;
 }
 
 std::vector<std::pair<Point, Index>> Lattice::sorted_nodes() const {

@@ -145,12 +145,22 @@ class Lattice {
    public:
     /// Whether node p is on the cell's boundary (p ∈ N(u)).
     bool contains(const d3::Point& p) const;
+    /// The cell's level, from its record (spec/mesh3d.md M25.1).
+    int level() const { return level_; }
+    /// spec/mesh3d.md M25.2: whether w, the cell's position moved by its
+    /// side along `axis` (toward + when `high`), is a leaf, for a face that
+    /// is not on the hull and whose center is not in N(u) (M4.3): the leaf
+    /// in the slot across the face of the face's first corner.
+    bool equal_across(int axis, bool high, const d3::Point& w) const;
 
    private:
     friend class Lattice;
+    const Lattice* g_ = nullptr;
+    Index c_ = kNone;  ///< the cell's record
     d3::Point u_{};
     std::int64_t h_ = 0;       ///< half the cell's side
     std::uint32_t slots_ = 0;  ///< bit k: slot k holds a node
+    int level_ = 0;
   };
   /// The boundary of cell u; throws std::out_of_range if u is not a center.
   Boundary boundary(const d3::Point& u) const;
@@ -234,6 +244,12 @@ class Lattice {
 
 /// The mesh rule's view of leaf u (d3/detail/tetrahedra.h): its slots.
 inline Lattice::Boundary leaf_boundary(const Lattice& g, const d3::Point& u) { return g.boundary(u); }
+/// spec/mesh3d.md M25: the mesh rule's level of leaf u and its equal-face
+/// test, read from the boundary's record instead of the position table.
+inline int leaf_level(const Lattice&, const d3::Point&, const Lattice::Boundary& b) { return b.level(); }
+inline bool equal_across(const Lattice&, const Lattice::Boundary& b, int axis, bool high, const d3::Point& w) {
+  return b.equal_across(axis, high, w);
+}
 
 // ---- The lattice vocabulary (bccmis/lattice.h): Lattice models AdaptiveLattice
 

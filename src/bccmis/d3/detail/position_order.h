@@ -1,5 +1,6 @@
-// bccmis::stuff::detail: the order of distinct lattice points by position
-// (spec/stuffing.md S8a), the numbering of the flat stuffer.
+// bccmis::d3::detail: the order of distinct lattice points by position
+// (spec/stuffing.md S8a): the numbering of the flat stuffer and the fast 3D
+// lattice's cells in order (spec/lattice3d.md §9.7).
 #pragma once
 
 #include <algorithm>
@@ -12,7 +13,7 @@
 
 #include "bccmis/d3/point.h"
 
-namespace bccmis::stuff::detail {
+namespace bccmis::d3::detail {
 
 /// The indices 0 .. n - 1 of `points` (distinct, n < 2^32) in increasing
 /// d3::Point order. S8a: when the points' packed offsets and the index fit
@@ -69,4 +70,4 @@ inline std::vector<std::uint32_t> position_order(std::span<const d3::Point> poin
   return order;
 }
 
-}  // namespace bccmis::stuff::detail
+}  // namespace bccmis::d3::detail
