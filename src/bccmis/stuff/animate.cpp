@@ -243,7 +243,12 @@ std::uint64_t pack(const d3::Point& p) {
 }  // namespace
 
 std::size_t MovingLattice::PackedIndex::home(std::uint64_t k) const {
-  return static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> 20) & (keys_.size() - 1);
+  // splitmix64's finalizer: every bit of the packed point reaches the low
+  // bits (a bare multiplicative hash read at bits 20 and up leaves the x
+  // field, at bit 42, out of them: every x of a (y, z) shared one home).
+  k = (k ^ (k >> 30)) * 0xBF58476D1CE4E5B9ull;
+  k = (k ^ (k >> 27)) * 0x94D049BB133111EBull;
+  return static_cast<std::size_t>(k ^ (k >> 31)) & (keys_.size() - 1);
 }
 
 std::uint32_t MovingLattice::PackedIndex::find(std::uint64_t k) const {
