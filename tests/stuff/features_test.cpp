@@ -150,6 +150,16 @@ Meshed mesh_with(const Shape& shape, int level, bool features) {
   return mesh_shape(shape, s);
 }
 
+// The same mesh, byte for byte: positions (exact doubles), kinds,
+// tetrahedra, levels and the boundary.
+void expect_same_mesh(const Meshed& a, const Meshed& b) {
+  EXPECT_TRUE(a.stuffed.mesh.vertices == b.stuffed.mesh.vertices);
+  EXPECT_TRUE(a.stuffed.mesh.kind == b.stuffed.mesh.kind);
+  EXPECT_TRUE(a.stuffed.mesh.tets == b.stuffed.mesh.tets);
+  EXPECT_TRUE(a.stuffed.mesh.level == b.stuffed.mesh.level);
+  EXPECT_TRUE(a.boundary == b.boundary);
+}
+
 //= spec/stuffing.md S30 type=test
 //= spec/stuffing.md S31 type=test
 TEST(FeatureConformity, TurnedCubeKeepsItsCornersEdgesAndVolume) {
@@ -284,11 +294,7 @@ TEST(FeatureConformity, SplitsThatConformNothingAreUndone) {
   EXPECT_GE(with.features->splits_undone, 2u);  // S35 was tried, and undone
   EXPECT_EQ(without.features->splits_undone, 0u);
   EXPECT_EQ(with.features->curves_conformed, without.features->curves_conformed);
-  EXPECT_TRUE(with.stuffed.mesh.vertices == without.stuffed.mesh.vertices);  // exact doubles
-  EXPECT_TRUE(with.stuffed.mesh.kind == without.stuffed.mesh.kind);
-  EXPECT_TRUE(with.stuffed.mesh.tets == without.stuffed.mesh.tets);
-  EXPECT_TRUE(with.stuffed.mesh.level == without.stuffed.mesh.level);
-  EXPECT_TRUE(with.boundary == without.boundary);
+  expect_same_mesh(with, without);
 }
 
 //= spec/stuffing.md S35 type=test
@@ -312,11 +318,7 @@ TEST(FeatureConformity, MovesAfterUndoneSplitsAreUndone) {
   EXPECT_GT(with.features->moves_undone, 0u);  // vertices were moved after the splits, then put back
   EXPECT_EQ(without.features->moves_undone, 0u);
   EXPECT_EQ(with.features->curves_conformed, without.features->curves_conformed);
-  EXPECT_TRUE(with.stuffed.mesh.vertices == without.stuffed.mesh.vertices);  // exact doubles
-  EXPECT_TRUE(with.stuffed.mesh.kind == without.stuffed.mesh.kind);
-  EXPECT_TRUE(with.stuffed.mesh.tets == without.stuffed.mesh.tets);
-  EXPECT_TRUE(with.stuffed.mesh.level == without.stuffed.mesh.level);
-  EXPECT_TRUE(with.boundary == without.boundary);
+  expect_same_mesh(with, without);
 }
 
 //= spec/stuffing.md S35 type=test
