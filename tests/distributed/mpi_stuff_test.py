@@ -132,13 +132,23 @@ def errors(mpirun, bccmis, bccmis_mpi, ranks, work):
     index = os.path.join(work, "out.pvtu")
     refused([os.path.join(work, "missing.off"), "-L", "2"], index, "missing.off")
     refused(["--shape", "sphere", "-L", "2"], os.path.join(work, "no_such_dir", "out.pvtu"), "no_such_dir")
+    # S21 as bccmis stuff says it: an open flat square (a soup with four
+    # border edges) encloses no volume at any level.
+    square = os.path.join(work, "square.off")
+    with open(square, "w") as f:
+        f.write("OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n")
+    says = "square.off: encloses no volume (the winding number is below 1/2 at every lattice vertex)"
+    serial = run([bccmis, "stuff", square, "-L", "2", "-o", os.path.join(work, "serial.vtu")], expect=2)
+    if says not in serial.stderr:
+        sys.exit(f"FAIL: bccmis stuff on the square does not say '{says}':\n{serial.stderr}")
+    refused([square, "-L", "2"], index, says)
     # Rank 1 (the last rank when there is one) cannot put its piece in place:
     # its target is a directory. Every rank exits 2 and no .pvtu is written.
     last = ranks - 1
     os.mkdir(os.path.join(work, f"out_{last:04d}.vtu"))
     refused(["--shape", "sphere", "-L", "2"], index, f"rank {last}")
-    print(f"ok: {ranks} ranks: an unreadable input, an unwritable directory and one rank's failed piece exit 2 "
-          "with no .pvtu")
+    print(f"ok: {ranks} ranks: an unreadable input, an unwritable directory, a soup enclosing no volume and one "
+          "rank's failed piece exit 2 with no .pvtu")
 
 
 def main():

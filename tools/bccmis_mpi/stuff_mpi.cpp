@@ -158,10 +158,10 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
       if (gather) bytes = distributed::gather_bytes(distributed::to_bytes(piece), 0, comm);
     });
     stage(comm, [&] {
-      if (rank == 0 && tetrahedra == 0) {  // S26, as bccmis stuff
+      if (rank == 0 && tetrahedra == 0) {  // S21 or S26, as bccmis stuff
         stuff::Fit world = lattice->fit;
         world.h = std::ldexp(world.h, lattice->normalisation.exponent);
-        throw InputError(shape->describe() + ": the mesh is empty: " + stuff::level_hint(shape->bounds(), world));
+        throw InputError(stuff::empty_mesh_message(*shape, world));
       }
       if (!gather) {
         if (mine > 0)

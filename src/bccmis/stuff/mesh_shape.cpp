@@ -50,6 +50,12 @@ std::string level_hint(const Bounds& box, const Fit& fit) {
   return level_hint(thinnest_extent(box), "the shape's box", fit);
 }
 
+std::string empty_mesh_message(const Shape& shape, const Fit& fit) {
+  if (const SoupReport* soup = shape.soup_report(); soup && soup->flaw_count() > 0)
+    return soup->file + ": encloses no volume (the winding number is below 1/2 at every lattice vertex)";
+  return shape.describe() + ": the mesh is empty: " + level_hint(shape.bounds(), fit);
+}
+
 std::unique_ptr<Shape> load_mesh_file(const std::string& path, bool strict, std::optional<io::SurfaceFormat> format) {
 #if BCCMIS_HAVE_STUFF_SURFACE
   return strict ? load_surface(path, format) : load_soup(path, format);
@@ -122,12 +128,9 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
                {"stencils", times.stencils}};
   say(std::to_string(r.stuffed.mesh.tets.size()) + " tetrahedra (" + number(times.total() - times.lattice) + " s)");
 
-  // S21: a soup whose winding number is below 1/2 at every lattice vertex.
-  if (r.soup && r.soup->flaw_count() > 0 && r.stuffed.mesh.tets.empty())
-    throw ShapeError(r.soup->file + ": encloses no volume (the winding number is below 1/2 at every lattice vertex)");
-  // S26: an empty mesh is bad input for this level.
-  if (r.stuffed.mesh.tets.empty())
-    throw ShapeError(world.describe() + ": the mesh is empty: " + level_hint(world.bounds(), r.fit));
+  // S21 (a soup whose winding number is below 1/2 at every lattice vertex)
+  // or S26 (bad input for this level).
+  if (r.stuffed.mesh.tets.empty()) throw ShapeError(empty_mesh_message(world, r.fit));
   // One grouping of the faces for S11's boundary and M23's regions (the
   // feature snapping below moves vertices only; S35's splits group them again), timed with the statistics.
   const auto t_faces = Clock::now();

@@ -117,6 +117,14 @@ void to_world(d3::TetMeshF& mesh, const Normalisation& n, double h);
 /// resolve it", N the first level whose finest side is at most a quarter of it.
 std::string level_hint(const Bounds& box, const Fit& fit);
 
+/// Why a mesh of `shape` without tetrahedra is refused, `fit` in world
+/// units: a soup with flaws encloses no volume (S21: "<file>: encloses no
+/// volume (the winding number is below 1/2 at every lattice vertex)"), any
+/// other shape is bad input for this level (S26: "<shape>: the mesh is
+/// empty: " and level_hint). One message for `bccmis stuff` and every rank
+/// count of `bccmis-mpi stuff`.
+std::string empty_mesh_message(const Shape& shape, const Fit& fit);
+
 /// The checker's feature layer (bccmis/invariants/d3/feature_conformity.h)
 /// on a mesh of the lattice `fit` and what S30 conformed in it: a vertex at
 /// each corner within 1e-9 h, each piece covered (S32). The message of the
