@@ -225,8 +225,8 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
     cut_index_.reserve(points_.size() / 4);
     for (std::size_t ti = 0; ti < ids_.size(); ++ti) {
       const Ids& t = ids_[ti];
-      // An edge is cut only between a negative and a positive end: a
-      // tetrahedron without both has none (most of them).
+      // S5: an edge is cut only between a negative and a positive end
+      // (strict), so a tetrahedron without both has none (most of them).
       bool negative = false, positive = false;
       for (const std::uint32_t p : t) negative = negative || value_[p] < 0, positive = positive || value_[p] > 0;
       if (!(negative && positive)) continue;
