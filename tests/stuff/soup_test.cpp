@@ -11,8 +11,11 @@
 #include <cstdint>
 #include <fstream>
 #include <functional>
+#include <memory>
+#include <random>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bccmis/io/off.h"
@@ -249,6 +252,42 @@ TEST(SoupMeshing, OpenCube) {
   Tris t = cube_triangles();
   t.erase(t.begin() + 1);
   meshes_to(cube_vertices(), t, "open", 8, 24);
+}
+
+TEST(SoupDistance, OneLipschitzOnlyWithoutAnOpenBoundary) {
+  // S37 fact 1: the clean cube, the clean cube through the soup's shape,
+  // and a cube with a duplicated face (a flaw, but no open boundary) have
+  // the distance to their triangles, 1-Lipschitz, and say so through every
+  // view (S24's normalised and placed ones, and translated); the open cube's
+  // distance is S20's lower bound across the hole, and it says it is not.
+  Tris doubled = cube_triangles();
+  doubled.push_back(doubled[0]);
+  Tris open = cube_triangles();
+  open.erase(open.begin() + 1);
+  const std::vector<std::pair<std::shared_ptr<const Shape>, bool>> shapes = {
+      {make_mesh_shape(cube_vertices(), cube_triangles(), "clean"), true},
+      {make_soup_shape(cube_vertices(), cube_triangles(), "soup", SoupPath::always), true},
+      {make_soup_shape(cube_vertices(), doubled, "doubled"), true},
+      {make_soup_shape(cube_vertices(), open, "open"), false}};
+  const Normalisation n{{1, 1, 1}, -3};
+  std::mt19937_64 rng(37);
+  std::uniform_real_distribution<double> u(-1, 3), small(-1e-3, 1e-3);
+  for (const auto& [shape, lipschitz] : shapes) {
+    SCOPED_TRACE(shape->describe());
+    EXPECT_EQ(shape->distance_is_lipschitz(), lipschitz);
+    EXPECT_EQ(translated(shape, {0.5, 0, 0})->distance_is_lipschitz(), lipschitz);
+    EXPECT_EQ(shape->normalised(n)->distance_is_lipschitz(), lipschitz);
+    EXPECT_EQ(view_normalised(*shape, n)->distance_is_lipschitz(), lipschitz);
+    EXPECT_EQ(placed(shape->normalised(n), n)->distance_is_lipschitz(), lipschitz);
+    if (!lipschitz) continue;
+    for (int i = 0; i < 2000; ++i) {  // the claim, on pairs near and far apart
+      const Vec3 p{u(rng), u(rng), u(rng)};
+      const Vec3 q =
+          i % 2 ? Vec3{u(rng), u(rng), u(rng)} : Vec3{p[0] + small(rng), p[1] + small(rng), p[2] + small(rng)};
+      const double d = std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
+      ASSERT_LE(std::abs(shape->distance(p) - shape->distance(q)), d * (1 + 1e-12) + 1e-15) << i;
+    }
+  }
 }
 
 /// The cube written one triangle at a time: three vertices of its own per

@@ -10,8 +10,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <memory>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <tuple>
 #include <vector>
@@ -217,6 +220,52 @@ TEST(StuffShapes, BackgroundIsFinestWithinTheBand) {
 
 namespace bccmis::stuff {
 namespace {
+
+TEST(StuffAnimate, RememberedDistanceDecidesOnlyBeyondItsDrift) {
+  // S37: a distance 1 asked 0.25 away (binary fractions, no rounding, e =
+  // 0.125) says |f| <= 1.375 and |f| >= 0.625 now: a comparison exactly at
+  // either end is decided (<= at the top, > just below the bottom), one a
+  // step inside is not.
+  const detail::DistanceBound b = detail::drifted(1.0, 0.25, 0.125);
+  EXPECT_EQ(b.at_most(1.375), std::optional<bool>(true));
+  EXPECT_EQ(b.at_most(std::nextafter(1.375, 0.0)), std::nullopt);
+  EXPECT_EQ(b.at_most(std::nextafter(0.625, 0.0)), std::optional<bool>(false));
+  EXPECT_EQ(b.at_most(0.625), std::nullopt);
+  // At no drift the value itself decides, on both sides of it.
+  const detail::DistanceBound v = detail::drifted(1.0, 0.0, 0.125);
+  EXPECT_EQ(v.at_most(1.0), std::optional<bool>(true));
+  EXPECT_EQ(v.at_most(std::nextafter(1.0, 0.0)), std::optional<bool>(false));
+  // Nothing asked decides nothing; two bounds: the value where one is it,
+  // else the intersection, and nothing where rounding left it empty.
+  EXPECT_EQ(detail::DistanceBound{}.at_most(1e300), std::nullopt);
+  EXPECT_EQ(detail::both(b, v).lo, 1.0);
+  EXPECT_EQ(detail::both(b, detail::drifted(1.5, 0.25, 0.125)).lo, 1.125);
+  EXPECT_EQ(detail::both(b, detail::drifted(1.5, 0.25, 0.125)).hi, 1.375);
+  EXPECT_EQ(detail::both(b, detail::drifted(3.0, 0.25, 0.125)).hi, std::numeric_limits<double>::infinity());
+}
+
+TEST(StuffAnimate, BuiltInDistancesAreOneLipschitzAsClaimed) {
+  // S37 fact 1: each built-in shape (and its translated view) claims a
+  // 1-Lipschitz distance; random pairs of points near and far from the
+  // surface, and pairs a hair apart, never differ by more than their
+  // distance (up to rounding).
+  std::mt19937_64 rng(37);
+  std::uniform_real_distribution<double> u(-2.5, 2.5), small(-1e-3, 1e-3);
+  for (const char* name : {"sphere", "torus", "spheres:r=0.7,d=1"}) {
+    SCOPED_TRACE(name);
+    const std::shared_ptr<const Shape> shape = make_builtin(name);
+    const auto moved = translated(shape, {0.1, -0.2, 0.3});
+    EXPECT_TRUE(shape->distance_is_lipschitz());
+    EXPECT_TRUE(moved->distance_is_lipschitz());
+    for (int i = 0; i < 20000; ++i) {
+      const Vec3 p{u(rng), u(rng), u(rng)};
+      const Vec3 q =
+          i % 2 ? Vec3{u(rng), u(rng), u(rng)} : Vec3{p[0] + small(rng), p[1] + small(rng), p[2] + small(rng)};
+      const double d = std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
+      ASSERT_LE(std::abs(moved->distance(p) - moved->distance(q)), d * (1 + 1e-12) + 1e-15) << i;
+    }
+  }
+}
 
 TEST(StuffAnimate, LocalStepsReachTheLatticeBuiltFromScratch) {
   // S15: after every frame the fast lattice updated locally equals the

@@ -58,10 +58,17 @@ MovingLattice::MovingLattice(std::shared_ptr<const Shape> shape, const Fit& fit,
       fit_((check_moving_fit(fit), fit)),
       options_(with_level(options, fit.size.L)),
       g_(background_fast(*moved_, fit_, options_)),
-      reach_(1.05 * std::max(options_.alpha_long * fit_.h, options_.alpha_short * 0.5 * std::sqrt(3.0) * fit_.h)) {
+      reach_(1.05 * std::max(options_.alpha_long * fit_.h, options_.alpha_short * 0.5 * std::sqrt(3.0) * fit_.h)),
+      lipschitz_(shape_->distance_is_lipschitz()) {
+  // S37 fact 2: e = 1e-9 (R + h), R the largest coordinate of the domain.
+  const std::int64_t S = d3::level0_side(fit_.size);
+  double R = 0;
+  for (const d3::Point& corner : {d3::Point{0, 0, 0}, d3::Point{fit_.size.W * S, fit_.size.H * S, fit_.size.D * S}})
+    for (const double x : fit_.to_space(corner)) R = std::max(R, std::abs(x));
+  rounding_ = 1e-9 * (R + fit_.h);
   leaves_.reserve(2 * g_.cell_count());
   std::vector<Candidate> all;
-  for (const d3::Point& u : g_.cells()) all.push_back({u, true, -1});
+  for (const d3::Point& u : g_.cells()) all.push_back({u, true, {}});
   FrameReport ignored;
   restuff(all, ignored);
 }
@@ -84,17 +91,18 @@ std::vector<d3::Point> MovingLattice::roots() const {
 // the coarsen pass, the failing refined cells that may hold some.
 void MovingLattice::refine_visit(const d3::Point& c, int level, FrameReport& report, Descent& d) {
   const double s = static_cast<double>(side(level)) * fit_.scale;
-  const double f = moved_->distance(fit_.to_space(c));
+  detail::DistanceBound f = remembered(c);  // S37: each comparison asks only if f does not decide it
   const double k = 0.5 * std::sqrt(3.0);
   // near_visit's bound: a leaf inside c may be a candidate.
-  const bool may_hold = f <= k * s + std::max((1 - k) * 0.5 * s + reach_, d.moved);
-  const bool pass = level < fit_.size.L && (level < options_.min_level || f <= std::sqrt(3.0) * (0.5 * s) + 4 * fit_.h);
+  const auto may_hold = [&] { return at_most(c, f, k * s + std::max((1 - k) * 0.5 * s + reach_, d.moved)); };
+  const bool pass =
+      level < fit_.size.L && (level < options_.min_level || at_most(c, f, std::sqrt(3.0) * (0.5 * s) + 4 * fit_.h));
   if (!pass) {
     if (g_.is_center(c)) {
-      if (f <= std::max(s + reach_, d.moved)) d.near.push_back({c, false, f});
+      if (at_most(c, f, std::max(s + reach_, d.moved))) d.near.push_back({c, false, f});
     } else {
       d.failing.push_back({c, level});
-      if (may_hold) d.deferred.push_back({c, level});
+      if (may_hold()) d.deferred.push_back({c, level});
     }
     return;
   }
@@ -108,10 +116,10 @@ void MovingLattice::refine_visit(const d3::Point& c, int level, FrameReport& rep
     return;
   }
   // The children are level-L leaves.
-  if (!may_hold) return;
+  if (!may_hold()) return;
   for (const d3::Point& child : children(c, side(level))) {
-    const double fc = moved_->distance(fit_.to_space(child));
-    if (fc <= std::max(0.5 * s + reach_, d.moved)) d.near.push_back({child, false, fc});
+    detail::DistanceBound fc = remembered(child);
+    if (at_most(child, fc, std::max(0.5 * s + reach_, d.moved))) d.near.push_back({child, false, fc});
   }
 }
 
@@ -136,18 +144,18 @@ bool MovingLattice::coarsen_subtree(const d3::Point& c, int level, FrameReport& 
 // S16's candidates: the leaves that can be active now, |f(u)| <= s_u + 1.05 r_w,
 // or whose sign can have changed since the last frame, |f(u)| <= the
 // distance moved (the surface passed u on the way).
-void MovingLattice::near_visit(const d3::Point& c, int level, double moved, std::vector<Candidate>& out) const {
+void MovingLattice::near_visit(const d3::Point& c, int level, double moved, std::vector<Candidate>& out) {
   const double s = static_cast<double>(side(level)) * fit_.scale;
-  const double f = moved_->distance(fit_.to_space(c));
+  detail::DistanceBound f = remembered(c);  // S37
   if (g_.is_center(c)) {
-    if (f <= std::max(s + reach_, moved)) out.push_back({c, false, f});
+    if (at_most(c, f, std::max(s + reach_, moved))) out.push_back({c, false, f});
     return;
   }
   // A leaf u of side s_u inside c is within sqrt(3)/2 (s - s_u) of c's
   // center, and s_u <= s / 2: it passes only if f(c) <= sqrt(3)/2 s +
   // max((1 - sqrt(3)/2) s / 2 + reach, moved).
   const double k = 0.5 * std::sqrt(3.0);
-  if (f > k * s + std::max((1 - k) * 0.5 * s + reach_, moved)) return;
+  if (!at_most(c, f, k * s + std::max((1 - k) * 0.5 * s + reach_, moved))) return;
   for (const d3::Point& child : children(c, side(level))) near_visit(child, level + 1, moved, out);
 }
 
@@ -301,6 +309,29 @@ void MovingLattice::PackedIndex::grow() {
     if (keys[i] != kEmpty) insert(keys[i], values[i]);
 }
 
+detail::DistanceBound MovingLattice::remembered(const d3::Point& p) const {
+  const std::uint32_t i = asked_index_.find(pack(p));
+  if (i == PackedIndex::kNone) return {};
+  const Asked& a = asked_[i];
+  const double drift = std::hypot(offset_[0] - a.at[0], offset_[1] - a.at[1], offset_[2] - a.at[2]);
+  // S37: the value itself at the offset it was asked at, a bound elsewhere
+  // only for a 1-Lipschitz distance.
+  if (drift != 0 && !lipschitz_) return {};
+  return detail::drifted(a.f, drift, rounding_);
+}
+
+bool MovingLattice::at_most(const d3::Point& p, detail::DistanceBound& f, double t) {
+  if (const std::optional<bool> decided = f.at_most(t)) return *decided;
+  const double value = moved_->distance(fit_.to_space(p));
+  const auto [i, inserted] = asked_index_.insert(pack(p), static_cast<std::uint32_t>(asked_.size()));
+  if (inserted)
+    asked_.push_back({value, offset_});
+  else
+    asked_[i] = {value, offset_};
+  f = {value, value};
+  return value <= t;
+}
+
 void MovingLattice::release(Leaf& leaf) {
   for (const auto& t : leaf.inside)
     for (const std::uint32_t v : t)
@@ -341,12 +372,20 @@ void MovingLattice::restuff(const std::vector<Candidate>& candidates, FrameRepor
     if (leaf.level < 0) leaf.level = g_.level_of(u);
     leaf.stale = leaf.stale || relattice;
     const double s = static_cast<double>(side(leaf.level)) * fit_.scale;
-    // The sign only where it decides, inside or outside; a distance the
-    // descent found spares a query.
+    // The sign only where it decides, inside or outside; what the descent
+    // and earlier frames know of the distance spares a query (S37 fact 4).
     const Vec3 at = fit_.to_space(u);
-    const double f = known >= 0 ? known : moved_->signed_distance(at);
-    const bool is_active = std::abs(f) <= s + reach_;
-    if (!is_active && (known >= 0 ? moved_->signed_distance(at) : f) > 0) {
+    bool is_active = false;
+    int sign = 0;  // of f, when asked here
+    if (const std::optional<bool> decided = detail::both(known, remembered(u)).at_most(s + reach_)) {
+      is_active = *decided;
+    } else {
+      const double f = moved_->signed_distance(at);
+      is_active = std::abs(f) <= s + reach_;
+      sign = (f > 0) - (f < 0);
+    }
+    // Inactive: |f| > s + 1.05 r_w > 0, so the side is the sign of f.
+    if (!is_active && (sign != 0 ? sign : moved_->side(at)) > 0) {
       release(leaf);  // outside: every vertex is outside; its tetrahedra wait until needed
       continue;
     }
@@ -462,15 +501,15 @@ FrameReport MovingLattice::step(const Vec3& offset) {
   // Each candidate leaf once: its lattice changed if any entry says so, its
   // distance if any entry knows it.
   std::vector<Candidate> all = std::move(descent.near);
-  for (const d3::Point& u : lattice_dirty()) all.push_back({u, true, -1});
-  for (const d3::Point& u : active_) all.push_back({u, false, -1});
+  for (const d3::Point& u : lattice_dirty()) all.push_back({u, true, {}});
+  for (const d3::Point& u : active_) all.push_back({u, false, {}});
   for (const auto& [c, level] : descent.deferred) near_visit(c, level, descent.moved, all);
   std::sort(all.begin(), all.end(), [](const Candidate& a, const Candidate& b) { return a.u < b.u; });
   std::vector<Candidate> candidates;
   for (const Candidate& c : all) {
     if (!candidates.empty() && candidates.back().u == c.u) {
       candidates.back().relattice = candidates.back().relattice || c.relattice;
-      candidates.back().distance = std::max(candidates.back().distance, c.distance);
+      candidates.back().f = detail::both(candidates.back().f, c.f);
     } else {
       candidates.push_back(c);
     }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "bccmis/fast/d3/lattice.h"
+#include "bccmis/stuff/detail/distance_bound.h"
 #include "bccmis/stuff/stuff.h"
 
 namespace bccmis::stuff {
@@ -62,11 +63,11 @@ class MovingLattice {
   };
 
   /// A leaf S16 classifies again: whether its lattice tetrahedra changed,
-  /// its distance to the surface if known (else negative).
+  /// and what is known of its distance to the surface (S37).
   struct Candidate {
     d3::Point u;
     bool relattice = false;
-    double distance = -1;
+    detail::DistanceBound f;
   };
 
   /// What the frame's descent collects (S15, S16).
@@ -80,7 +81,12 @@ class MovingLattice {
   std::vector<d3::Point> roots() const;
   void refine_visit(const d3::Point& c, int level, FrameReport& report, Descent& d);
   bool coarsen_subtree(const d3::Point& c, int level, FrameReport& report);
-  void near_visit(const d3::Point& c, int level, double moved, std::vector<Candidate>& out) const;
+  void near_visit(const d3::Point& c, int level, double moved, std::vector<Candidate>& out);
+  /// S37: what the distances asked before say of |f(p)| now.
+  detail::DistanceBound remembered(const d3::Point& p) const;
+  /// S37: whether |f(p)| <= t, from `f` when it decides, else asked of the
+  /// shape (f then the value, remembered).
+  bool at_most(const d3::Point& p, detail::DistanceBound& f, double t);
   bool leaf_at(const d3::Point& p, const std::array<int, 3>& octant, int from, d3::Point& out) const;
   std::vector<d3::Point> lattice_dirty();
   void restuff(const std::vector<Candidate>& candidates, FrameReport& report);
@@ -120,6 +126,15 @@ class MovingLattice {
   };
   // The lattice points of the inside leaves' tetrahedra, counted.
   PackedIndex index_;
+  /// S37: each point asked, its distance and the offset it was asked at.
+  struct Asked {
+    double f;
+    Vec3 at;
+  };
+  PackedIndex asked_index_;
+  std::vector<Asked> asked_;
+  bool lipschitz_ = false;  ///< S37 fact 1: the shape's distance() is 1-Lipschitz
+  double rounding_ = 0;     ///< S37 fact 2: e
   std::vector<d3::Point> point_;
   std::vector<std::uint32_t> refs_;
   std::vector<std::uint32_t> free_;

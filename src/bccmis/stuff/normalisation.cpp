@@ -66,6 +66,7 @@ class NormalisedView final : public Shape {
   NormalisedView(const Shape& s, const Normalisation& n) : s_(s), n_(n) {}
   double signed_distance(const Vec3& p) const override { return down(s_.signed_distance(n_.to_world(p))); }
   double distance(const Vec3& p) const override { return down(s_.distance(n_.to_world(p))); }
+  bool distance_is_lipschitz() const override { return s_.distance_is_lipschitz(); }
   int side(const Vec3& p) const override { return s_.side(n_.to_world(p)); }
   double crossing(const Vec3& a, const Vec3& b) const override { return s_.crossing(n_.to_world(a), n_.to_world(b)); }
   Bounds bounds() const override {
@@ -101,6 +102,7 @@ class Placed final : public Shape {
   Placed(std::unique_ptr<Shape> local, const Normalisation& n) : local_(std::move(local)), n_(n) {}
   double signed_distance(const Vec3& p) const override { return up(local_->signed_distance(n_.to_local(p))); }
   double distance(const Vec3& p) const override { return up(local_->distance(n_.to_local(p))); }
+  bool distance_is_lipschitz() const override { return local_->distance_is_lipschitz(); }
   int side(const Vec3& p) const override { return local_->side(n_.to_local(p)); }
   double crossing(const Vec3& a, const Vec3& b) const override {
     return local_->crossing(n_.to_local(a), n_.to_local(b));

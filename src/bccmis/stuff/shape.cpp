@@ -35,6 +35,7 @@ class Sphere final : public Shape {
     if (!(r > 0) || !std::isfinite(r)) throw ShapeError("sphere: the radius must be positive and finite");
   }
   double signed_distance(const Vec3& p) const override { return norm(sub(p, c_)) - r_; }
+  bool distance_is_lipschitz() const override { return true; }  // S37: the distance to the sphere
   double crossing(const Vec3& a, const Vec3& b) const override {
     // |a + t d - c|^2 = r^2: the root in [0, 1] of a quadratic, refined by bisection
     // when rounding puts it outside.
@@ -87,6 +88,7 @@ class Torus final : public Shape {
     const double ring = std::hypot(q[0], q[1]) - R_;
     return std::hypot(ring, q[2]) - r_;
   }
+  bool distance_is_lipschitz() const override { return true; }  // S37: the distance to the torus
   double crossing(const Vec3& a, const Vec3& b) const override { return bisect_crossing(*this, a, b); }
   Bounds bounds() const override {
     const double e = R_ + r_;
@@ -128,6 +130,7 @@ class Spheres final : public Shape {
     // neck's crease, which is all the sign and the crossings need.
     return std::min(a_.signed_distance(p), b_.signed_distance(p));
   }
+  bool distance_is_lipschitz() const override { return true; }  // S37: |min| of two such
   double crossing(const Vec3& a, const Vec3& b) const override { return bisect_crossing(*this, a, b); }
   Bounds bounds() const override {
     const Bounds x = a_.bounds(), y = b_.bounds();
@@ -174,6 +177,7 @@ class Translated final : public Shape {
   Translated(std::shared_ptr<const Shape> s, const Vec3& d) : s_(std::move(s)), d_(d) {}
   double signed_distance(const Vec3& p) const override { return s_->signed_distance(sub(p, d_)); }
   double distance(const Vec3& p) const override { return s_->distance(sub(p, d_)); }
+  bool distance_is_lipschitz() const override { return s_->distance_is_lipschitz(); }
   int side(const Vec3& p) const override { return s_->side(sub(p, d_)); }
   double crossing(const Vec3& a, const Vec3& b) const override { return s_->crossing(sub(a, d_), sub(b, d_)); }
   Bounds bounds() const override {

@@ -47,6 +47,10 @@ class Shape {
   /// |signed_distance(p)|, for tests that need no sign (S3, S16); shapes
   /// whose sign costs more than their distance compute it without the sign.
   virtual double distance(const Vec3& p) const { return std::abs(signed_distance(p)); }
+  /// Whether distance() is 1-Lipschitz, |distance(p) - distance(q)| <=
+  /// |p - q| up to rounding (spec/stuffing.md S37, fact 1): the distance to
+  /// the surface itself, or a minimum of such. False: only a lower bound.
+  virtual bool distance_is_lipschitz() const { return false; }
   /// The sign of signed_distance(p): -1 inside, 0 on the surface, 1 outside
   /// (S5); shapes whose distance costs more than their sign compute it alone.
   virtual int side(const Vec3& p) const {

@@ -365,6 +365,7 @@ class MeshShape final : public Shape {
 
   // Without the side query (a ray cast): the distance alone.
   double distance(const Vec3& p) const override { return std::sqrt(tree_.squared_distance(Point(p[0], p[1], p[2]))); }
+  bool distance_is_lipschitz() const override { return true; }  // S37: the distance to the triangles
 
   double crossing(const Vec3& a, const Vec3& b) const override {
     if (a == b) return 0;
@@ -780,6 +781,9 @@ class SoupShape final : public Shape {
     const int s = side(p);
     return s == 0 ? 0 : s * distance(p);
   }
+
+  /// S37: the distance to the triangles, unless an open boundary adds S20's bound.
+  bool distance_is_lipschitz() const override { return boundary_.empty(); }
 
   /// S20: the first intersection of [a, b] with the triangles after which the
   /// side differs from a's, else bisection on the side.
