@@ -322,31 +322,6 @@ TEST(FeatureConformity, MovesAfterUndoneSplitsAreUndone) {
 }
 
 //= spec/stuffing.md S35 type=test
-TEST(FeatureConformity, FaceSplitsThatConformNothingAreUndone) {
-  // S35.6's last attempt, undone as S35.4 says: on CGAL's fandisk at level
-  // 3 it splits boundary triangles onto a crease (the guard accepting two of
-  // the sixteen it tries) and still conforms no piece, so the mesh is the
-  // one without S35.6, byte for byte, its splits counted as undone.
-  const auto shape = load_mesh_file(kCgal + "/fandisk.off");
-  Settings s;
-  s.lattice.max_level = 3;
-  s.statistics = true;
-  s.features.on = true;
-  const Meshed with = mesh_shape(*shape, s);
-  s.features.split_faces = false;
-  const Meshed without = mesh_shape(*shape, s);
-  ASSERT_TRUE(with.features && without.features);
-  EXPECT_EQ(with.features->face_splits, 0u);
-  EXPECT_EQ(with.features->face_splits_undone, 2u);  // S35.6's splits were made, then undone
-  EXPECT_GT(with.features->splits_undone, without.features->splits_undone);
-  EXPECT_EQ(without.features->face_splits_undone, 0u);
-  EXPECT_EQ(with.features->curves_conformed, without.features->curves_conformed);
-  expect_same_mesh(with, without);
-  EXPECT_GE(with.statistics->quality.min_dihedral, kDihedralBounds[0]);
-  EXPECT_LE(with.statistics->quality.max_dihedral, kDihedralBounds[1]);
-}
-
-//= spec/stuffing.md S35 type=test
 TEST(FeatureConformity, APieceRefusedFromOneEndIsConformedFromTheOther) {
   // S35.5: on CGAL's anchor at level 3, one piece neither S30.2 nor S35's
   // splits conform from its start is conformed from its end (with splits):

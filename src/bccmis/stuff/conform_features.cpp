@@ -118,12 +118,10 @@ Vec3 point_at(const FeatureCurve& C, double s) {
 /// vertex, and the guard of S31.
 class Snapper {
  public:
-  Snapper(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary, double h, bool split_edges,
-          bool split_faces)
+  Snapper(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary, double h, bool split_edges)
       : mesh_(mesh),
         h_(h),
         split_edges_(split_edges),
-        split_faces_(split_faces),
         tets_at_(mesh.vertices.size()),
         neighbours_(mesh.vertices.size()),
         triangles_(boundary),
@@ -233,22 +231,6 @@ class Snapper {
           }))
         return true;
     }
-    // S35.6: edge splits, face splits, edge splits again, then the path; from
-    // the start, then from the end.
-    if (!split_faces_) return false;
-    for (const bool backwards : {false, true}) {
-      const FeatureCurve& D = backwards ? reversed : C;
-      made = 0;
-      if (undone_unless(r, made, [&] {
-            const std::size_t edges = split_crossings(D, r);
-            const std::size_t faces = split_faces(D, r);
-            made = edges + faces;
-            if (faces == 0) return false;
-            made += split_crossings(D, r);
-            return follow(D, backwards ? to : from, backwards ? from : to, r).value_or(false);
-          }))
-        return true;
-    }
     return false;
   }
 
@@ -258,13 +240,12 @@ class Snapper {
   template <class Step>
   bool undone_unless(FeatureConformity& r, std::size_t& made, Step step) {
     const FeatureConformity before = r;
-    journal_.emplace(Journal{mesh_.vertices.size(), mesh_.tets.size(), triangles_.size(), {}, 0, 0});
+    journal_.emplace(Journal{mesh_.vertices.size(), mesh_.tets.size(), triangles_.size(), {}, 0});
     const bool conformed = step();
     if (!conformed) {
       roll_back();
       r = before;
       r.splits_undone += made;
-      r.face_splits_undone += journal_->faces;
       r.moves_undone += journal_->moved;
     }
     journal_.reset();
@@ -380,134 +361,6 @@ class Snapper {
     return made;
   }
 
-  /// S35.6: the boundary triangles holding C (their vertices within h of C,
-  /// not all taken; the point c of C nearest the centroid, at an arc length
-  /// strictly inside C, within h/2 of the triangle's plane and over it with
-  /// barycentric coordinates at least 1/6), split in the order of that arc
-  /// length (ties by the triangle) at c, each split made only when S31's
-  /// test passes the three tetrahedra it makes. The number of splits made.
-  std::size_t split_faces(const FeatureCurve& C, FeatureConformity& r) {
-    const auto near = near_vertices(C, 0, 0, true);
-    std::vector<std::tuple<double, std::uint32_t, Vec3>> holding;
-    const auto sub = [](const Vec3& a, const Vec3& b) { return Vec3{a[0] - b[0], a[1] - b[1], a[2] - b[2]}; };
-    const auto dot = [](const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
-    const auto cross = [](const Vec3& a, const Vec3& b) {
-      return Vec3{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-    };
-    for (std::uint32_t f = 0; f < triangles_.size(); ++f) {
-      const auto& tri = triangles_[f];
-      bool close = !(taken_[tri[0]] && taken_[tri[1]] && taken_[tri[2]]);
-      for (const std::uint32_t v : tri) {
-        const auto it = near.find(v);
-        close = close && it != near.end() && it->second <= h_;
-      }
-      if (!close) continue;
-      const Vec3 &a = mesh_.vertices[tri[0]], &b = mesh_.vertices[tri[1]], &c = mesh_.vertices[tri[2]];
-      const Vec3 g{(a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3, (a[2] + b[2] + c[2]) / 3};
-      const CurvePoint q = nearest_on_curve(C, g);
-      if (!(q.s > 0 && q.s < C.length())) continue;
-      const Vec3 n = cross(sub(b, a), sub(c, a));
-      const double nn = dot(n, n);
-      if (!(nn > 0) || std::abs(dot(sub(q.point, a), n)) / std::sqrt(nn) > h_ / 2) continue;
-      // Barycentric coordinates of q's projection: the areas opposite each vertex over abc's.
-      const double la = dot(cross(sub(b, q.point), sub(c, q.point)), n) / nn;
-      const double lb = dot(cross(sub(c, q.point), sub(a, q.point)), n) / nn;
-      const double lc = 1 - la - lb;
-      if (la >= 1.0 / 6 && lb >= 1.0 / 6 && lc >= 1.0 / 6) holding.emplace_back(q.s, f, q.point);
-    }
-    std::sort(holding.begin(), holding.end(), [](const auto& x, const auto& y) {
-      return std::tie(std::get<0>(x), std::get<1>(x)) < std::tie(std::get<0>(y), std::get<1>(y));
-    });
-    std::size_t made = 0;
-    for (const auto& [s, f, c] : holding)
-      if (split_face(f, c)) ++made;
-    r.face_splits += made;
-    if (journal_) journal_->faces += made;
-    return made;
-  }
-
-  /// S35.6's split of the boundary triangle f = abc at c: a new vertex p at c
-  /// (kind kSnappedVertex, appended); the tetrahedron abcd becomes the three
-  /// with a, b and c replaced by p (the first in its place, the others
-  /// appended), abc the triangles pbc, apc, abp. Made only when S31's test
-  /// passes all three; false (nothing changed) when f's tetrahedron is not
-  /// found or the test fails.
-  bool split_face(std::uint32_t f, const Vec3& c) {
-    const std::array<std::uint32_t, 3> tri = triangles_[f];
-    std::int64_t tet = -1;
-    for (const std::uint32_t t : tets_at_[tri[0]]) {
-      const auto& T = mesh_.tets[t];
-      if (std::find(T.begin(), T.end(), tri[1]) != T.end() && std::find(T.begin(), T.end(), tri[2]) != T.end()) {
-        tet = t;
-        break;
-      }
-    }
-    if (tet < 0) return false;
-    const auto t = static_cast<std::uint32_t>(tet);
-    const std::uint32_t p = static_cast<std::uint32_t>(mesh_.vertices.size());
-    const auto replaced = [](auto items, std::uint32_t from, std::uint32_t to) {
-      for (auto& v : items)
-        if (v == from) v = to;
-      return items;
-    };
-    const auto at = [&](std::uint32_t v) { return v == p ? c : mesh_.vertices[v]; };
-    const std::array<std::uint32_t, 4> whole = mesh_.tets[t];
-    for (const std::uint32_t v : tri) {
-      const auto piece = replaced(whole, v, p);
-      if (!passes({at(piece[0]), at(piece[1]), at(piece[2]), at(piece[3])})) return false;
-    }
-    // Made: the vertex, the tetrahedra, the boundary triangles, the graph.
-    mesh_.vertices.push_back(c);
-    mesh_.kind.push_back(kSnappedVertex);
-    tets_at_.emplace_back();
-    neighbours_.emplace_back();
-    triangles_at_.emplace_back();
-    taken_.push_back(0);
-    keep(mesh_.tets, t);
-    mesh_.tets[t] = replaced(whole, tri[0], p);
-    tets_at_[p].push_back(t);
-    for (std::size_t k = 1; k < 3; ++k) {
-      const auto t_id = static_cast<std::uint32_t>(mesh_.tets.size());
-      mesh_.tets.push_back(replaced(whole, tri[k], p));
-      mesh_.level.push_back(mesh_.level[t]);
-      tets_at_[p].push_back(t_id);
-      for (const std::uint32_t v : mesh_.tets[t_id])
-        if (v != p) {
-          keep(tets_at_, v);
-          if (v == tri[0] && k == 1)
-            std::replace(tets_at_[v].begin(), tets_at_[v].end(), t, t_id);  // a leaves t for its piece with b replaced
-          else
-            tets_at_[v].push_back(t_id);
-        }
-    }
-    keep(triangles_, f);
-    triangles_[f] = replaced(tri, tri[0], p);
-    triangles_at_[p].push_back(f);
-    for (std::size_t k = 1; k < 3; ++k) {
-      const auto f_id = static_cast<std::uint32_t>(triangles_.size());
-      triangles_.push_back(replaced(tri, tri[k], p));
-      triangles_at_[p].push_back(f_id);
-      for (const std::uint32_t v : triangles_.back())
-        if (v != p) {
-          keep(triangles_at_, v);
-          if (v == tri[0] && k == 1)
-            std::replace(triangles_at_[v].begin(), triangles_at_[v].end(), f, f_id);
-          else
-            triangles_at_[v].push_back(f_id);
-        }
-    }
-    for (const std::uint32_t v : tri) {
-      keep(neighbours_, v);
-      auto& n = neighbours_[v];
-      n.insert(std::upper_bound(n.begin(), n.end(), p), p);
-      neighbours_[p].push_back(v);
-    }
-    std::sort(neighbours_[p].begin(), neighbours_[p].end());
-    grid_.insert(p, c, c);
-    if (journal_) journal_->steps.emplace_back([this, p, c] { grid_.erase(p, c, c); });
-    return true;
-  }
-
   /// S35's split of the boundary edge uw at c: a new vertex p at c (kind
   /// kSnappedVertex, appended); every tetrahedron at uw becomes the two with
   /// u and with w replaced by p (the one without u appended), every boundary
@@ -595,7 +448,6 @@ class Snapper {
     std::size_t vertices, tets, triangles;
     std::vector<std::function<void()>> steps;
     std::size_t moved;  ///< vertices older than the splits moved or given a new kind by S30.2 and S34, per move
-    std::size_t faces;  ///< S35.6's splits of boundary triangles made
   };
 
   /// Element i of `items` about to change: its value now kept in the
@@ -731,7 +583,6 @@ class Snapper {
   d3::TetMeshF& mesh_;
   double h_;
   bool split_edges_;  ///< S35 on
-  bool split_faces_;  ///< S35.6 on
   std::vector<std::vector<std::uint32_t>> tets_at_;
   std::vector<std::vector<std::uint32_t>> neighbours_;
   std::vector<std::array<std::uint32_t, 3>> triangles_;   ///< the boundary triangles, S35's splits included
@@ -750,9 +601,9 @@ std::int64_t corner_index(const Features& features, const Vec3& p) {
 }  // namespace
 
 FeatureConformity conform_features(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
-                                   const Features& features, double h, bool split_edges, bool split_faces) {
+                                   const Features& features, double h, bool split_edges) {
   FeatureConformity r;
-  Snapper snapper(mesh, boundary, h, split_edges, split_faces);
+  Snapper snapper(mesh, boundary, h, split_edges);
   // S30.1: the corners, in order.
   std::vector<std::int64_t> corner_vertex;
   for (const Vec3& c : features.corners) {

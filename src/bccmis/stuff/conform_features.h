@@ -30,10 +30,7 @@ struct FeatureConformity {
   std::size_t moves = 0, refused = 0;  ///< the guard's answers (S31)
   std::size_t room_made = 0;           ///< moves accepted with the interior neighbours moved (S34)
   std::size_t splits = 0;              ///< boundary edges split onto a crease and kept (S35)
-  std::size_t face_splits = 0;         ///< boundary triangles split onto a crease and kept (S35.6)
-  std::size_t face_splits_undone =
-      0;                          ///< of those undone with their attempt (S35.6, S35.4), counted in splits_undone too
-  std::size_t splits_undone = 0;  ///< splits (of edges and triangles) undone, their piece still not conformed (S35.4)
+  std::size_t splits_undone = 0;       ///< splits undone, their piece still not conformed (S35.4)
   std::size_t moves_undone =
       0;  ///< moves of older vertices made after those splits (S30.2, S34), undone with them (S35.4)
 };
@@ -45,12 +42,10 @@ struct FeatureConformity {
 /// tetrahedra, and change tetrahedra at the split edges, so that `boundary`
 /// is the mesh's only while `splits` is 0. A piece its splits do not
 /// conform is left as if they had not been tried (S35.4), then tried from
-/// its other end, undone alike (S35.5), and last with boundary triangles
-/// split onto the crease too (S35.6); `split_edges` false: none of S35
-/// (S30-S34 only); `split_faces` false: none of S35.6's last attempt.
+/// its other end, undone alike (S35.5); `split_edges` false: none of S35
+/// (S30-S34 only).
 FeatureConformity conform_features(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
-                                   const Features& features, double h, bool split_edges = true,
-                                   bool split_faces = true);
+                                   const Features& features, double h, bool split_edges = true);
 
 /// S33: the largest distance from a point of a feature curve's polyline to
 /// the nearest edge of the boundary triangles; 0 without features. `h`
@@ -63,10 +58,9 @@ struct FeatureReport {
   double angle = 0;
   std::size_t edges = 0, curves = 0, corners = 0;
   std::size_t corners_conformed = 0, curves_conformed = 0;
-  double distance = -1;                                 ///< with the statistics, in world units; -1 when not computed
-  std::size_t splits = 0, splits_undone = 0;            ///< S35's splits kept, and undone (S35.4)
-  std::size_t face_splits = 0, face_splits_undone = 0;  ///< S35.6's splits of boundary triangles kept, and undone
-  std::size_t moves_undone = 0;                         ///< moves undone with them (S35.4)
+  double distance = -1;                       ///< with the statistics, in world units; -1 when not computed
+  std::size_t splits = 0, splits_undone = 0;  ///< S35's splits kept, and undone (S35.4)
+  std::size_t moves_undone = 0;               ///< moves undone with them (S35.4)
 };
 
 }  // namespace bccmis::stuff

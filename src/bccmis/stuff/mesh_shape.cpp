@@ -142,10 +142,9 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
   if (settings.features.on) {
     const auto t0 = Clock::now();
     features = detect_features(shape.surface_triangles(), settings.features.angle);
-    conformity = conform_features(r.stuffed.mesh, r.boundary, features, fit.h, settings.features.split_edges,
-                                  settings.features.split_faces);
-    // S35's splits (S35.6's too) changed the tetrahedra: their boundary and regions again.
-    if (conformity.splits + conformity.face_splits > 0) r.regions = io::regions_of(r.stuffed.mesh.tets, &r.boundary);
+    conformity = conform_features(r.stuffed.mesh, r.boundary, features, fit.h, settings.features.split_edges);
+    // S35's splits changed the tetrahedra: their boundary and regions again.
+    if (conformity.splits > 0) r.regions = io::regions_of(r.stuffed.mesh.tets, &r.boundary);
     r.features = FeatureReport{features.angle,
                                features.edges,
                                features.curves.size(),
@@ -153,8 +152,6 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
                                conformity.corners_conformed,
                                conformity.curves_conformed};
     r.features->splits = conformity.splits;
-    r.features->face_splits = conformity.face_splits;
-    r.features->face_splits_undone = conformity.face_splits_undone;
     r.features->splits_undone = conformity.splits_undone;
     r.features->moves_undone = conformity.moves_undone;
     r.seconds.emplace_back("features", seconds_since(t0));
@@ -162,8 +159,8 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
         " corners; conformed " + std::to_string(conformity.corners_conformed) + " corners, " +
         std::to_string(conformity.curves_conformed) + " of " + std::to_string(features.curves.size()) + " curves; " +
         std::to_string(conformity.moves) + " moves, " + std::to_string(conformity.refused) + " refused by the guard, " +
-        std::to_string(conformity.splits) + " edges split, " + std::to_string(conformity.face_splits) +
-        " triangles split, " + std::to_string(conformity.splits_undone) + " splits undone");
+        std::to_string(conformity.splits) + " edges split, " + std::to_string(conformity.splits_undone) +
+        " splits undone");
   }
   const auto t1 = Clock::now();
   // S11 first, so that S27's topology errors below come from meshes that pass it.

@@ -44,7 +44,6 @@ struct FeatureSettings {
   bool on = false;
   double angle = kDefaultFeatureAngle;  ///< phi, degrees (S29)
   bool split_edges = true;              ///< S35's splits; false: S30-S34 only
-  bool split_faces = true;              ///< S35.6's last attempt; false: S35.1-5 only
 };
 
 /// Everything a run is told.
