@@ -11,12 +11,10 @@
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "bccmis/distributed/leaf_piece.h"
-#include "bccmis/distributed/local_lattice.h"
 #include "bccmis/distributed/ranks.h"
 #include "bccmis/distributed/replicated.h"
 #include "bccmis/io/pvtu.h"
@@ -39,7 +37,9 @@ struct Stop {
 };
 
 /// D6: runs `body` on this rank (a failure prints one line, naming the
-/// rank), then the ranks agree; throws Stop on every rank when one failed.
+/// rank; a collective step that failed on another rank, RankFailed, is that
+/// rank's to report), then the ranks agree; throws Stop on every rank when
+/// one failed.
 template <class Body>
 void stage(MPI_Comm comm, Body&& body) {
   int rank = 0;
@@ -48,6 +48,8 @@ void stage(MPI_Comm comm, Body&& body) {
   const int code = guarded(tool.c_str(), [&] {
     try {
       body();
+    } catch (const distributed::RankFailed&) {
+      return kExitOk;  // the failing rank reports, and the agreement gives its code
     } catch (const stuff::ShapeError& e) {
       throw InputError(e.what());
     }
@@ -113,31 +115,13 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
       lattice.emplace(distributed::fitted(*shape, so, P8EST_QMAXLEVEL));
     });
     // (2) the partitioned forest (D10), then this rank's piece on its own
-    // lattice, with one more layer of ghosts while some rank's leaves reach
-    // beyond the leaves it knows.
+    // lattice (the library widens the ghost layers while some rank's leaves
+    // reach beyond the leaves it knows).
     std::unique_ptr<distributed::Forest> forest;
-    std::vector<d3::Point> own;
     stage(comm, [&] {
       forest = std::make_unique<distributed::Forest>(*lattice->shape, lattice->fit, lattice->options, comm);
-      own = forest->own();
     });
-    for (bool have = false;;) {
-      stage(comm, [&] {
-        if (have) return;
-        const std::vector<d3::Point> known = forest->known();
-        lattice->lattice.emplace(distributed::local_lattice(lattice->fit.size, known));
-        if (std::optional<distributed::LeafPiece> p = distributed::stuff_piece(*lattice, own, known)) {
-          piece = std::move(*p);
-          have = true;
-        } else if (static_cast<std::int64_t>(known.size()) == forest->global_leaves()) {
-          throw std::logic_error("every leaf is known and the stuffed leaves are still open (spec/distributed.md D10)");
-        }
-      });
-      int open = have ? 0 : 1;
-      MPI_Allreduce(MPI_IN_PLACE, &open, 1, MPI_INT, MPI_MAX, comm);
-      if (open == 0) break;
-      forest->expand();
-    }
+    stage(comm, [&] { piece = distributed::stuff_own_piece(*lattice, *forest, comm); });
     forest.reset();
     // D7: the pieces' global vertex numbers (collective on every rank).
     std::vector<std::int64_t> ids;

@@ -1,10 +1,7 @@
 // spec/distributed.md D10: the S3 lattice as a partitioned p8est forest,
 // built by every rank at once, and a rank's ghost layer.
 #include <algorithm>
-#include <climits>
 #include <exception>
-#include <stdexcept>
-#include <string>
 #include <vector>
 
 #include "bccmis/distributed/ranks.h"
@@ -41,20 +38,6 @@ int refine_by_s3(p8est_t* forest, p4est_topidx_t tree, p8est_quadrant_t* q) {
   }
 }
 
-/// D6: after a refinement, before any collective that needs one forest on
-/// every rank: the lowest rank whose test failed, if any, makes every rank
-/// throw (that rank its own exception, the others one naming it).
-void agree_on_refinement(const Test& test, MPI_Comm comm) {
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
-  int first = test.failed ? rank : INT_MAX;
-  MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, comm);
-  if (first == INT_MAX) return;
-  if (test.failed) std::rethrow_exception(test.failed);
-  throw std::runtime_error("rank " + std::to_string(first) +
-                           ": S3's test failed while the forest was refined (spec/distributed.md D6)");
-}
-
 }  // namespace
 
 Forest::Forest(const stuff::Shape& shape, const stuff::Fit& fit, const stuff::StuffOptions& options, MPI_Comm comm)
@@ -67,7 +50,8 @@ Forest::Forest(const stuff::Shape& shape, const stuff::Fit& fit, const stuff::St
   for (p4est_gloidx_t before = -1; before != forest_->global_num_quadrants;) {
     before = forest_->global_num_quadrants;
     p8est_refine_ext(forest_.get(), 1, fit.size.L, refine_by_s3, nullptr, nullptr);
-    agree_on_refinement(test, comm);  // D6
+    // D6: one forest on every rank before balance and partition.
+    rethrow_on_every_rank(test.failed, "S3's test while the forest was refined", comm);
     p8est_balance(forest_.get(), P8EST_CONNECT_EDGE, nullptr);
     p8est_partition(forest_.get(), 0, nullptr);  // uniform by count (D2)
   }

@@ -8,12 +8,15 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "bccmis/d3/point.h"
 #include "bccmis/distributed/leaf_piece.h"
+#include "bccmis/distributed/replicated.h"
 #include "bccmis/fast/d3/lattice.h"
 #include "bccmis/p4est/bridge.h"
 #include "bccmis/stuff/stuff.h"
@@ -64,6 +67,28 @@ class Forest {
   p4est_bridge::Forest3Ptr forest_;
   p8est_ghost_t* ghost_ = nullptr;
 };
+
+/// D6: thrown on every rank but the failing one when a collective step
+/// failed on another rank (`rank`, the lowest that failed), which throws
+/// its own error.
+struct RankFailed : std::runtime_error {
+  RankFailed(int failed, const std::string& what)
+      : std::runtime_error("rank " + std::to_string(failed) + ": " + what), rank(failed) {}
+  int rank;
+};
+
+/// D6: the ranks agree (one MPI_Allreduce) on whether a step failed; when
+/// one did, every rank throws: the lowest failing rank rethrows `failed`,
+/// the others RankFailed naming it and `what` (the step).
+void rethrow_on_every_rank(const std::exception_ptr& failed, const std::string& what, MPI_Comm comm);
+
+/// D6, D10: this rank's piece (D3, D4), stuffed on its lattice L_r
+/// (local_lattice of the leaves it knows) with one more layer of ghosts
+/// (forest.expand()) while some rank's stuffed leaves are open; every rank
+/// leaves the loop in the same round. An exception on one rank ends the
+/// loop on every rank (rethrow_on_every_rank). `r` as fitted() made it;
+/// r.lattice is released. Collective over `comm`.
+LeafPiece stuff_own_piece(Replicated& r, Forest& forest, MPI_Comm comm);
 
 /// D6: what the ranks agree on after a stage: the lowest rank whose `code`
 /// is not 0 and its code, or {-1, 0} when every rank succeeded.
