@@ -47,7 +47,7 @@ class Forest {
  public:
   /// Throws std::invalid_argument when L is above P8EST_QMAXLEVEL (18).
   /// When S3's test throws on some rank, every rank throws (D6): the lowest
-  /// such rank its test's exception, the others a std::runtime_error naming
+  /// such rank its test's exception, the others RankFailed naming
   /// that rank.
   Forest(const stuff::Shape& shape, const stuff::Fit& fit, const stuff::StuffOptions& options, MPI_Comm comm);
   ~Forest();
