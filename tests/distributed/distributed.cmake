@@ -52,6 +52,22 @@ if(TARGET bccmis::stuff_surface)  # a CGAL sample mesh (tests/stuff/stuff.cmake 
                           ${bccmis_cgal_data}/data/meshes/double-torus-example.off -L 2 --cells 6
                   ${_bccmis_mpi_props})
 endif()
+# D11: --stats and --json on 2 and 3 ranks against bccmis stuff's.
+foreach(ranks 2 3)
+  bccmis_add_test(mpi.stuff_stats_torus_${ranks}_ranks
+                  COMMAND ${_bccmis_mpi_test} stats ${_bccmis_mpi_tools} ${ranks} -- --shape torus -L 2 --cells 6
+                  ${_bccmis_mpi_props})
+endforeach()
+# S26's warning, from rank 0 (the unit sphere at h = 1: coarse).
+bccmis_add_test(mpi.stuff_stats_coarse_sphere_2_ranks
+                COMMAND ${_bccmis_mpi_test} stats ${_bccmis_mpi_tools} 2 -- --shape sphere --cells 3 -L 2
+                ${_bccmis_mpi_props})
+if(TARGET bccmis::stuff_surface)
+  bccmis_add_test(mpi.stuff_stats_double_torus_3_ranks
+                  COMMAND ${_bccmis_mpi_test} stats ${_bccmis_mpi_tools} 3 --
+                          ${bccmis_cgal_data}/data/meshes/double-torus-example.off -L 2 --cells 6
+                  ${_bccmis_mpi_props})
+endif()
 # D10: the forest refined by S3's test against G, and each rank's lattice.
 add_executable(bccmis_distributed_forest_test ${CMAKE_CURRENT_LIST_DIR}/forest_mpi_test.cpp)
 target_link_libraries(bccmis_distributed_forest_test PRIVATE bccmis::distributed_mpi bccmis::stuff bccmis::warnings)

@@ -4,10 +4,13 @@
 // on each rank's lattice L_r (from its own leaves and p8est's ghost layer,
 // kGhostLayers deep) the leaves it stuffs (D9) are closed and have G's
 // lattice tetrahedra.
-// Prints FAIL and exits 1 on a difference; the torus and two spheres.
+// Prints FAIL and exits 1 on a difference; the torus and two spheres. D6:
+// S3's test throwing on one rank makes every rank throw, none hang (the
+// ctest TIMEOUT catches a hang).
 #include <mpi.h>
 
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -86,6 +89,56 @@ void check(const char* name, int level, int cells) {
     expect(l->cell_count() < g.cell_count(), rank, at + "the rank's lattice is the whole lattice");
 }
 
+/// A shape whose distance throws on rank `failing` from its `after`-th call
+/// on (the torus elsewhere and before): S3's test fails on one rank only.
+class FailingShape : public stuff::Shape {
+ public:
+  FailingShape(int failing, int after) : torus_(stuff::make_builtin("torus")), failing_(failing), after_(after) {
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  }
+  double signed_distance(const stuff::Vec3& p) const override {
+    if (rank_ == failing_ && ++calls_ > after_) throw std::runtime_error("planted: the distance failed");
+    return torus_->signed_distance(p);
+  }
+  double crossing(const stuff::Vec3& a, const stuff::Vec3& b) const override { return torus_->crossing(a, b); }
+  stuff::Bounds bounds() const override { return torus_->bounds(); }
+  double volume() const override { return torus_->volume(); }
+  std::vector<stuff::Vec3> sample_surface(std::size_t n, std::uint64_t seed) const override {
+    return torus_->sample_surface(n, seed);
+  }
+  std::string describe() const override { return "failing torus"; }
+
+ private:
+  std::unique_ptr<stuff::Shape> torus_;
+  int failing_, after_, rank_ = 0;
+  mutable int calls_ = 0;
+};
+
+//= spec/distributed.md#D6 type=test
+// S3's test throws on the last rank only (after some refinement, so the
+// ranks are inside the loop): every rank throws, that rank its own error,
+// the others one naming it; no rank builds a forest or hangs.
+void check_failing_test() {
+  int rank = 0, size = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  const FailingShape shape(size - 1, 200);
+  stuff::StuffOptions options;
+  options.max_level = 3;
+  options.cells = 6;
+  const stuff::Fit fit = stuff::fit_lattice(shape.bounds(), options);
+  std::string what;
+  try {
+    distributed::Forest forest(shape, fit, options, MPI_COMM_WORLD);
+  } catch (const std::exception& e) {
+    what = e.what();
+  }
+  const std::string want = rank == size - 1 ? "planted: the distance failed" : "rank " + std::to_string(size - 1);
+  expect(what.find(want) != std::string::npos, rank,
+         "a test failing on rank " + std::to_string(size - 1) + ": got '" + what + "', expected '" + want + "'");
+  if (rank == 0) std::printf("a failing S3 test: every rank threw\n");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -93,6 +146,7 @@ int main(int argc, char** argv) {
   check("torus", 2, 6);
   check("torus", 3, 2);
   check("spheres:r=0.7,d=1", 2, 6);
+  check_failing_test();
   int all = failures;
   MPI_Allreduce(MPI_IN_PLACE, &all, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
   int rank = 0;

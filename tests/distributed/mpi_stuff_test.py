@@ -14,11 +14,18 @@
       vertices, and on one rank the serial numbering (D7). With PIECES, exactly that many
       pieces (fewer than RANKS: a rank whose leaves make no tetrahedron writes
       none, D1).
+  mpi_stuff_test.py stats MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
+      --stats and --stats --json (no -o, then with a .pvtu) print bccmis stuff
+      --no-features's statistics (D11): every line and member but the
+      seconds and warped exactly, the volume and its relative error to a
+      relative 1e-12 (summed in another order); warped is not computed ("-",
+      null); the seconds name D11's phases.
   mpi_stuff_test.py errors MPIRUN BCCMIS BCCMIS_MPI RANKS
       an unreadable input, an unwritable output directory, and one rank that
       cannot put its piece in place: exit 2, a message, no .pvtu (D6).
 """
 import collections
+import json
 import os
 import subprocess
 import sys
@@ -119,6 +126,61 @@ def pvtu(mpirun, bccmis, bccmis_mpi, ranks, pieces, args, work):
           f"join two pieces, none lies in three tetrahedra; {boundary} boundary triangles")
 
 
+ROUNDED = ("volume", "volume_rel_error")  # D11: sums in another order
+RANK_PHASES = ["input", "forest", "pieces", "statistics", "write"]
+NOT_COMPUTED = ("warped",)  # D11
+
+
+def close(a, b):
+    return abs(a - b) <= 1e-12 * max(abs(a), abs(b))
+
+
+def stats(mpirun, bccmis, bccmis_mpi, ranks, args, work):
+    serial_text = run([bccmis, "stuff", *args, "--no-features", "--stats", "-q"]).stdout
+    serial_json = json.loads(run([bccmis, "stuff", *args, "--no-features", "--stats", "--json", "-q"]).stdout)
+    mpi_run = mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, "-q"]
+    index = os.path.join(work, "out.pvtu")
+    for extra in ([], ["-o", index]):
+        # Text: `name value` lines, in order.
+        got = run(mpi_run + ["--stats", *extra]).stdout.splitlines()
+        want = serial_text.splitlines()
+        strip = lambda lines: [l for l in lines if not l.startswith("seconds_")]
+        if [l.split()[0] for l in strip(got)] != [l.split()[0] for l in strip(want)]:
+            sys.exit(f"FAIL: {ranks} ranks {extra}: the --stats lines differ:\n{strip(got)}\n{strip(want)}")
+        for g, w in zip(strip(got), strip(want)):
+            name = w.split()[0]
+            if name in NOT_COMPUTED:
+                if g != name + " -":
+                    sys.exit(f"FAIL: {ranks} ranks {extra}: '{g}', expected '{name} -'")
+            elif name in ROUNDED:
+                if not close(float(g.split()[1]), float(w.split()[1])):
+                    sys.exit(f"FAIL: {ranks} ranks {extra}: '{g}', serial '{w}'")
+            elif g != w:
+                sys.exit(f"FAIL: {ranks} ranks {extra}: '{g}', serial '{w}'")
+        if [l.split()[0] for l in got if l.startswith("seconds_")] != ["seconds_" + p for p in RANK_PHASES]:
+            sys.exit(f"FAIL: {ranks} ranks {extra}: the seconds' phases: {got}")
+        # JSON: the same members in the same order.
+        j = json.loads(run(mpi_run + ["--stats", "--json", *extra]).stdout)
+        if list(j) != list(serial_json):
+            sys.exit(f"FAIL: {ranks} ranks {extra}: the JSON members {list(j)}, serial {list(serial_json)}")
+        for k, w in serial_json.items():
+            if k == "seconds":
+                if list(j[k]) != RANK_PHASES + ["meshing", "total"]:
+                    sys.exit(f"FAIL: {ranks} ranks {extra}: the seconds' phases {list(j[k])}")
+            elif k in NOT_COMPUTED:
+                if j[k] is not None:
+                    sys.exit(f"FAIL: {ranks} ranks {extra}: {k} {j[k]}, expected null")
+            elif k in ROUNDED:
+                if not close(j[k], w):
+                    sys.exit(f"FAIL: {ranks} ranks {extra}: {k} {j[k]}, serial {w}")
+            elif j[k] != w:
+                sys.exit(f"FAIL: {ranks} ranks {extra}: {k} {j[k]}, serial {w}")
+    if not os.path.exists(index):
+        sys.exit(f"FAIL: {ranks} ranks: --stats -o {index} wrote no .pvtu")
+    print(f"ok: {ranks} ranks: --stats and --json as bccmis stuff's ({serial_json['tetrahedra']} tetrahedra, "
+          f"{serial_json['boundary_triangles']} boundary triangles)")
+
+
 def errors(mpirun, bccmis, bccmis_mpi, ranks, work):
     def refused(args, index, says):
         r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, "-o", index], expect=2)
@@ -157,6 +219,8 @@ def main():
     with tempfile.TemporaryDirectory() as work:
         if mode in ("gather", "gather-every-format"):
             gather(mpirun, bccmis, bccmis_mpi, int(ranks), args, work, mode == "gather-every-format")
+        elif mode == "stats":
+            stats(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
         elif mode == "pvtu":
             count, _, pieces = ranks.partition(":")
             pvtu(mpirun, bccmis, bccmis_mpi, int(count), int(pieces) if pieces else None, args, work)

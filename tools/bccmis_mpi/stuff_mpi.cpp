@@ -11,12 +11,10 @@
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "bccmis/distributed/leaf_piece.h"
-#include "bccmis/distributed/local_lattice.h"
 #include "bccmis/distributed/ranks.h"
 #include "bccmis/distributed/replicated.h"
 #include "bccmis/io/pvtu.h"
@@ -26,6 +24,7 @@
 #include "bccmis/stuff/mesh_shape.h"
 #include "io.h"
 #include "stuff_input.h"
+#include "stuff_stats.h"
 
 namespace bccmis::cli {
 
@@ -39,7 +38,9 @@ struct Stop {
 };
 
 /// D6: runs `body` on this rank (a failure prints one line, naming the
-/// rank), then the ranks agree; throws Stop on every rank when one failed.
+/// rank; a collective step that failed on another rank, RankFailed, is that
+/// rank's to report), then the ranks agree; throws Stop on every rank when
+/// one failed.
 template <class Body>
 void stage(MPI_Comm comm, Body&& body) {
   int rank = 0;
@@ -48,6 +49,8 @@ void stage(MPI_Comm comm, Body&& body) {
   const int code = guarded(tool.c_str(), [&] {
     try {
       body();
+    } catch (const distributed::RankFailed&) {
+      return kExitOk;  // the failing rank reports, and the agreement gives its code
     } catch (const stuff::ShapeError& e) {
       throw InputError(e.what());
     }
@@ -57,17 +60,19 @@ void stage(MPI_Comm comm, Body&& body) {
   if (!a.ok()) throw Stop{a.code};
 }
 
-/// D1: the options this slice does not split yet, and the one output.
+/// D1: the options this slice does not split yet, and the one output (or
+/// none, with --stats).
 void check_options(const StuffOptions& o, bool gather) {
   const auto refuse = [](const std::string& what) {
     throw InputError(what + " is not supported on several ranks yet (spec/distributed.md D1)");
   };
-  if (o.stats) refuse("--stats (also --json, --hausdorff)");
+  if (o.hausdorff) refuse("--hausdorff");
   if (o.check) refuse("--check");
   if (o.animate > 0 || !o.path.empty() || o.compare) refuse("--animate");
   if (o.impl != "fast") refuse("--impl " + o.impl);
   if (o.memory_limit_gb > 0) refuse("--memory-limit");
   if (o.features || o.feature_angle >= 0) refuse("--features (also --feature-angle)");
+  if (o.outputs.empty() && o.stats) return;  // D11: the statistics alone
   if (o.outputs.size() != 1)
     throw InputError("give one output: -o FILE.pvtu (a piece per rank), or --gather -o FILE (.vtu, .msh, .mesh)");
   const std::string& path = o.outputs[0];
@@ -97,12 +102,19 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
   std::optional<distributed::Replicated> lattice;
   distributed::LeafPiece piece;
   const std::string& out = o.outputs.empty() ? std::string() : o.outputs[0];
+  const bool write = !o.outputs.empty();  // else --stats alone (D11)
+  stuff::PhaseSeconds seconds;            // D11: rank 0's wall seconds of the stages
+  auto t = stuff::Clock::now();
+  const auto phase = [&](const char* name) {
+    seconds.emplace_back(name, stuff::seconds_since(t));
+    t = stuff::Clock::now();
+  };
   try {
     // (1) the options, the outputs' temporaries, the shape, the lattice.
     stage(comm, [&] {
       check_options(o, gather);
-      if (!gather) pieces.open(piece_path(out, rank));
-      if (rank == 0) index.open(out);
+      if (write && !gather) pieces.open(piece_path(out, rank));
+      if (write && rank == 0) index.open(out);
       shape = load_shape(o);
       stuff::StuffOptions so;
       so.max_level = o.max_level;
@@ -112,37 +124,25 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
       so.threads = o.threads;
       lattice.emplace(distributed::fitted(*shape, so, P8EST_QMAXLEVEL));
     });
+    phase("input");
     // (2) the partitioned forest (D10), then this rank's piece on its own
-    // lattice, with one more layer of ghosts while some rank's leaves reach
-    // beyond the leaves it knows.
+    // lattice (the library widens the ghost layers while some rank's leaves
+    // reach beyond the leaves it knows).
     std::unique_ptr<distributed::Forest> forest;
-    std::vector<d3::Point> own;
     stage(comm, [&] {
       forest = std::make_unique<distributed::Forest>(*lattice->shape, lattice->fit, lattice->options, comm);
-      own = forest->own();
     });
-    for (bool have = false;;) {
-      stage(comm, [&] {
-        if (have) return;
-        const std::vector<d3::Point> known = forest->known();
-        lattice->lattice.emplace(distributed::local_lattice(lattice->fit.size, known));
-        if (std::optional<distributed::LeafPiece> p = distributed::stuff_piece(*lattice, own, known)) {
-          piece = std::move(*p);
-          have = true;
-        } else if (static_cast<std::int64_t>(known.size()) == forest->global_leaves()) {
-          throw std::logic_error("every leaf is known and the stuffed leaves are still open (spec/distributed.md D10)");
-        }
-      });
-      int open = have ? 0 : 1;
-      MPI_Allreduce(MPI_IN_PLACE, &open, 1, MPI_INT, MPI_MAX, comm);
-      if (open == 0) break;
-      forest->expand();
-    }
+    phase("forest");
+    stuff::StuffQuality quality;  // D11: the piece's, in local coordinates
+    stage(comm, [&] { piece = distributed::stuff_own_piece(*lattice, *forest, comm, o.stats ? &quality : nullptr); });
+    phase("pieces");
+    const std::int64_t leaves = forest->global_leaves();
     forest.reset();
     // D7: the pieces' global vertex numbers (collective on every rank).
     std::vector<std::int64_t> ids;
+    std::vector<std::uint8_t> owned;
     stage(comm, [&] {
-      if (!gather) ids = distributed::global_ids(piece, comm);
+      if ((write && !gather) || o.stats) ids = distributed::global_ids(piece, comm, &owned);
     });
     // (3) the outputs, into their temporaries.
     // Every rank's tetrahedra: a rank whose leaves make none writes no piece (D1).
@@ -151,18 +151,27 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
     MPI_Allgather(&mine, 1, MPI_UINT64_T, counts.data(), 1, MPI_UINT64_T, comm);
     std::uint64_t tetrahedra = 0, vertices = 0;
     for (const std::uint64_t n : counts) tetrahedra += n;
-    std::vector<std::vector<std::byte>> bytes;
-    d3::TetMeshF mesh;  // --gather: the whole mesh on rank 0, until it is written
-    io::Regions regions;
-    stage(comm, [&] {
-      if (gather) bytes = distributed::gather_bytes(distributed::to_bytes(piece), 0, comm);
-    });
     stage(comm, [&] {
       if (rank == 0 && tetrahedra == 0) {  // S21 or S26, as bccmis stuff
         stuff::Fit world = lattice->fit;
         world.h = std::ldexp(world.h, lattice->normalisation.exponent);
         throw InputError(stuff::empty_mesh_message(*shape, world));
       }
+    });
+    // D11: S13's statistics reduced on rank 0 (a lost component refused, S27).
+    stuff::Meshed meshed;
+    stage(comm, [&] {
+      if (o.stats) meshed = distributed::rank_statistics(*shape, *lattice, piece, quality, ids, owned, leaves, comm);
+    });
+    phase("statistics");
+    std::vector<std::vector<std::byte>> bytes;
+    d3::TetMeshF mesh;  // --gather: the whole mesh on rank 0, until it is written
+    io::Regions regions;
+    stage(comm, [&] {
+      if (write && gather) bytes = distributed::gather_bytes(distributed::to_bytes(piece), 0, comm);
+    });
+    stage(comm, [&] {
+      if (!write) return;
       if (!gather) {
         if (mine > 0)
           pieces.add(piece_path(out, rank),
@@ -189,7 +198,9 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
     stage(comm, [&] {
       if (rank == 0) index.commit();
     });
-    if (rank == 0 && !o.quiet)
+    phase("write");
+    if (rank == 0 && o.stats) std::cout << stats_text(shape->describe(), meshed, seconds, o.json) << std::flush;
+    if (rank == 0 && !o.quiet && write)
       std::cerr << kTool << ": " << tetrahedra << " tetrahedra"
                 << (gather ? ", " + std::to_string(vertices) + " vertices,"
                            : " in " +

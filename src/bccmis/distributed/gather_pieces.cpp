@@ -19,6 +19,7 @@ LeafPiece merge_pieces(std::span<const LeafPiece> pieces) {
     for (std::uint32_t v = 0; v < pieces[p].keys.size(); ++v) entries.emplace_back(pieces[p].keys[v], p, v);
   std::sort(entries.begin(), entries.end());
   LeafPiece merged;
+  for (const LeafPiece& piece : pieces) merged.lattice_tetrahedra += piece.lattice_tetrahedra;  // D11
   d3::TetMeshF& out = merged.mesh;
   std::vector<std::vector<std::uint32_t>> global(pieces.size());
   for (std::size_t p = 0; p < pieces.size(); ++p) global[p].resize(pieces[p].keys.size());

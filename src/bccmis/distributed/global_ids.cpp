@@ -44,7 +44,7 @@ std::vector<std::vector<T>> all_gather(const std::vector<T>& values, MPI_Comm co
 
 }  // namespace
 
-std::vector<std::int64_t> global_ids(const LeafPiece& piece, MPI_Comm comm) {
+std::vector<std::int64_t> global_ids(const LeafPiece& piece, MPI_Comm comm, std::vector<std::uint8_t>* owned_by_me) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   // The keys of the shared vertices, in key order (the piece's order).
@@ -83,6 +83,10 @@ std::vector<std::int64_t> global_ids(const LeafPiece& piece, MPI_Comm comm) {
   for (std::size_t v = 0; v < piece.keys.size(); ++v)
     if (owner[v] != rank)
       ids[v] = numbers[static_cast<std::size_t>(owner[v])][static_cast<std::size_t>(index_in(owner[v], piece.keys[v]))];
+  if (owned_by_me) {
+    owned_by_me->assign(piece.keys.size(), 0);
+    for (std::size_t v = 0; v < piece.keys.size(); ++v) (*owned_by_me)[v] = owner[v] == rank ? 1 : 0;
+  }
   return ids;
 }
 

@@ -31,6 +31,9 @@ struct LeafPiece {
   /// D7: 1 when another piece may use vertex i (its key's first point is a
   /// vertex of a ghost's tetrahedron), 0 when no other piece does.
   std::vector<std::uint8_t> shared;
+  /// D11: the lattice tetrahedra of the own leaves (M1-M4), summed by
+  /// merge_pieces; not in the byte encoding (to_bytes).
+  std::size_t lattice_tetrahedra = 0;
 };
 
 /// D3: the own leaves a rank stuffs at once: with about 13 lattice

@@ -8,14 +8,18 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "bccmis/d3/point.h"
 #include "bccmis/distributed/leaf_piece.h"
+#include "bccmis/distributed/replicated.h"
 #include "bccmis/fast/d3/lattice.h"
 #include "bccmis/p4est/bridge.h"
+#include "bccmis/stuff/mesh_shape.h"
 #include "bccmis/stuff/stuff.h"
 
 namespace bccmis::distributed {
@@ -42,6 +46,9 @@ inline constexpr int kGhostLayers = 4;
 class Forest {
  public:
   /// Throws std::invalid_argument when L is above P8EST_QMAXLEVEL (18).
+  /// When S3's test throws on some rank, every rank throws (D6): the lowest
+  /// such rank its test's exception, the others RankFailed naming
+  /// that rank.
   Forest(const stuff::Shape& shape, const stuff::Fit& fit, const stuff::StuffOptions& options, MPI_Comm comm);
   ~Forest();
   Forest(const Forest&) = delete;
@@ -62,6 +69,29 @@ class Forest {
   p8est_ghost_t* ghost_ = nullptr;
 };
 
+/// D6: thrown on every rank but the failing one when a collective step
+/// failed on another rank (`rank`, the lowest that failed), which throws
+/// its own error.
+struct RankFailed : std::runtime_error {
+  RankFailed(int failed, const std::string& what)
+      : std::runtime_error("rank " + std::to_string(failed) + ": " + what), rank(failed) {}
+  int rank;
+};
+
+/// D6: the ranks agree (one MPI_Allreduce) on whether a step failed; when
+/// one did, every rank throws: the lowest failing rank rethrows `failed`,
+/// the others RankFailed naming it and `what` (the step).
+void rethrow_on_every_rank(const std::exception_ptr& failed, const std::string& what, MPI_Comm comm);
+
+/// D6, D10: this rank's piece (D3, D4), stuffed on its lattice L_r
+/// (local_lattice of the leaves it knows) with one more layer of ghosts
+/// (forest.expand()) while some rank's stuffed leaves are open; every rank
+/// leaves the loop in the same round. An exception on one rank ends the
+/// loop on every rank (rethrow_on_every_rank). `r` as fitted() made it;
+/// r.lattice is released. Collective over `comm`. With `quality`, the
+/// piece's S13 quality in local coordinates (stuff_piece, D11).
+LeafPiece stuff_own_piece(Replicated& r, Forest& forest, MPI_Comm comm, stuff::StuffQuality* quality = nullptr);
+
 /// D6: what the ranks agree on after a stage: the lowest rank whose `code`
 /// is not 0 and its code, or {-1, 0} when every rank succeeded.
 struct Agreement {
@@ -73,8 +103,22 @@ Agreement agree(int code, MPI_Comm comm);
 
 /// D7: the global number of each vertex of this rank's piece (in the
 /// piece's order): 0 .. n-1 over the n vertices of the mesh, the same for
-/// one key on every rank, the serial numbering on one rank.
-std::vector<std::int64_t> global_ids(const LeafPiece& piece, MPI_Comm comm);
+/// one key on every rank, the serial numbering on one rank. With `owned`:
+/// 1 for the vertices this rank owns (the lowest rank using them), else 0.
+std::vector<std::int64_t> global_ids(const LeafPiece& piece, MPI_Comm comm, std::vector<std::uint8_t>* owned = nullptr);
+
+/// D11: S13's statistics of the mesh the ranks' pieces make, reduced on
+/// rank 0 (elsewhere an empty Meshed): `piece` (world coordinates) and its
+/// `quality` in local ones (stuff_own_piece), `ids` and `owned` from
+/// global_ids, `leaves` the forest's count; `world` the shape as read and
+/// `r` as fitted() made it. The statistics, S27's topology and the warnings
+/// of S26 and S27 (from the boundary gathered on rank 0 as triples of
+/// global ids), the soup report; no Hausdorff distance, no seconds.
+/// Collective; after the last collective, rank 0 throws ShapeError when a
+/// component is lost (S27, mesh_warnings).
+stuff::Meshed rank_statistics(const stuff::Shape& world, const Replicated& r, const LeafPiece& piece,
+                              const stuff::StuffQuality& quality, std::span<const std::int64_t> ids,
+                              std::span<const std::uint8_t> owned, std::int64_t leaves, MPI_Comm comm);
 
 /// D5: every rank's bytes on `root` (in rank order; empty elsewhere).
 /// Throws std::length_error (on every rank) when the ranks hold 2^31 or

@@ -43,6 +43,9 @@ LeafPiece stuff_piece(Replicated& r, std::span<const d3::Point> own);
 /// D10: the same on a rank's lattice r.lattice = local_lattice(known):
 /// nothing (the lattice released) when a block's leaves are not closed in
 /// `known` (stuff_blocks' NotClosed): the rank needs a wider ghost layer.
-std::optional<LeafPiece> stuff_piece(Replicated& r, std::span<const d3::Point> own, std::span<const d3::Point> known);
+/// With `quality`: S13's quality of the piece's tetrahedra (no boundary
+/// count) in S24's local coordinates, before the world map (D11).
+std::optional<LeafPiece> stuff_piece(Replicated& r, std::span<const d3::Point> own, std::span<const d3::Point> known,
+                                     stuff::StuffQuality* quality = nullptr);
 
 }  // namespace bccmis::distributed

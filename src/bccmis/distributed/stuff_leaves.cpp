@@ -80,6 +80,7 @@ LeafPiece stuff_leaves(const stuff::Shape& shape, const stuff::Fit& fit, const d
   // part's vertex order (S8's key order).
   LeafPiece piece;
   piece.leaves = mine;
+  for (const auto& [first, last] : own_range) piece.lattice_tetrahedra += last - first;  // D11
   std::vector<std::uint8_t> used(all.vertices.size(), 0);
   for (const auto& [first, last] : own_range)
     for (std::uint32_t k = part.begin[first]; k < part.begin[last]; ++k)

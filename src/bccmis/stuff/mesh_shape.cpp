@@ -50,6 +50,26 @@ std::string level_hint(const Bounds& box, const Fit& fit) {
   return level_hint(thinnest_extent(box), "the shape's box", fit);
 }
 
+std::vector<std::string> mesh_warnings(const Shape& world, const MeshTopology& t, const Fit& fit) {
+  std::vector<std::string> warnings;
+  if (const auto want = world.surface_components()) {
+    const std::size_t got = t.boundary_components;
+    const std::string counts = "the mesh's boundary has " + std::to_string(got) + " component" + (got == 1 ? "" : "s") +
+                               " where the shape's surface has " + std::to_string(want->count);
+    if (got < want->count)
+      throw ShapeError(world.describe() + ": a component is lost: " + counts + ": " +
+                       level_hint(want->thinnest, "the thinnest component's box", fit));
+    if (got > want->count) warnings.push_back(counts);
+  }
+  if (t.nonmanifold_edges > 0)
+    warnings.push_back("the mesh's boundary has " + std::to_string(t.nonmanifold_edges) +
+                       " non-manifold edges (parts meeting along a lattice edge; a finer level separates them)");
+  // S26: a mesh made on cells coarser than a quarter of the shape's thinnest extent.
+  if (const double e = thinnest_extent(world.bounds()); fit.h > e / 4)
+    warnings.push_back(level_hint("the mesh is coarse", e, "the shape's box", fit));
+  return warnings;
+}
+
 std::string empty_mesh_message(const Shape& shape, const Fit& fit) {
   if (const SoupReport* soup = shape.soup_report(); soup && soup->flaw_count() > 0)
     return soup->file + ": encloses no volume (the winding number is below 1/2 at every lattice vertex)";
@@ -170,30 +190,19 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
       if (auto why = find_feature_problem(fit, r.stuffed.mesh, conformity))
         throw CheckError(world.describe() + ": " + *why);
   }
-  // S27: what the mesh is against what the shape is.
+  // S27: what the mesh is against what the shape is; S26.
   r.topology = topology(r.stuffed.mesh, r.boundary);
-  if (const auto want = world.surface_components()) {
-    const std::size_t got = r.topology.boundary_components;
-    const std::string counts = "the mesh's boundary has " + std::to_string(got) + " component" + (got == 1 ? "" : "s") +
-                               " where the shape's surface has " + std::to_string(want->count);
-    if (got < want->count)
-      throw ShapeError(world.describe() + ": a component is lost: " + counts + ": " +
-                       level_hint(want->thinnest, "the thinnest component's box", r.fit));
-    if (got > want->count) r.warnings.push_back(counts);
-  }
+  r.warnings = mesh_warnings(world, r.topology, r.fit);
   // A repaired soup's own surface may be non-manifold (overlapping parts
   // meet along curves): there its non-manifold edges are no change, so
   // only a warning even under --check.
   const bool input_manifold = !(r.soup && r.soup->flaw_count() > 0);
-  if (settings.check && !r.warnings.empty()) throw CheckError(world.describe() + ": " + r.warnings.front());
-  if (r.topology.nonmanifold_edges > 0) {
-    r.warnings.push_back("the mesh's boundary has " + std::to_string(r.topology.nonmanifold_edges) +
-                         " non-manifold edges (parts meeting along a lattice edge; a finer level separates them)");
-    if (settings.check && input_manifold) throw CheckError(world.describe() + ": " + r.warnings.back());
+  if (settings.check) {
+    const auto want = world.surface_components();
+    const bool more = want && r.topology.boundary_components > want->count;
+    if (more || (r.topology.nonmanifold_edges > 0 && input_manifold))
+      throw CheckError(world.describe() + ": " + r.warnings.front());
   }
-  // S26: a mesh made on cells coarser than a quarter of the shape's thinnest extent.
-  if (const double e = thinnest_extent(world.bounds()); r.fit.h > e / 4)
-    r.warnings.push_back(level_hint("the mesh is coarse", e, "the shape's box", r.fit));
   if (settings.statistics) {
     r.statistics = to_world(statistics(shape, r.stuffed.mesh, r.boundary, settings.hausdorff), n);
     if (r.features)  // S33, in world units

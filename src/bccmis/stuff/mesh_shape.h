@@ -87,6 +87,9 @@ struct Meshed {
   std::vector<std::string> warnings;      ///< S27: a changed topology, one line each
   std::optional<FeatureReport> features;  ///< S33, with Settings::features
   PhaseSeconds seconds;
+  /// The counts of statistics_counts() this run could not compute, printed
+  /// as "-" and null (bccmis-mpi stuff: `warped`, spec/distributed.md D11).
+  std::vector<std::string> not_computed;
 };
 
 /// A check of the result failed (Settings::check): the message names the
@@ -116,6 +119,15 @@ void to_world(d3::TetMeshF& mesh, const Normalisation& n, double h);
 /// against the thinnest extent of `box`, both in world units); -L N would
 /// resolve it", N the first level whose finest side is at most a quarter of it.
 std::string level_hint(const Bounds& box, const Fit& fit);
+
+/// S27's and S26's warnings of a mesh of `world` whose boundary has the
+/// topology `t`, made on `fit` (world units), in order: more boundary
+/// components than the shape's surface has, non-manifold edges, a mesh
+/// coarser than a quarter of the shape's thinnest extent. Throws ShapeError
+/// when the boundary has fewer components than the surface (S27: "a
+/// component is lost"). One rule for `bccmis stuff` and `bccmis-mpi stuff
+/// --stats` (spec/distributed.md D11).
+std::vector<std::string> mesh_warnings(const Shape& world, const MeshTopology& t, const Fit& fit);
 
 /// Why a mesh of `shape` without tetrahedra is refused, `fit` in world
 /// units: a soup with flaws encloses no volume (S21: "<file>: encloses no

@@ -1,6 +1,7 @@
 // S13's report as JSON (spec/cli.md, stuff --json; spec/python.md P5).
 #include "bccmis/stuff/statistics_json.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <string>
@@ -69,7 +70,11 @@ std::string statistics_json(const std::string& shape, const Meshed& m, const Pha
   const Hausdorff& h = s.hausdorff;
   JsonWriter w;
   w.begin_object().member("shape", shape);
-  for (const auto& [name, n] : statistics_counts(m)) w.member(name, n);
+  for (const auto& [name, n] : statistics_counts(m))
+    if (std::find(m.not_computed.begin(), m.not_computed.end(), name) != m.not_computed.end())
+      w.key(name).null();
+    else
+      w.member(name, n);
   // A volume that overflows a double (S24), and so its relative error, is null.
   const auto finite_or_null = [&](const char* key, double x) {
     w.key(key);

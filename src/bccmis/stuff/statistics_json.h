@@ -17,6 +17,7 @@ namespace bccmis::stuff {
 /// vertices, tetrahedra, boundary_triangles, boundary_components,
 /// nonmanifold_edges; with features (S33) feature_edges, feature_curves,
 /// feature_corners, feature_corners_conformed, feature_curves_conformed.
+/// A count named in m.not_computed is printed as null (JSON) or "-" (text).
 std::vector<std::pair<const char*, std::size_t>> statistics_counts(const Meshed& m);
 
 /// The JSON object of a run `m` made with Settings::statistics: `shape` (a
