@@ -11,6 +11,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "bccmis/d3/mesh.h"
 #include "bccmis/fast/d3/mesh.h"
@@ -94,6 +95,30 @@ TEST(StuffFast, StuffShapeRunsEitherLattice) {
   EXPECT_EQ(first_difference(flat, reference), "");
   EXPECT_GT(tf.total(), 0);
   EXPECT_GT(tr.lattice, 0);
+}
+
+TEST(StuffFast, FreeingTheLatticeAfterTheWarpChangesNoByte) {
+  // spec/mesh3d.md M26: stuff() on a lattice it may free reads every leaf's
+  // level before freeing it after S6, and makes the same mesh as stuff() on
+  // a lattice it keeps, on one thread and on two; the lattice is freed.
+  for (const int threads : {1, 2}) {
+    SCOPED_TRACE(threads);
+    StuffOptions o;
+    o.max_level = 2;
+    o.cells = 4;
+    o.threads = threads;
+    const auto torus = make_torus({0.05, -0.021, 0.013}, 1, 0.4);
+    const Fit fit = fit_lattice(torus->bounds(), o);
+    const d3::fast::Lattice kept = background_fast(*torus, fit, o);
+    d3::fast::Lattice freed = background_fast(*torus, fit, o);
+    ASSERT_GT(freed.memory_bytes(), 0U);
+    const Stuffed a = stuff(*torus, fit, kept, o);
+    const Stuffed b = stuff(*torus, fit, std::move(freed), o);
+    EXPECT_GT(a.mesh.tets.size(), 0U);
+    EXPECT_GT(a.warped, 0U);
+    EXPECT_EQ(first_difference(b, a), "");
+    EXPECT_EQ(freed.memory_bytes(), 0U);  // NOLINT(bugprone-use-after-move): moved from, its memory freed
+  }
 }
 
 TEST(StuffFast, TheComparisonSeesOneChange) {

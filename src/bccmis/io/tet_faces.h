@@ -38,15 +38,24 @@ struct SortedCorners {
   }
 };
 
-/// visit(first, last) for every group of face ids [first, last) with the same
-/// three vertices, the groups in increasing order of their sorted vertex
-/// triples. `vertex_count` exceeds every vertex index. Each tetrahedron's
-/// vertices are sorted once (SortedCorners); every face is filed under its
-/// smallest vertex (a counting sort) with the other two packed in one key
-/// (mid << 32 | high, ordered as the pair), then each vertex's few faces are
-/// sorted by that key.
-template <class Visit>
-void for_each_face_group(const Tets& tets, std::size_t vertex_count, const Visit& visit) {
+namespace detail {
+
+/// The key of face `id` (4 t + i) as for_each_face_group files it: its
+/// sorted vertex triple (lo, mid, high) without lo, mid << 32 | high.
+inline std::uint64_t face_key(const Tets& tets, std::size_t id) {
+  static constexpr std::size_t kOthers[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+  const auto& t = tets[id / 4];
+  const std::size_t* o = kOthers[id % 4];
+  std::uint32_t a = t[o[0]], b = t[o[1]], c = t[o[2]];
+  if (b < a) std::swap(a, b);
+  if (c < b) std::swap(b, c);
+  if (b < a) std::swap(a, b);
+  return std::uint64_t{b} << 32 | c;
+}
+
+/// for_each_face_group with the filed face ids stored as Id (M26).
+template <class Id, class Visit>
+void for_each_face_group_as(const Tets& tets, std::size_t vertex_count, const Visit& visit) {
   struct Filed {
     std::uint64_t key;  // mid << 32 | high
     std::size_t id;
@@ -58,22 +67,27 @@ void for_each_face_group(const Tets& tets, std::size_t vertex_count, const Visit
     start[c.sorted[1] + std::size_t{1}] += 1;  // the face without sorted[0]
   }
   for (std::size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
-  std::vector<Filed> filed(start.back());
-  std::vector<std::size_t> next(start.begin(), start.end() - 1);
-  const auto pack = [](std::uint32_t mid, std::uint32_t high) { return std::uint64_t{mid} << 32 | high; };
-  for (std::size_t t = 0; t < tets.size(); ++t) {
-    const SortedCorners c(tets[t]);
-    const auto& s = c.sorted;
-    filed[next[s[1]]++] = {pack(s[2], s[3]), 4 * t + c.at[0]};
-    filed[next[s[0]]++] = {pack(s[2], s[3]), 4 * t + c.at[1]};
-    filed[next[s[0]]++] = {pack(s[1], s[3]), 4 * t + c.at[2]};
-    filed[next[s[0]]++] = {pack(s[1], s[2]), 4 * t + c.at[3]};
+  std::vector<Id> filed(start.back());
+  {
+    std::vector<std::size_t> next(start.begin(), start.end() - 1);
+    for (std::size_t t = 0; t < tets.size(); ++t) {
+      const SortedCorners c(tets[t]);
+      const auto& s = c.sorted;
+      filed[next[s[1]]++] = static_cast<Id>(4 * t + c.at[0]);
+      filed[next[s[0]]++] = static_cast<Id>(4 * t + c.at[1]);
+      filed[next[s[0]]++] = static_cast<Id>(4 * t + c.at[2]);
+      filed[next[s[0]]++] = static_cast<Id>(4 * t + c.at[3]);
+    }
   }
+  std::vector<Filed> keyed;
   std::vector<std::size_t> group;
   for (std::size_t v = 0; v < vertex_count; ++v) {
-    Filed* const first = filed.data() + start[v];
-    Filed* const last = filed.data() + start[v + 1];
-    if (first == last) continue;  // no face filed here (first + 1 would pass the end)
+    if (start[v] == start[v + 1]) continue;  // no face filed here
+    // The vertex's faces with their keys, in the order they were filed.
+    keyed.clear();
+    for (std::size_t f = start[v]; f < start[v + 1]; ++f) keyed.push_back({face_key(tets, filed[f]), filed[f]});
+    Filed* const first = keyed.data();
+    Filed* const last = first + keyed.size();
     // A lattice mesh's vertex files a few dozen faces: insertion sort them;
     // std::sort a vertex of any other mesh's that files many.
     if (last - first > 64) std::sort(first, last, [](const Filed& a, const Filed& b) { return a.key < b.key; });
@@ -92,6 +106,24 @@ void for_each_face_group(const Tets& tets, std::size_t vertex_count, const Visit
       run = end;
     }
   }
+}
+
+}  // namespace detail
+
+/// visit(first, last) for every group of face ids [first, last) with the same
+/// three vertices, the groups in increasing order of their sorted vertex
+/// triples. `vertex_count` exceeds every vertex index. Each tetrahedron's
+/// vertices are sorted once (SortedCorners); every face's id is filed under
+/// its smallest vertex (a counting sort), then each vertex's few faces are
+/// given their key (the other two vertices packed as mid << 32 | high,
+/// ordered as the pair) and sorted by it. The filed ids are 32-bit when
+/// every face id fits (M26: 16 bytes a tetrahedron instead of 64).
+template <class Visit>
+void for_each_face_group(const Tets& tets, std::size_t vertex_count, const Visit& visit) {
+  if (4 * tets.size() <= std::size_t{UINT32_MAX} + 1)
+    detail::for_each_face_group_as<std::uint32_t>(tets, vertex_count, visit);
+  else
+    detail::for_each_face_group_as<std::size_t>(tets, vertex_count, visit);
 }
 
 }  // namespace bccmis::io

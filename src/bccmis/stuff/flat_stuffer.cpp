@@ -7,7 +7,9 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -101,6 +103,10 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
     begin_ = begin;
   }
 
+  /// Call `release` once the lattice is no longer asked (M26: after S6, the
+  /// levels of every leaf read first); the stuffer asks it nothing after.
+  void release_after_warp(std::function<void()> release) { release_ = std::move(release); }
+
   /// S5-S9 on every tetrahedron of the graded mesh of g, extracted leaf by
   /// leaf in blocks (`threads` at a time) and numbered as they come: no
   /// array of the lattice's tetrahedra.
@@ -129,6 +135,11 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
     cut();
     clock.lap(&PhaseTimes::cut);
     warp();
+    if (release_) {
+      for (std::size_t i = 0; i < ids_.size(); ++i) level(i);
+      release_();
+      released_ = true;
+    }
     clock.lap(&PhaseTimes::warp);
     if (begin_) begin_->reserve(ids_.size() + 1);
     for (std::size_t i = 0; i < ids_.size(); ++i) {
@@ -196,7 +207,7 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
     }
   }
   void end_numbering() {
-    table_ = {};
+    std::vector<std::uint32_t>().swap(table_);  // M26: its memory, not only its size
     // S8a: the rank of each point by position, by a radix sort.
     const std::vector<std::uint32_t> order = d3::detail::position_order(points_);
     std::vector<std::uint32_t> rank(points_.size());
@@ -303,7 +314,10 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
   /// asked of the lattice once per leaf.
   int level(std::size_t ti) {
     int& l = level_[ids_[ti][0]];
-    if (l < 0) l = level_of(g_, points_[ids_[ti][0]]);
+    if (l < 0) {
+      if (released_) throw std::logic_error("flat stuffer: a leaf's level asked of a released lattice");
+      l = level_of(g_, points_[ids_[ti][0]]);
+    }
     return l;
   }
 
@@ -316,7 +330,7 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
   Stuffed finish() {
     // S8: the output vertices in key order: the lattice vertices used (keys
     // (i, i), in order of i) merged with the cut points used (in key order).
-    ids_ = {};  // the lattice's tetrahedra are done with
+    std::vector<Ids>().swap(ids_);  // the lattice's tetrahedra are done with (M26: their memory)
     const std::size_t n = points_.size();
     std::vector<std::uint8_t> used_vertex(n, 0), used_cut(cuts_.size(), 0);
     for (const auto& t : this->tets_out_)
@@ -333,6 +347,12 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
     std::vector<std::uint32_t> vertex_index(points_.size(), EdgeTable::kNone),
         cut_index(cuts_.size(), EdgeTable::kNone);
     d3::TetMeshF& m = out_.mesh;
+    // M26: as many as will be added, so no copy on growth.
+    const std::size_t used =
+        cut_keys.size() + static_cast<std::size_t>(std::count(used_vertex.begin(), used_vertex.end(), 1));
+    m.vertices.reserve(used);
+    m.kind.reserve(used);
+    if (keys_) keys_->reserve(used);
     const auto add = [&](VKey k) {
       const std::uint32_t index = static_cast<std::uint32_t>(m.vertices.size());
       if (is_cut(k))
@@ -378,6 +398,8 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
   Stuffed out_;
   std::vector<std::array<d3::Point, 2>>* keys_ = nullptr;
   std::vector<std::uint32_t>* begin_ = nullptr;
+  std::function<void()> release_;
+  bool released_ = false;
 };
 
 }  // namespace
@@ -385,6 +407,13 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
 Stuffed stuff(const Shape& shape, const Fit& fit, const d3::fast::Lattice& g, const StuffOptions& options,
               PhaseTimes* times) {
   return Stuffer<d3::fast::Lattice>(shape, fit, g, options).run_whole(options.threads, times);
+}
+
+Stuffed stuff(const Shape& shape, const Fit& fit, d3::fast::Lattice&& g, const StuffOptions& options,
+              PhaseTimes* times) {
+  Stuffer<d3::fast::Lattice> stuffer(shape, fit, g, options);
+  stuffer.release_after_warp([&g] { const d3::fast::Lattice released = std::move(g); });
+  return stuffer.run_whole(options.threads, times);
 }
 
 StuffedPart stuff_part(const Shape& shape, const Fit& fit, const d3::fast::Lattice& g, const StuffOptions& options,

@@ -91,6 +91,11 @@ Stuffed stuff(const Shape& shape, const Fit& fit, const d3::Graph& g, const Stuf
 Stuffed stuff(const Shape& shape, const Fit& fit, const d3::fast::Lattice& g, const StuffOptions& options,
               PhaseTimes* times = nullptr);
 
+/// The same, freeing g's memory once S5-S6 are done with it (spec/mesh3d.md
+/// M26): g is left moved from. The same mesh as the overload above.
+Stuffed stuff(const Shape& shape, const Fit& fit, d3::fast::Lattice&& g, const StuffOptions& options,
+              PhaseTimes* times = nullptr);
+
 /// S5-S9 on some tetrahedra of the graded mesh of g (S16's incremental
 /// stuffing): when `tets` holds every tetrahedron of the whole mesh that has
 /// a cut edge, and no tetrahedron left out has a warped vertex, each of them
