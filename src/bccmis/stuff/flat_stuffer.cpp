@@ -105,7 +105,19 @@ class Stuffer {
   Stuffed run_whole(int threads, PhaseTimes* times) {
     detail::PhaseClock clock(times);
     begin_numbering(2 * cell_count(g_) + node_count(g_));
-    detail::for_each_block(g_, threads, [this](std::span<const d3::Tet> block) { number(block); });
+    // S28b: on more than one thread each block is numbered on its own where
+    // it is extracted, then merged into the one table in block order; on
+    // one, numbered into the one table at once (the same ids, S28b).
+    std::vector<Numbering> blocks(static_cast<std::size_t>(detail::thread_count(threads)));
+    if (blocks.size() == 1)
+      detail::for_each_block(
+          g_, threads, [](std::size_t, std::span<const d3::Tet>) {},
+          [this](std::size_t, std::span<const d3::Tet> block) { number(block); });
+    else
+      detail::for_each_block(
+          g_, threads,
+          [&blocks](std::size_t slot, std::span<const d3::Tet> block) { number_block(block, blocks[slot]); },
+          [this, &blocks](std::size_t slot, std::span<const d3::Tet>) { merge(blocks[slot]); });
     end_numbering();
     clock.lap(&PhaseTimes::mesh);
     return stuff(times);
@@ -207,29 +219,72 @@ class Stuffer {
     while (slots < 2 * most) slots *= 2;
     table_.assign(slots, EdgeTable::kNone);
   }
-  void number(std::span<const d3::Tet> tets) {
+  /// Vertices numbered in order of first use through a table of positions.
+  struct Numbering {
+    std::vector<std::uint32_t> table;      ///< points by hash of position
+    std::vector<std::size_t> used;         ///< the table's slots in use (a block's, to clear)
+    std::vector<d3::Point> points;         ///< in order of first use
+    std::vector<Ids> ids;                  ///< the tetrahedra on points
+    std::vector<std::uint32_t> to_global;  ///< points -> the stuffer's ids (merge)
+  };
+  /// S28b: the block `tets` numbered on its own into b (its previous
+  /// contents dropped).
+  static void number_block(std::span<const d3::Tet> tets, Numbering& b) {
+    for (const std::size_t k : b.used) b.table[k] = EdgeTable::kNone;
+    b.used.clear();
+    b.points.clear();
+    b.ids.clear();
+    std::size_t slots = 16;
+    while (slots < 8 * tets.size()) slots *= 2;  // at most 4 new points a tetrahedron: load at most 1/2
+    if (b.table.size() < slots) b.table.assign(slots, EdgeTable::kNone);
+    number(tets, b.table, b.points, b.ids, &b.used);
+  }
+  /// S28b: block b's points given the stuffer's ids in their order, its
+  /// tetrahedra appended on them.
+  void merge(Numbering& b) {
     const std::size_t mask = table_.size() - 1;
+    b.to_global.resize(b.points.size());
+    for (std::size_t i = 0; i < b.points.size(); ++i) {
+      const d3::Point& p = b.points[i];
+      std::size_t k = d3::PointHash{}(p)&mask;
+      while (table_[k] != EdgeTable::kNone && !(points_[table_[k]] == p)) k = (k + 1) & mask;
+      if (table_[k] == EdgeTable::kNone) {
+        table_[k] = static_cast<std::uint32_t>(points_.size());
+        points_.push_back(p);
+      }
+      b.to_global[i] = table_[k];
+    }
+    for (const Ids& t : b.ids)
+      ids_.push_back({b.to_global[t[0]], b.to_global[t[1]], b.to_global[t[2]], b.to_global[t[3]]});
+  }
+  void number(std::span<const d3::Tet> tets) { number(tets, table_, points_, ids_, nullptr); }
+  /// tets numbered in order of first use through `table` into points and
+  /// ids (appended); the slots taken listed in `used` when given.
+  static void number(std::span<const d3::Tet> tets, std::vector<std::uint32_t>& table, std::vector<d3::Point>& points,
+                     std::vector<Ids>& ids, std::vector<std::size_t>* used) {
+    const std::size_t mask = table.size() - 1;
     const auto hash = [&](const d3::Point& p) { return d3::PointHash{}(p)&mask; };
     // A leaf's tetrahedra come together, all with the leaf as vertex 0 and
     // a face's with its apex as vertex 1 (spec/mesh3d.md M24): those two are
     // most often the previous tetrahedron's, numbered already.
     const d3::Tet* previous = nullptr;
     for (const d3::Tet& t : tets) {
-      Ids ids{};
+      Ids t_ids{};
       for (std::size_t i = 0; i < 4; ++i) {
         if (i < 2 && previous && (*previous)[i] == t[i]) {
-          ids[i] = ids_.back()[i];
+          t_ids[i] = ids.back()[i];
           continue;
         }
         std::size_t k = hash(t[i]);
-        while (table_[k] != EdgeTable::kNone && !(points_[table_[k]] == t[i])) k = (k + 1) & mask;
-        if (table_[k] == EdgeTable::kNone) {
-          table_[k] = static_cast<std::uint32_t>(points_.size());
-          points_.push_back(t[i]);
+        while (table[k] != EdgeTable::kNone && !(points[table[k]] == t[i])) k = (k + 1) & mask;
+        if (table[k] == EdgeTable::kNone) {
+          table[k] = static_cast<std::uint32_t>(points.size());
+          points.push_back(t[i]);
+          if (used) used->push_back(k);
         }
-        ids[i] = table_[k];
+        t_ids[i] = table[k];
       }
-      ids_.push_back(ids);
+      ids.push_back(t_ids);
       previous = &t;
     }
   }
