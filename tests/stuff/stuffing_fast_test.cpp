@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "bccmis/d3/mesh.h"
 #include "bccmis/fast/d3/mesh.h"
@@ -81,6 +82,36 @@ TEST(StuffFast, TorusL2OffCenter) {
 }
 TEST(StuffFast, TwoSpheresL2) {
   expect_same({"two spheres L2", make_spheres({-0.5, 0.03, 0}, {0.5, 0.1, -0.02}, 0.7), 2, 3});
+}
+
+TEST(StuffFast, TheSameMeshOnOneTwoAndThreeThreads) {
+  // S28a: the renumbering, the cut edges' listing and the stencils run over
+  // ranges of the lattice tetrahedra, joined in order; on 1, 2 and 3 threads
+  // the mesh is the reference stuffer's, and stuff_part's record of where
+  // each lattice tetrahedron's output begins is the one-thread record.
+  StuffOptions o;
+  o.max_level = 2;
+  o.cells = 4;
+  const auto torus = make_torus({0.05, -0.021, 0.013}, 1, 0.4);
+  const Fit fit = fit_lattice(torus->bounds(), o);
+  const d3::Graph g = background(*torus, fit, o);
+  const d3::fast::Lattice f = background_fast(*torus, fit, o);
+  const Stuffed reference = stuff(*torus, fit, g, o);
+  const std::vector<d3::Tet> tets = d3::fast::tetrahedra(f);
+  ASSERT_GT(tets.size(), 3U * 256);  // three ranges of at least 256 (S28a)
+  o.threads = 1;
+  const StuffedPart one = stuff_part(*torus, fit, f, o, tets);
+  ASSERT_EQ(one.begin.size(), tets.size() + 1);
+  EXPECT_EQ(one.begin.back(), one.stuffed.mesh.tets.size());
+  for (const int threads : {1, 2, 3}) {
+    SCOPED_TRACE(threads);
+    o.threads = threads;
+    EXPECT_EQ(first_difference(stuff(*torus, fit, f, o), reference), "");
+    const StuffedPart part = stuff_part(*torus, fit, f, o, tets);
+    EXPECT_EQ(first_difference(part.stuffed, reference), "");
+    EXPECT_EQ(part.begin, one.begin);
+    EXPECT_EQ(part.keys, one.keys);
+  }
 }
 
 TEST(StuffFast, StuffShapeRunsEitherLattice) {

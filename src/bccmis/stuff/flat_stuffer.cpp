@@ -89,9 +89,7 @@ inline constexpr std::size_t kLeastPerThread = 256;
 /// through the vocabulary: is_center, level_of). The lattice's vertices are
 /// numbered in position order and every per-vertex datum is an array.
 template <class G>
-class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t> {
-  using Stencils = detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>;
-
+class Stuffer {
  public:
   Stuffer(const Shape& shape, const Fit& fit, const G& g, const StuffOptions& options)
       : shape_(shape), fit_(fit), g_(g), options_(options) {}
@@ -113,7 +111,19 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
   Stuffed run_whole(int threads, PhaseTimes* times) {
     detail::PhaseClock clock(times);
     begin_numbering(2 * cell_count(g_) + node_count(g_));
-    detail::for_each_block(g_, threads, [this](std::span<const d3::Tet> block) { number(block); });
+    // S28b: on more than one thread each block is numbered on its own where
+    // it is extracted, then merged into the one table in block order; on
+    // one, numbered into the one table at once (the same ids, S28b).
+    std::vector<Numbering> blocks(static_cast<std::size_t>(detail::thread_count(threads)));
+    if (blocks.size() == 1)
+      detail::for_each_block(
+          g_, threads, [](std::size_t, std::span<const d3::Tet>) {},
+          [this](std::size_t, std::span<const d3::Tet> block) { number(block); });
+    else
+      detail::for_each_block(
+          g_, threads,
+          [&blocks](std::size_t slot, std::span<const d3::Tet> block) { number_block(block, blocks[slot]); },
+          [this, &blocks](std::size_t slot, std::span<const d3::Tet>) { merge(blocks[slot]); });
     end_numbering();
     clock.lap(&PhaseTimes::mesh);
     return stuff(times);
@@ -135,32 +145,74 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
     cut();
     clock.lap(&PhaseTimes::cut);
     warp();
-    if (release_) {
-      for (std::size_t i = 0; i < ids_.size(); ++i) level(i);
+    if (release_) {  // M26.2: every leaf's level read, then the lattice freed
+      level_.assign(points_.size(), -1);
+      for (const Ids& t : ids_)
+        if (level_[t[0]] < 0) level_[t[0]] = level_of(g_, points_[t[0]]);
       release_();
       released_ = true;
     }
     clock.lap(&PhaseTimes::warp);
-    if (begin_) begin_->reserve(ids_.size() + 1);
-    for (std::size_t i = 0; i < ids_.size(); ++i) {
-      if (begin_) begin_->push_back(static_cast<std::uint32_t>(this->tets_out_.size()));
-      fill(i);
-    }
-    if (begin_) begin_->push_back(static_cast<std::uint32_t>(this->tets_out_.size()));
+    fill();
     Stuffed s = finish();
     clock.lap(&PhaseTimes::stencils);
     return s;
   }
 
-  friend Stencils;
   using Ids = std::array<std::uint32_t, 4>;
 
-  // What the stencils (detail/stencils.h) ask of a stuffer.
+  /// S7-S9 on a range of the lattice tetrahedra, into the range's own output
+  /// (S28a): it reads the stuffer's vertices, values, positions and cut
+  /// points, all fixed after S6, and writes only its own.
+  class Range : public detail::Stencils<Range, std::uint32_t, VKey, std::uint32_t> {
+    using Base = detail::Stencils<Range, std::uint32_t, VKey, std::uint32_t>;
+
+   public:
+    explicit Range(const Stuffer& s) : s_(s) {}
+    /// The stencils of lattice tetrahedra [b, e); with `begin`, where each
+    /// one's output tetrahedra begin in this range's output.
+    void fill(std::size_t b, std::size_t e, std::vector<std::uint32_t>* begin) {
+      for (std::size_t ti = b; ti < e; ++ti) {
+        if (begin) begin->push_back(static_cast<std::uint32_t>(this->tets_out_.size()));
+        const Ids& t = s_.ids_[ti];
+        bool warped = false;
+        for (const std::uint32_t p : t) warped = warped || s_.warped_[p];
+        if (warped) detail::check_regular(s_.lattice_tet(ti), s_.fit_.size.L);
+        Base::fill(t, [this, &t] { return level(t[0]); });
+      }
+    }
+    std::vector<std::array<std::uint32_t, 4>>& tets() { return this->tets_out_; }
+    std::vector<int>& levels() { return this->levels_out_; }
+
+   private:
+    friend Base;
+    // What the stencils (detail/stencils.h) ask of a stuffer.
+    static VKey lattice_key(std::uint32_t i) { return Stuffer::lattice_key(i); }
+    static VKey cut_key(std::uint32_t i, std::uint32_t j) { return Stuffer::cut_key(i, j); }
+    std::int64_t length2(std::uint32_t i, std::uint32_t j) const { return s_.length2(i, j); }
+    d3::Point point_of(VKey k) const { return s_.points_[first(k)]; }
+    double value(std::uint32_t i) const { return s_.value_[i]; }
+    Vec3 pos(VKey k) const { return s_.pos(k); }
+    std::uint32_t store(VKey k) const { return s_.store(k); }
+    Vec3 stored_pos(std::uint32_t x) const { return s_.stored_pos(x); }
+
+    /// The level of leaf `leaf` (a lattice tetrahedron's vertex 0,
+    /// spec/mesh3d.md), asked of the lattice once per run of tetrahedra of
+    /// one leaf (S28a).
+    int level(std::uint32_t leaf) {
+      if (leaf != leaf_) leaf_ = leaf, level_ = s_.leaf_level(leaf);
+      return level_;
+    }
+
+    const Stuffer& s_;
+    std::uint32_t leaf_ = EdgeTable::kNone;
+    int level_ = -1;
+  };
+
+  // The keys and positions of S8 on the numbered vertices.
   static VKey lattice_key(std::uint32_t i) { return (VKey{i} << 32) | i; }
   static VKey cut_key(std::uint32_t i, std::uint32_t j) { return i < j ? (VKey{i} << 32) | j : (VKey{j} << 32) | i; }
   std::int64_t length2(std::uint32_t i, std::uint32_t j) const { return detail::length2(points_[i], points_[j]); }
-  d3::Point point_of(VKey k) const { return points_[first(k)]; }
-  double value(std::uint32_t i) const { return value_[i]; }
   Vec3 pos(VKey k) const { return is_cut(k) ? cuts_[cut_index_.find(k)].pos : pos_[first(k)]; }
   // An output vertex as the stencils keep it: lattice vertex i as i, cut
   // point c as points_.size() + c (16 bytes an output tetrahedron, renumbered
@@ -180,29 +232,72 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
     while (slots < 2 * most) slots *= 2;
     table_.assign(slots, EdgeTable::kNone);
   }
-  void number(std::span<const d3::Tet> tets) {
+  /// Vertices numbered in order of first use through a table of positions.
+  struct Numbering {
+    std::vector<std::uint32_t> table;      ///< points by hash of position
+    std::vector<std::size_t> used;         ///< the table's slots in use (a block's, to clear)
+    std::vector<d3::Point> points;         ///< in order of first use
+    std::vector<Ids> ids;                  ///< the tetrahedra on points
+    std::vector<std::uint32_t> to_global;  ///< points -> the stuffer's ids (merge)
+  };
+  /// S28b: the block `tets` numbered on its own into b (its previous
+  /// contents dropped).
+  static void number_block(std::span<const d3::Tet> tets, Numbering& b) {
+    for (const std::size_t k : b.used) b.table[k] = EdgeTable::kNone;
+    b.used.clear();
+    b.points.clear();
+    b.ids.clear();
+    std::size_t slots = 16;
+    while (slots < 8 * tets.size()) slots *= 2;  // at most 4 new points a tetrahedron: load at most 1/2
+    if (b.table.size() < slots) b.table.assign(slots, EdgeTable::kNone);
+    number(tets, b.table, b.points, b.ids, &b.used);
+  }
+  /// S28b: block b's points given the stuffer's ids in their order, its
+  /// tetrahedra appended on them.
+  void merge(Numbering& b) {
     const std::size_t mask = table_.size() - 1;
+    b.to_global.resize(b.points.size());
+    for (std::size_t i = 0; i < b.points.size(); ++i) {
+      const d3::Point& p = b.points[i];
+      std::size_t k = d3::PointHash{}(p)&mask;
+      while (table_[k] != EdgeTable::kNone && !(points_[table_[k]] == p)) k = (k + 1) & mask;
+      if (table_[k] == EdgeTable::kNone) {
+        table_[k] = static_cast<std::uint32_t>(points_.size());
+        points_.push_back(p);
+      }
+      b.to_global[i] = table_[k];
+    }
+    for (const Ids& t : b.ids)
+      ids_.push_back({b.to_global[t[0]], b.to_global[t[1]], b.to_global[t[2]], b.to_global[t[3]]});
+  }
+  void number(std::span<const d3::Tet> tets) { number(tets, table_, points_, ids_, nullptr); }
+  /// tets numbered in order of first use through `table` into points and
+  /// ids (appended); the slots taken listed in `used` when given.
+  static void number(std::span<const d3::Tet> tets, std::vector<std::uint32_t>& table, std::vector<d3::Point>& points,
+                     std::vector<Ids>& ids, std::vector<std::size_t>* used) {
+    const std::size_t mask = table.size() - 1;
     const auto hash = [&](const d3::Point& p) { return d3::PointHash{}(p)&mask; };
     // A leaf's tetrahedra come together, all with the leaf as vertex 0 and
     // a face's with its apex as vertex 1 (spec/mesh3d.md M24): those two are
     // most often the previous tetrahedron's, numbered already.
     const d3::Tet* previous = nullptr;
     for (const d3::Tet& t : tets) {
-      Ids ids{};
+      Ids t_ids{};
       for (std::size_t i = 0; i < 4; ++i) {
         if (i < 2 && previous && (*previous)[i] == t[i]) {
-          ids[i] = ids_.back()[i];
+          t_ids[i] = ids.back()[i];
           continue;
         }
         std::size_t k = hash(t[i]);
-        while (table_[k] != EdgeTable::kNone && !(points_[table_[k]] == t[i])) k = (k + 1) & mask;
-        if (table_[k] == EdgeTable::kNone) {
-          table_[k] = static_cast<std::uint32_t>(points_.size());
-          points_.push_back(t[i]);
+        while (table[k] != EdgeTable::kNone && !(points[table[k]] == t[i])) k = (k + 1) & mask;
+        if (table[k] == EdgeTable::kNone) {
+          table[k] = static_cast<std::uint32_t>(points.size());
+          points.push_back(t[i]);
+          if (used) used->push_back(k);
         }
-        ids[i] = table_[k];
+        t_ids[i] = table[k];
       }
-      ids_.push_back(ids);
+      ids.push_back(t_ids);
       previous = &t;
     }
   }
@@ -214,9 +309,11 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
     std::vector<d3::Point> sorted(points_.size());
     for (std::uint32_t r = 0; r < order.size(); ++r) rank[order[r]] = r, sorted[r] = points_[order[r]];
     points_ = std::move(sorted);
-    for (Ids& ids : ids_)
-      for (std::uint32_t& i : ids) i = rank[i];
-    level_.assign(points_.size(), -1);
+    // S28a: each tetrahedron's ids on their own, so over ranges.
+    detail::for_each_range(ids_.size(), options_.threads, kLeastPerThread, [this, &rank](std::size_t b, std::size_t e) {
+      for (std::size_t ti = b; ti < e; ++ti)
+        for (std::uint32_t& i : ids_[ti]) i = rank[i];
+    });
   }
 
   // S28: each vertex on its own, so on `threads` threads.
@@ -233,8 +330,41 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
 
   // S5
   void cut() {
+    // S28a: each range lists its cut edges at their first use in the range;
+    // the lists joined in range order, each edge kept at its first use.
+    using Edges = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
+    std::vector<Edges> listed(detail::part_count(ids_.size(), options_.threads, kLeastPerThread));
+    detail::for_each_part(ids_.size(), options_.threads, kLeastPerThread,
+                          [this, &listed](std::size_t k, std::size_t b, std::size_t e) { list_cuts(b, e, listed[k]); });
     cut_index_.reserve(points_.size() / 4);
-    for (std::size_t ti = 0; ti < ids_.size(); ++ti) {
+    for (const Edges& edges : listed)
+      for (const auto& [x, y] : edges) {
+        const VKey k = cut_key(x, y);
+        if (cut_index_.find(k) != EdgeTable::kNone) continue;
+        cut_index_.insert(k, static_cast<std::uint32_t>(cuts_.size()));
+        cuts_.emplace_back();
+        edges_.push_back({x, y});
+        ends_.push_back({x, y});
+        ends_.push_back({y, x});
+      }
+    // S28: the cut points, each on its own, so on `threads` threads.
+    detail::for_each_range(cuts_.size(), options_.threads, kLeastPerThread, [this](std::size_t b, std::size_t e) {
+      for (std::size_t c = b; c < e; ++c) {
+        const Vec3 &px = pos_[edges_[c].first], &py = pos_[edges_[c].second];
+        const double s = std::clamp(shape_.crossing(px, py), 0.0, 1.0);
+        cuts_[c].t = s;
+        for (std::size_t d = 0; d < 3; ++d) cuts_[c].pos[d] = px[d] + s * (py[d] - px[d]);
+      }
+    });
+  }
+
+  /// S5: the cut edges (smaller end first) of lattice tetrahedra [b, e) into
+  /// `out`, each at its first use, the tetrahedra in order and the edges of
+  /// each in the order of their ends.
+  void list_cuts(std::size_t b, std::size_t e, std::vector<std::pair<std::uint32_t, std::uint32_t>>& out) const {
+    EdgeTable seen;
+    seen.reserve(256);
+    for (std::size_t ti = b; ti < e; ++ti) {
       const Ids& t = ids_[ti];
       // S5: an edge is cut only between a negative and a positive end
       // (strict), so a tetrahedron without both has none (most of them).
@@ -249,24 +379,12 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
           if (!((fx < 0 && fy > 0) || (fx > 0 && fy < 0))) continue;
           has_cut = true;
           const VKey k = cut_key(x, y);
-          if (cut_index_.find(k) != EdgeTable::kNone) continue;
-          cut_index_.insert(k, static_cast<std::uint32_t>(cuts_.size()));
-          cuts_.emplace_back();
-          edges_.push_back({x, y});
-          ends_.push_back({x, y});
-          ends_.push_back({y, x});
+          if (seen.find(k) != EdgeTable::kNone) continue;
+          seen.insert(k, 0);
+          out.push_back({x, y});
         }
       if (has_cut) detail::check_regular(lattice_tet(ti), fit_.size.L);
     }
-    // S28: the cut points, each on its own, so on `threads` threads.
-    detail::for_each_range(cuts_.size(), options_.threads, kLeastPerThread, [this](std::size_t b, std::size_t e) {
-      for (std::size_t c = b; c < e; ++c) {
-        const Vec3 &px = pos_[edges_[c].first], &py = pos_[edges_[c].second];
-        const double s = std::clamp(shape_.crossing(px, py), 0.0, 1.0);
-        cuts_[c].t = s;
-        for (std::size_t d = 0; d < 3; ++d) cuts_[c].pos[d] = px[d] + s * (py[d] - px[d]);
-      }
-    });
   }
 
   // S6, in increasing position order of v, the other ends w in increasing
@@ -302,23 +420,45 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
     for (const detail::Cut& c : cuts_) out_.cut_points += c.removed ? 0 : 1;
   }
 
-  // S7
-  void fill(std::size_t ti) {
-    bool warped = false;
-    for (const std::uint32_t p : ids_[ti]) warped = warped || warped_[p];
-    if (warped) detail::check_regular(lattice_tet(ti), fit_.size.L);
-    Stencils::fill(ids_[ti], [this, ti] { return level(ti); });
+  // S7-S9 over ranges of the lattice tetrahedra, joined in order (S28a).
+  void fill() {
+    const std::size_t n = ids_.size();
+    std::vector<Range> ranges(detail::part_count(n, options_.threads, kLeastPerThread), Range(*this));
+    std::vector<std::vector<std::uint32_t>> begins(begin_ ? ranges.size() : 0);
+    detail::for_each_part(n, options_.threads, kLeastPerThread,
+                          [this, &ranges, &begins](std::size_t k, std::size_t b, std::size_t e) {
+                            ranges[k].fill(b, e, begin_ ? &begins[k] : nullptr);
+                          });
+    std::size_t total = 0;
+    for (Range& r : ranges) total += r.tets().size();
+    if (begin_) {
+      begin_->reserve(n + 1);
+      std::size_t offset = 0;
+      for (std::size_t k = 0; k < ranges.size(); ++k) {
+        for (const std::uint32_t x : begins[k]) begin_->push_back(static_cast<std::uint32_t>(offset + x));
+        offset += ranges[k].tets().size();
+      }
+      begin_->push_back(static_cast<std::uint32_t>(total));
+    }
+    tets_out_ = std::move(ranges[0].tets());
+    levels_out_ = std::move(ranges[0].levels());
+    tets_out_.reserve(total);
+    levels_out_.reserve(total);
+    for (std::size_t k = 1; k < ranges.size(); ++k) {
+      tets_out_.insert(tets_out_.end(), ranges[k].tets().begin(), ranges[k].tets().end());
+      levels_out_.insert(levels_out_.end(), ranges[k].levels().begin(), ranges[k].levels().end());
+      ranges[k].tets() = {};
+      ranges[k].levels() = {};
+    }
   }
 
-  /// The level of the leaf of tetrahedron ti (its vertex 0, spec/mesh3d.md),
-  /// asked of the lattice once per leaf.
-  int level(std::size_t ti) {
-    int& l = level_[ids_[ti][0]];
-    if (l < 0) {
-      if (released_) throw std::logic_error("flat stuffer: a leaf's level asked of a released lattice");
-      l = level_of(g_, points_[ids_[ti][0]]);
-    }
-    return l;
+  /// The level of leaf `leaf` (a lattice tetrahedron's vertex 0,
+  /// spec/mesh3d.md): from the lattice, or, once it is released (M26.2),
+  /// as read before.
+  int leaf_level(std::uint32_t leaf) const {
+    if (!released_) return level_of(g_, points_[leaf]);
+    if (level_[leaf] < 0) throw std::logic_error("flat stuffer: a leaf's level asked of a released lattice");
+    return level_[leaf];
   }
 
   /// Lattice tetrahedron ti as points.
@@ -333,7 +473,7 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
     std::vector<Ids>().swap(ids_);  // the lattice's tetrahedra are done with (M26: their memory)
     const std::size_t n = points_.size();
     std::vector<std::uint8_t> used_vertex(n, 0), used_cut(cuts_.size(), 0);
-    for (const auto& t : this->tets_out_)
+    for (const auto& t : tets_out_)
       for (const std::uint32_t x : t) {
         if (x >= n)
           used_cut[x - n] = 1;
@@ -373,10 +513,10 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
       add(k);
     }
     for (; next_cut < cut_keys.size(); ++next_cut) add(cut_keys[next_cut]);
-    for (auto& t : this->tets_out_)
+    for (auto& t : tets_out_)
       for (std::uint32_t& x : t) x = x >= n ? cut_index[x - n] : vertex_index[x];
-    m.tets = std::move(this->tets_out_);
-    m.level = std::move(this->levels_out_);
+    m.tets = std::move(tets_out_);
+    m.level = std::move(levels_out_);
     return std::move(out_);
   }
 
@@ -390,16 +530,18 @@ class Stuffer : detail::Stencils<Stuffer<G>, std::uint32_t, VKey, std::uint32_t>
   std::vector<double> value_;         ///< the sign of f (-1, 0, 1), 0 once warped
   std::vector<Vec3> pos_;             ///< in space, warped or not
   std::vector<std::uint8_t> warped_;
-  std::vector<int> level_;  ///< of the leaves, -1 until asked
   std::vector<detail::Cut> cuts_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> edges_;  ///< of cuts_, smaller end first
   EdgeTable cut_index_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> ends_;  ///< (v, w) for each cut edge vw, both ways
+  std::vector<std::array<std::uint32_t, 4>> tets_out_;         ///< S7-S9's output, stored as Range::store
+  std::vector<int> levels_out_;
   Stuffed out_;
   std::vector<std::array<d3::Point, 2>>* keys_ = nullptr;
   std::vector<std::uint32_t>* begin_ = nullptr;
   std::function<void()> release_;
   bool released_ = false;
+  std::vector<int> level_;  ///< M26.2: each leaf's level, read before the lattice is released
 };
 
 }  // namespace

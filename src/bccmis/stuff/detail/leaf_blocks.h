@@ -19,15 +19,17 @@ namespace bccmis::stuff::detail {
 /// bytes each) stay within a few megabytes.
 inline constexpr std::size_t kLeavesPerBlock = 4096;
 
-/// visit(block) for consecutive blocks of the tetrahedra of g, leaf by leaf
-/// in the order of cells(g), so that the blocks joined are
+/// visit(slot, block) for consecutive blocks of the tetrahedra of g, leaf
+/// by leaf in the order of cells(g), so that the blocks joined are
 /// d3::detail::tetrahedra_of(g). `threads` threads (0: every core) extract
-/// `threads` blocks at a time, each into its own buffer; the blocks are
-/// visited in order on the calling thread, so what visit sees does not
-/// depend on the number of threads. G's const queries must be safe to call
-/// from several threads (they read only).
-template <class G, class Visit>
-void for_each_block(const G& g, int threads, Visit&& visit) {
+/// `threads` blocks at a time, each into its own buffer (slot 0, 1, ...),
+/// and run prepare(slot, block) on it on the extracting thread; the blocks
+/// are visited in order on the calling thread, so what visit sees does not
+/// depend on the number of threads when prepare's result depends on the
+/// block alone. G's const queries must be safe to call from several
+/// threads (they read only).
+template <class G, class Prepare, class Visit>
+void for_each_block(const G& g, int threads, Prepare&& prepare, Visit&& visit) {
   const std::vector<d3::Point> leaves = cells(g);
   const std::size_t n = static_cast<std::size_t>(thread_count(threads));
   std::vector<std::vector<d3::Tet>> blocks(n);
@@ -38,6 +40,7 @@ void for_each_block(const G& g, int threads, Visit&& visit) {
       out.clear();
       const std::size_t last = std::min(leaves.size(), first + kLeavesPerBlock);
       for (std::size_t i = first; i < last; ++i) d3::detail::leaf_tetrahedra(g, leaves[i], out);
+      prepare(slot, std::span<const d3::Tet>(out));
     } catch (...) {
       errors[slot] = std::current_exception();
     }
@@ -50,7 +53,7 @@ void for_each_block(const G& g, int threads, Visit&& visit) {
     for (std::thread& t : helpers) t.join();
     for (std::size_t k = 0; k < n && round + k * kLeavesPerBlock < leaves.size(); ++k) {
       if (errors[k]) std::rethrow_exception(errors[k]);
-      visit(std::span<const d3::Tet>(blocks[k]));
+      visit(k, std::span<const d3::Tet>(blocks[k]));
     }
   }
 }
