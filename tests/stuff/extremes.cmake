@@ -23,11 +23,11 @@ bccmis_cli_test(stuff_cells_2_31 2 ARGS stuff --shape sphere --cells 1048576 -o 
 bccmis_cli_test(stuff_level_20 2 ARGS stuff --shape sphere -L 20 -o x.vtu RUN_TIMEOUT 5
                 STDERR_REGEX "max level 20 needs about [0-9.e+]+ leaves, .* -L [0-9]+ would fit")
 # --memory-limit (S25) on both sides of the sphere's estimate at -L 3
-# (about 1.21e4 leaves, 0.0267 GB): 0.026 refuses naming the level that fits
-# (a quarter, 0.0067 GB: -L 2), 0.028 meshes; 0 is refused.
-bccmis_cli_test(stuff_memory_limit_below 2 ARGS stuff --shape sphere -L 3 --memory-limit 0.026 -o x.vtu
-                STDERR_REGEX "max level 3 needs about 1\\.21e\\+04 leaves, 0\\.0267 GB .* more than the 0\\.026 GB of memory available; -L 2 would fit")
-bccmis_cli_test(stuff_memory_limit_above 0 ARGS stuff --shape sphere -L 3 --memory-limit 0.028 -q -o x.vtu)
+# (about 1.21e4 leaves, 0.023 GB at 1,900 bytes each): 0.0225 refuses naming
+# the level that fits (a quarter, 0.0058 GB: -L 2), 0.0235 meshes; 0 is refused.
+bccmis_cli_test(stuff_memory_limit_below 2 ARGS stuff --shape sphere -L 3 --memory-limit 0.0225 -o x.vtu
+                STDERR_REGEX "max level 3 needs about 1\\.21e\\+04 leaves, 0\\.023 GB by S25.s estimate \\(1900 bytes per estimated leaf\\), more than the 0\\.0225 GB of memory available; -L 2 would fit")
+bccmis_cli_test(stuff_memory_limit_above 0 ARGS stuff --shape sphere -L 3 --memory-limit 0.0235 -q -o x.vtu)
 bccmis_cli_test(stuff_memory_limit_zero 2 ARGS stuff --shape sphere -L 3 --memory-limit 0 -o x.vtu
                 STDERR_REGEX "--memory-limit: '0' is not a positive finite number")
 # S26: nothing left of the shape at this level.
