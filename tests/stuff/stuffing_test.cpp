@@ -280,7 +280,7 @@ TEST(StuffAnimate, LocalStepsReachTheLatticeBuiltFromScratch) {
   const Fit fit = fit_lattice(swept_bounds(*ball, path), o);
   MovingLattice moving(ball, fit, o);
   const std::size_t initial_leaves = fit.size.W * fit.size.H * fit.size.D;
-  for (int frame = 1; frame <= 4; ++frame) {
+  for (int frame = 1; frame <= 2; ++frame) {  // a wrong bound shows from the second
     SCOPED_TRACE(frame);
     const Vec3 offset{path[0] * frame / 4, path[1] * frame / 4, path[2] * frame / 4};
     const FrameReport r = moving.step(offset);
@@ -411,13 +411,14 @@ TEST(StuffAnimate, ADistanceThatIsNotOneLipschitzIsAskedAgainEveryFrame) {
   o.cells = 4;
   const Fit fit = fit_lattice(swept_bounds(*ball, path), o);
   MovingLattice moving(ball, fit, o);
-  for (int frame = 1; frame <= 4; ++frame) {
+  for (int frame = 1; frame <= 2; ++frame) {  // a wrong bound shows from the second
     SCOPED_TRACE(frame);
     const Vec3 offset{path[0] * frame / 4, path[1] * frame / 4, path[2] * frame / 4};
     moving.step(offset);
     const auto moved = translated(ball, offset);
-    EXPECT_TRUE(moving.lattice().to_graph() == background(*moved, fit, o));
-    const Stuffed reference = stuff(*moved, fit, background(*moved, fit, o), o);
+    const d3::Graph lattice = background(*moved, fit, o);
+    EXPECT_TRUE(moving.lattice().to_graph() == lattice);
+    const Stuffed reference = stuff(*moved, fit, lattice, o);
     EXPECT_TRUE(tet_keys(moving.stuffed().mesh) == tet_keys(reference.mesh));
   }
 }
