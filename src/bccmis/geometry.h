@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <iterator>
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 #include "bccmis/graph.h"
@@ -98,13 +99,27 @@ requires std::same_as<point_type_t<L>, Point> std::vector<Point> boundary_in_ang
 template <AdaptiveLattice L, class F>
 void for_each_edge_neighbor(const L& g, const point_type_t<L>& c, const F& f) {
   const auto& B = neighbors(g, c);  // the set itself (reference) or a copy kept alive (fast)
-  for (auto bi = std::ranges::begin(B); bi != std::ranges::end(B); ++bi) {
-    const auto& Ni = neighbors(g, *bi);
-    for (auto bj = std::next(bi); bj != std::ranges::end(B); ++bj) {
-      const auto& Nj = neighbors(g, *bj);
-      for (const auto& x : Ni)
-        if (x != c && contains(Nj, x)) f(x);
+  using Set = decltype(neighbors(g, c));
+  if constexpr (std::is_reference_v<Set>) {
+    for (auto bi = std::ranges::begin(B); bi != std::ranges::end(B); ++bi) {
+      const auto& Ni = neighbors(g, *bi);
+      for (auto bj = std::next(bi); bj != std::ranges::end(B); ++bj) {
+        const auto& Nj = neighbors(g, *bj);
+        for (const auto& x : Ni)
+          if (x != c && contains(Nj, x)) f(x);
+      }
     }
+  } else {
+    // A lattice that builds a neighbour set on each request (the fast
+    // lattices): each boundary node's set built once, not once per pair
+    // (spec/stuffing.md S28c); the same pairs, the same calls of f in the
+    // same order.
+    std::vector<std::remove_cvref_t<Set>> N;
+    for (const auto& b : B) N.push_back(neighbors(g, b));
+    for (std::size_t i = 0; i < N.size(); ++i)
+      for (std::size_t j = i + 1; j < N.size(); ++j)
+        for (const auto& x : N[i])
+          if (x != c && contains(N[j], x)) f(x);
   }
 }
 

@@ -41,8 +41,9 @@ CLI::App* add_stuff(CLI::App& app, StuffOptions& o) {
   cmd->add_option("--impl", o.impl,
                   "The lattice: fast (d3::fast::Lattice, default) or reference (d3::Graph); the same mesh")
       ->check(CLI::IsMember({"fast", "reference"}));
-  cmd->add_option("--threads", o.threads,
-                  "Threads extracting the lattice's tetrahedra (default 0: every core); the same mesh on any number")
+  cmd->add_option(
+         "--threads", o.threads,
+         "Threads testing the lattice's leaves and stuffing it (default 0: every core); the same mesh on any number")
       ->check(integer_in(0, 256));
   cmd->add_flag("--stats", o.stats, "Print counts, volume and its error, dihedral angles and seconds per phase");
   cmd->add_flag("--json", o.json, "Statistics as JSON (implies --stats)");

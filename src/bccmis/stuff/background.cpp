@@ -1,6 +1,7 @@
 // The background lattice of isosurface stuffing (spec/stuffing.md S2, S3):
 // fit_lattice() places the lattice around the shape, background() and
-// background_fast() refine it near the surface.
+// background_fast() refine it near the surface (the latter with S3's tests
+// on threads, S28c).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -10,6 +11,7 @@
 #include "bccmis/balance.h"
 #include "bccmis/d3/lattice.h"
 #include "bccmis/d3/point.h"
+#include "bccmis/stuff/detail/parallel_ranges.h"
 #include "bccmis/stuff/stuff.h"
 
 namespace bccmis::stuff {
@@ -73,16 +75,15 @@ bool s3_refines(const Shape& shape, const Fit& fit, const StuffOptions& options,
 
 namespace {
 
-/// S3 on either lattice: the same passes, the same refines in the same order
-/// (every pass visits the leaves of its start in sorted order), so the same
-/// leaf set on d3::Graph and d3::fast::Lattice.
-template <class G>
-void refine_near(const Shape& shape, const Fit& fit, const StuffOptions& options, G& g) {
+/// S3 on the reference lattice, the oracle: the passes as S3 states them
+/// (every pass visits the leaves of its start in sorted order, testing each
+/// that is still a leaf at its turn).
+void refine_near(const Shape& shape, const Fit& fit, const StuffOptions& options, d3::Graph& g) {
   std::vector<d3::Point> snapshot;
   for (bool changed = true; changed;) {
     changed = false;
     {
-      const auto& cs = cells(g);  // sorted on both lattices
+      const auto& cs = cells(g);  // sorted
       snapshot.assign(cs.begin(), cs.end());
     }
     for (const d3::Point& c : snapshot) {
@@ -91,6 +92,32 @@ void refine_near(const Shape& shape, const Fit& fit, const StuffOptions& options
         d3::refine_balanced(g, c);
         changed = true;
       }
+    }
+  }
+}
+
+/// S3 on the fast lattice, S28c: each pass's tests computed first, over
+/// ranges of the leaves on `options.threads` threads (the lattice only read),
+/// then the refinements applied in order on this thread. A leaf still a leaf
+/// at its turn is the cell, of the level, it was tested at, so the
+/// refinements are the serial pass's, in its order: the same lattice, record
+/// for record, as the pass above would build.
+void refine_near(const Shape& shape, const Fit& fit, const StuffOptions& options, d3::fast::Lattice& g) {
+  constexpr std::size_t kLeastPerThread = 256;  // S28c, as S28a
+  std::vector<d3::Point> snapshot;
+  std::vector<unsigned char> refines;
+  for (bool changed = true; changed;) {
+    changed = false;
+    snapshot = g.cells();  // sorted
+    refines.assign(snapshot.size(), 0);
+    detail::for_each_range(snapshot.size(), options.threads, kLeastPerThread, [&](std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i)
+        refines[i] = s3_refines(shape, fit, options, snapshot[i], g.level_of(snapshot[i])) ? 1 : 0;
+    });
+    for (std::size_t i = 0; i < snapshot.size(); ++i) {
+      // Not a leaf any more: refined by the cascade earlier in this pass.
+      // A flagged leaf is below level L (S3), so the refinement is applied.
+      if (refines[i] && g.is_center(snapshot[i]) && !d3::refine_balanced(g, snapshot[i]).refused) changed = true;
     }
   }
 }
@@ -105,7 +132,7 @@ d3::Graph background(const Shape& shape, const Fit& fit, const StuffOptions& opt
 
 d3::fast::Lattice background_fast(const Shape& shape, const Fit& fit, const StuffOptions& options) {
   d3::fast::Lattice g(fit.size);
-  refine_near(shape, fit, options, g);
+  refine_near(shape, fit, options, g);  // S28c
   return g;
 }
 

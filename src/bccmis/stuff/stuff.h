@@ -27,7 +27,7 @@ struct StuffOptions {
   std::optional<double> size;   ///< the finest edge length asked for (--size): chooses L
   double alpha_long = 0.24999;  ///< S6
   double alpha_short = 0.41189;
-  int threads = 0;  ///< S28: the threads extracting the lattice's tetrahedra (--threads); 0: every core
+  int threads = 0;  ///< S28-S28c: the threads of S3's tests and the stuffing (--threads); 0: every core
 };
 
 /// Where the lattice sits in space (S2): lattice point p is origin + scale p.
