@@ -61,17 +61,20 @@ if(TARGET bccmis::stuff_surface)  # a CGAL sample mesh (tests/stuff/stuff.cmake 
                   ${_bccmis_mpi_props})
 endif()
 # D12: the features (CGAL's fandisk: creases and corners, S29-S35) and
-# --check on the gathered mesh, against bccmis stuff's bytes.
+# --check on the gathered mesh, against bccmis stuff's bytes: on 2 ranks
+# --gather, on 3 --gather --check.
 if(TARGET bccmis::stuff_surface)
-  foreach(ranks 2 3)
-    bccmis_add_test(mpi.stuff_features_fandisk_${ranks}_ranks
-                    COMMAND ${_bccmis_mpi_test} whole ${_bccmis_mpi_tools} ${ranks} --
-                            ${bccmis_cgal_data}/data/meshes/fandisk.off -L 2
-                    ${_bccmis_mpi_props})
-  endforeach()
+  bccmis_add_test(mpi.stuff_features_fandisk_2_ranks
+                  COMMAND ${_bccmis_mpi_test} whole ${_bccmis_mpi_tools} 2 --
+                          ${bccmis_cgal_data}/data/meshes/fandisk.off -L 2
+                  ${_bccmis_mpi_props})
+  bccmis_add_test(mpi.stuff_features_check_fandisk_3_ranks
+                  COMMAND ${_bccmis_mpi_test} whole-check ${_bccmis_mpi_tools} 3 --
+                          ${bccmis_cgal_data}/data/meshes/fandisk.off -L 2
+                  ${_bccmis_mpi_props})
 endif()
 bccmis_add_test(mpi.stuff_check_torus_2_ranks
-                COMMAND ${_bccmis_mpi_test} whole ${_bccmis_mpi_tools} 2 -- --shape torus -L 2 --cells 6
+                COMMAND ${_bccmis_mpi_test} whole-check ${_bccmis_mpi_tools} 2 -- --shape torus -L 2 --cells 6
                 ${_bccmis_mpi_props})
 # D11: --stats and --json on 2 and 3 ranks against bccmis stuff's.
 foreach(ranks 2 3)
