@@ -2,8 +2,9 @@
 # (spec/distributed.md), label mpi. In one process, the pieces of any split
 # of the leaves gathered are stuff()'s mesh; under mpirun on 1-4 ranks
 # (oversubscribed on small machines), bccmis-mpi stuff against bccmis stuff
-# (tests/distributed/mpi_stuff_test.py): --gather byte for byte, the .pvtu's
-# pieces by vertex positions and conformity, and the failures.
+# (tests/distributed/mpi_stuff_test.py): --gather byte for byte (with the
+# features and --check, D12), the .pvtu's pieces by vertex positions and
+# conformity, and the failures.
 bccmis_add_gtest(distributed_tests SOURCES stuff_leaves_test.cpp LIBS bccmis::distributed bccmis::stuff PREFIX distributed. NO_PRETTY_VALUES
                  LABELS unit mpi)
 # D10: a rank's lattice from the leaves it knows, against the whole lattice.
@@ -14,6 +15,13 @@ if(TARGET bccmis::stuff_surface)
 else()
   bccmis_add_gtest(distributed_local_lattice_tests SOURCES local_lattice_test.cpp
                    LIBS bccmis::distributed bccmis::stuff PREFIX distributed. NO_PRETTY_VALUES LABELS unit mpi)
+endif()
+
+# D12: the features and --check on the gathered mesh (a CGAL sample mesh with creases).
+if(TARGET bccmis::stuff_surface)
+  bccmis_add_gtest(distributed_finish_gathered_tests SOURCES finish_gathered_test.cpp
+                   LIBS bccmis::distributed bccmis::stuff bccmis::stuff_surface PREFIX distributed. NO_PRETTY_VALUES
+                   DEFINITIONS BCCMIS_CGAL_MESHES_DIR="${bccmis_cgal_data}/data/meshes" LABELS unit mpi)
 endif()
 
 if(NOT TARGET bccmis_mpi OR NOT BCCMIS_MPIRUN)
@@ -52,6 +60,22 @@ if(TARGET bccmis::stuff_surface)  # a CGAL sample mesh (tests/stuff/stuff.cmake 
                           ${bccmis_cgal_data}/data/meshes/double-torus-example.off -L 2 --cells 6
                   ${_bccmis_mpi_props})
 endif()
+# D12: the features (CGAL's fandisk: creases and corners, S29-S35) and
+# --check on the gathered mesh, against bccmis stuff's bytes: on 2 ranks
+# --gather, on 3 --gather --check.
+if(TARGET bccmis::stuff_surface)
+  bccmis_add_test(mpi.stuff_features_fandisk_2_ranks
+                  COMMAND ${_bccmis_mpi_test} whole ${_bccmis_mpi_tools} 2 --
+                          ${bccmis_cgal_data}/data/meshes/fandisk.off -L 2
+                  ${_bccmis_mpi_props})
+  bccmis_add_test(mpi.stuff_features_check_fandisk_3_ranks
+                  COMMAND ${_bccmis_mpi_test} whole-check ${_bccmis_mpi_tools} 3 --
+                          ${bccmis_cgal_data}/data/meshes/fandisk.off -L 2
+                  ${_bccmis_mpi_props})
+endif()
+bccmis_add_test(mpi.stuff_check_torus_2_ranks
+                COMMAND ${_bccmis_mpi_test} whole-check ${_bccmis_mpi_tools} 2 -- --shape torus -L 2 --cells 6
+                ${_bccmis_mpi_props})
 # D11: --stats and --json on 2 and 3 ranks against bccmis stuff's.
 foreach(ranks 2 3)
   bccmis_add_test(mpi.stuff_stats_torus_${ranks}_ranks

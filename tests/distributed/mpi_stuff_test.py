@@ -2,8 +2,13 @@
 """bccmis-mpi stuff against bccmis stuff (spec/distributed.md).
 
   mpi_stuff_test.py gather|gather-every-format MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
-      --gather's binary .vtu (every format: also ASCII .vtu and .msh) equals
+      --gather --no-features's binary .vtu (every format: also ASCII .vtu and .msh) equals
       bccmis stuff --no-features's byte for byte (D1, D5).
+  mpi_stuff_test.py whole|whole-check MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
+      --gather (whole-check: --gather --check) writes bccmis stuff's file byte for byte with
+      the features on as there (a triangle-mesh INPUT's by default, D12);
+      --check without --gather (and, for an INPUT, the features) exit 2
+      naming D12 and leave no .pvtu.
   mpi_stuff_test.py pvtu MPIRUN BCCMIS BCCMIS_MPI RANKS[:PIECES] -- STUFF_ARGS...
       the .pvtu lists the pieces written (one a rank with tetrahedra); they, read by meshio, hold the serial
       mesh's tetrahedra (by vertex positions, bit for bit, with their levels)
@@ -59,7 +64,7 @@ def gather(mpirun, bccmis, bccmis_mpi, ranks, args, work, every_format):
     for ext, extra in formats:
         serial, together = os.path.join(work, "serial" + ext), os.path.join(work, "gathered" + ext)
         run([bccmis, "stuff", *args, *extra, "--no-features", "-q", "-o", serial])
-        run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, *extra, "-q", "--gather", "-o", together])
+        run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, *extra, "--no-features", "-q", "--gather", "-o", together])
         a, b = open(serial, "rb").read(), open(together, "rb").read()
         if a != b:
             sys.exit(f"FAIL: {ranks} ranks, {ext} {extra}: the gathered file differs from bccmis stuff's "
@@ -70,7 +75,7 @@ def gather(mpirun, bccmis, bccmis_mpi, ranks, args, work, every_format):
 def pvtu(mpirun, bccmis, bccmis_mpi, ranks, pieces, args, work):
     serial_path, index = os.path.join(work, "serial.vtu"), os.path.join(work, "out.pvtu")
     run([bccmis, "stuff", *args, "--no-features", "-q", "-o", serial_path])
-    run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, "-q", "-o", index])
+    run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, "--no-features", "-q", "-o", index])
     # A rank whose leaves make no tetrahedron writes no piece (D1).
     sources = [p.get("Source") for p in ET.parse(index).getroot().iter("Piece")]
     written = sorted(f for f in os.listdir(work) if f.startswith("out_"))
@@ -138,7 +143,7 @@ def close(a, b):
 def stats(mpirun, bccmis, bccmis_mpi, ranks, args, work):
     serial_text = run([bccmis, "stuff", *args, "--no-features", "--stats", "-q"]).stdout
     serial_json = json.loads(run([bccmis, "stuff", *args, "--no-features", "--stats", "--json", "-q"]).stdout)
-    mpi_run = mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, "-q"]
+    mpi_run = mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, "--no-features", "-q"]
     index = os.path.join(work, "out.pvtu")
     for extra in ([], ["-o", index]):
         # Text: `name value` lines, in order.
@@ -181,9 +186,29 @@ def stats(mpirun, bccmis, bccmis_mpi, ranks, args, work):
           f"{serial_json['boundary_triangles']} boundary triangles)")
 
 
+def whole(mpirun, bccmis, bccmis_mpi, ranks, args, work, check):
+    serial, together = os.path.join(work, "serial.vtu"), os.path.join(work, "gathered.vtu")
+    run([bccmis, "stuff", *args, "-q", "-o", serial])
+    a = open(serial, "rb").read()
+    for extra in (["--check"] if check else [],):
+        run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, *extra, "-q", "--gather", "-o", together])
+        b = open(together, "rb").read()
+        if a != b:
+            sys.exit(f"FAIL: {ranks} ranks {extra}: the gathered file differs from bccmis stuff's "
+                     f"({len(a)} and {len(b)} bytes)")
+    index = os.path.join(work, "out.pvtu")
+    refusals = [["--check", "--no-features"]] + ([[]] if not args[0].startswith("-") else [])
+    for extra in refusals:
+        r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, *extra, "-q", "-o", index], expect=2)
+        if "spec/distributed.md D12" not in r.stderr or os.path.exists(index):
+            sys.exit(f"FAIL: {extra} without --gather: no D12 refusal, or a .pvtu left:\n{r.stderr}")
+    print(f"ok: {ranks} ranks: --gather{' --check' if check else ''} writes bccmis stuff's bytes ({len(a)}); "
+          f"{len(refusals)} refusal(s) without --gather")
+
+
 def errors(mpirun, bccmis, bccmis_mpi, ranks, work):
     def refused(args, index, says):
-        r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, "-o", index], expect=2)
+        r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, "--no-features", "-o", index], expect=2)
         if says not in r.stderr:
             sys.exit(f"FAIL: {args}: stderr does not say '{says}':\n{r.stderr}")
         if os.path.exists(index):
@@ -219,6 +244,8 @@ def main():
     with tempfile.TemporaryDirectory() as work:
         if mode in ("gather", "gather-every-format"):
             gather(mpirun, bccmis, bccmis_mpi, int(ranks), args, work, mode == "gather-every-format")
+        elif mode in ("whole", "whole-check"):
+            whole(mpirun, bccmis, bccmis_mpi, int(ranks), args, work, mode == "whole-check")
         elif mode == "stats":
             stats(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
         elif mode == "pvtu":

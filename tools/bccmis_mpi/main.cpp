@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   CLI::App* cmd = add_stuff(app, o);
   cmd->add_flag("--gather", gather,
                 "Gather the mesh on rank 0 and write one file (.vtu, .msh, .mesh), the bytes bccmis stuff writes; "
+                "a triangle mesh's features and --check run there and need it; "
                 "without it, -o names a .pvtu and every rank writes its .vtu piece beside it");
   cmd->footer("Example:\n  mpirun -n 2 bccmis-mpi stuff --shape torus -L 4 -o torus.pvtu");
   try {

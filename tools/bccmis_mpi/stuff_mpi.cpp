@@ -1,7 +1,8 @@
 // bccmis-mpi stuff: the stages of one run on every rank and the agreement
 // after each (spec/distributed.md D6); the library does the work
 // (bccmis/distributed/): the fit, the partitioned forest and each rank's
-// lattice (D2, D10), the pieces (D3, D4) and their gathering (D5).
+// lattice (D2, D10), the pieces (D3, D4), their gathering (D5) and the
+// features and --check on the gathered mesh (D12).
 #include "stuff_mpi.h"
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "bccmis/distributed/gathered.h"
 #include "bccmis/distributed/leaf_piece.h"
 #include "bccmis/distributed/ranks.h"
 #include "bccmis/distributed/replicated.h"
@@ -53,6 +55,8 @@ void stage(MPI_Comm comm, Body&& body) {
       return kExitOk;  // the failing rank reports, and the agreement gives its code
     } catch (const stuff::ShapeError& e) {
       throw InputError(e.what());
+    } catch (const stuff::CheckError& e) {
+      throw CheckFailure(e.what());
     }
     return kExitOk;
   });
@@ -60,18 +64,32 @@ void stage(MPI_Comm comm, Body&& body) {
   if (!a.ok()) throw Stop{a.code};
 }
 
-/// D1: the options this slice does not split yet, and the one output (or
-/// none, with --stats).
+/// The features are on as in bccmis stuff (spec/cli.md: by default for a
+/// triangle-mesh INPUT, S29-S35).
+bool features_on(const StuffOptions& o) {
+  return (o.features || o.feature_angle >= 0 || !o.input.empty()) && !o.no_features;
+}
+
+/// D1: the options this slice does not split yet, the ones that need the
+/// gathered mesh (D12), and the one output (or none, with --stats).
 void check_options(const StuffOptions& o, bool gather) {
   const auto refuse = [](const std::string& what) {
     throw InputError(what + " is not supported on several ranks yet (spec/distributed.md D1)");
   };
   if (o.hausdorff) refuse("--hausdorff");
-  if (o.check) refuse("--check");
   if (o.animate > 0 || !o.path.empty() || o.compare) refuse("--animate");
   if (o.impl != "fast") refuse("--impl " + o.impl);
   if (o.memory_limit_gb > 0) refuse("--memory-limit");
-  if (o.features || o.feature_angle >= 0) refuse("--features (also --feature-angle)");
+  const bool features = features_on(o);
+  if ((features || o.check) && !gather)
+    throw InputError(
+        std::string(features ? "the features of a triangle-mesh INPUT (on by default, S29-S35)" : "--check") +
+        " run on the mesh gathered on rank 0: add --gather" + (features ? ", or --no-features" : "") +
+        " (spec/distributed.md D12)");
+  if (features && o.stats)
+    throw InputError(
+        "--stats with the features is not supported on several ranks yet: add --no-features "
+        "(spec/distributed.md D12)");
   if (o.outputs.empty() && o.stats) return;  // D11: the statistics alone
   if (o.outputs.size() != 1)
     throw InputError("give one output: -o FILE.pvtu (a piece per rank), or --gather -o FILE (.vtu, .msh, .mesh)");
@@ -103,7 +121,10 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
   distributed::LeafPiece piece;
   const std::string& out = o.outputs.empty() ? std::string() : o.outputs[0];
   const bool write = !o.outputs.empty();  // else --stats alone (D11)
-  stuff::PhaseSeconds seconds;            // D11: rank 0's wall seconds of the stages
+  // D12: the features and --check run on the whole mesh, gathered in local
+  // coordinates (check_options: only with --gather).
+  const bool whole = features_on(o) || o.check;
+  stuff::PhaseSeconds seconds;  // D11: rank 0's wall seconds of the stages
   auto t = stuff::Clock::now();
   const auto phase = [&](const char* name) {
     seconds.emplace_back(name, stuff::seconds_since(t));
@@ -134,7 +155,8 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
     });
     phase("forest");
     stuff::StuffQuality quality;  // D11: the piece's, in local coordinates
-    stage(comm, [&] { piece = distributed::stuff_own_piece(*lattice, *forest, comm, o.stats ? &quality : nullptr); });
+    stage(comm,
+          [&] { piece = distributed::stuff_own_piece(*lattice, *forest, comm, o.stats ? &quality : nullptr, !whole); });
     phase("pieces");
     const std::int64_t leaves = forest->global_leaves();
     forest.reset();
@@ -168,10 +190,10 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
     d3::TetMeshF mesh;  // --gather: the whole mesh on rank 0, until it is written
     io::Regions regions;
     stage(comm, [&] {
-      if (write && gather) bytes = distributed::gather_bytes(distributed::to_bytes(piece), 0, comm);
+      if ((write && gather) || whole) bytes = distributed::gather_bytes(distributed::to_bytes(piece), 0, comm);
     });
     stage(comm, [&] {
-      if (!write) return;
+      if (!write && !whole) return;
       if (!gather) {
         if (mine > 0)
           pieces.add(piece_path(out, rank),
@@ -186,9 +208,19 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
         std::vector<distributed::LeafPiece> all;
         for (const auto& b : bytes) all.push_back(distributed::from_bytes(b));
         mesh = distributed::gather_pieces(all);
+        all = {};
+        bytes = {};  // the whole mesh alone on rank 0 from here (D12's memory)
+        // D12: the feature step and --check, then S24's map (the pieces stayed local).
+        if (whole) {
+          stuff::FeatureSettings features;
+          features.on = features_on(o);
+          if (o.feature_angle >= 0) features.angle = o.feature_angle;
+          regions = distributed::finish_gathered(*shape, *lattice, mesh, features, o.check);
+        } else {
+          regions = io::regions_of(mesh.tets);
+        }
         vertices = mesh.vertices.size();
-        regions = io::regions_of(mesh.tets);
-        add_tetrahedra_output(index, out, mesh, regions, encoding(o));
+        if (write) add_tetrahedra_output(index, out, mesh, regions, encoding(o));
       }
     });
     // (4) the pieces renamed into place on every rank, then the index.

@@ -89,8 +89,10 @@ void rethrow_on_every_rank(const std::exception_ptr& failed, const std::string& 
 /// leaves the loop in the same round. An exception on one rank ends the
 /// loop on every rank (rethrow_on_every_rank). `r` as fitted() made it;
 /// r.lattice is released. Collective over `comm`. With `quality`, the
-/// piece's S13 quality in local coordinates (stuff_piece, D11).
-LeafPiece stuff_own_piece(Replicated& r, Forest& forest, MPI_Comm comm, stuff::StuffQuality* quality = nullptr);
+/// piece's S13 quality in local coordinates (stuff_piece, D11). With
+/// `world` false, the piece in S24's local coordinates (D12).
+LeafPiece stuff_own_piece(Replicated& r, Forest& forest, MPI_Comm comm, stuff::StuffQuality* quality = nullptr,
+                          bool world = true);
 
 /// D6: what the ranks agree on after a stage: the lowest rank whose `code`
 /// is not 0 and its code, or {-1, 0} when every rank succeeded.

@@ -41,11 +41,12 @@ Replicated replicate(const stuff::Shape& world, const stuff::StuffOptions& optio
 
 namespace {
 
-LeafPiece merged_in_world(const Replicated& r, std::vector<LeafPiece> blocks, stuff::StuffQuality* quality = nullptr) {
+LeafPiece merged_in_world(const Replicated& r, std::vector<LeafPiece> blocks, stuff::StuffQuality* quality = nullptr,
+                          bool world = true) {
   LeafPiece piece = blocks.size() == 1 ? std::move(blocks[0]) : merge_pieces(blocks);
   blocks = {};
   if (quality) *quality = stuff::quality(piece.mesh, 0);  // D11: S24's local coordinates, as the serial run
-  stuff::to_world(piece.mesh, r.normalisation, std::ldexp(r.fit.h, r.normalisation.exponent));
+  if (world) stuff::to_world(piece.mesh, r.normalisation, std::ldexp(r.fit.h, r.normalisation.exponent));
   return piece;
 }
 
@@ -58,7 +59,7 @@ LeafPiece stuff_piece(Replicated& r, std::span<const d3::Point> own) {
 }
 
 std::optional<LeafPiece> stuff_piece(Replicated& r, std::span<const d3::Point> own, std::span<const d3::Point> known,
-                                     stuff::StuffQuality* quality) {
+                                     stuff::StuffQuality* quality, bool world) {
   std::vector<LeafPiece> blocks;
   try {
     blocks = stuff_blocks(*r.shape, r.fit, *r.lattice, r.options, own, kLeavesPerBlock, known);
@@ -67,7 +68,7 @@ std::optional<LeafPiece> stuff_piece(Replicated& r, std::span<const d3::Point> o
     return std::nullopt;
   }
   r.lattice.reset();
-  return merged_in_world(r, std::move(blocks), quality);
+  return merged_in_world(r, std::move(blocks), quality, world);
 }
 
 }  // namespace bccmis::distributed

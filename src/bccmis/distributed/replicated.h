@@ -44,8 +44,10 @@ LeafPiece stuff_piece(Replicated& r, std::span<const d3::Point> own);
 /// nothing (the lattice released) when a block's leaves are not closed in
 /// `known` (stuff_blocks' NotClosed): the rank needs a wider ghost layer.
 /// With `quality`: S13's quality of the piece's tetrahedra (no boundary
-/// count) in S24's local coordinates, before the world map (D11).
+/// count) in S24's local coordinates, before the world map (D11). With
+/// `world` false the piece stays in local coordinates (D12: mapped once
+/// gathered, after the feature step).
 std::optional<LeafPiece> stuff_piece(Replicated& r, std::span<const d3::Point> own, std::span<const d3::Point> known,
-                                     stuff::StuffQuality* quality = nullptr);
+                                     stuff::StuffQuality* quality = nullptr, bool world = true);
 
 }  // namespace bccmis::distributed

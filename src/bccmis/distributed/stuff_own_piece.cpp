@@ -12,7 +12,7 @@
 
 namespace bccmis::distributed {
 
-LeafPiece stuff_own_piece(Replicated& r, Forest& forest, MPI_Comm comm, stuff::StuffQuality* quality) {
+LeafPiece stuff_own_piece(Replicated& r, Forest& forest, MPI_Comm comm, stuff::StuffQuality* quality, bool world) {
   const std::vector<d3::Point> own = forest.own();
   std::optional<LeafPiece> piece;
   for (;;) {
@@ -20,7 +20,7 @@ LeafPiece stuff_own_piece(Replicated& r, Forest& forest, MPI_Comm comm, stuff::S
     if (!piece) try {
         const std::vector<d3::Point> known = forest.known();
         r.lattice.emplace(local_lattice(r.fit.size, known));
-        piece = stuff_piece(r, own, known, quality);
+        piece = stuff_piece(r, own, known, quality, world);
         if (!piece && static_cast<std::int64_t>(known.size()) == forest.global_leaves())
           throw std::logic_error("every leaf is known and the stuffed leaves are still open (spec/distributed.md D10)");
       } catch (...) {
