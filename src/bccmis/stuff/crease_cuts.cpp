@@ -90,6 +90,14 @@ Stuffed stuff_on_creases(const Shape& shape, const Fit& fit, const StuffOptions&
   const double reach = delta * fit.h;
   const SegmentGrid grid(features, fit.h, reach);
   std::set<Edge> excluded;
+  // Every round's phases, added up.
+  PhaseTimes round_times;
+  const auto add = [times](const PhaseTimes& t) {
+    if (!times) return;
+    times->lattice += t.lattice, times->mesh += t.mesh, times->cut += t.cut, times->warp += t.warp;
+    times->stencils += t.stencils;
+  };
+  if (times) *times = {};
   constexpr std::size_t kRounds = 8;
   for (std::size_t round = 0;; ++round) {
     out.rounds = round + 1;
@@ -108,7 +116,8 @@ Stuffed stuff_on_creases(const Shape& shape, const Fit& fit, const StuffOptions&
       placed[c.point] = {{p, q}, {p[0] + t * pq[0], p[1] + t * pq[1], p[2] + t * pq[2]}};
       return c.point;
     };
-    Stuffed s = stuff_fitted(shape, fit, o, Impl::fast, times, round == 0 ? on_lattice : nullptr);
+    Stuffed s = stuff_fitted(shape, fit, o, Impl::fast, &round_times, round == 0 ? on_lattice : nullptr);
+    add(round_times);
     // S35.7's guard: every tetrahedron in S10's interval, and positively
     // oriented at the reference places of its placed vertices.
     const d3::TetMeshF& m = s.mesh;
@@ -142,7 +151,9 @@ Stuffed stuff_on_creases(const Shape& shape, const Fit& fit, const StuffOptions&
   // The guard gave up: S5-S9's mesh.
   out.none = true;
   out.excluded = excluded.size();
-  return stuff_fitted(shape, fit, options, Impl::fast, times);
+  Stuffed s = stuff_fitted(shape, fit, options, Impl::fast, &round_times);
+  add(round_times);
+  return s;
 }
 
 }  // namespace bccmis::stuff

@@ -28,7 +28,8 @@ struct CreaseCuts {
 
 /// S35.7: stuff_fitted (fast) with every cut point within `delta` h of a
 /// curve of `features` placed on it, the rounds S35.7's guard asks for.
-/// Without curves, or with `delta` <= 0: stuff_fitted exactly.
+/// Without curves, or with `delta` <= 0: stuff_fitted exactly. `times`
+/// receives every round's phases, added up.
 Stuffed stuff_on_creases(const Shape& shape, const Fit& fit, const StuffOptions& options, const Features& features,
                          double delta, CreaseCuts* report = nullptr, PhaseTimes* times = nullptr,
                          const std::function<void(std::size_t leaves, double seconds)>& on_lattice = {});
