@@ -11,6 +11,8 @@
 #   bench/stuff_features.sh BCCMIS LEVELS INPUT.off ...
 #
 #   BCCMIS   the bccmis binary; LEVELS e.g. "4 5"
+#   FEATURE_FLAGS (environment, optional) more options for the run with
+#            features, e.g. "--crease-cuts 0.25" (S35.7)
 set -euo pipefail
 bccmis=$1
 levels=$2
@@ -19,7 +21,7 @@ echo "| input | L | features | time s | tets | min dih | max dih | % < 10 | volu
 echo "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 for input in "$@"; do
   for level in $levels; do
-    on=$("$bccmis" stuff "$input" -L "$level" --json --hausdorff -q)
+    on=$("$bccmis" stuff "$input" -L "$level" --json --hausdorff -q ${FEATURE_FLAGS:-})
     off=$("$bccmis" stuff "$input" -L "$level" --json --hausdorff -q --no-features)
     python3 - "$input" "$level" "$on" "$off" <<'PY'
 import json, sys

@@ -8,7 +8,7 @@ if(TARGET bccmis::stuff_surface)
   set(BCCMIS_CGAL_DATA_TAR /usr/share/doc/libcgal-dev/data.tar.gz CACHE FILEPATH
       "data.tar.gz of libcgal-demo, CGAL's sample meshes")
   set(bccmis_cgal_meshes elephant.off double-torus-example.off icosahedron.off corner_poly.off prim.off 3torus.off
-                         fandisk.off anchor.off turbine.off # sharp features (features_test.cpp)
+                         fandisk.off anchor.off turbine.off joint.off # sharp features (features_test.cpp, crease_cuts_test.cpp)
                          # flawed files for cli.stuff_wild_files (below)
                          bones.off blob.off mpi.off cube4-shuffled.off colored_tetra.ply)
   set(bccmis_cgal_data ${CMAKE_CURRENT_BINARY_DIR}/cgal_data)
@@ -64,6 +64,15 @@ endif()
 if(TARGET bccmis::stuff_surface)
   bccmis_add_gtest(stuff_features_tests SOURCES features_test.cpp
                    LIBS bccmis::stuffing bccmis::stuff_surface bccmis::invariants_d3
+                   DEFINITIONS BCCMIS_CGAL_MESHES_DIR="${bccmis_cgal_data}/data/meshes"
+                   LABELS unit)
+endif()
+
+# S35.7: cut points placed on the creases before warping, on CGAL's joint
+# and fandisk at level 3, with S10's bound and the feature checker.
+if(TARGET bccmis::stuff_surface)
+  bccmis_add_gtest(stuff_crease_cuts_tests SOURCES crease_cuts_test.cpp
+                   LIBS bccmis::stuffing bccmis::stuff_surface
                    DEFINITIONS BCCMIS_CGAL_MESHES_DIR="${bccmis_cgal_data}/data/meshes"
                    LABELS unit)
 endif()

@@ -150,6 +150,7 @@ struct StuffOptions {
   bool features = false;      ///< keep the sharp features (spec/stuffing.md S29-S33)
   double feature_angle = -1;  ///< >= 0: S29's feature angle (and features on)
   bool no_features = false;   ///< the mesh of S5-S9 exactly
+  double crease_cuts = 0;     ///< S35.7's delta, of the finest side; 0: none
   bool binary = false;        ///< .vtu (also the --animate frames) and .msh with binary numbers (spec/cli.md)
   bool compress = false;      ///< binary, and .vtu zlib-compressed (spec/cli.md)
   std::string surface_vertices = "used";  ///< .off/.obj: "used" (compact) or "all" (the volume mesh's numbering)

@@ -64,10 +64,16 @@ CLI::App* add_stuff(CLI::App& app, StuffOptions& o) {
       cmd->add_option("--feature-angle", o.feature_angle,
                       "The feature angle in degrees, 0 to 180 (default 60, CGAL's); implies --features")
           ->check(CLI::Range(0.0, 180.0));
+  auto* crease_cuts =
+      cmd->add_option("--crease-cuts", o.crease_cuts,
+                      "Place the cut points within this fraction of the finest side of a feature curve on it before "
+                      "warping (spec/stuffing.md S35.7; default 0: none); implies --features")
+          ->check(CLI::Range(0.0, 1.0));
   cmd->add_flag("--no-features", o.no_features,
                 "Mesh INPUT without features: the mesh of S5-S9 exactly, creases cut by the lattice's chords")
       ->excludes(features)
-      ->excludes(feature_angle);
+      ->excludes(feature_angle)
+      ->excludes(crease_cuts);
   cmd->add_flag("--binary", o.binary,
                 "Write .vtu (base64; also the --animate frames) and .msh (4.1 binary) with binary numbers; ASCII "
                 "otherwise");

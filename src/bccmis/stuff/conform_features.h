@@ -61,6 +61,8 @@ struct FeatureReport {
   double distance = -1;                       ///< with the statistics, in world units; -1 when not computed
   std::size_t splits = 0, splits_undone = 0;  ///< S35's splits kept, and undone (S35.4)
   std::size_t moves_undone = 0;               ///< moves undone with them (S35.4)
+  std::size_t placed = 0;                     ///< S35.7: vertices placed on the curves before warping
+  std::size_t placed_kept = 0;                ///< S35.7: cut edges its guard kept at S5's point
 };
 
 }  // namespace bccmis::stuff

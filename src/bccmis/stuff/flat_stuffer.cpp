@@ -195,6 +195,7 @@ class Stuffer {
     Vec3 pos(VKey k) const { return s_.pos(k); }
     std::uint32_t store(VKey k) const { return s_.store(k); }
     Vec3 stored_pos(std::uint32_t x) const { return s_.stored_pos(x); }
+    bool flat_allowed() const { return static_cast<bool>(s_.options_.place_cut); }
 
     /// The level of leaf `leaf` (a lattice tetrahedron's vertex 0,
     /// spec/mesh3d.md), asked of the lattice once per run of tetrahedra of
@@ -356,6 +357,19 @@ class Stuffer {
         for (std::size_t d = 0; d < 3; ++d) cuts_[c].pos[d] = px[d] + s * (py[d] - px[d]);
       }
     });
+    // S35.7: a cut point placed elsewhere (on a crease), its fraction the
+    // parameter of its projection onto the edge, which S6 reads.
+    if (options_.place_cut)
+      for (std::size_t c = 0; c < cuts_.size(); ++c) {
+        const Vec3 &px = pos_[edges_[c].first], &py = pos_[edges_[c].second];
+        const Vec3 x = options_.place_cut(px, py, cuts_[c].pos);
+        if (x == cuts_[c].pos) continue;
+        double num = 0, den = 0;
+        for (std::size_t d = 0; d < 3; ++d)
+          num += (x[d] - px[d]) * (py[d] - px[d]), den += (py[d] - px[d]) * (py[d] - px[d]);
+        cuts_[c].t = std::clamp(num / den, 0.0, 1.0);
+        cuts_[c].pos = x;
+      }
   }
 
   /// S5: the cut edges (smaller end first) of lattice tetrahedra [b, e) into

@@ -7,6 +7,7 @@
 #include "bccmis/invariants/d3/feature_conformity.h"
 #include "bccmis/invariants/d3/stuffed_mesh.h"
 #include "bccmis/json_writer.h"
+#include "bccmis/stuff/crease_cuts.h"
 #include "bccmis/stuff/memory_estimate.h"
 #include "bccmis/stuff/normalisation.h"
 #include "bccmis/stuff/stopwatch.h"
@@ -137,10 +138,24 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
       std::to_string(fit.size.D) + ", max level " + std::to_string(fit.size.L) + ", finest side " + number(r.fit.h));
   // S3-S9 on the fast lattice, or on the reference.
   PhaseTimes times;
-  r.stuffed = stuff_fitted(shape, fit, options, settings.impl, &times, [&](std::size_t leaves, double seconds) {
+  const auto on_lattice = [&](std::size_t leaves, double seconds) {
     r.leaves = leaves;
     say(std::to_string(leaves) + " leaves (" + number(seconds) + " s)");
-  });
+  };
+  // S35.7: the features first, the cut points near them placed on them.
+  Features features;
+  const bool crease_cuts = settings.features.on && settings.features.crease_cuts > 0 && settings.impl == Impl::fast;
+  CreaseCuts placed;
+  if (crease_cuts) {
+    features = detect_features(shape.surface_triangles(), settings.features.angle);
+    r.stuffed =
+        stuff_on_creases(shape, fit, options, features, settings.features.crease_cuts, &placed, &times, on_lattice);
+    say(std::to_string(placed.placed) + " vertices placed on the creases, " + std::to_string(placed.excluded) +
+        " cut edges kept by the guard, " + std::to_string(placed.rounds) + " rounds" +
+        (placed.none ? " (none placed)" : ""));
+  } else {
+    r.stuffed = stuff_fitted(shape, fit, options, settings.impl, &times, on_lattice);
+  }
   r.seconds = {{"lattice", times.lattice},
                {"mesh", times.mesh},
                {"cut", times.cut},
@@ -157,11 +172,10 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
   r.regions = io::regions_of(r.stuffed.mesh.tets, &r.boundary);
   const double face_seconds = seconds_since(t_faces);
   // S29-S31: the sharp features of a triangle mesh, and the mesh made to hold them.
-  Features features;
   FeatureConformity conformity;
   if (settings.features.on) {
     const auto t0 = Clock::now();
-    features = detect_features(shape.surface_triangles(), settings.features.angle);
+    if (!crease_cuts) features = detect_features(shape.surface_triangles(), settings.features.angle);
     conformity = conform_features(r.stuffed.mesh, r.boundary, features, fit.h, settings.features.split_edges);
     // S35's splits changed the tetrahedra: their boundary and regions again.
     if (conformity.splits > 0) r.regions = io::regions_of(r.stuffed.mesh.tets, &r.boundary);
@@ -174,6 +188,8 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
     r.features->splits = conformity.splits;
     r.features->splits_undone = conformity.splits_undone;
     r.features->moves_undone = conformity.moves_undone;
+    r.features->placed = placed.placed;
+    r.features->placed_kept = placed.excluded;
     r.seconds.emplace_back("features", seconds_since(t0));
     say(std::to_string(features.edges) + " feature edges, " + std::to_string(features.corners.size()) +
         " corners; conformed " + std::to_string(conformity.corners_conformed) + " corners, " +

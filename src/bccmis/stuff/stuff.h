@@ -28,6 +28,10 @@ struct StuffOptions {
   double alpha_long = 0.24999;  ///< S6
   double alpha_short = 0.41189;
   int threads = 0;  ///< S28-S28c: the threads of S3's tests and the stuffing (--threads); 0: every core
+  /// S35.7: when set (the fast stuffer only), asked of every cut point
+  /// before S6, in the order of the cut edges, with the edge's ends p, q
+  /// (smaller first) and S5's point x: where the cut point goes (x: kept).
+  std::function<Vec3(const Vec3& p, const Vec3& q, const Vec3& x)> place_cut;
 };
 
 /// Where the lattice sits in space (S2): lattice point p is origin + scale p.

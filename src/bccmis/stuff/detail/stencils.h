@@ -114,6 +114,10 @@ class Stencils {
   std::vector<std::array<Stored, 4>> tets_out_;
   std::vector<int> levels_out_;
 
+  /// Whether a flat output tetrahedron is written rather than refused
+  /// (S35.7's placed cut points); a stuffer says so by its own.
+  bool flat_allowed() const { return false; }
+
  private:
   const Derived& self() const { return static_cast<const Derived&>(*this); }
 
@@ -150,7 +154,10 @@ class Stencils {
     const Derived& s = self();
     std::array<Key, 4> v = t;
     const int o = orientation(s.pos(v[0]), s.pos(v[1]), s.pos(v[2]), s.pos(v[3]));
-    if (o == 0) throw std::logic_error("stuff: a flat output tetrahedron near " + d3::to_string(s.point_of(v[0])));
+    // S35.7: with cut points placed off their edges a flat one is written
+    // as it is, for its guard to refuse.
+    if (o == 0 && !s.flat_allowed())
+      throw std::logic_error("stuff: a flat output tetrahedron near " + d3::to_string(s.point_of(v[0])));
     if (o < 0) std::swap(v[2], v[3]);
     if constexpr (std::is_same_v<Stored, Key>)
       tets_out_.push_back(v);
