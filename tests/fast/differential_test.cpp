@@ -119,18 +119,33 @@ RC_GTEST_PROP(Differential, ACopyAndAConvertedStateGoOnLikeTheReference, ()) {
 }
 
 // The generators reach deep, busy states (a vacuous pass would be worthless).
+// This is a fact about one sample of the generators, not about every sample:
+// with a random seed, about one run of 100 cases in four stays at depth 3 or
+// less. So the sample is the fixed one ctest runs (the project's seed and
+// budget, tests/fast/fast.cmake), whatever RC_PARAMS says; the lock-step
+// comparisons on it still fail with a shrunk scenario.
 TEST(DifferentialGenerators, ReachDeepStatesWithManyAppliedOperations) {
   std::size_t most_applied = 0;
   int deepest = 0;
-  const bool ok = rc::check("differential generator coverage", [&] {
-    const LatticeSize size = *genLargerSize();
-    const auto steps = *rc::gen::scale(4.0, rc::gen::container<std::vector<Step>>(genLiveStep()));
-    testing::Twin t = make_twin(size);
-    for (const Step& s : steps) run(t, s);
-    most_applied = std::max(most_applied, t.applied());
-    for (const auto& [c, l] : t.graph().level) deepest = std::max(deepest, l);
-  });
-  EXPECT_TRUE(ok);
+  rc::detail::TestMetadata metadata;
+  metadata.id = metadata.description = "differential generator coverage";
+  rc::detail::TestParams params;
+  params.seed = BCCMIS_FAST_RC_SEED;
+  params.maxSuccess = 100;
+  params.maxSize = 100;
+  const rc::detail::TestResult result = rc::detail::checkTestable(
+      [&] {
+        const LatticeSize size = *genLargerSize();
+        const auto steps = *rc::gen::scale(4.0, rc::gen::container<std::vector<Step>>(genLiveStep()));
+        testing::Twin t = make_twin(size);
+        for (const Step& s : steps) run(t, s);
+        most_applied = std::max(most_applied, t.applied());
+        for (const auto& [c, l] : t.graph().level) deepest = std::max(deepest, l);
+      },
+      metadata, params);
+  std::ostringstream message;
+  rc::detail::printResultMessage(result, message);
+  EXPECT_TRUE(result.is<rc::detail::SuccessResult>()) << message.str();
   EXPECT_GE(most_applied, 100u);
   EXPECT_GE(deepest, 4);
 }

@@ -25,6 +25,7 @@ bccmis_add_gtest(fast_alloc_test SOURCES alloc_test.cpp LIBS bccmis::fast LABELS
 # operation; and the reference's property bodies run on the fast lattice.
 bccmis_add_gtest(fast_differential_test SOURCES differential_test.cpp
   LIBS rapidcheck_gtest bccmis::testing bccmis::fast bccmis::invariants
+  DEFINITIONS BCCMIS_FAST_RC_SEED=${BCCMIS_FAST_RC_SEED}ULL
   LABELS property ENVIRONMENT "RC_PARAMS=seed=${BCCMIS_FAST_RC_SEED} max_success=100")
 
 # The conformance harness (src/bccmis/oracle, `bccmis conformance`) against the fast
