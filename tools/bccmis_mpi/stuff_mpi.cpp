@@ -80,6 +80,7 @@ void check_options(const StuffOptions& o, bool gather) {
   if (o.animate > 0 || !o.path.empty() || o.compare) refuse("--animate");
   if (o.impl != "fast") refuse("--impl " + o.impl);
   if (o.memory_limit_gb > 0) refuse("--memory-limit");
+  if (o.crease_cuts > 0) refuse("--crease-cuts");  // S35.7 places cut points inside each piece's stuffing
   const bool features = features_on(o);
   if ((features || o.check) && !gather)
     throw InputError(
