@@ -156,6 +156,11 @@ struct StuffOptions {
   std::string surface_vertices = "used";  ///< .off/.obj: "used" (compact) or "all" (the volume mesh's numbering)
   double memory_limit_gb = 0;             ///< > 0: the memory a run may take (spec/stuffing.md S25), else MemAvailable
   bool quiet = false;
+  /// spec/cli.md: the features are on by default for a triangle-mesh INPUT,
+  /// and with any feature option (S29-S35), unless --no-features.
+  bool features_on() const {
+    return (features || feature_angle >= 0 || crease_cuts > 0 || !input.empty()) && !no_features;
+  }
 };
 int run(const StuffOptions& o);
 

@@ -191,9 +191,7 @@ int run(const StuffOptions& o) {
   settings.hausdorff = o.hausdorff;
   settings.check = o.check;
   settings.strict = o.strict;
-  // spec/cli.md: on by default for a triangle-mesh INPUT (S29-S33).
-  settings.features.on =
-      (o.features || o.feature_angle >= 0 || o.crease_cuts > 0 || !o.input.empty()) && !o.no_features;
+  settings.features.on = o.features_on();
   settings.features.crease_cuts = o.crease_cuts;
   if (o.feature_angle >= 0) settings.features.angle = o.feature_angle;
   if (o.memory_limit_gb > 0) settings.memory_limit = o.memory_limit_gb * 1e9;

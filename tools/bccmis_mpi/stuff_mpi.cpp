@@ -64,12 +64,6 @@ void stage(MPI_Comm comm, Body&& body) {
   if (!a.ok()) throw Stop{a.code};
 }
 
-/// The features are on as in bccmis stuff (spec/cli.md: by default for a
-/// triangle-mesh INPUT, S29-S35).
-bool features_on(const StuffOptions& o) {
-  return (o.features || o.feature_angle >= 0 || !o.input.empty()) && !o.no_features;
-}
-
 /// D1: the options this slice does not split yet, the ones that need the
 /// gathered mesh (D12), and the one output (or none, with --stats).
 void check_options(const StuffOptions& o, bool gather) {
@@ -81,7 +75,7 @@ void check_options(const StuffOptions& o, bool gather) {
   if (o.impl != "fast") refuse("--impl " + o.impl);
   if (o.memory_limit_gb > 0) refuse("--memory-limit");
   if (o.crease_cuts > 0) refuse("--crease-cuts");  // S35.7 places cut points inside each piece's stuffing
-  const bool features = features_on(o);
+  const bool features = o.features_on();
   if ((features || o.check) && !gather)
     throw InputError(
         std::string(features ? "the features of a triangle-mesh INPUT (on by default, S29-S35)" : "--check") +
@@ -124,7 +118,7 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
   const bool write = !o.outputs.empty();  // else --stats alone (D11)
   // D12: the features and --check run on the whole mesh, gathered in local
   // coordinates (check_options: only with --gather).
-  const bool whole = features_on(o) || o.check;
+  const bool whole = o.features_on() || o.check;
   stuff::PhaseSeconds seconds;  // D11: rank 0's wall seconds of the stages
   auto t = stuff::Clock::now();
   const auto phase = [&](const char* name) {
@@ -214,7 +208,7 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
         // D12: the feature step and --check, then S24's map (the pieces stayed local).
         if (whole) {
           stuff::FeatureSettings features;
-          features.on = features_on(o);
+          features.on = o.features_on();
           if (o.feature_angle >= 0) features.angle = o.feature_angle;
           regions = distributed::finish_gathered(*shape, *lattice, mesh, features, o.check);
         } else {
