@@ -145,6 +145,15 @@ constexpr std::array<int, 18> make_sorted_midpoints() {
   return out;
 }
 constexpr std::array<int, 18> kSortedMidpoints = make_sorted_midpoints();
+// The 18 edge and face slots in slot order (the order of a record's slots).
+constexpr std::array<int, 18> make_midpoint_slots() {
+  std::array<int, 18> out{};
+  std::size_t k = 0;
+  for (int s = 0; s < 26; ++s)
+    if (kRule[static_cast<std::size_t>(s)].nz != 7) out[k++] = s;
+  return out;
+}
+constexpr std::array<int, 18> kMidpointSlots = make_midpoint_slots();
 // The octants in sorted order of the children's positions.
 constexpr int kSortedOctants[8] = {0, 4, 2, 6, 1, 5, 3, 7};
 // Refine: corner e of child o is the node at grid point g of its parent
@@ -172,8 +181,6 @@ bool is_corner(int slot) { return rule(slot).nz == 7; }
 }  // namespace
 
 // ---- Records and geometry (§9.2) --------------------------------------------------
-
-int Lattice::level(Index c) const { return size_.L - std::countr_zero(static_cast<std::uint64_t>(centers_[c].p.x)); }
 
 Point Lattice::node_position(Index n) const {
   const Node& r = nodes_[n];
@@ -771,11 +778,15 @@ std::optional<CoarsenRefusal> Lattice::coarsen_refusal(const Point& n, Index& ni
           if (rn.cell[a] == rn.cell[b]) return CoarsenRefusal::NotARefinedCenter;
       return CoarsenRefusal::ChildrenRefined;
     }
-  for (int o = 0; o < 8; ++o) {  // |N(y)| = 8: no node but the corners
+  // |N(y)| = 8: no node but the corners. kNone has every bit set, so the 8
+  // children's 144 edge and face slots hold no node iff their AND is kNone:
+  // one pass of loads and ANDs, no branch per slot.
+  Index none = kNone;
+  for (int o = 0; o < 8; ++o) {
     const Center& y = centers_[rn.cell[o]];
-    for (const int k : kSortedMidpoints)
-      if (y.nbr[k] != kNone) return CoarsenRefusal::FinerNeighbor;
+    for (const int k : kMidpointSlots) none &= y.nbr[k];
   }
+  if (none != kNone) return CoarsenRefusal::FinerNeighbor;
   return std::nullopt;
 }
 

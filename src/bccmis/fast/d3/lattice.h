@@ -28,6 +28,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -189,7 +190,9 @@ class Lattice {
     bool live() const { return cell[7] != kFreeMark; }
   };
 
-  int level(Index c) const;  ///< of a live center
+  int level(Index c) const {  ///< of a live center
+    return size_.L - std::countr_zero(static_cast<std::uint64_t>(centers_[c].p.x));
+  }
   std::int64_t half_side(int level) const { return std::int64_t{1} << (size_.L - level); }
   d3::Point node_position(Index n) const;  ///< of a live node (§9.2)
   /// The trailing zeros t of a position where a cell center can be (level
