@@ -25,6 +25,8 @@
 #include <map>
 #include <new>
 #include <stdexcept>
+#include <type_traits>
+#include <utility>
 
 #include "bccmis/d3/detail/position_order.h"
 #include "bccmis/text_writer.h"
@@ -125,8 +127,7 @@ constexpr std::array<SlotRule, 26> make_rules() {
 constexpr std::array<SlotRule, 26> kRule = make_rules();
 const SlotRule& rule(int k) { return kRule[static_cast<std::size_t>(k)]; }
 
-// The slots in sorted order of the positions they name (x, then y, then z),
-// and the 18 edge and face slots in that order.
+// The slots in sorted order of the positions they name (x, then y, then z).
 constexpr std::array<int, 26> make_sorted_slots() {
   std::array<int, 26> out{};
   std::size_t k = 0;
@@ -137,14 +138,6 @@ constexpr std::array<int, 26> make_sorted_slots() {
   return out;
 }
 constexpr std::array<int, 26> kSortedSlots = make_sorted_slots();
-constexpr std::array<int, 18> make_sorted_midpoints() {
-  std::array<int, 18> out{};
-  std::size_t k = 0;
-  for (const int s : kSortedSlots)
-    if (kRule[static_cast<std::size_t>(s)].nz != 7) out[k++] = s;
-  return out;
-}
-constexpr std::array<int, 18> kSortedMidpoints = make_sorted_midpoints();
 // The 18 edge and face slots in slot order (the order of a record's slots).
 constexpr std::array<int, 18> make_midpoint_slots() {
   std::array<int, 18> out{};
@@ -170,7 +163,36 @@ constexpr std::array<std::array<int, 8>, 8> make_child_corners() {
     }
   return out;
 }
-constexpr std::array<std::array<int, 8>, 8> kChildCorner = make_child_corners();
+// The pass of refine writes each child's corners from the nodes around it:
+// the node in slot k lists, in its octant t inside the parent, the child
+// y_(t XOR nz), whose corner toward the node is t XOR 7. The same as
+// child o's corner e read from the grid (above), for every child and corner.
+constexpr bool corners_from_nodes_agree() {
+  constexpr auto child_corner = make_child_corners();
+  int written = 0;
+  for (int k = 0; k < 26; ++k)
+    for (int j = 0; j < kRule[static_cast<std::size_t>(k)].inside_count; ++j) {
+      const SlotRule& r = kRule[static_cast<std::size_t>(k)];
+      const int t = r.inside_octant[j];
+      if (child_corner[static_cast<std::size_t>(t ^ r.nz)][static_cast<std::size_t>(t ^ 7)] != k) return false;
+      ++written;
+    }
+  for (int o = 0; o < 8; ++o)  // the parent's own node: corner o ^ 7 of child o
+    if (child_corner[static_cast<std::size_t>(o)][static_cast<std::size_t>(o ^ 7)] != -1) return false;
+  return written + 8 == 64;  // each of the 8 x 8 corners once
+}
+static_assert(corners_from_nodes_agree());
+
+// f(std::integral_constant<int, I>{}) for I = 0 .. N-1, unrolled: a pass over
+// the slots whose rule fields and indices are constants in every step.
+template <class F, int... I>
+void unroll(F&& f, std::integer_sequence<int, I...>) {
+  (f(std::integral_constant<int, I>{}), ...);
+}
+template <int N, class F>
+void unroll(F&& f) {
+  unroll(f, std::make_integer_sequence<int, N>{});
+}
 
 std::int64_t coord(const Point& p, int a) { return a == 0 ? p.x : a == 1 ? p.y : p.z; }
 Point offset(const Point& p, const int d[3], std::int64_t h) {
@@ -751,10 +773,13 @@ std::optional<RefineRefusal> Lattice::refine_refusal(const Point& c, Index& ci) 
   // corner with d's signs on nz(d) and - elsewhere. 6 faces + 12 edges.
   const Center& rc = centers_[ci];
   const std::int64_t coarse_mask = 2 * half_side(l) - 1;  // a coarser center's coordinates are multiples of 2h
-  for (const int k : kSortedMidpoints) {
-    const Index x = nodes_[rc.nbr[rule(k).corner]].cell[rule(k).across];
-    if (x != kNone && (centers_[x].p.x & coarse_mask) == 0) return RefineRefusal::CoarserNeighbor;
-  }
+  bool coarser = false;
+  unroll<18>([&](auto i) {
+    constexpr const SlotRule& r = kRule[kMidpointSlots[decltype(i)::value]];
+    const Index x = nodes_[rc.nbr[r.corner]].cell[r.across];
+    coarser = coarser || (x != kNone && (centers_[x].p.x & coarse_mask) == 0);
+  });
+  if (coarser) return RefineRefusal::CoarserNeighbor;
   return std::nullopt;
 }
 
@@ -809,7 +834,7 @@ RefineResult Lattice::refine(const Point& c) {
   result.refused = refine_refusal(c, ci);
   if (result.refused) return result;
   std::size_t new_nodes = 1;  // c, and a node on each edge and face that has none
-  for (const int k : kSortedMidpoints) new_nodes += centers_[ci].nbr[k] == kNone;
+  unroll<18>([&](auto i) { new_nodes += centers_[ci].nbr[kMidpointSlots[decltype(i)::value]] == kNone; });
   ensure_room(8, new_nodes, 8);  // c's table entry is renamed, the 8 children added
 
   const int l = level(ci);
@@ -831,40 +856,43 @@ RefineResult Lattice::refine(const Point& c) {
     y[o] = alloc_center({c.x + sign(o, 0) * h / 2, c.y + sign(o, 1) * h / 2, c.z + sign(o, 2) * h / 2});
   for (const int o : kSortedOctants) result.Y.push_back(centers_[y[o]].p);
 
-  // R3a-R3h: a new node j+ on each edge and face of c without one. The
-  // cells around it outside c (X_e, X_f) are read at the corner with d's
-  // signs on nz(d) and - elsewhere; each gets j+ in its slot toward it.
-  for (const int k : kSortedMidpoints) {
-    if (G[k] != kNone) continue;
-    const SlotRule& r = rule(k);
-    const Index jp = alloc_node();
-    G[k] = jp;
-    result.J_plus.push_back(offset(c, r.d, h));
-    const Node& corner = nodes_[G[r.corner]];
-    Node& rj = nodes_[jp];
-    for (int i = 0; i < r.outside_count; ++i) {
-      const Index x = corner.cell[r.outside_at_corner[i]];
-      rj.cell[r.outside_octant[i]] = x;                           // R3d, R3g: X ⊆ N(j+)
-      if (x != kNone) centers_[x].nbr[r.outside_toward[i]] = jp;  // R3c, R3f
+  // One pass over the 26 slots in sorted order (§9.5). R3a-R3h: a new node
+  // j+ on each edge and face of c without one; the cells around it outside c
+  // (X_e, X_f) are read at the corner with d's signs on nz(d) and -
+  // elsewhere (octants outside c, which this pass does not write), and each
+  // gets j+ in its slot toward it. R2c-R2f, R3d-R3h, R4a, R4b: the node b in
+  // the slot lists, in each of its octants t inside c, the child y_(t XOR
+  // nz(d)), which has b as its corner t XOR 7 (the corner toward b).
+  for (int t = 0; t < 8; ++t) {
+    nodes_[cn].cell[t] = y[t];
+    centers_[y[t]].nbr[corner_slot(t ^ 7)] = cn;
+  }
+  unroll<26>([&](auto i) {
+    constexpr int k = kSortedSlots[decltype(i)::value];
+    constexpr const SlotRule& r = kRule[k];
+    if constexpr (r.nz != 7) {
+      if (G[k] == kNone) {
+        const Index jp = alloc_node();
+        G[k] = jp;
+        result.J_plus.push_back(offset(c, r.d, h));
+        const Node& corner = nodes_[G[r.corner]];
+        Node& rj = nodes_[jp];
+        for (int j = 0; j < r.outside_count; ++j) {
+          const Index x = corner.cell[r.outside_at_corner[j]];
+          rj.cell[r.outside_octant[j]] = x;                           // R3d, R3g: X ⊆ N(j+)
+          if (x != kNone) centers_[x].nbr[r.outside_toward[j]] = jp;  // R3c, R3f
+        }
+      }
     }
-  }
-  // R2c-R2e, R3d-R3h, R4a: every node of c's boundary lists, in each of its
-  // octants inside c, the child there (c's own node: all 8).
-  for (int t = 0; t < 8; ++t) nodes_[cn].cell[t] = y[t];
-  for (int k = 0; k < 26; ++k) {
-    const SlotRule& r = rule(k);
-    Node& b = nodes_[G[k]];
-    for (int i = 0; i < r.inside_count; ++i) b.cell[r.inside_octant[i]] = y[r.inside_child[i]];
-  }
-  // R2f, R3e, R3h, R4b: each child has its 8 corners: the grid point of c
-  // with g_a = s_o,a where its corner's sign agrees with s_o, 0 elsewhere.
-  for (int o = 0; o < 8; ++o) {
-    Center& ry = centers_[y[o]];
-    for (int e = 0; e < 8; ++e) {
-      const int g = kChildCorner[static_cast<std::size_t>(o)][static_cast<std::size_t>(e)];
-      ry.nbr[corner_slot(e)] = g < 0 ? cn : G[g];
+    const Index b = G[k];
+    Node& rb = nodes_[b];
+    for (int j = 0; j < r.inside_count; ++j) {
+      const int t = r.inside_octant[j];
+      const Index yc = y[t ^ r.nz];
+      rb.cell[t] = yc;
+      centers_[yc].nbr[corner_slot(t ^ 7)] = b;
     }
-  }
+  });
   // The children's table entries last: a saturated displacement recomputes
   // the home of another entry's key, which needs every node consistent.
   for (int o = 0; o < 8; ++o) table_insert(y[o], table_.line_slot(base, static_cast<std::size_t>(o)));
@@ -890,7 +918,7 @@ CoarsenResult Lattice::coarsen(const Point& n) {
   std::copy(std::begin(nodes_[ni].cell), std::end(nodes_[ni].cell), y);
   for (const int o : kSortedOctants) result.Y.push_back(centers_[y[o]].p);
   Index B[26];
-  for (int k = 0; k < 26; ++k) B[k] = centers_[y[rule(k).child]].nbr[rule(k).child_corner];
+  unroll<26>([&](auto k) { B[k] = centers_[y[kRule[k].child]].nbr[kRule[k].child_corner]; });
   // K2b, K2f: the children are deleted. K2c-K2e: n leaves N and joins C
   // (choice Q4), under the same table entry.
   for (int o = 0; o < 8; ++o) table_erase(y[o], table_.line_slot(base, static_cast<std::size_t>(o)));
@@ -904,22 +932,26 @@ CoarsenResult Lattice::coarsen(const Point& n) {
   // has it as a corner, that is iff the octants outside on one side of the
   // merged cube's boundary hold different cells.
   Center& rc = centers_[cc];
-  for (const int k : kSortedSlots) {
-    const SlotRule& r = rule(k);
+  unroll<26>([&](auto i) {
+    constexpr int k = kSortedSlots[decltype(i)::value];
+    constexpr const SlotRule& r = kRule[k];
     Node& b = nodes_[B[k]];
-    for (int i = 0; i < r.inside_count; ++i) b.cell[r.inside_octant[i]] = cc;
+    for (int j = 0; j < r.inside_count; ++j) b.cell[r.inside_octant[j]] = cc;
     rc.nbr[k] = B[k];  // K4a
-    bool corner_of_a_cell = false;
-    for (int i = 0; i < r.outside_count; ++i)
-      corner_of_a_cell = corner_of_a_cell || b.cell[r.outside_octant[i]] != b.cell[r.outside_beside[i]];
-    if (r.nz == 7 || corner_of_a_cell) continue;
-    // K3b-K3e: j in J-: its cells outside drop it, it is deleted.
-    for (int i = 0; i < r.outside_count; ++i)
-      if (const Index x = b.cell[r.outside_octant[i]]; x != kNone) centers_[x].nbr[r.outside_toward[i]] = kNone;
-    result.J_minus.push_back(offset(n, r.d, h));
-    rc.nbr[k] = kNone;
-    free_node(B[k]);
-  }
+    if constexpr (r.nz != 7) {
+      bool corner_of_a_cell = false;
+      for (int j = 0; j < r.outside_count; ++j)
+        corner_of_a_cell = corner_of_a_cell || b.cell[r.outside_octant[j]] != b.cell[r.outside_beside[j]];
+      if (!corner_of_a_cell) {
+        // K3b-K3e: j in J-: its cells outside drop it, it is deleted.
+        for (int j = 0; j < r.outside_count; ++j)
+          if (const Index x = b.cell[r.outside_octant[j]]; x != kNone) centers_[x].nbr[r.outside_toward[j]] = kNone;
+        result.J_minus.push_back(offset(n, r.d, h));
+        rc.nbr[k] = kNone;
+        free_node(B[k]);
+      }
+    }
+  });
   return result;
 }
 
