@@ -204,7 +204,7 @@ bool is_corner(int slot) { return rule(slot).nz == 7; }
 
 // ---- Records and geometry (§9.2) --------------------------------------------------
 
-Point Lattice::node_position(Index n) const {
+inline Point Lattice::node_position(Index n) const {
   const Node& r = nodes_[n];
   int t = 0;
   while (r.cell[t] == kNone) ++t;  // a live node has a cell in some octant
@@ -218,7 +218,7 @@ Point Lattice::node_position(Index n) const {
   return {q[0], q[1], q[2]};
 }
 
-int Lattice::center_tz(const Point& p) const {
+inline int Lattice::center_tz(const Point& p) const {
   if (p.x <= 0 || p.y <= 0 || p.z <= 0 || p.x >= extent_[0] || p.y >= extent_[1] || p.z >= extent_[2]) return -1;
   const int t = std::countr_zero(static_cast<std::uint64_t>(p.x));
   if (t != std::countr_zero(static_cast<std::uint64_t>(p.y)) ||
@@ -229,11 +229,11 @@ int Lattice::center_tz(const Point& p) const {
 
 // ---- Position table (§9.4) -------------------------------------------------------------
 
-std::size_t Lattice::home(const Point& p) const {
+inline std::size_t Lattice::home(const Point& p) const {
   return home_at(p, std::countr_zero(static_cast<std::uint64_t>(p.x)));
 }
 
-std::size_t Lattice::home_at(const Point& p, int t) const {
+inline std::size_t Lattice::home_at(const Point& p, int t) const {
   // p: a center position, every coordinate an odd multiple of 2^t.
   if (t >= size_.L) return table_.home_of_hash(mix(p));  // level 0: no parent
   const std::int64_t s = std::int64_t{1} << (t + 2);     // the parent's side
@@ -261,11 +261,11 @@ Index Lattice::find_ref(const Point& p, bool node) const {
 
 Index Lattice::find_refined(const Point& p) const { return find_ref(p, true); }
 
-void Lattice::table_insert(Index ref, std::size_t at) {
+inline void Lattice::table_insert(Index ref, std::size_t at) {
   table_.insert(ref, at, [this](Index r) { return ref_home(r); });
 }
 
-void Lattice::table_erase(Index ref, std::size_t at) {
+inline void Lattice::table_erase(Index ref, std::size_t at) {
   table_.erase(ref, at, [this](Index r) { return ref_home(r); });
 }
 
@@ -323,7 +323,7 @@ Index Lattice::find_node(const Point& p) const {
 
 // ---- Pools ------------------------------------------------------------------------------
 
-Index Lattice::alloc_center(const Point& p) {
+inline Index Lattice::alloc_center(const Point& p) {
   Index c;
   if (free_centers_ == kNone) {
     centers_.emplace_back();
@@ -340,7 +340,7 @@ Index Lattice::alloc_center(const Point& p) {
   return c;
 }
 
-Index Lattice::alloc_node() {
+inline Index Lattice::alloc_node() {
   Index n;
   if (free_nodes_ == kNone) {
     nodes_.emplace_back();
@@ -355,7 +355,7 @@ Index Lattice::alloc_node() {
   return n;
 }
 
-void Lattice::free_center(Index c) {
+inline void Lattice::free_center(Index c) {
   Center& r = centers_[c];
   r.nbr[25] = kFreeMark;
   r.nbr[0] = free_centers_;
@@ -364,7 +364,7 @@ void Lattice::free_center(Index c) {
   --cell_count_;
 }
 
-void Lattice::free_node(Index n) {
+inline void Lattice::free_node(Index n) {
   Node& r = nodes_[n];
   std::fill(std::begin(r.cell), std::end(r.cell), kNone);
   r.cell[7] = kFreeMark;
@@ -863,10 +863,11 @@ RefineResult Lattice::refine(const Point& c) {
   // gets j+ in its slot toward it. R2c-R2f, R3d-R3h, R4a, R4b: the node b in
   // the slot lists, in each of its octants t inside c, the child y_(t XOR
   // nz(d)), which has b as its corner t XOR 7 (the corner toward b).
-  for (int t = 0; t < 8; ++t) {
+  unroll<8>([&](auto t) {
+    constexpr int e = corner_slot(decltype(t)::value ^ 7);
     nodes_[cn].cell[t] = y[t];
-    centers_[y[t]].nbr[corner_slot(t ^ 7)] = cn;
-  }
+    centers_[y[t]].nbr[e] = cn;
+  });
   unroll<26>([&](auto i) {
     constexpr int k = kSortedSlots[decltype(i)::value];
     constexpr const SlotRule& r = kRule[k];
@@ -886,12 +887,13 @@ RefineResult Lattice::refine(const Point& c) {
     }
     const Index b = G[k];
     Node& rb = nodes_[b];
-    for (int j = 0; j < r.inside_count; ++j) {
-      const int t = r.inside_octant[j];
-      const Index yc = y[t ^ r.nz];
+    unroll<r.inside_count>([&](auto j) {
+      constexpr int t = kRule[k].inside_octant[decltype(j)::value];
+      constexpr int e = corner_slot(t ^ 7);
+      const Index yc = y[t ^ kRule[k].nz];
       rb.cell[t] = yc;
-      centers_[yc].nbr[corner_slot(t ^ 7)] = b;
-    }
+      centers_[yc].nbr[e] = b;
+    });
   });
   // The children's table entries last: a saturated displacement recomputes
   // the home of another entry's key, which needs every node consistent.
