@@ -239,7 +239,7 @@ inline std::size_t Lattice::home_at(const Point& p, int t) const {
   const std::int64_t s = std::int64_t{1} << (t + 2);     // the parent's side
   const Point parent{(p.x & ~(s - 1)) | (s / 2), (p.y & ~(s - 1)) | (s / 2), (p.z & ~(s - 1)) | (s / 2)};
   const std::size_t o = ((p.x & (s / 2)) ? 1u : 0u) | ((p.y & (s / 2)) ? 2u : 0u) | ((p.z & (s / 2)) ? 4u : 0u);
-  return table_.line_slot(table_.home_of_hash(mix(parent)), o);
+  return table_.family_slot(mix(parent), o);
 }
 
 std::size_t Lattice::ref_home(Index ref) const {
@@ -839,8 +839,7 @@ RefineResult Lattice::refine(const Point& c) {
 
   const int l = level(ci);
   const std::int64_t h = half_side(l);
-  const std::size_t base = table_.home_of_hash(mix(c));  // the children's table line
-  table_.prefetch(table_.line_slot(base, 0));
+  const std::uint64_t family = mix(c);  // the children's homes (§9.4)
 
   // R1a-R1c: B = N(c) by slot: the corners P, the old junctions J (the
   // edge and face slots that hold a node).
@@ -897,7 +896,7 @@ RefineResult Lattice::refine(const Point& c) {
   });
   // The children's table entries last: a saturated displacement recomputes
   // the home of another entry's key, which needs every node consistent.
-  for (int o = 0; o < 8; ++o) table_insert(y[o], table_.line_slot(base, static_cast<std::size_t>(o)));
+  for (int o = 0; o < 8; ++o) table_insert(y[o], table_.family_slot(family, static_cast<std::size_t>(o)));
   return result;
 }
 
@@ -911,7 +910,7 @@ CoarsenResult Lattice::coarsen(const Point& n) {
   if (result.refused) return result;
   // Coarsening frees 8 centers, takes 1 and adds no table entry: no room to make.
   const std::int64_t h = half_side(l);
-  const std::size_t base = table_.home_of_hash(mix(n));
+  const std::uint64_t family = mix(n);
 
   // K1a: Y = N(n), y_o in octant o. K1b: B, the 26 nodes of the merged
   // cube's boundary: grid point d is corner (d on nz(d), + elsewhere) of the
@@ -923,7 +922,7 @@ CoarsenResult Lattice::coarsen(const Point& n) {
   unroll<26>([&](auto k) { B[k] = centers_[y[kRule[k].child]].nbr[kRule[k].child_corner]; });
   // K2b, K2f: the children are deleted. K2c-K2e: n leaves N and joins C
   // (choice Q4), under the same table entry.
-  for (int o = 0; o < 8; ++o) table_erase(y[o], table_.line_slot(base, static_cast<std::size_t>(o)));
+  for (int o = 0; o < 8; ++o) table_erase(y[o], table_.family_slot(family, static_cast<std::size_t>(o)));
   for (int o = 0; o < 8; ++o) free_center(y[o]);
   const Index cc = alloc_center(n);
   table_.replace(ni | kNodeBit, home(n), cc);

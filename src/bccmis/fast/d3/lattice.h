@@ -16,7 +16,8 @@
 //     node's position from any cell around it and the octants that cell fills.
 //   - the position table holds the cells and the refined centers (nodes at a
 //     center's position) only; the other nodes are found from a cell and a
-//     direction. The 8 children of a cell share one 128-byte block of it.
+//     direction. The 8 children of a cell take their homes from one hash
+//     of the cell.
 //   - refine and coarsen make room first (pools, table) and then only write,
 //     so in steady state they allocate nothing and a throwing allocation
 //     leaves the lattice as it was.
