@@ -193,6 +193,12 @@ template <int N, class F>
 void unroll(F&& f) {
   unroll(f, std::make_integer_sequence<int, N>{});
 }
+// Every slot of a record kNone, as N stores (std::fill of 0xFF bytes
+// becomes a call to memset).
+template <int N>
+void fill_none(Index (&slots)[N]) {
+  unroll<N>([&](auto i) { slots[i] = Lattice::kNone; });
+}
 
 std::int64_t coord(const Point& p, int a) { return a == 0 ? p.x : a == 1 ? p.y : p.z; }
 Point offset(const Point& p, const int d[3], std::int64_t h) {
@@ -247,16 +253,22 @@ std::size_t Lattice::ref_home(Index ref) const {
 }
 
 Index Lattice::find_ref(const Point& p, bool node) const {
+  std::size_t at;
+  return find_ref(p, node, at);
+}
+
+Index Lattice::find_ref(const Point& p, bool node, std::size_t& at) const {
   const int t = center_tz(p);
   if (t < 0) return kNone;
+  at = home_at(p, t);
   const auto home_of = [this](Index r) { return ref_home(r); };
   if (node) {
     const Index r = table_.find(
-        home_at(p, t), [&](Index q) { return (q & kNodeBit) && node_position(q & ~kNodeBit) == p; }, home_of);
+        at, [&](Index q) { return (q & kNodeBit) && node_position(q & ~kNodeBit) == p; }, home_of);
     return r == kNone ? kNone : r & ~kNodeBit;
   }
   return table_.find(
-      home_at(p, t), [&](Index q) { return !(q & kNodeBit) && centers_[q].p == p; }, home_of);
+      at, [&](Index q) { return !(q & kNodeBit) && centers_[q].p == p; }, home_of);
 }
 
 Index Lattice::find_refined(const Point& p) const { return find_ref(p, true); }
@@ -335,7 +347,7 @@ inline Index Lattice::alloc_center(const Point& p) {
   }
   Center& r = centers_[c];
   r.p = p;
-  std::fill(std::begin(r.nbr), std::end(r.nbr), kNone);
+  fill_none(r.nbr);
   ++cell_count_;
   return c;
 }
@@ -350,7 +362,7 @@ inline Index Lattice::alloc_node() {
     free_nodes_ = nodes_[n].cell[0];
     --free_node_count_;
   }
-  std::fill(std::begin(nodes_[n].cell), std::end(nodes_[n].cell), kNone);
+  fill_none(nodes_[n].cell);
   ++node_count_;
   return n;
 }
@@ -366,7 +378,7 @@ inline void Lattice::free_center(Index c) {
 
 inline void Lattice::free_node(Index n) {
   Node& r = nodes_[n];
-  std::fill(std::begin(r.cell), std::end(r.cell), kNone);
+  fill_none(r.cell);
   r.cell[7] = kFreeMark;
   r.cell[0] = free_nodes_;
   free_nodes_ = n;
@@ -761,9 +773,9 @@ std::string canonical_state(const Lattice& g) { return canonical_text(g); }
 
 // ---- Preconditions (§9.5, §9.6) -------------------------------------------------------------
 
-std::optional<RefineRefusal> Lattice::refine_refusal(const Point& c, Index& ci) const {
+std::optional<RefineRefusal> Lattice::refine_refusal(const Point& c, Index& ci, std::size_t& at) const {
   // spec/lattice3d.md §4 preconditions, in the reference's order.
-  ci = find_center(c);
+  ci = find_ref(c, false, at);
   if (ci == kNone) return RefineRefusal::NoSuchCell;
   const int l = level(ci);
   if (l >= size_.L) return RefineRefusal::MaxLevel;
@@ -783,10 +795,10 @@ std::optional<RefineRefusal> Lattice::refine_refusal(const Point& c, Index& ci) 
   return std::nullopt;
 }
 
-std::optional<CoarsenRefusal> Lattice::coarsen_refusal(const Point& n, Index& ni, int& l) const {
+std::optional<CoarsenRefusal> Lattice::coarsen_refusal(const Point& n, Index& ni, int& l, std::size_t& at) const {
   // spec/lattice3d.md §5 preconditions, in the reference's order.
   const int t = center_tz(n);
-  ni = t >= 0 ? find_refined(n) : kNone;
+  ni = t >= 0 ? find_ref(n, true, at) : kNone;
   if (ni == kNone) return find_node(n) != kNone ? CoarsenRefusal::NotARefinedCenter : CoarsenRefusal::NoSuchNode;
   l = size_.L - t;
   if (l >= size_.L) return CoarsenRefusal::NotARefinedCenter;
@@ -817,13 +829,15 @@ std::optional<CoarsenRefusal> Lattice::coarsen_refusal(const Point& n, Index& ni
 
 std::optional<RefineRefusal> Lattice::can_refine(const Point& c) const {
   Index ci;
-  return refine_refusal(c, ci);
+  std::size_t at;
+  return refine_refusal(c, ci, at);
 }
 
 std::optional<CoarsenRefusal> Lattice::can_coarsen(const Point& n) const {
   Index ni;
   int l;
-  return coarsen_refusal(n, ni, l);
+  std::size_t at;
+  return coarsen_refusal(n, ni, l, at);
 }
 
 // ---- Refine (§4 as §9.5) -------------------------------------------------------------------
@@ -831,11 +845,14 @@ std::optional<CoarsenRefusal> Lattice::can_coarsen(const Point& n) const {
 RefineResult Lattice::refine(const Point& c) {
   RefineResult result;
   Index ci;
-  result.refused = refine_refusal(c, ci);
+  std::size_t at = 0;  // c's home
+  result.refused = refine_refusal(c, ci, at);
   if (result.refused) return result;
   std::size_t new_nodes = 1;  // c, and a node on each edge and face that has none
   unroll<18>([&](auto i) { new_nodes += centers_[ci].nbr[kMidpointSlots[decltype(i)::value]] == kNone; });
-  ensure_room(8, new_nodes, 8);  // c's table entry is renamed, the 8 children added
+  const std::size_t slots = table_.slots();
+  ensure_room(8, new_nodes, 8);               // c's table entry is renamed, the 8 children added
+  if (table_.slots() != slots) at = home(c);  // rehashed: c's home moved
 
   const int l = level(ci);
   const std::int64_t h = half_side(l);
@@ -847,7 +864,7 @@ RefineResult Lattice::refine(const Point& c) {
   std::copy(std::begin(centers_[ci].nbr), std::end(centers_[ci].nbr), G);
   // R2g, R2h: c leaves C and joins N, under the same table entry.
   const Index cn = alloc_node();
-  table_.replace(ci, home(c), cn | kNodeBit);
+  table_.replace(ci, at, cn | kNodeBit);
   free_center(ci);
   // R2a, R2b: Y = {y_o}, y_o centred at c + s_o h/2 (choice Q1).
   Index y[8];
@@ -906,7 +923,8 @@ CoarsenResult Lattice::coarsen(const Point& n) {
   CoarsenResult result;
   Index ni;
   int l = 0;
-  result.refused = coarsen_refusal(n, ni, l);
+  std::size_t at = 0;  // n's home
+  result.refused = coarsen_refusal(n, ni, l, at);
   if (result.refused) return result;
   // Coarsening frees 8 centers, takes 1 and adds no table entry: no room to make.
   const std::int64_t h = half_side(l);
@@ -925,7 +943,7 @@ CoarsenResult Lattice::coarsen(const Point& n) {
   for (int o = 0; o < 8; ++o) table_erase(y[o], table_.family_slot(family, static_cast<std::size_t>(o)));
   for (int o = 0; o < 8; ++o) free_center(y[o]);
   const Index cc = alloc_center(n);
-  table_.replace(ni | kNodeBit, home(n), cc);
+  table_.replace(ni | kNodeBit, at, cc);
   free_node(ni);
 
   // K2a, K4b: every node of B lists the merged cell in its octants inside it.

@@ -205,6 +205,7 @@ class Lattice {
   inline std::size_t home_at(const d3::Point& p, int t) const;
   std::size_t ref_home(Index ref) const;  ///< the home of a table entry's key
   Index find_ref(const d3::Point& p, bool node) const;
+  Index find_ref(const d3::Point& p, bool node, std::size_t& at) const;  ///< and p's home
   Index find_center(const d3::Point& p) const { return find_ref(p, false); }
   Index find_refined(const d3::Point& p) const;  ///< the node at a refined center, or kNone
   /// The node at p, any kind, from the table and the geometry (§9.3), or kNone.
@@ -218,8 +219,9 @@ class Lattice {
   inline void table_erase(Index ref, std::size_t at);
   void rehash(std::size_t slots);
 
-  std::optional<RefineRefusal> refine_refusal(const d3::Point& c, Index& ci) const;
-  std::optional<CoarsenRefusal> coarsen_refusal(const d3::Point& n, Index& ni, int& l) const;
+  /// The refusal, or none with the record and its table home (`at`).
+  std::optional<RefineRefusal> refine_refusal(const d3::Point& c, Index& ci, std::size_t& at) const;
+  std::optional<CoarsenRefusal> coarsen_refusal(const d3::Point& n, Index& ni, int& l, std::size_t& at) const;
 
   /// Room for that many more centers, nodes and table entries, so that the
   /// update that follows cannot allocate. Load factor at most 0.6.
