@@ -25,6 +25,8 @@
 #include <map>
 #include <new>
 #include <stdexcept>
+#include <type_traits>
+#include <utility>
 
 #include "bccmis/d3/detail/position_order.h"
 #include "bccmis/text_writer.h"
@@ -125,8 +127,7 @@ constexpr std::array<SlotRule, 26> make_rules() {
 constexpr std::array<SlotRule, 26> kRule = make_rules();
 const SlotRule& rule(int k) { return kRule[static_cast<std::size_t>(k)]; }
 
-// The slots in sorted order of the positions they name (x, then y, then z),
-// and the 18 edge and face slots in that order.
+// The slots in sorted order of the positions they name (x, then y, then z).
 constexpr std::array<int, 26> make_sorted_slots() {
   std::array<int, 26> out{};
   std::size_t k = 0;
@@ -137,14 +138,15 @@ constexpr std::array<int, 26> make_sorted_slots() {
   return out;
 }
 constexpr std::array<int, 26> kSortedSlots = make_sorted_slots();
-constexpr std::array<int, 18> make_sorted_midpoints() {
+// The 18 edge and face slots in slot order (the order of a record's slots).
+constexpr std::array<int, 18> make_midpoint_slots() {
   std::array<int, 18> out{};
   std::size_t k = 0;
-  for (const int s : kSortedSlots)
+  for (int s = 0; s < 26; ++s)
     if (kRule[static_cast<std::size_t>(s)].nz != 7) out[k++] = s;
   return out;
 }
-constexpr std::array<int, 18> kSortedMidpoints = make_sorted_midpoints();
+constexpr std::array<int, 18> kMidpointSlots = make_midpoint_slots();
 // The octants in sorted order of the children's positions.
 constexpr int kSortedOctants[8] = {0, 4, 2, 6, 1, 5, 3, 7};
 // Refine: corner e of child o is the node at grid point g of its parent
@@ -161,7 +163,42 @@ constexpr std::array<std::array<int, 8>, 8> make_child_corners() {
     }
   return out;
 }
-constexpr std::array<std::array<int, 8>, 8> kChildCorner = make_child_corners();
+// The pass of refine writes each child's corners from the nodes around it:
+// the node in slot k lists, in its octant t inside the parent, the child
+// y_(t XOR nz), whose corner toward the node is t XOR 7. The same as
+// child o's corner e read from the grid (above), for every child and corner.
+constexpr bool corners_from_nodes_agree() {
+  constexpr auto child_corner = make_child_corners();
+  int written = 0;
+  for (int k = 0; k < 26; ++k)
+    for (int j = 0; j < kRule[static_cast<std::size_t>(k)].inside_count; ++j) {
+      const SlotRule& r = kRule[static_cast<std::size_t>(k)];
+      const int t = r.inside_octant[j];
+      if (child_corner[static_cast<std::size_t>(t ^ r.nz)][static_cast<std::size_t>(t ^ 7)] != k) return false;
+      ++written;
+    }
+  for (int o = 0; o < 8; ++o)  // the parent's own node: corner o ^ 7 of child o
+    if (child_corner[static_cast<std::size_t>(o)][static_cast<std::size_t>(o ^ 7)] != -1) return false;
+  return written + 8 == 64;  // each of the 8 x 8 corners once
+}
+static_assert(corners_from_nodes_agree());
+
+// f(std::integral_constant<int, I>{}) for I = 0 .. N-1, unrolled: a pass over
+// the slots whose rule fields and indices are constants in every step.
+template <class F, int... I>
+void unroll(F&& f, std::integer_sequence<int, I...>) {
+  (f(std::integral_constant<int, I>{}), ...);
+}
+template <int N, class F>
+void unroll(F&& f) {
+  unroll(f, std::make_integer_sequence<int, N>{});
+}
+// Every slot of a record kNone, as N stores (std::fill of 0xFF bytes
+// becomes a call to memset).
+template <int N>
+void fill_none(Index (&slots)[N]) {
+  unroll<N>([&](auto i) { slots[i] = Lattice::kNone; });
+}
 
 std::int64_t coord(const Point& p, int a) { return a == 0 ? p.x : a == 1 ? p.y : p.z; }
 Point offset(const Point& p, const int d[3], std::int64_t h) {
@@ -173,9 +210,7 @@ bool is_corner(int slot) { return rule(slot).nz == 7; }
 
 // ---- Records and geometry (§9.2) --------------------------------------------------
 
-int Lattice::level(Index c) const { return size_.L - std::countr_zero(static_cast<std::uint64_t>(centers_[c].p.x)); }
-
-Point Lattice::node_position(Index n) const {
+inline Point Lattice::node_position(Index n) const {
   const Node& r = nodes_[n];
   int t = 0;
   while (r.cell[t] == kNone) ++t;  // a live node has a cell in some octant
@@ -189,7 +224,7 @@ Point Lattice::node_position(Index n) const {
   return {q[0], q[1], q[2]};
 }
 
-int Lattice::center_tz(const Point& p) const {
+inline int Lattice::center_tz(const Point& p) const {
   if (p.x <= 0 || p.y <= 0 || p.z <= 0 || p.x >= extent_[0] || p.y >= extent_[1] || p.z >= extent_[2]) return -1;
   const int t = std::countr_zero(static_cast<std::uint64_t>(p.x));
   if (t != std::countr_zero(static_cast<std::uint64_t>(p.y)) ||
@@ -200,17 +235,17 @@ int Lattice::center_tz(const Point& p) const {
 
 // ---- Position table (§9.4) -------------------------------------------------------------
 
-std::size_t Lattice::home(const Point& p) const {
+inline std::size_t Lattice::home(const Point& p) const {
   return home_at(p, std::countr_zero(static_cast<std::uint64_t>(p.x)));
 }
 
-std::size_t Lattice::home_at(const Point& p, int t) const {
+inline std::size_t Lattice::home_at(const Point& p, int t) const {
   // p: a center position, every coordinate an odd multiple of 2^t.
   if (t >= size_.L) return table_.home_of_hash(mix(p));  // level 0: no parent
   const std::int64_t s = std::int64_t{1} << (t + 2);     // the parent's side
   const Point parent{(p.x & ~(s - 1)) | (s / 2), (p.y & ~(s - 1)) | (s / 2), (p.z & ~(s - 1)) | (s / 2)};
   const std::size_t o = ((p.x & (s / 2)) ? 1u : 0u) | ((p.y & (s / 2)) ? 2u : 0u) | ((p.z & (s / 2)) ? 4u : 0u);
-  return table_.line_slot(table_.home_of_hash(mix(parent)), o);
+  return table_.family_slot(mix(parent), o);
 }
 
 std::size_t Lattice::ref_home(Index ref) const {
@@ -218,25 +253,31 @@ std::size_t Lattice::ref_home(Index ref) const {
 }
 
 Index Lattice::find_ref(const Point& p, bool node) const {
+  std::size_t at;
+  return find_ref(p, node, at);
+}
+
+Index Lattice::find_ref(const Point& p, bool node, std::size_t& at) const {
   const int t = center_tz(p);
   if (t < 0) return kNone;
+  at = home_at(p, t);
   const auto home_of = [this](Index r) { return ref_home(r); };
   if (node) {
     const Index r = table_.find(
-        home_at(p, t), [&](Index q) { return (q & kNodeBit) && node_position(q & ~kNodeBit) == p; }, home_of);
+        at, [&](Index q) { return (q & kNodeBit) && node_position(q & ~kNodeBit) == p; }, home_of);
     return r == kNone ? kNone : r & ~kNodeBit;
   }
   return table_.find(
-      home_at(p, t), [&](Index q) { return !(q & kNodeBit) && centers_[q].p == p; }, home_of);
+      at, [&](Index q) { return !(q & kNodeBit) && centers_[q].p == p; }, home_of);
 }
 
 Index Lattice::find_refined(const Point& p) const { return find_ref(p, true); }
 
-void Lattice::table_insert(Index ref, std::size_t at) {
+inline void Lattice::table_insert(Index ref, std::size_t at) {
   table_.insert(ref, at, [this](Index r) { return ref_home(r); });
 }
 
-void Lattice::table_erase(Index ref, std::size_t at) {
+inline void Lattice::table_erase(Index ref, std::size_t at) {
   table_.erase(ref, at, [this](Index r) { return ref_home(r); });
 }
 
@@ -294,7 +335,7 @@ Index Lattice::find_node(const Point& p) const {
 
 // ---- Pools ------------------------------------------------------------------------------
 
-Index Lattice::alloc_center(const Point& p) {
+inline Index Lattice::alloc_center(const Point& p) {
   Index c;
   if (free_centers_ == kNone) {
     centers_.emplace_back();
@@ -306,12 +347,12 @@ Index Lattice::alloc_center(const Point& p) {
   }
   Center& r = centers_[c];
   r.p = p;
-  std::fill(std::begin(r.nbr), std::end(r.nbr), kNone);
+  fill_none(r.nbr);
   ++cell_count_;
   return c;
 }
 
-Index Lattice::alloc_node() {
+inline Index Lattice::alloc_node() {
   Index n;
   if (free_nodes_ == kNone) {
     nodes_.emplace_back();
@@ -321,12 +362,12 @@ Index Lattice::alloc_node() {
     free_nodes_ = nodes_[n].cell[0];
     --free_node_count_;
   }
-  std::fill(std::begin(nodes_[n].cell), std::end(nodes_[n].cell), kNone);
+  fill_none(nodes_[n].cell);
   ++node_count_;
   return n;
 }
 
-void Lattice::free_center(Index c) {
+inline void Lattice::free_center(Index c) {
   Center& r = centers_[c];
   r.nbr[25] = kFreeMark;
   r.nbr[0] = free_centers_;
@@ -335,9 +376,9 @@ void Lattice::free_center(Index c) {
   --cell_count_;
 }
 
-void Lattice::free_node(Index n) {
+inline void Lattice::free_node(Index n) {
   Node& r = nodes_[n];
-  std::fill(std::begin(r.cell), std::end(r.cell), kNone);
+  fill_none(r.cell);
   r.cell[7] = kFreeMark;
   r.cell[0] = free_nodes_;
   free_nodes_ = n;
@@ -732,9 +773,9 @@ std::string canonical_state(const Lattice& g) { return canonical_text(g); }
 
 // ---- Preconditions (§9.5, §9.6) -------------------------------------------------------------
 
-std::optional<RefineRefusal> Lattice::refine_refusal(const Point& c, Index& ci) const {
+std::optional<RefineRefusal> Lattice::refine_refusal(const Point& c, Index& ci, std::size_t& at) const {
   // spec/lattice3d.md §4 preconditions, in the reference's order.
-  ci = find_center(c);
+  ci = find_ref(c, false, at);
   if (ci == kNone) return RefineRefusal::NoSuchCell;
   const int l = level(ci);
   if (l >= size_.L) return RefineRefusal::MaxLevel;
@@ -744,17 +785,20 @@ std::optional<RefineRefusal> Lattice::refine_refusal(const Point& c, Index& ci) 
   // corner with d's signs on nz(d) and - elsewhere. 6 faces + 12 edges.
   const Center& rc = centers_[ci];
   const std::int64_t coarse_mask = 2 * half_side(l) - 1;  // a coarser center's coordinates are multiples of 2h
-  for (const int k : kSortedMidpoints) {
-    const Index x = nodes_[rc.nbr[rule(k).corner]].cell[rule(k).across];
-    if (x != kNone && (centers_[x].p.x & coarse_mask) == 0) return RefineRefusal::CoarserNeighbor;
-  }
+  bool coarser = false;
+  unroll<18>([&](auto i) {
+    constexpr const SlotRule& r = kRule[kMidpointSlots[decltype(i)::value]];
+    const Index x = nodes_[rc.nbr[r.corner]].cell[r.across];
+    coarser = coarser || (x != kNone && (centers_[x].p.x & coarse_mask) == 0);
+  });
+  if (coarser) return RefineRefusal::CoarserNeighbor;
   return std::nullopt;
 }
 
-std::optional<CoarsenRefusal> Lattice::coarsen_refusal(const Point& n, Index& ni, int& l) const {
+std::optional<CoarsenRefusal> Lattice::coarsen_refusal(const Point& n, Index& ni, int& l, std::size_t& at) const {
   // spec/lattice3d.md §5 preconditions, in the reference's order.
   const int t = center_tz(n);
-  ni = t >= 0 ? find_refined(n) : kNone;
+  ni = t >= 0 ? find_ref(n, true, at) : kNone;
   if (ni == kNone) return find_node(n) != kNone ? CoarsenRefusal::NotARefinedCenter : CoarsenRefusal::NoSuchNode;
   l = size_.L - t;
   if (l >= size_.L) return CoarsenRefusal::NotARefinedCenter;
@@ -771,23 +815,29 @@ std::optional<CoarsenRefusal> Lattice::coarsen_refusal(const Point& n, Index& ni
           if (rn.cell[a] == rn.cell[b]) return CoarsenRefusal::NotARefinedCenter;
       return CoarsenRefusal::ChildrenRefined;
     }
-  for (int o = 0; o < 8; ++o) {  // |N(y)| = 8: no node but the corners
+  // |N(y)| = 8: no node but the corners. kNone has every bit set, so the 8
+  // children's 144 edge and face slots hold no node iff their AND is kNone:
+  // one pass of loads and ANDs, no branch per slot.
+  Index none = kNone;
+  for (int o = 0; o < 8; ++o) {
     const Center& y = centers_[rn.cell[o]];
-    for (const int k : kSortedMidpoints)
-      if (y.nbr[k] != kNone) return CoarsenRefusal::FinerNeighbor;
+    for (const int k : kMidpointSlots) none &= y.nbr[k];
   }
+  if (none != kNone) return CoarsenRefusal::FinerNeighbor;
   return std::nullopt;
 }
 
 std::optional<RefineRefusal> Lattice::can_refine(const Point& c) const {
   Index ci;
-  return refine_refusal(c, ci);
+  std::size_t at;
+  return refine_refusal(c, ci, at);
 }
 
 std::optional<CoarsenRefusal> Lattice::can_coarsen(const Point& n) const {
   Index ni;
   int l;
-  return coarsen_refusal(n, ni, l);
+  std::size_t at;
+  return coarsen_refusal(n, ni, l, at);
 }
 
 // ---- Refine (§4 as §9.5) -------------------------------------------------------------------
@@ -795,16 +845,18 @@ std::optional<CoarsenRefusal> Lattice::can_coarsen(const Point& n) const {
 RefineResult Lattice::refine(const Point& c) {
   RefineResult result;
   Index ci;
-  result.refused = refine_refusal(c, ci);
+  std::size_t at = 0;  // c's home
+  result.refused = refine_refusal(c, ci, at);
   if (result.refused) return result;
   std::size_t new_nodes = 1;  // c, and a node on each edge and face that has none
-  for (const int k : kSortedMidpoints) new_nodes += centers_[ci].nbr[k] == kNone;
-  ensure_room(8, new_nodes, 8);  // c's table entry is renamed, the 8 children added
+  unroll<18>([&](auto i) { new_nodes += centers_[ci].nbr[kMidpointSlots[decltype(i)::value]] == kNone; });
+  const std::size_t slots = table_.slots();
+  ensure_room(8, new_nodes, 8);               // c's table entry is renamed, the 8 children added
+  if (table_.slots() != slots) at = home(c);  // rehashed: c's home moved
 
   const int l = level(ci);
   const std::int64_t h = half_side(l);
-  const std::size_t base = table_.home_of_hash(mix(c));  // the children's table line
-  table_.prefetch(table_.line_slot(base, 0));
+  const std::uint64_t family = mix(c);  // the children's homes (§9.4)
 
   // R1a-R1c: B = N(c) by slot: the corners P, the old junctions J (the
   // edge and face slots that hold a node).
@@ -812,7 +864,7 @@ RefineResult Lattice::refine(const Point& c) {
   std::copy(std::begin(centers_[ci].nbr), std::end(centers_[ci].nbr), G);
   // R2g, R2h: c leaves C and joins N, under the same table entry.
   const Index cn = alloc_node();
-  table_.replace(ci, home(c), cn | kNodeBit);
+  table_.replace(ci, at, cn | kNodeBit);
   free_center(ci);
   // R2a, R2b: Y = {y_o}, y_o centred at c + s_o h/2 (choice Q1).
   Index y[8];
@@ -820,43 +872,48 @@ RefineResult Lattice::refine(const Point& c) {
     y[o] = alloc_center({c.x + sign(o, 0) * h / 2, c.y + sign(o, 1) * h / 2, c.z + sign(o, 2) * h / 2});
   for (const int o : kSortedOctants) result.Y.push_back(centers_[y[o]].p);
 
-  // R3a-R3h: a new node j+ on each edge and face of c without one. The
-  // cells around it outside c (X_e, X_f) are read at the corner with d's
-  // signs on nz(d) and - elsewhere; each gets j+ in its slot toward it.
-  for (const int k : kSortedMidpoints) {
-    if (G[k] != kNone) continue;
-    const SlotRule& r = rule(k);
-    const Index jp = alloc_node();
-    G[k] = jp;
-    result.J_plus.push_back(offset(c, r.d, h));
-    const Node& corner = nodes_[G[r.corner]];
-    Node& rj = nodes_[jp];
-    for (int i = 0; i < r.outside_count; ++i) {
-      const Index x = corner.cell[r.outside_at_corner[i]];
-      rj.cell[r.outside_octant[i]] = x;                           // R3d, R3g: X ⊆ N(j+)
-      if (x != kNone) centers_[x].nbr[r.outside_toward[i]] = jp;  // R3c, R3f
+  // One pass over the 26 slots in sorted order (§9.5). R3a-R3h: a new node
+  // j+ on each edge and face of c without one; the cells around it outside c
+  // (X_e, X_f) are read at the corner with d's signs on nz(d) and -
+  // elsewhere (octants outside c, which this pass does not write), and each
+  // gets j+ in its slot toward it. R2c-R2f, R3d-R3h, R4a, R4b: the node b in
+  // the slot lists, in each of its octants t inside c, the child y_(t XOR
+  // nz(d)), which has b as its corner t XOR 7 (the corner toward b).
+  unroll<8>([&](auto t) {
+    constexpr int e = corner_slot(decltype(t)::value ^ 7);
+    nodes_[cn].cell[t] = y[t];
+    centers_[y[t]].nbr[e] = cn;
+  });
+  unroll<26>([&](auto i) {
+    constexpr int k = kSortedSlots[decltype(i)::value];
+    constexpr const SlotRule& r = kRule[k];
+    if constexpr (r.nz != 7) {
+      if (G[k] == kNone) {
+        const Index jp = alloc_node();
+        G[k] = jp;
+        result.J_plus.push_back(offset(c, r.d, h));
+        const Node& corner = nodes_[G[r.corner]];
+        Node& rj = nodes_[jp];
+        for (int j = 0; j < r.outside_count; ++j) {
+          const Index x = corner.cell[r.outside_at_corner[j]];
+          rj.cell[r.outside_octant[j]] = x;                           // R3d, R3g: X ⊆ N(j+)
+          if (x != kNone) centers_[x].nbr[r.outside_toward[j]] = jp;  // R3c, R3f
+        }
+      }
     }
-  }
-  // R2c-R2e, R3d-R3h, R4a: every node of c's boundary lists, in each of its
-  // octants inside c, the child there (c's own node: all 8).
-  for (int t = 0; t < 8; ++t) nodes_[cn].cell[t] = y[t];
-  for (int k = 0; k < 26; ++k) {
-    const SlotRule& r = rule(k);
-    Node& b = nodes_[G[k]];
-    for (int i = 0; i < r.inside_count; ++i) b.cell[r.inside_octant[i]] = y[r.inside_child[i]];
-  }
-  // R2f, R3e, R3h, R4b: each child has its 8 corners: the grid point of c
-  // with g_a = s_o,a where its corner's sign agrees with s_o, 0 elsewhere.
-  for (int o = 0; o < 8; ++o) {
-    Center& ry = centers_[y[o]];
-    for (int e = 0; e < 8; ++e) {
-      const int g = kChildCorner[static_cast<std::size_t>(o)][static_cast<std::size_t>(e)];
-      ry.nbr[corner_slot(e)] = g < 0 ? cn : G[g];
-    }
-  }
+    const Index b = G[k];
+    Node& rb = nodes_[b];
+    unroll<r.inside_count>([&](auto j) {
+      constexpr int t = kRule[k].inside_octant[decltype(j)::value];
+      constexpr int e = corner_slot(t ^ 7);
+      const Index yc = y[t ^ kRule[k].nz];
+      rb.cell[t] = yc;
+      centers_[yc].nbr[e] = b;
+    });
+  });
   // The children's table entries last: a saturated displacement recomputes
   // the home of another entry's key, which needs every node consistent.
-  for (int o = 0; o < 8; ++o) table_insert(y[o], table_.line_slot(base, static_cast<std::size_t>(o)));
+  for (int o = 0; o < 8; ++o) table_insert(y[o], table_.family_slot(family, static_cast<std::size_t>(o)));
   return result;
 }
 
@@ -866,11 +923,12 @@ CoarsenResult Lattice::coarsen(const Point& n) {
   CoarsenResult result;
   Index ni;
   int l = 0;
-  result.refused = coarsen_refusal(n, ni, l);
+  std::size_t at = 0;  // n's home
+  result.refused = coarsen_refusal(n, ni, l, at);
   if (result.refused) return result;
   // Coarsening frees 8 centers, takes 1 and adds no table entry: no room to make.
   const std::int64_t h = half_side(l);
-  const std::size_t base = table_.home_of_hash(mix(n));
+  const std::uint64_t family = mix(n);
 
   // K1a: Y = N(n), y_o in octant o. K1b: B, the 26 nodes of the merged
   // cube's boundary: grid point d is corner (d on nz(d), + elsewhere) of the
@@ -879,13 +937,13 @@ CoarsenResult Lattice::coarsen(const Point& n) {
   std::copy(std::begin(nodes_[ni].cell), std::end(nodes_[ni].cell), y);
   for (const int o : kSortedOctants) result.Y.push_back(centers_[y[o]].p);
   Index B[26];
-  for (int k = 0; k < 26; ++k) B[k] = centers_[y[rule(k).child]].nbr[rule(k).child_corner];
+  unroll<26>([&](auto k) { B[k] = centers_[y[kRule[k].child]].nbr[kRule[k].child_corner]; });
   // K2b, K2f: the children are deleted. K2c-K2e: n leaves N and joins C
   // (choice Q4), under the same table entry.
-  for (int o = 0; o < 8; ++o) table_erase(y[o], table_.line_slot(base, static_cast<std::size_t>(o)));
+  for (int o = 0; o < 8; ++o) table_erase(y[o], table_.family_slot(family, static_cast<std::size_t>(o)));
   for (int o = 0; o < 8; ++o) free_center(y[o]);
   const Index cc = alloc_center(n);
-  table_.replace(ni | kNodeBit, home(n), cc);
+  table_.replace(ni | kNodeBit, at, cc);
   free_node(ni);
 
   // K2a, K4b: every node of B lists the merged cell in its octants inside it.
@@ -893,22 +951,26 @@ CoarsenResult Lattice::coarsen(const Point& n) {
   // has it as a corner, that is iff the octants outside on one side of the
   // merged cube's boundary hold different cells.
   Center& rc = centers_[cc];
-  for (const int k : kSortedSlots) {
-    const SlotRule& r = rule(k);
+  unroll<26>([&](auto i) {
+    constexpr int k = kSortedSlots[decltype(i)::value];
+    constexpr const SlotRule& r = kRule[k];
     Node& b = nodes_[B[k]];
-    for (int i = 0; i < r.inside_count; ++i) b.cell[r.inside_octant[i]] = cc;
+    for (int j = 0; j < r.inside_count; ++j) b.cell[r.inside_octant[j]] = cc;
     rc.nbr[k] = B[k];  // K4a
-    bool corner_of_a_cell = false;
-    for (int i = 0; i < r.outside_count; ++i)
-      corner_of_a_cell = corner_of_a_cell || b.cell[r.outside_octant[i]] != b.cell[r.outside_beside[i]];
-    if (r.nz == 7 || corner_of_a_cell) continue;
-    // K3b-K3e: j in J-: its cells outside drop it, it is deleted.
-    for (int i = 0; i < r.outside_count; ++i)
-      if (const Index x = b.cell[r.outside_octant[i]]; x != kNone) centers_[x].nbr[r.outside_toward[i]] = kNone;
-    result.J_minus.push_back(offset(n, r.d, h));
-    rc.nbr[k] = kNone;
-    free_node(B[k]);
-  }
+    if constexpr (r.nz != 7) {
+      bool corner_of_a_cell = false;
+      for (int j = 0; j < r.outside_count; ++j)
+        corner_of_a_cell = corner_of_a_cell || b.cell[r.outside_octant[j]] != b.cell[r.outside_beside[j]];
+      if (!corner_of_a_cell) {
+        // K3b-K3e: j in J-: its cells outside drop it, it is deleted.
+        for (int j = 0; j < r.outside_count; ++j)
+          if (const Index x = b.cell[r.outside_octant[j]]; x != kNone) centers_[x].nbr[r.outside_toward[j]] = kNone;
+        result.J_minus.push_back(offset(n, r.d, h));
+        rc.nbr[k] = kNone;
+        free_node(B[k]);
+      }
+    }
+  });
   return result;
 }
 

@@ -16,7 +16,8 @@
 //     node's position from any cell around it and the octants that cell fills.
 //   - the position table holds the cells and the refined centers (nodes at a
 //     center's position) only; the other nodes are found from a cell and a
-//     direction. The 8 children of a cell share one 128-byte block of it.
+//     direction. The 8 children of a cell take their homes from one hash
+//     of the cell.
 //   - refine and coarsen make room first (pools, table) and then only write,
 //     so in steady state they allocate nothing and a throwing allocation
 //     leaves the lattice as it was.
@@ -28,6 +29,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -189,16 +191,21 @@ class Lattice {
     bool live() const { return cell[7] != kFreeMark; }
   };
 
-  int level(Index c) const;  ///< of a live center
+  // The helpers below are inline (defined in lattice.cpp, used only there),
+  // so that the operations inline them.
+  int level(Index c) const {  ///< of a live center
+    return size_.L - std::countr_zero(static_cast<std::uint64_t>(centers_[c].p.x));
+  }
   std::int64_t half_side(int level) const { return std::int64_t{1} << (size_.L - level); }
-  d3::Point node_position(Index n) const;  ///< of a live node (§9.2)
+  inline d3::Point node_position(Index n) const;  ///< of a live node (§9.2)
   /// The trailing zeros t of a position where a cell center can be (level
   /// L - t), or -1 for any other position.
-  int center_tz(const d3::Point& p) const;
-  std::size_t home(const d3::Point& p) const;  ///< p: a center position
-  std::size_t home_at(const d3::Point& p, int t) const;
+  inline int center_tz(const d3::Point& p) const;
+  inline std::size_t home(const d3::Point& p) const;  ///< p: a center position
+  inline std::size_t home_at(const d3::Point& p, int t) const;
   std::size_t ref_home(Index ref) const;  ///< the home of a table entry's key
   Index find_ref(const d3::Point& p, bool node) const;
+  Index find_ref(const d3::Point& p, bool node, std::size_t& at) const;  ///< and p's home
   Index find_center(const d3::Point& p) const { return find_ref(p, false); }
   Index find_refined(const d3::Point& p) const;  ///< the node at a refined center, or kNone
   /// The node at p, any kind, from the table and the geometry (§9.3), or kNone.
@@ -208,20 +215,21 @@ class Lattice {
   /// its slots (§9.3).
   Index locate(const d3::Point& p, int o) const;
   void prefetch_home(const d3::Point& p) const;  ///< the table line of p's home, if p can be a center
-  void table_insert(Index ref, std::size_t at);
-  void table_erase(Index ref, std::size_t at);
+  inline void table_insert(Index ref, std::size_t at);
+  inline void table_erase(Index ref, std::size_t at);
   void rehash(std::size_t slots);
 
-  std::optional<RefineRefusal> refine_refusal(const d3::Point& c, Index& ci) const;
-  std::optional<CoarsenRefusal> coarsen_refusal(const d3::Point& n, Index& ni, int& l) const;
+  /// The refusal, or none with the record and its table home (`at`).
+  std::optional<RefineRefusal> refine_refusal(const d3::Point& c, Index& ci, std::size_t& at) const;
+  std::optional<CoarsenRefusal> coarsen_refusal(const d3::Point& n, Index& ni, int& l, std::size_t& at) const;
 
   /// Room for that many more centers, nodes and table entries, so that the
   /// update that follows cannot allocate. Load factor at most 0.6.
   void ensure_room(std::size_t new_centers, std::size_t new_nodes, std::size_t new_keys);
-  Index alloc_center(const d3::Point& p);
-  Index alloc_node();
-  void free_center(Index c);
-  void free_node(Index n);
+  inline Index alloc_center(const d3::Point& p);
+  inline Index alloc_node();
+  inline void free_center(Index c);
+  inline void free_node(Index n);
 
   /// The live center (node) records sorted by position.
   std::vector<Index> sorted_centers() const;

@@ -32,12 +32,12 @@ class PositionTable {
   std::size_t memory_bytes() const { return slots_.capacity() * sizeof(std::uint32_t); }
   /// The home slot of a 64-bit hash: its top bits.
   std::size_t home_of_hash(std::uint64_t hash) const { return static_cast<std::size_t>(hash >> shift_); }
-  /// Slot k (0..7) of the 32-slot (128-byte, two cache lines) block that
-  /// holds slot `base`, never `base` itself: the homes of the 8 children of
-  /// a cell whose hash has home `base` (4 slots apart, so that a family fills
-  /// a quarter of its block and the Robin Hood runs stay short).
-  std::size_t line_slot(std::size_t base, std::size_t k) const {
-    return ((base & ~std::size_t{31}) | ((base + 1 + 4 * k) & 31)) & (slots_.size() - 1);
+  /// spec/lattice3d.md §9.4: the home of child k (0..7) of a cell whose
+  /// hash is `hash`: the top bits of (hash XOR k φ) K, one multiplication a
+  /// child, so that the 8 children need one hash of their parent and their
+  /// homes spread like independent hashes' (no crowded block).
+  std::size_t family_slot(std::uint64_t hash, std::size_t k) const {
+    return home_of_hash((hash ^ (k * 0x9E3779B97F4A7C15ull)) * 0xD6E8FEB86659FD93ull);
   }
   void prefetch(std::size_t at) const { __builtin_prefetch(&slots_[at]); }
 
