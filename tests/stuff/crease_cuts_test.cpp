@@ -51,16 +51,15 @@ void expect_within_s10(const d3::TetMeshF& mesh) {
 //= spec/stuffing.md S35 type=test
 TEST(CreaseCuts, JointAtLevel3ConformsTheCurvesSnappingLeaves) {
   // S35.7 with delta 1/4: CGAL's joint at level 3 has 22 curves, of which
-  // S30-S35 conform 20; with its cut points on the creases, all 22, each
-  // covered as S32's checker (Settings::check) verifies.
+  // S30-S35 conform 20 without it (bench/RESULTS.md section 37); with its
+  // cut points on the creases, all 22, each covered as S32's checker
+  // (Settings::check) verifies. S35.8 keeps that mesh only because it
+  // conforms more than the run without, which it makes itself.
   const auto joint = load_mesh_file(kCgal + "/joint.off");
-  const Meshed before = mesh_with(*joint, 3, 0, false);
   const Meshed after = mesh_with(*joint, 3, kCreaseCutDistance, true);
-  ASSERT_TRUE(before.features && after.features);
-  EXPECT_EQ(before.features->curves, 22u);
-  EXPECT_EQ(before.features->curves_conformed, 20u);
-  EXPECT_EQ(before.features->placed, 0u);
-  EXPECT_GT(after.features->placed, 0u);
+  ASSERT_TRUE(after.features);
+  EXPECT_EQ(after.features->curves, 22u);
+  EXPECT_GT(after.features->placed_kept, 0u);  // a candidate with placed points kept, not A
   EXPECT_EQ(after.features->curves_conformed, 22u);
   EXPECT_EQ(after.features->corners_conformed, after.features->corners);
   expect_within_s10(after.stuffed.mesh);
