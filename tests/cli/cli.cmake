@@ -147,6 +147,23 @@ if(TARGET bccmis::stuff_surface)
                   STDERR_REGEX "point_cloud.ply:8:1: no element 'face' in the header \\(a point cloud is no surface\\)\n$")
   bccmis_cli_test(stuff_ply_stdin_sniffed 0 ARGS stuff - -L 1 --cells 6 -o cube.mesh STDIN_FILE ${_good}/cube_big_endian.ply
                   STDERR_REGEX "^bccmis stuff: mesh stdin: 12 triangles: .* tetrahedra written to 1 file\n$")
+  # spec/cli.md, --crease-cuts (stuffing.md S35.7-S35.8): not with
+  # --no-features, for any DELTA; DELTA in [0, 1], both ends accepted, the
+  # doubles just outside refused; with DELTA above 0 --stats counts the
+  # vertices placed and kept.
+  foreach(_delta 0.25 0)
+    bccmis_cli_test(stuff_crease_cuts_no_features.${_delta} 2 ARGS stuff ${_good}/cube.off --crease-cuts ${_delta}
+                    --no-features --stats STDERR_REGEX "^bccmis: --crease-cuts excludes --no-features\nRun 'bccmis stuff --help'")
+  endforeach()
+  foreach(_delta -0.01 -4.9e-324 1.0000000000000002 2)
+    bccmis_cli_test(stuff_crease_cuts_out_of_range.${_delta} 2 ARGS stuff ${_good}/cube.off -L 1 --stats
+                    --crease-cuts ${_delta}
+                    STDERR_REGEX "^bccmis: --crease-cuts: Value ${_delta} not in range 0\\.000000 to 1\\.000000\nRun 'bccmis stuff --help'")
+  endforeach()
+  bccmis_cli_test(stuff_crease_cuts_one 0 ARGS stuff ${_good}/cube.off -L 2 --cells 4 --stats -q --crease-cuts 1
+                  STDOUT_REGEX "\nfeature_curves_conformed [0-9]+\ncrease_cuts_placed [0-9]+\ncrease_cuts_kept [0-9]+\n")
+  bccmis_cli_test(stuff_crease_cuts_zero 0 ARGS stuff ${_good}/cube.off -L 2 --cells 4 --stats -q --crease-cuts 0
+                  STDOUT_REGEX "\nfeature_curves_conformed [0-9]+\nvolume ")
 endif()
 
 # Bad input: exit 2 with file:line:column.

@@ -69,10 +69,11 @@ if(TARGET bccmis::stuff_surface)
 endif()
 
 # S35.7: cut points placed on the creases before warping, on CGAL's joint
-# and fandisk at level 3, with S10's bound and the feature checker.
+# and fandisk at level 3, with S10's bound and the feature checker; S35.8:
+# on CGAL's anchor at level 2 nothing the run without it conforms is lost.
 if(TARGET bccmis::stuff_surface)
   bccmis_add_gtest(stuff_crease_cuts_tests SOURCES crease_cuts_test.cpp
-                   LIBS bccmis::stuffing bccmis::stuff_surface
+                   LIBS bccmis::stuffing bccmis::stuff_surface bccmis::io
                    DEFINITIONS BCCMIS_CGAL_MESHES_DIR="${bccmis_cgal_data}/data/meshes"
                    LABELS unit)
 endif()

@@ -615,7 +615,8 @@ FeatureConformity conform_features(d3::TetMeshF& mesh, const std::vector<std::ar
   }
   // S30.2: the curves, in order; a loop in two pieces from its start and its
   // vertex nearest half its length, both snapped as corners.
-  for (const FeatureCurve& C : features.curves) {
+  for (std::size_t curve = 0; curve < features.curves.size(); ++curve) {
+    const FeatureCurve& C = features.curves[curve];
     std::vector<FeatureCurve> pieces;
     std::vector<std::int64_t> ends;
     if (C.closed) {
@@ -644,7 +645,7 @@ FeatureConformity conform_features(d3::TetMeshF& mesh, const std::vector<std::ar
       if (ok) r.pieces.push_back(pieces[i]);
       conformed = conformed && ok;
     }
-    if (conformed) ++r.curves_conformed;
+    if (conformed) ++r.curves_conformed, r.conformed_curves.push_back(curve);
   }
   return r;
 }

@@ -25,12 +25,13 @@ inline constexpr std::uint8_t kRoomVertex = 4;
 struct FeatureConformity {
   std::vector<Vec3> corners;
   std::vector<FeatureCurve> pieces;
-  std::size_t corners_conformed = 0;   ///< of Features::corners
-  std::size_t curves_conformed = 0;    ///< of Features::curves, every piece conformed
-  std::size_t moves = 0, refused = 0;  ///< the guard's answers (S31)
-  std::size_t room_made = 0;           ///< moves accepted with the interior neighbours moved (S34)
-  std::size_t splits = 0;              ///< boundary edges split onto a crease and kept (S35)
-  std::size_t splits_undone = 0;       ///< splits undone, their piece still not conformed (S35.4)
+  std::size_t corners_conformed = 0;          ///< of Features::corners
+  std::size_t curves_conformed = 0;           ///< of Features::curves, every piece conformed
+  std::vector<std::size_t> conformed_curves;  ///< their indices in Features::curves, increasing (S35.8)
+  std::size_t moves = 0, refused = 0;         ///< the guard's answers (S31)
+  std::size_t room_made = 0;                  ///< moves accepted with the interior neighbours moved (S34)
+  std::size_t splits = 0;                     ///< boundary edges split onto a crease and kept (S35)
+  std::size_t splits_undone = 0;              ///< splits undone, their piece still not conformed (S35.4)
   std::size_t moves_undone =
       0;  ///< moves of older vertices made after those splits (S30.2, S34), undone with them (S35.4)
 };
@@ -61,8 +62,9 @@ struct FeatureReport {
   double distance = -1;                       ///< with the statistics, in world units; -1 when not computed
   std::size_t splits = 0, splits_undone = 0;  ///< S35's splits kept, and undone (S35.4)
   std::size_t moves_undone = 0;               ///< moves undone with them (S35.4)
-  std::size_t placed = 0;                     ///< S35.7: vertices placed on the curves before warping
-  std::size_t placed_kept = 0;                ///< S35.7: cut edges its guard kept at S5's point
+  bool crease_cuts = false;                   ///< S35.7-S35.8 ran (--crease-cuts)
+  std::size_t placed = 0;                     ///< S35.8: vertices placed on the curves in candidate B
+  std::size_t placed_kept = 0;                ///< S35.8: vertices at a placed point in the mesh kept
 };
 
 }  // namespace bccmis::stuff

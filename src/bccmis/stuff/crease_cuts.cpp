@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "bccmis/d3/mesh.h"
+#include "bccmis/io/regions.h"
+#include "bccmis/stuff/stopwatch.h"
 
 namespace bccmis::stuff {
 
@@ -73,6 +75,35 @@ bool in_interval(const std::array<Vec3, 4>& p) {
   for (const double a : d3::dihedral_angles(p))
     if (!(a >= kDihedralBounds[0] && a <= kDihedralBounds[1])) return false;
   return true;
+}
+
+/// One of S35.8's candidates: its mesh conformed (S30-S35).
+struct Candidate {
+  Stuffed stuffed;
+  std::vector<std::array<std::uint32_t, 3>> boundary;
+  FeatureConformity conformity;
+};
+
+Candidate conformed(Stuffed stuffed, const Features& features, double h, bool split_edges, double* seconds) {
+  const auto t0 = Clock::now();
+  Candidate c{std::move(stuffed), {}, {}};
+  (void)io::regions_of(c.stuffed.mesh.tets, &c.boundary);
+  c.conformity = conform_features(c.stuffed.mesh, c.boundary, features, h, split_edges);
+  // S35's splits changed the tetrahedra: their boundary again.
+  if (c.conformity.splits > 0) (void)io::regions_of(c.stuffed.mesh.tets, &c.boundary);
+  if (seconds) *seconds += seconds_since(t0);
+  return c;
+}
+
+/// S35.8's test: x's conformed corners and curves contain a's, and are more.
+bool gains_on(const FeatureConformity& x, const FeatureConformity& a) {
+  // S30.1 lists the conformed corners in the order of Features::corners
+  // (coordinate order), S30.2 the curves by increasing index: both sorted.
+  const bool corners = std::includes(x.corners.begin(), x.corners.end(), a.corners.begin(), a.corners.end());
+  const bool curves = std::includes(x.conformed_curves.begin(), x.conformed_curves.end(), a.conformed_curves.begin(),
+                                    a.conformed_curves.end());
+  return corners && curves &&
+         (x.corners.size() > a.corners.size() || x.conformed_curves.size() > a.conformed_curves.size());
 }
 
 }  // namespace
@@ -154,6 +185,64 @@ Stuffed stuff_on_creases(const Shape& shape, const Fit& fit, const StuffOptions&
   Stuffed s = stuff_fitted(shape, fit, options, Impl::fast, &round_times);
   add(round_times);
   return s;
+}
+
+CreaseConformed stuff_and_conform_on_creases(const Shape& shape, const Fit& fit, const StuffOptions& options,
+                                             const Features& features, double delta, double h, bool split_edges,
+                                             PhaseTimes* times, double* feature_seconds,
+                                             const std::function<void(std::size_t, double)>& on_lattice) {
+  if (times) *times = {};
+  if (feature_seconds) *feature_seconds = 0;
+  const auto add = [times](const PhaseTimes& t) {
+    if (!times) return;
+    times->lattice += t.lattice, times->mesh += t.mesh, times->cut += t.cut, times->warp += t.warp;
+    times->stencils += t.stencils;
+  };
+  CreaseConformed r;
+  // A: the run without S35.7, the same calls as mesh_shape's.
+  PhaseTimes t;
+  Candidate a = conformed(stuff_fitted(shape, fit, options, Impl::fast, &t, on_lattice), features, h, split_edges,
+                          feature_seconds);
+  add(t);
+  const auto keep = [&r](Candidate&& c, CreaseCandidate which, std::size_t placed) {
+    r.stuffed = std::move(c.stuffed);
+    r.boundary = std::move(c.boundary);
+    r.conformity = std::move(c.conformity);
+    r.kept = which;
+    r.placed_kept = placed;
+  };
+  // B: S35.7 with every curve.
+  {
+    Candidate b = conformed(stuff_on_creases(shape, fit, options, features, delta, &r.all_curves, &t), features, h,
+                            split_edges, feature_seconds);
+    add(t);
+    r.candidates = 2;
+    if (gains_on(b.conformity, a.conformity)) {
+      keep(std::move(b), CreaseCandidate::all_curves, r.all_curves.placed);
+      return r;
+    }
+    // G: the curves B conforms and A does not.
+    Features gained = features;
+    gained.curves.clear();
+    for (const std::size_t i : b.conformity.conformed_curves)
+      if (!std::binary_search(a.conformity.conformed_curves.begin(), a.conformity.conformed_curves.end(), i))
+        gained.curves.push_back(features.curves[i]);
+    if (!gained.curves.empty()) {
+      // C: S35.7 with G's curves only (b freed first: two meshes at once).
+      b = {};
+      CreaseCuts cuts;
+      Candidate c = conformed(stuff_on_creases(shape, fit, options, gained, delta, &cuts, &t), features, h, split_edges,
+                              feature_seconds);
+      add(t);
+      r.candidates = 3;
+      if (gains_on(c.conformity, a.conformity)) {
+        keep(std::move(c), CreaseCandidate::gained_curves, cuts.placed);
+        return r;
+      }
+    }
+  }
+  keep(std::move(a), CreaseCandidate::without, 0);
+  return r;
 }
 
 }  // namespace bccmis::stuff

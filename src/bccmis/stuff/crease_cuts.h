@@ -5,11 +5,19 @@
 //   const Features f = detect_features(shape.surface_triangles());
 //   CreaseCuts report;
 //   Stuffed s = stuff_on_creases(shape, fit, options, f, 0.25, &report);
+//
+// stuff_and_conform_on_creases (S35.8) makes that monotone: the meshes
+// with and without the placement, each conformed (S30-S35), and the one
+// kept conforms every corner and curve the one without it does.
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
+#include <vector>
 
+#include "bccmis/stuff/conform_features.h"
 #include "bccmis/stuff/features.h"
 #include "bccmis/stuff/stuff.h"
 
@@ -33,5 +41,32 @@ struct CreaseCuts {
 Stuffed stuff_on_creases(const Shape& shape, const Fit& fit, const StuffOptions& options, const Features& features,
                          double delta, CreaseCuts* report = nullptr, PhaseTimes* times = nullptr,
                          const std::function<void(std::size_t leaves, double seconds)>& on_lattice = {});
+
+/// S35.8's candidates: A without placement, B with every curve, C with the
+/// curves B gains only.
+enum class CreaseCandidate { without, all_curves, gained_curves };
+
+/// What S35.8 kept.
+struct CreaseConformed {
+  Stuffed stuffed;                                     ///< the mesh kept, conformed
+  std::vector<std::array<std::uint32_t, 3>> boundary;  ///< its S11 boundary, outward (after S35's splits)
+  FeatureConformity conformity;                        ///< S30-S35 on it
+  CreaseCuts all_curves;                               ///< S35.7 with every curve (B)
+  CreaseCandidate kept = CreaseCandidate::without;
+  std::size_t placed_kept = 0;  ///< vertices at a placed cut point in the mesh kept (0 for A)
+  std::size_t candidates = 1;   ///< the candidates made (1-3)
+};
+
+/// S35.8 on a fitted lattice: candidates A, B and (when B is not kept and
+/// B conforms a curve A does not) C, each S5-S9 (fast) then
+/// conform_features(`h`, `split_edges`), and the one kept: B when its
+/// conformed corners and curves contain A's and are more, else C when
+/// likewise, else A (the mesh without S35.7, byte for byte). `times`
+/// receives every candidate's S3-S9 phases, added up, `feature_seconds`
+/// the seconds of their S30-S35.
+CreaseConformed stuff_and_conform_on_creases(const Shape& shape, const Fit& fit, const StuffOptions& options,
+                                             const Features& features, double delta, double h, bool split_edges,
+                                             PhaseTimes* times = nullptr, double* feature_seconds = nullptr,
+                                             const std::function<void(std::size_t, double)>& on_lattice = {});
 
 }  // namespace bccmis::stuff

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "bccmis/invariants/d3/feature_conformity.h"
 #include "bccmis/invariants/d3/stuffed_mesh.h"
@@ -142,17 +143,25 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
     r.leaves = leaves;
     say(std::to_string(leaves) + " leaves (" + number(seconds) + " s)");
   };
-  // S35.7: the features first, the cut points near them placed on them.
+  // S35.7-S35.8: the features first, the meshes with and without the cut
+  // points near them placed on them, each conformed, and the one kept.
   Features features;
   const bool crease_cuts = settings.features.on && settings.features.crease_cuts > 0 && settings.impl == Impl::fast;
-  CreaseCuts placed;
+  CreaseConformed creased;
+  double crease_feature_seconds = 0;
   if (crease_cuts) {
     features = detect_features(shape.surface_triangles(), settings.features.angle);
-    r.stuffed =
-        stuff_on_creases(shape, fit, options, features, settings.features.crease_cuts, &placed, &times, on_lattice);
-    say(std::to_string(placed.placed) + " vertices placed on the creases, " + std::to_string(placed.excluded) +
-        " cut edges kept by the guard, " + std::to_string(placed.rounds) + " rounds" +
-        (placed.none ? " (none placed)" : ""));
+    creased = stuff_and_conform_on_creases(shape, fit, options, features, settings.features.crease_cuts, fit.h,
+                                           settings.features.split_edges, &times, &crease_feature_seconds, on_lattice);
+    r.stuffed = std::move(creased.stuffed);
+    const CreaseCuts& b = creased.all_curves;
+    say(std::to_string(b.placed) + " vertices placed on the creases, " + std::to_string(b.excluded) +
+        " cut edges kept by the guard, " + std::to_string(b.rounds) + " rounds" + (b.none ? " (none placed)" : "") +
+        "; " + std::to_string(creased.candidates) + " candidates, kept " +
+        (creased.kept == CreaseCandidate::without      ? "the mesh without placement"
+         : creased.kept == CreaseCandidate::all_curves ? "the placement on every curve"
+                                                       : "the placement on the curves it gained") +
+        " (" + std::to_string(creased.placed_kept) + " vertices placed)");
   } else {
     r.stuffed = stuff_fitted(shape, fit, options, settings.impl, &times, on_lattice);
   }
@@ -175,10 +184,14 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
   FeatureConformity conformity;
   if (settings.features.on) {
     const auto t0 = Clock::now();
-    if (!crease_cuts) features = detect_features(shape.surface_triangles(), settings.features.angle);
-    conformity = conform_features(r.stuffed.mesh, r.boundary, features, fit.h, settings.features.split_edges);
-    // S35's splits changed the tetrahedra: their boundary and regions again.
-    if (conformity.splits > 0) r.regions = io::regions_of(r.stuffed.mesh.tets, &r.boundary);
+    if (crease_cuts) {  // S35.8 conformed it (the boundary and regions above are of the mesh kept)
+      conformity = std::move(creased.conformity);
+    } else {
+      features = detect_features(shape.surface_triangles(), settings.features.angle);
+      conformity = conform_features(r.stuffed.mesh, r.boundary, features, fit.h, settings.features.split_edges);
+      // S35's splits changed the tetrahedra: their boundary and regions again.
+      if (conformity.splits > 0) r.regions = io::regions_of(r.stuffed.mesh.tets, &r.boundary);
+    }
     r.features = FeatureReport{features.angle,
                                features.edges,
                                features.curves.size(),
@@ -188,9 +201,10 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
     r.features->splits = conformity.splits;
     r.features->splits_undone = conformity.splits_undone;
     r.features->moves_undone = conformity.moves_undone;
-    r.features->placed = placed.placed;
-    r.features->placed_kept = placed.excluded;
-    r.seconds.emplace_back("features", seconds_since(t0));
+    r.features->crease_cuts = crease_cuts;
+    r.features->placed = creased.all_curves.placed;
+    r.features->placed_kept = creased.placed_kept;
+    r.seconds.emplace_back("features", crease_feature_seconds + seconds_since(t0));
     say(std::to_string(features.edges) + " feature edges, " + std::to_string(features.corners.size()) +
         " corners; conformed " + std::to_string(conformity.corners_conformed) + " corners, " +
         std::to_string(conformity.curves_conformed) + " of " + std::to_string(features.curves.size()) + " curves; " +

@@ -61,6 +61,8 @@ std::vector<std::pair<const char*, std::size_t>> statistics_counts(const Meshed&
                                  {"feature_corners", f->corners},
                                  {"feature_corners_conformed", f->corners_conformed},
                                  {"feature_curves_conformed", f->curves_conformed}});
+  if (const auto& f = m.features; f && f->crease_cuts)  // S35.8
+    counts.insert(counts.end(), {{"crease_cuts_placed", f->placed}, {"crease_cuts_kept", f->placed_kept}});
   return counts;
 }
 

@@ -16,7 +16,8 @@ namespace bccmis::stuff {
 /// both reports give them: leaves, lattice_tetrahedra, cut_points, warped,
 /// vertices, tetrahedra, boundary_triangles, boundary_components,
 /// nonmanifold_edges; with features (S33) feature_edges, feature_curves,
-/// feature_corners, feature_corners_conformed, feature_curves_conformed.
+/// feature_corners, feature_corners_conformed, feature_curves_conformed;
+/// with --crease-cuts (S35.8) crease_cuts_placed, crease_cuts_kept.
 /// A count named in m.not_computed is printed as null (JSON) or "-" (text).
 std::vector<std::pair<const char*, std::size_t>> statistics_counts(const Meshed& m);
 
