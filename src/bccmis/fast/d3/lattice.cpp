@@ -182,6 +182,19 @@ constexpr bool corners_from_nodes_agree() {
   return written + 8 == 64;  // each of the 8 x 8 corners once
 }
 static_assert(corners_from_nodes_agree());
+// §9.5: refine writes every slot of a new node on an edge or face of c, its
+// octants inside c and outside it, each once, so its record needs no filling.
+constexpr bool new_nodes_written_whole() {
+  for (const SlotRule& r : kRule) {
+    if (r.nz == 7) continue;
+    int written = 0;
+    for (int j = 0; j < r.inside_count; ++j) written |= 1 << r.inside_octant[j];
+    for (int j = 0; j < r.outside_count; ++j) written |= 1 << r.outside_octant[j];
+    if (written != 0xFF || r.inside_count + r.outside_count != 8) return false;
+  }
+  return true;
+}
+static_assert(new_nodes_written_whole());
 
 // f(std::integral_constant<int, I>{}) for I = 0 .. N-1, unrolled: a pass over
 // the slots whose rule fields and indices are constants in every step.
@@ -330,6 +343,12 @@ inline Index Lattice::alloc_center(const Point& p) {
 }
 
 inline Index Lattice::alloc_node() {
+  const Index n = alloc_node_record();
+  fill_none(nodes_[n].cell);
+  return n;
+}
+
+inline Index Lattice::alloc_node_record() {
   Index n;
   if (free_nodes_ == kNone) {
     nodes_.emplace_back();
@@ -339,7 +358,6 @@ inline Index Lattice::alloc_node() {
     free_nodes_ = nodes_[n].cell[0];
     --free_node_count_;
   }
-  fill_none(nodes_[n].cell);
   ++node_count_;
   return n;
 }
@@ -838,7 +856,7 @@ RefineResult Lattice::refine(const Point& c) {
   Index G[26];
   std::copy(std::begin(centers_[ci].nbr), std::end(centers_[ci].nbr), G);
   // R2g, R2h: c leaves C and joins N, under the same table entry.
-  const Index cn = alloc_node();
+  const Index cn = alloc_node_record();  // its 8 slots written below (§9.5)
   table_.replace(ci, hash, cn | kNodeBit);
   free_center(ci);
   // R2a, R2b: Y = {y_o}, y_o centred at c + s_o h/2 (choice Q1).
@@ -864,7 +882,7 @@ RefineResult Lattice::refine(const Point& c) {
     constexpr const SlotRule& r = kRule[k];
     if constexpr (r.nz != 7) {
       if (G[k] == kNone) {
-        const Index jp = alloc_node();
+        const Index jp = alloc_node_record();  // its 8 slots written in this step (§9.5)
         G[k] = jp;
         result.J_plus.push_back(offset(c, r.d, h));
         const Node& corner = nodes_[G[r.corner]];

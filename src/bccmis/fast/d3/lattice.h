@@ -225,7 +225,8 @@ class Lattice {
   /// update that follows cannot allocate. Load factor at most 0.6.
   void ensure_room(std::size_t new_centers, std::size_t new_nodes, std::size_t new_keys);
   inline Index alloc_center(const d3::Point& p);
-  inline Index alloc_node();
+  inline Index alloc_node();         ///< every cell slot kNone
+  inline Index alloc_node_record();  ///< its cell slots unwritten (refine writes all 8, §9.5)
   inline void free_center(Index c);
   inline void free_node(Index n);
 
