@@ -50,6 +50,10 @@ bccmis_discover_gtests(fast_d3_differential_test FILTER "-Fast3Differential.Rand
 # own executable).
 bccmis_add_gtest(fast_d3_alloc_test SOURCES d3/alloc_test.cpp LIBS bccmis::fast bccmis::d3 LABELS unit)
 
+# The 3D position table (spec/lattice3d.md §9.4) against a std::map through
+# inserts, erases, renames and rehashes.
+bccmis_add_gtest(fast_d3_position_table_test SOURCES d3/position_table_test.cpp LIBS bccmis::fast LABELS unit)
+
 # Bulk construction: from_graph of reference states, refine_each /
 # coarsen_each against single reference calls.
 bccmis_add_gtest(fast_d3_bulk_test SOURCES d3/bulk_test.cpp LIBS bccmis::fast bccmis::d3 LABELS unit)

@@ -182,6 +182,19 @@ constexpr bool corners_from_nodes_agree() {
   return written + 8 == 64;  // each of the 8 x 8 corners once
 }
 static_assert(corners_from_nodes_agree());
+// §9.5: refine writes every slot of a new node on an edge or face of c, its
+// octants inside c and outside it, each once, so its record needs no filling.
+constexpr bool new_nodes_written_whole() {
+  for (const SlotRule& r : kRule) {
+    if (r.nz == 7) continue;
+    int written = 0;
+    for (int j = 0; j < r.inside_count; ++j) written |= 1 << r.inside_octant[j];
+    for (int j = 0; j < r.outside_count; ++j) written |= 1 << r.outside_octant[j];
+    if (written != 0xFF || r.inside_count + r.outside_count != 8) return false;
+  }
+  return true;
+}
+static_assert(new_nodes_written_whole());
 
 // f(std::integral_constant<int, I>{}) for I = 0 .. N-1, unrolled: a pass over
 // the slots whose rule fields and indices are constants in every step.
@@ -235,58 +248,36 @@ inline int Lattice::center_tz(const Point& p) const {
 
 // ---- Position table (§9.4) -------------------------------------------------------------
 
-inline std::size_t Lattice::home(const Point& p) const {
-  return home_at(p, std::countr_zero(static_cast<std::uint64_t>(p.x)));
+inline std::uint64_t Lattice::key_hash(const Point& p) const {
+  return key_hash_at(p, std::countr_zero(static_cast<std::uint64_t>(p.x)));
 }
 
-inline std::size_t Lattice::home_at(const Point& p, int t) const {
+inline std::uint64_t Lattice::key_hash_at(const Point& p, int t) const {
   // p: a center position, every coordinate an odd multiple of 2^t.
-  if (t >= size_.L) return table_.home_of_hash(mix(p));  // level 0: no parent
-  const std::int64_t s = std::int64_t{1} << (t + 2);     // the parent's side
+  if (t >= size_.L) return mix(p);                    // level 0: no parent
+  const std::int64_t s = std::int64_t{1} << (t + 2);  // the parent's side
   const Point parent{(p.x & ~(s - 1)) | (s / 2), (p.y & ~(s - 1)) | (s / 2), (p.z & ~(s - 1)) | (s / 2)};
   const std::size_t o = ((p.x & (s / 2)) ? 1u : 0u) | ((p.y & (s / 2)) ? 2u : 0u) | ((p.z & (s / 2)) ? 4u : 0u);
-  return table_.family_slot(mix(parent), o);
-}
-
-std::size_t Lattice::ref_home(Index ref) const {
-  return home((ref & kNodeBit) ? node_position(ref & ~kNodeBit) : centers_[ref].p);
+  return PositionTable::family_hash(mix(parent), o);
 }
 
 Index Lattice::find_ref(const Point& p, bool node) const {
-  std::size_t at;
-  return find_ref(p, node, at);
+  std::uint64_t hash;
+  return find_ref(p, node, hash);
 }
 
-Index Lattice::find_ref(const Point& p, bool node, std::size_t& at) const {
+Index Lattice::find_ref(const Point& p, bool node, std::uint64_t& hash) const {
   const int t = center_tz(p);
   if (t < 0) return kNone;
-  at = home_at(p, t);
-  const auto home_of = [this](Index r) { return ref_home(r); };
+  hash = key_hash_at(p, t);
   if (node) {
-    const Index r = table_.find(
-        at, [&](Index q) { return (q & kNodeBit) && node_position(q & ~kNodeBit) == p; }, home_of);
+    const Index r = table_.find(hash, [&](Index q) { return (q & kNodeBit) && node_position(q & ~kNodeBit) == p; });
     return r == kNone ? kNone : r & ~kNodeBit;
   }
-  return table_.find(
-      at, [&](Index q) { return !(q & kNodeBit) && centers_[q].p == p; }, home_of);
+  return table_.find(hash, [&](Index q) { return !(q & kNodeBit) && centers_[q].p == p; });
 }
 
 Index Lattice::find_refined(const Point& p) const { return find_ref(p, true); }
-
-inline void Lattice::table_insert(Index ref, std::size_t at) {
-  table_.insert(ref, at, [this](Index r) { return ref_home(r); });
-}
-
-inline void Lattice::table_erase(Index ref, std::size_t at) {
-  table_.erase(ref, at, [this](Index r) { return ref_home(r); });
-}
-
-void Lattice::rehash(std::size_t slots) {
-  PositionTable old;
-  old.reset(slots);  // may throw: nothing changed yet
-  std::swap(old, table_);
-  old.for_each([&](Index ref) { table_insert(ref, ref_home(ref)); });
-}
 
 // ---- Finding nodes from the geometry (§9.3) -----------------------------------------------
 
@@ -299,13 +290,12 @@ Index Lattice::locate(const Point& p, int o) const {
   const int m =
       std::min({std::countr_zero(static_cast<std::uint64_t>(p.x)), std::countr_zero(static_cast<std::uint64_t>(p.y)),
                 std::countr_zero(static_cast<std::uint64_t>(p.z))});
-  const auto home_of = [this](Index r) { return ref_home(r); };
   for (int l = std::max(0, size_.L - m); l <= size_.L; ++l) {
     const std::int64_t s = cell_side(size_, l);
     const Point q{(z.x / s) * s + s / 2, (z.y / s) * s + s / 2, (z.z / s) * s + s / 2};
-    const Index r = table_.find(
-        home_at(q, size_.L - l),
-        [&](Index x) { return (x & kNodeBit) ? node_position(x & ~kNodeBit) == q : centers_[x].p == q; }, home_of);
+    const Index r = table_.find(key_hash_at(q, size_.L - l), [&](Index x) {
+      return (x & kNodeBit) ? node_position(x & ~kNodeBit) == q : centers_[x].p == q;
+    });
     if (r == kNone) return kNone;   // inside a coarser leaf
     if (!(r & kNodeBit)) return r;  // the leaf
   }
@@ -353,6 +343,12 @@ inline Index Lattice::alloc_center(const Point& p) {
 }
 
 inline Index Lattice::alloc_node() {
+  const Index n = alloc_node_record();
+  fill_none(nodes_[n].cell);
+  return n;
+}
+
+inline Index Lattice::alloc_node_record() {
   Index n;
   if (free_nodes_ == kNone) {
     nodes_.emplace_back();
@@ -362,7 +358,6 @@ inline Index Lattice::alloc_node() {
     free_nodes_ = nodes_[n].cell[0];
     --free_node_count_;
   }
-  fill_none(nodes_[n].cell);
   ++node_count_;
   return n;
 }
@@ -398,7 +393,7 @@ void Lattice::ensure_room(std::size_t new_centers, std::size_t new_nodes, std::s
   grow(nodes_, free_node_count_, new_nodes);
   std::size_t slots = table_.slots();
   while ((table_.used() + new_keys) * 5 > slots * 3) slots *= 2;
-  if (slots != table_.slots()) rehash(slots);
+  if (slots != table_.slots()) table_.rehash(slots);
 }
 
 void Lattice::reserve(std::size_t cells) {
@@ -409,7 +404,7 @@ void Lattice::reserve(std::size_t cells) {
   const std::size_t keys = cells + cells / 7 + 16;
   std::size_t slots = std::max<std::size_t>(table_.slots(), 32);
   while (keys * 5 > slots * 3) slots *= 2;
-  if (slots != table_.slots()) rehash(slots);
+  if (slots != table_.slots()) table_.rehash(slots);
 }
 
 void reserve(Lattice& g, std::size_t cells) {
@@ -465,7 +460,7 @@ Lattice::Lattice(const d3::LatticeSize& size) : size_(size) {
   node_count_ = nodes_.size();
   table_.reset(32);
   ensure_room(0, 0, cell_count_);
-  for (Index c = 0; c < centers_.size(); ++c) table_insert(c, home(centers_[c].p));
+  for (Index c = 0; c < centers_.size(); ++c) table_.insert(c, key_hash(centers_[c].p));
 }
 
 Lattice Lattice::from_graph(const d3::Graph& g) {
@@ -526,9 +521,9 @@ Lattice Lattice::from_graph(const d3::Graph& g) {
   std::size_t keys = g.C.size();
   for (const auto& entry : node_id) keys += lat.center_tz(entry.first) >= 0;
   lat.ensure_room(0, 0, keys);
-  for (Index c = 0; c < lat.centers_.size(); ++c) lat.table_insert(c, lat.home(lat.centers_[c].p));
+  for (Index c = 0; c < lat.centers_.size(); ++c) lat.table_.insert(c, lat.key_hash(lat.centers_[c].p));
   for (const auto& [n, id] : node_id)
-    if (lat.center_tz(n) >= 0) lat.table_insert(id | kNodeBit, lat.home(n));
+    if (lat.center_tz(n) >= 0) lat.table_.insert(id | kNodeBit, lat.key_hash(n));
   return lat;
 }
 
@@ -773,9 +768,9 @@ std::string canonical_state(const Lattice& g) { return canonical_text(g); }
 
 // ---- Preconditions (§9.5, §9.6) -------------------------------------------------------------
 
-std::optional<RefineRefusal> Lattice::refine_refusal(const Point& c, Index& ci, std::size_t& at) const {
+std::optional<RefineRefusal> Lattice::refine_refusal(const Point& c, Index& ci, std::uint64_t& hash) const {
   // spec/lattice3d.md §4 preconditions, in the reference's order.
-  ci = find_ref(c, false, at);
+  ci = find_ref(c, false, hash);
   if (ci == kNone) return RefineRefusal::NoSuchCell;
   const int l = level(ci);
   if (l >= size_.L) return RefineRefusal::MaxLevel;
@@ -795,10 +790,10 @@ std::optional<RefineRefusal> Lattice::refine_refusal(const Point& c, Index& ci, 
   return std::nullopt;
 }
 
-std::optional<CoarsenRefusal> Lattice::coarsen_refusal(const Point& n, Index& ni, int& l, std::size_t& at) const {
+std::optional<CoarsenRefusal> Lattice::coarsen_refusal(const Point& n, Index& ni, int& l, std::uint64_t& hash) const {
   // spec/lattice3d.md §5 preconditions, in the reference's order.
   const int t = center_tz(n);
-  ni = t >= 0 ? find_ref(n, true, at) : kNone;
+  ni = t >= 0 ? find_ref(n, true, hash) : kNone;
   if (ni == kNone) return find_node(n) != kNone ? CoarsenRefusal::NotARefinedCenter : CoarsenRefusal::NoSuchNode;
   l = size_.L - t;
   if (l >= size_.L) return CoarsenRefusal::NotARefinedCenter;
@@ -829,15 +824,15 @@ std::optional<CoarsenRefusal> Lattice::coarsen_refusal(const Point& n, Index& ni
 
 std::optional<RefineRefusal> Lattice::can_refine(const Point& c) const {
   Index ci;
-  std::size_t at;
-  return refine_refusal(c, ci, at);
+  std::uint64_t hash;
+  return refine_refusal(c, ci, hash);
 }
 
 std::optional<CoarsenRefusal> Lattice::can_coarsen(const Point& n) const {
   Index ni;
   int l;
-  std::size_t at;
-  return coarsen_refusal(n, ni, l, at);
+  std::uint64_t hash;
+  return coarsen_refusal(n, ni, l, hash);
 }
 
 // ---- Refine (§4 as §9.5) -------------------------------------------------------------------
@@ -845,26 +840,24 @@ std::optional<CoarsenRefusal> Lattice::can_coarsen(const Point& n) const {
 RefineResult Lattice::refine(const Point& c) {
   RefineResult result;
   Index ci;
-  std::size_t at = 0;  // c's home
-  result.refused = refine_refusal(c, ci, at);
+  std::uint64_t hash = 0;  // c's table hash
+  result.refused = refine_refusal(c, ci, hash);
   if (result.refused) return result;
   std::size_t new_nodes = 1;  // c, and a node on each edge and face that has none
   unroll<18>([&](auto i) { new_nodes += centers_[ci].nbr[kMidpointSlots[decltype(i)::value]] == kNone; });
-  const std::size_t slots = table_.slots();
-  ensure_room(8, new_nodes, 8);               // c's table entry is renamed, the 8 children added
-  if (table_.slots() != slots) at = home(c);  // rehashed: c's home moved
+  ensure_room(8, new_nodes, 8);  // c's table entry is renamed, the 8 children added
 
   const int l = level(ci);
   const std::int64_t h = half_side(l);
-  const std::uint64_t family = mix(c);  // the children's homes (§9.4)
+  const std::uint64_t family = mix(c);  // the children's hashes (§9.4)
 
   // R1a-R1c: B = N(c) by slot: the corners P, the old junctions J (the
   // edge and face slots that hold a node).
   Index G[26];
   std::copy(std::begin(centers_[ci].nbr), std::end(centers_[ci].nbr), G);
   // R2g, R2h: c leaves C and joins N, under the same table entry.
-  const Index cn = alloc_node();
-  table_.replace(ci, at, cn | kNodeBit);
+  const Index cn = alloc_node_record();  // its 8 slots written below (§9.5)
+  table_.replace(ci, hash, cn | kNodeBit);
   free_center(ci);
   // R2a, R2b: Y = {y_o}, y_o centred at c + s_o h/2 (choice Q1).
   Index y[8];
@@ -889,7 +882,7 @@ RefineResult Lattice::refine(const Point& c) {
     constexpr const SlotRule& r = kRule[k];
     if constexpr (r.nz != 7) {
       if (G[k] == kNone) {
-        const Index jp = alloc_node();
+        const Index jp = alloc_node_record();  // its 8 slots written in this step (§9.5)
         G[k] = jp;
         result.J_plus.push_back(offset(c, r.d, h));
         const Node& corner = nodes_[G[r.corner]];
@@ -911,9 +904,7 @@ RefineResult Lattice::refine(const Point& c) {
       centers_[yc].nbr[e] = b;
     });
   });
-  // The children's table entries last: a saturated displacement recomputes
-  // the home of another entry's key, which needs every node consistent.
-  for (int o = 0; o < 8; ++o) table_insert(y[o], table_.family_slot(family, static_cast<std::size_t>(o)));
+  for (int o = 0; o < 8; ++o) table_.insert(y[o], PositionTable::family_hash(family, static_cast<std::size_t>(o)));
   return result;
 }
 
@@ -923,8 +914,8 @@ CoarsenResult Lattice::coarsen(const Point& n) {
   CoarsenResult result;
   Index ni;
   int l = 0;
-  std::size_t at = 0;  // n's home
-  result.refused = coarsen_refusal(n, ni, l, at);
+  std::uint64_t hash = 0;  // n's table hash
+  result.refused = coarsen_refusal(n, ni, l, hash);
   if (result.refused) return result;
   // Coarsening frees 8 centers, takes 1 and adds no table entry: no room to make.
   const std::int64_t h = half_side(l);
@@ -940,10 +931,10 @@ CoarsenResult Lattice::coarsen(const Point& n) {
   unroll<26>([&](auto k) { B[k] = centers_[y[kRule[k].child]].nbr[kRule[k].child_corner]; });
   // K2b, K2f: the children are deleted. K2c-K2e: n leaves N and joins C
   // (choice Q4), under the same table entry.
-  for (int o = 0; o < 8; ++o) table_erase(y[o], table_.family_slot(family, static_cast<std::size_t>(o)));
+  for (int o = 0; o < 8; ++o) table_.erase(y[o], PositionTable::family_hash(family, static_cast<std::size_t>(o)));
   for (int o = 0; o < 8; ++o) free_center(y[o]);
   const Index cc = alloc_center(n);
-  table_.replace(ni | kNodeBit, at, cc);
+  table_.replace(ni | kNodeBit, hash, cc);
   free_node(ni);
 
   // K2a, K4b: every node of B lists the merged cell in its octants inside it.
@@ -977,7 +968,7 @@ CoarsenResult Lattice::coarsen(const Point& n) {
 // ---- Batches ------------------------------------------------------------------------------
 
 void Lattice::prefetch_home(const Point& p) const {
-  if (const int t = center_tz(p); t >= 0) table_.prefetch(home_at(p, t));
+  if (const int t = center_tz(p); t >= 0) table_.prefetch(key_hash_at(p, t));
 }
 
 namespace {

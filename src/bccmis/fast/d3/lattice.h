@@ -201,11 +201,12 @@ class Lattice {
   /// The trailing zeros t of a position where a cell center can be (level
   /// L - t), or -1 for any other position.
   inline int center_tz(const d3::Point& p) const;
-  inline std::size_t home(const d3::Point& p) const;  ///< p: a center position
-  inline std::size_t home_at(const d3::Point& p, int t) const;
-  std::size_t ref_home(Index ref) const;  ///< the home of a table entry's key
+  /// The table hash of center position p (§9.4); t: the trailing zeros of
+  /// its coordinates (its level is L - t).
+  inline std::uint64_t key_hash(const d3::Point& p) const;
+  inline std::uint64_t key_hash_at(const d3::Point& p, int t) const;
   Index find_ref(const d3::Point& p, bool node) const;
-  Index find_ref(const d3::Point& p, bool node, std::size_t& at) const;  ///< and p's home
+  Index find_ref(const d3::Point& p, bool node, std::uint64_t& hash) const;  ///< and p's hash
   Index find_center(const d3::Point& p) const { return find_ref(p, false); }
   Index find_refined(const d3::Point& p) const;  ///< the node at a refined center, or kNone
   /// The node at p, any kind, from the table and the geometry (§9.3), or kNone.
@@ -215,19 +216,17 @@ class Lattice {
   /// its slots (§9.3).
   Index locate(const d3::Point& p, int o) const;
   void prefetch_home(const d3::Point& p) const;  ///< the table line of p's home, if p can be a center
-  inline void table_insert(Index ref, std::size_t at);
-  inline void table_erase(Index ref, std::size_t at);
-  void rehash(std::size_t slots);
 
-  /// The refusal, or none with the record and its table home (`at`).
-  std::optional<RefineRefusal> refine_refusal(const d3::Point& c, Index& ci, std::size_t& at) const;
-  std::optional<CoarsenRefusal> coarsen_refusal(const d3::Point& n, Index& ni, int& l, std::size_t& at) const;
+  /// The refusal, or none with the record and its table hash.
+  std::optional<RefineRefusal> refine_refusal(const d3::Point& c, Index& ci, std::uint64_t& hash) const;
+  std::optional<CoarsenRefusal> coarsen_refusal(const d3::Point& n, Index& ni, int& l, std::uint64_t& hash) const;
 
   /// Room for that many more centers, nodes and table entries, so that the
   /// update that follows cannot allocate. Load factor at most 0.6.
   void ensure_room(std::size_t new_centers, std::size_t new_nodes, std::size_t new_keys);
   inline Index alloc_center(const d3::Point& p);
-  inline Index alloc_node();
+  inline Index alloc_node();         ///< every cell slot kNone
+  inline Index alloc_node_record();  ///< its cell slots unwritten (refine writes all 8, §9.5)
   inline void free_center(Index c);
   inline void free_node(Index n);
 
