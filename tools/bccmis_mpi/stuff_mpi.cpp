@@ -1,8 +1,9 @@
 // bccmis-mpi stuff: the stages of one run on every rank and the agreement
 // after each (spec/distributed.md D6); the library does the work
 // (bccmis/distributed/): the fit, the partitioned forest and each rank's
-// lattice (D2, D10), the pieces (D3, D4), their gathering (D5) and the
-// features and --check on the gathered mesh (D12).
+// lattice (D2, D10), the pieces (D3, D4), their gathering (D5), the
+// features and --check on the gathered mesh (D12) and its statistics and
+// warnings (D13).
 #include "stuff_mpi.h"
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bccmis/distributed/gathered.h"
@@ -81,10 +83,6 @@ void check_options(const StuffOptions& o, bool gather) {
         std::string(features ? "the features of a triangle-mesh INPUT (on by default, S29-S35)" : "--check") +
         " run on the mesh gathered on rank 0: add --gather" + (features ? ", or --no-features" : "") +
         " (spec/distributed.md D12)");
-  if (features && o.stats)
-    throw InputError(
-        "--stats with the features is not supported on several ranks yet: add --no-features "
-        "(spec/distributed.md D12)");
   if (o.outputs.empty() && o.stats) return;  // D11: the statistics alone
   if (o.outputs.size() != 1)
     throw InputError("give one output: -o FILE.pvtu (a piece per rank), or --gather -o FILE (.vtu, .msh, .mesh)");
@@ -177,6 +175,7 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
     });
     // D11: S13's statistics reduced on rank 0 (a lost component refused, S27).
     stuff::Meshed meshed;
+    bool warned = o.stats;  // D13: rank 0 holds S27's comparison and its warnings
     stage(comm, [&] {
       if (o.stats) meshed = distributed::rank_statistics(*shape, *lattice, piece, quality, ids, owned, leaves, comm);
     });
@@ -205,12 +204,22 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
         mesh = distributed::gather_pieces(all);
         all = {};
         bytes = {};  // the whole mesh alone on rank 0 from here (D12's memory)
-        // D12: the feature step and --check, then S24's map (the pieces stayed local).
+        // D12: the feature step and --check, then S24's map (the pieces stayed local);
+        // D13: S27's warnings and, with the features, the statistics of the conformed mesh.
         if (whole) {
           stuff::FeatureSettings features;
           features.on = o.features_on();
           if (o.feature_angle >= 0) features.angle = o.feature_angle;
-          regions = distributed::finish_gathered(*shape, *lattice, mesh, features, o.check);
+          distributed::Finished f =
+              distributed::finish_gathered(*shape, *lattice, mesh, features, o.check, o.stats && features.on);
+          regions = std::move(f.regions);
+          meshed.topology = f.topology;
+          meshed.warnings = std::move(f.warnings);
+          if (f.statistics) {
+            meshed.statistics = f.statistics;
+            meshed.features = f.features;
+          }
+          warned = true;
         } else {
           regions = io::regions_of(mesh.tets);
         }
@@ -226,6 +235,8 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
       if (rank == 0) index.commit();
     });
     phase("write");
+    if (rank == 0 && warned && !o.quiet)  // D13, as bccmis stuff prints them
+      for (const std::string& warning : meshed.warnings) std::cerr << kTool << ": warning: " << warning << "\n";
     if (rank == 0 && o.stats) std::cout << stats_text(shape->describe(), meshed, seconds, o.json) << std::flush;
     if (rank == 0 && !o.quiet && write)
       std::cerr << kTool << ": " << tetrahedra << " tetrahedra"
