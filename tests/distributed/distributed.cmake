@@ -3,7 +3,7 @@
 # of the leaves gathered are stuff()'s mesh; under mpirun on 1-4 ranks
 # (oversubscribed on small machines), bccmis-mpi stuff against bccmis stuff
 # (tests/distributed/mpi_stuff_test.py): --gather byte for byte (with the
-# features and --check, D12), the .pvtu's pieces by vertex positions and
+# features and --check, D12; their statistics and warnings, D13), the .pvtu's pieces by vertex positions and
 # conformity, and the failures.
 bccmis_add_gtest(distributed_tests SOURCES stuff_leaves_test.cpp LIBS bccmis::distributed bccmis::stuff PREFIX distributed. NO_PRETTY_VALUES
                  LABELS unit mpi)
@@ -75,6 +75,17 @@ if(TARGET bccmis::stuff_surface)
 endif()
 bccmis_add_test(mpi.stuff_check_torus_2_ranks
                 COMMAND ${_bccmis_mpi_test} whole-check ${_bccmis_mpi_tools} 2 -- --shape torus -L 2 --cells 6
+                ${_bccmis_mpi_props})
+# D13: --stats --json with the features (one run: the bytes, the JSON, the
+# warnings), and S26's warning on stderr from the gathered mesh (--check).
+if(TARGET bccmis::stuff_surface)
+  bccmis_add_test(mpi.stuff_stats_features_fandisk_2_ranks
+                  COMMAND ${_bccmis_mpi_test} stats-features ${_bccmis_mpi_tools} 2 --
+                          ${bccmis_cgal_data}/data/meshes/fandisk.off -L 2
+                  ${_bccmis_mpi_props})
+endif()
+bccmis_add_test(mpi.stuff_check_warns_coarse_sphere_2_ranks
+                COMMAND ${_bccmis_mpi_test} whole-check-warns ${_bccmis_mpi_tools} 2 -- --shape sphere --cells 3 -L 2
                 ${_bccmis_mpi_props})
 # D11: --stats and --json on 2 and 3 ranks against bccmis stuff's.
 foreach(ranks 2 3)

@@ -1,8 +1,10 @@
 // spec/distributed.md D12 in one process: the pieces of a split in two
 // runs (as p8est partitions), kept in S24's local coordinates and gathered, then the feature
 // step and --check's layers (finish_gathered), are mesh_shape()'s mesh with
-// the features, bit for bit; a gathered mesh with a boundary vertex moved
-// off the surface fails --check's stuffed-mesh layer.
+// the features, bit for bit, and their report (D13: S13's statistics, S27's
+// topology and warnings, S33's feature report) is mesh_shape()'s; a gathered
+// mesh with a boundary vertex moved off the surface fails --check's
+// stuffed-mesh layer.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -55,18 +57,51 @@ TEST(FinishGathered, FeaturesOnTheGatheredMeshAreTheSerialOnes) {
   stuff::Settings settings;
   settings.lattice = level2();
   settings.features.on = true;
+  settings.statistics = true;
   const stuff::Meshed serial = stuff::mesh_shape(*world, settings);
   // The features changed the mesh: some vertex snapped (S30).
   ASSERT_TRUE(std::count(serial.stuffed.mesh.kind.begin(), serial.stuffed.mesh.kind.end(), stuff::kSnappedVertex) > 0);
   const Replicated& r = lattice();
   d3::TetMeshF mesh = gathered(r);
-  const io::Regions regions = finish_gathered(*world, r, mesh, settings.features, true);  // --check passes
+  const Finished f = finish_gathered(*world, r, mesh, settings.features, true, true);  // --check passes
+  const io::Regions& regions = f.regions;
   EXPECT_TRUE(mesh.vertices == serial.stuffed.mesh.vertices);  // bit for bit, world coordinates
   EXPECT_TRUE(mesh.kind == serial.stuffed.mesh.kind);
   EXPECT_TRUE(mesh.tets == serial.stuffed.mesh.tets);
   EXPECT_TRUE(mesh.level == serial.stuffed.mesh.level);
   EXPECT_TRUE(regions.tet_component == serial.regions.tet_component);  // the writers' regions (M23)
   EXPECT_TRUE(regions.boundary == serial.regions.boundary);
+  // D13: the report of the conformed mesh, as mesh_shape()'s, bit for bit.
+  ASSERT_TRUE(serial.features && serial.features->edges > 0 && serial.features->distance >= 0);
+  ASSERT_TRUE(f.statistics && f.features);
+  const stuff::Statistics& s = *f.statistics;
+  const stuff::Statistics& w = *serial.statistics;
+  EXPECT_EQ(s.vertices, w.vertices);
+  EXPECT_EQ(s.tetrahedra, w.tetrahedra);
+  EXPECT_EQ(s.quality.volume, w.quality.volume);
+  EXPECT_EQ(s.quality.min_dihedral, w.quality.min_dihedral);
+  EXPECT_EQ(s.quality.max_dihedral, w.quality.max_dihedral);
+  EXPECT_EQ(s.quality.below10, w.quality.below10);
+  EXPECT_TRUE(s.quality.histogram == w.quality.histogram);
+  EXPECT_EQ(s.quality.boundary_triangles, w.quality.boundary_triangles);
+  EXPECT_EQ(s.shape_volume, w.shape_volume);
+  EXPECT_EQ(s.relative_volume_error, w.relative_volume_error);
+  EXPECT_EQ(f.topology.boundary_components, serial.topology.boundary_components);
+  EXPECT_EQ(f.topology.boundary_euler, serial.topology.boundary_euler);
+  EXPECT_EQ(f.topology.nonmanifold_edges, serial.topology.nonmanifold_edges);
+  EXPECT_TRUE(f.warnings == serial.warnings);
+  const stuff::FeatureReport& a = *f.features;
+  const stuff::FeatureReport& b = *serial.features;
+  EXPECT_EQ(a.angle, b.angle);
+  EXPECT_EQ(a.edges, b.edges);
+  EXPECT_EQ(a.curves, b.curves);
+  EXPECT_EQ(a.corners, b.corners);
+  EXPECT_EQ(a.corners_conformed, b.corners_conformed);
+  EXPECT_EQ(a.curves_conformed, b.curves_conformed);
+  EXPECT_EQ(a.distance, b.distance);
+  EXPECT_EQ(a.splits, b.splits);
+  EXPECT_EQ(a.splits_undone, b.splits_undone);
+  EXPECT_EQ(a.moves_undone, b.moves_undone);
 }
 
 TEST(FinishGathered, CheckCatchesAVertexOffTheSurface) {

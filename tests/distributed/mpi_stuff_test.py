@@ -4,11 +4,18 @@
   mpi_stuff_test.py gather|gather-every-format MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
       --gather --no-features's binary .vtu (every format: also ASCII .vtu and .msh) equals
       bccmis stuff --no-features's byte for byte (D1, D5).
-  mpi_stuff_test.py whole|whole-check MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
+  mpi_stuff_test.py whole|whole-check|whole-check-warns MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
       --gather (whole-check: --gather --check) writes bccmis stuff's file byte for byte with
-      the features on as there (a triangle-mesh INPUT's by default, D12);
+      the features on as there (a triangle-mesh INPUT's by default, D12), and
+      prints bccmis stuff's warning lines on stderr (D13; whole-check-warns: --check, and
+      the serial command must print some);
       --check without --gather (and, for an INPUT, the features) exit 2
       naming D12 and leave no .pvtu.
+  mpi_stuff_test.py stats-features MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
+      one run of --gather --check --stats --json -o FILE.vtu with the features on (D13):
+      the file is bccmis stuff's bytes, the JSON equals bccmis stuff's on every member
+      but the seconds (D11's phases) and warped (null), the feature members included,
+      and the warning lines on stderr are bccmis stuff's.
   mpi_stuff_test.py pvtu MPIRUN BCCMIS BCCMIS_MPI RANKS[:PIECES] -- STUFF_ARGS...
       the .pvtu lists the pieces written (one a rank with tetrahedra); they, read by meshio, hold the serial
       mesh's tetrahedra (by vertex positions, bit for bit, with their levels)
@@ -186,24 +193,68 @@ def stats(mpirun, bccmis, bccmis_mpi, ranks, args, work):
           f"{serial_json['boundary_triangles']} boundary triangles)")
 
 
-def whole(mpirun, bccmis, bccmis_mpi, ranks, args, work, check):
+def warnings_of(stderr, tool):
+    """The warnings a run printed on stderr (D13: as bccmis stuff prints them)."""
+    head = tool + ": warning: "
+    return [l[len(head):] for l in stderr.splitlines() if l.startswith(head)]
+
+
+def same_warnings(serial, got, ranks, required):
+    want = warnings_of(serial.stderr, "bccmis stuff")
+    have = warnings_of(got.stderr, "bccmis-mpi stuff")
+    if have != want:
+        sys.exit(f"FAIL: {ranks} ranks: the warnings on stderr {have}, bccmis stuff's {want}\n{got.stderr}")
+    if required and not want:
+        sys.exit(f"FAIL: bccmis stuff printed no warning here:\n{serial.stderr}")
+    return want
+
+
+def whole(mpirun, bccmis, bccmis_mpi, ranks, args, work, check, warns=False):
     serial, together = os.path.join(work, "serial.vtu"), os.path.join(work, "gathered.vtu")
-    run([bccmis, "stuff", *args, "-q", "-o", serial])
+    extra = ["--check"] if check else []
+    said = run([bccmis, "stuff", *args, *extra, "-o", serial])
     a = open(serial, "rb").read()
-    for extra in (["--check"] if check else [],):
-        run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, *extra, "-q", "--gather", "-o", together])
-        b = open(together, "rb").read()
-        if a != b:
-            sys.exit(f"FAIL: {ranks} ranks {extra}: the gathered file differs from bccmis stuff's "
-                     f"({len(a)} and {len(b)} bytes)")
+    got = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, *extra, "--gather", "-o", together])
+    b = open(together, "rb").read()
+    if a != b:
+        sys.exit(f"FAIL: {ranks} ranks {extra}: the gathered file differs from bccmis stuff's "
+                 f"({len(a)} and {len(b)} bytes)")
+    warned = same_warnings(said, got, ranks, warns)
     index = os.path.join(work, "out.pvtu")
     refusals = [["--check", "--no-features"]] + ([[]] if not args[0].startswith("-") else [])
     for extra in refusals:
         r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, *extra, "-q", "-o", index], expect=2)
         if "spec/distributed.md D12" not in r.stderr or os.path.exists(index):
             sys.exit(f"FAIL: {extra} without --gather: no D12 refusal, or a .pvtu left:\n{r.stderr}")
-    print(f"ok: {ranks} ranks: --gather{' --check' if check else ''} writes bccmis stuff's bytes ({len(a)}); "
-          f"{len(refusals)} refusal(s) without --gather")
+    print(f"ok: {ranks} ranks: --gather{' --check' if check else ''} writes bccmis stuff's bytes ({len(a)}) "
+          f"and its {len(warned)} warning(s); {len(refusals)} refusal(s) without --gather")
+
+
+def stats_features(mpirun, bccmis, bccmis_mpi, ranks, args, work):
+    serial, together = os.path.join(work, "serial.vtu"), os.path.join(work, "gathered.vtu")
+    extra = ["--check", "--stats", "--json"]
+    said = run([bccmis, "stuff", *args, *extra, "-o", serial])
+    want = json.loads(said.stdout)
+    if "feature_edges" not in want or want["feature_edges"] == 0:
+        sys.exit(f"FAIL: bccmis stuff found no features here: {said.stdout}")
+    got = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, *extra, "--gather", "-o", together])
+    if open(serial, "rb").read() != open(together, "rb").read():
+        sys.exit(f"FAIL: {ranks} ranks: the gathered file differs from bccmis stuff's")
+    j = json.loads(got.stdout)
+    if list(j) != list(want):
+        sys.exit(f"FAIL: {ranks} ranks: the JSON members {list(j)}, serial {list(want)}")
+    for k, w in want.items():
+        if k == "seconds":
+            if list(j[k]) != RANK_PHASES + ["meshing", "total"]:
+                sys.exit(f"FAIL: {ranks} ranks: the seconds' phases {list(j[k])}")
+        elif k in NOT_COMPUTED:
+            if j[k] is not None:
+                sys.exit(f"FAIL: {ranks} ranks: {k} {j[k]}, expected null")
+        elif j[k] != w:  # D13: the conformed mesh's numbers, bit for bit (the volume too)
+            sys.exit(f"FAIL: {ranks} ranks: {k} {j[k]}, serial {w}")
+    warned = same_warnings(said, got, ranks, False)
+    print(f"ok: {ranks} ranks: --gather --check --stats --json with the features: bccmis stuff's bytes, JSON "
+          f"({want['tetrahedra']} tetrahedra, {want['feature_edges']} feature edges) and {len(warned)} warning(s)")
 
 
 def errors(mpirun, bccmis, bccmis_mpi, ranks, work):
@@ -250,8 +301,10 @@ def main():
     with tempfile.TemporaryDirectory() as work:
         if mode in ("gather", "gather-every-format"):
             gather(mpirun, bccmis, bccmis_mpi, int(ranks), args, work, mode == "gather-every-format")
-        elif mode in ("whole", "whole-check"):
-            whole(mpirun, bccmis, bccmis_mpi, int(ranks), args, work, mode == "whole-check")
+        elif mode in ("whole", "whole-check", "whole-check-warns"):
+            whole(mpirun, bccmis, bccmis_mpi, int(ranks), args, work, mode != "whole", mode == "whole-check-warns")
+        elif mode == "stats-features":
+            stats_features(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
         elif mode == "stats":
             stats(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
         elif mode == "pvtu":

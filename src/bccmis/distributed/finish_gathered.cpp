@@ -1,5 +1,6 @@
-// spec/distributed.md D12: the feature step and --check on the gathered
-// mesh, in mesh_shape()'s order (spec/stuffing.md S11, S27, S29-S35, S24).
+// spec/distributed.md D12, D13: the feature step, --check, S27's comparison
+// and S13 on the gathered mesh, in mesh_shape()'s order (spec/stuffing.md
+// S11, S13, S27, S29-S35, S24).
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -9,45 +10,68 @@
 #include "bccmis/distributed/gathered.h"
 #include "bccmis/stuff/conform_features.h"
 #include "bccmis/stuff/features.h"
+#include "bccmis/stuff/statistics.h"
 #include "bccmis/stuff/topology.h"
 
 namespace bccmis::distributed {
 
-io::Regions finish_gathered(const stuff::Shape& world, const Replicated& r, d3::TetMeshF& mesh,
-                            const stuff::FeatureSettings& features, bool check) {
+Finished finish_gathered(const stuff::Shape& world, const Replicated& r, d3::TetMeshF& mesh,
+                         const stuff::FeatureSettings& features, bool check, bool statistics) {
   const stuff::Shape& shape = *r.shape;  // S24's local coordinates, as the mesh
+  Finished f;
   std::vector<std::array<std::uint32_t, 3>> boundary;
-  io::Regions regions = io::regions_of(mesh.tets, &boundary);
+  f.regions = io::regions_of(mesh.tets, &boundary);
   // S29-S35: the same call, on the same mesh and boundary, as mesh_shape()'s.
+  stuff::Features found;
   stuff::FeatureConformity conformity;
   if (features.on) {
-    const stuff::Features found = stuff::detect_features(shape.surface_triangles(), features.angle);
+    found = stuff::detect_features(shape.surface_triangles(), features.angle);
     conformity = stuff::conform_features(mesh, boundary, found, r.fit.h, features.split_edges);
-    if (conformity.splits > 0) regions = io::regions_of(mesh.tets, &boundary);
+    if (conformity.splits > 0) f.regions = io::regions_of(mesh.tets, &boundary);
+    // D13: S33's report, as mesh_shape() fills it (no S35.7 here, D1).
+    f.features = stuff::FeatureReport{found.angle,
+                                      found.edges,
+                                      found.curves.size(),
+                                      found.corners.size(),
+                                      conformity.corners_conformed,
+                                      conformity.curves_conformed};
+    f.features->splits = conformity.splits;
+    f.features->splits_undone = conformity.splits_undone;
+    f.features->moves_undone = conformity.moves_undone;
   }
   // The fit in world units (mesh_shape()'s Meshed::fit), for S26/S27's hints.
   stuff::Fit fit = r.fit;
   fit.origin = r.normalisation.to_world(r.fit.origin);
   fit.scale = std::ldexp(r.fit.scale, r.normalisation.exponent);
   fit.h = std::ldexp(r.fit.h, r.normalisation.exponent);
+  // S11 first, then S32, as bccmis stuff --check.
   if (check) {
-    // S11 first, then S32, then S27, as bccmis stuff --check.
     if (auto why = stuff::find_stuffed_problem(shape, r.fit, mesh))
       throw stuff::CheckError(world.describe() + ": " + *why);
     if (features.on)
       if (auto why = stuff::find_feature_problem(r.fit, mesh, conformity))
         throw stuff::CheckError(world.describe() + ": " + *why);
-    const stuff::MeshTopology t = stuff::topology(mesh, boundary);
-    const std::vector<std::string> warnings = stuff::mesh_warnings(world, t, fit);  // a lost component throws
+  }
+  // D13: S27 and S26 on every gathered mesh (a lost component throws).
+  f.topology = stuff::topology(mesh, boundary);
+  f.warnings = stuff::mesh_warnings(world, f.topology, fit);
+  if (check) {
     const stuff::SoupReport* soup = world.soup_report();
     const bool input_manifold = !(soup && soup->flaw_count() > 0);
     const auto want = world.surface_components();
-    const bool more = want && t.boundary_components > want->count;
-    if (more || (t.nonmanifold_edges > 0 && input_manifold))
-      throw stuff::CheckError(world.describe() + ": " + warnings.front());
+    const bool more = want && f.topology.boundary_components > want->count;
+    if (more || (f.topology.nonmanifold_edges > 0 && input_manifold))
+      throw stuff::CheckError(world.describe() + ": " + f.warnings.front());
+  }
+  // D13: S13 and S33 in local coordinates, reported in world units.
+  if (statistics) {
+    f.statistics = stuff::to_world(stuff::statistics(shape, mesh, boundary, false), r.normalisation);
+    if (f.features)
+      f.features->distance =
+          std::ldexp(stuff::feature_distance(mesh, boundary, found, r.fit.h), r.normalisation.exponent);
   }
   stuff::to_world(mesh, r.normalisation, fit.h);
-  return regions;
+  return f;
 }
 
 }  // namespace bccmis::distributed

@@ -1,0 +1,51 @@
+// bccmis::distributed::stuff_on_ranks: the whole run of `bccmis-mpi stuff`
+// on every rank as one library call (spec/distributed.md D1-D13), as
+// mesh_shape() is for `bccmis stuff`: the tool parses, writes and prints.
+#pragma once
+
+#include <mpi.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "bccmis/d3/tet_mesh.h"
+#include "bccmis/distributed/leaf_piece.h"
+#include "bccmis/io/regions.h"
+#include "bccmis/stuff/mesh_shape.h"
+#include "bccmis/stuff/stopwatch.h"
+
+namespace bccmis::distributed {
+
+/// What a run is told (D1).
+struct RankSettings {
+  stuff::StuffOptions lattice;      ///< -L, --min-level, --cells, --size, --threads
+  stuff::FeatureSettings features;  ///< on: D12 (needs gather)
+  bool check = false;               ///< D12
+  bool statistics = false;          ///< D11, D13
+  bool pieces = false;              ///< a .vtu piece per rank: D7's global ids
+  bool gather = false;              ///< the whole mesh on rank 0 (D5)
+};
+
+/// One rank's result. On rank 0 only: mesh, regions, report, warned.
+struct RankRun {
+  LeafPiece piece;                        ///< this rank's (world coordinates unless gathered whole)
+  std::vector<std::int64_t> ids;          ///< D7, with pieces or statistics
+  std::vector<std::uint64_t> tetrahedra;  ///< every rank's count
+  d3::TetMeshF mesh;                      ///< with gather: the whole mesh, world coordinates
+  io::Regions regions;                    ///< M23's, of mesh
+  stuff::Meshed report;                   ///< with statistics: D11, D13
+  bool warned = false;                    ///< report.warnings holds S27's comparison (D13)
+  stuff::PhaseSeconds seconds;            ///< D11's input, forest, pieces, statistics (from `start`)
+  stuff::Clock::time_point since;         ///< the end of `statistics`: D11's write phase starts here
+};
+
+/// D1-D13 on every rank: the fit (S24, S2), the forest (D10), this rank's
+/// piece (D3, D4, D6), D7's numbers, the refusal of an empty mesh (S21,
+/// S26: ShapeError with empty_mesh_message), D11's statistics, and with
+/// `gather` the pieces gathered on rank 0, the feature step, --check and
+/// S27 (D12, D13). Collective over `comm`; after each stage the ranks
+/// agree (D6): the lowest failing rank throws its error (ShapeError,
+/// CheckError, ...), every other rank RankFailed.
+RankRun stuff_on_ranks(const stuff::Shape& world, const RankSettings& s, MPI_Comm comm, stuff::Clock::time_point start);
+
+}  // namespace bccmis::distributed
