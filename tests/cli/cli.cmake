@@ -193,6 +193,7 @@ set_tests_properties(cli.output_files PROPERTIES FIXTURES_SETUP cli_output_files
 set(_conf ${CMAKE_CURRENT_SOURCE_DIR}/conformance)
 bccmis_cli_test(conformance.self 0
   ARGS conformance --impl "$<TARGET_FILE:bccmis> replay --quiet --check=none" --traces ${_examples} --random 100 --seed 1
+       RUN_TIMEOUT 240
   STDOUT_REGEX "all 103 traces agree")
 set(_minimal "minimal trace \\(([1-5]) operations?\\)")
 bccmis_cli_test(conformance.wrong_refusal_code 1
@@ -300,7 +301,7 @@ bccmis_cli_test(explore_help_example 0 ARGS explore --help STDOUT_REGEX "bccmis 
 # conformance: the default run checks random traces; an implementation that
 # cannot be run is a harness error.
 bccmis_cli_test(conformance.default_random 0 ARGS conformance --impl "$<TARGET_FILE:bccmis> replay --quiet --check=none"
-                STDOUT_REGEX "all 100 traces agree \\(0 bundled, 100 random: 50 2D and 50 3D, seed 1\\)")
+                RUN_TIMEOUT 240 STDOUT_REGEX "all 100 traces agree \\(0 bundled, 100 random: 50 2D and 50 3D, seed 1\\)")
 bccmis_cli_test(conformance.not_found 2 ARGS conformance --impl ./no-such-implementation --random 5
                 STDERR_REGEX "conformance: cannot run the implementation './no-such-implementation' \\(exit status 127, command not found\\)")
 bccmis_cli_test(conformance.not_executable 2 ARGS conformance --impl ${_cli}/fig2.log --random 5
