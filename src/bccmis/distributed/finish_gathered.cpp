@@ -29,15 +29,7 @@ Finished finish_gathered(const stuff::Shape& world, const Replicated& r, d3::Tet
     conformity = stuff::conform_features(mesh, boundary, found, r.fit.h, features.split_edges);
     if (conformity.splits > 0) f.regions = io::regions_of(mesh.tets, &boundary);
     // D13: S33's report, as mesh_shape() fills it (no S35.7 here, D1).
-    f.features = stuff::FeatureReport{found.angle,
-                                      found.edges,
-                                      found.curves.size(),
-                                      found.corners.size(),
-                                      conformity.corners_conformed,
-                                      conformity.curves_conformed};
-    f.features->splits = conformity.splits;
-    f.features->splits_undone = conformity.splits_undone;
-    f.features->moves_undone = conformity.moves_undone;
+    f.features = stuff::feature_report(found, conformity);
   }
   // The fit in world units (mesh_shape()'s Meshed::fit), for S26/S27's hints.
   stuff::Fit fit = r.fit;

@@ -682,4 +682,18 @@ double feature_distance(const d3::TetMeshF& mesh, const std::vector<std::array<s
   return worst;
 }
 
+FeatureReport feature_report(const Features& features, const FeatureConformity& conformity) {
+  FeatureReport r;
+  r.angle = features.angle;
+  r.edges = features.edges;
+  r.curves = features.curves.size();
+  r.corners = features.corners.size();
+  r.corners_conformed = conformity.corners_conformed;
+  r.curves_conformed = conformity.curves_conformed;
+  r.splits = conformity.splits;
+  r.splits_undone = conformity.splits_undone;
+  r.moves_undone = conformity.moves_undone;
+  return r;
+}
+
 }  // namespace bccmis::stuff

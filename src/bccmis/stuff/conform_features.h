@@ -67,4 +67,8 @@ struct FeatureReport {
   std::size_t placed_kept = 0;                ///< S35.8: vertices at a placed point in the mesh kept
 };
 
+/// S33's report of `features` conformed as `conformity` says (the distance
+/// and S35.7-S35.8's figures left for the caller).
+FeatureReport feature_report(const Features& features, const FeatureConformity& conformity);
+
 }  // namespace bccmis::stuff

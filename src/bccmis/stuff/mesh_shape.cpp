@@ -192,15 +192,7 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
       // S35's splits changed the tetrahedra: their boundary and regions again.
       if (conformity.splits > 0) r.regions = io::regions_of(r.stuffed.mesh.tets, &r.boundary);
     }
-    r.features = FeatureReport{features.angle,
-                               features.edges,
-                               features.curves.size(),
-                               features.corners.size(),
-                               conformity.corners_conformed,
-                               conformity.curves_conformed};
-    r.features->splits = conformity.splits;
-    r.features->splits_undone = conformity.splits_undone;
-    r.features->moves_undone = conformity.moves_undone;
+    r.features = feature_report(features, conformity);
     r.features->crease_cuts = crease_cuts;
     r.features->placed = creased.all_curves.placed;
     r.features->placed_kept = creased.placed_kept;
