@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,25 @@ TEST(CreaseCuts, JointAtLevel3ConformsTheCurvesSnappingLeaves) {
   expect_within_s10(after.stuffed.mesh);
 }
 
+/// A CGAL mesh in S24's local coordinates (as mesh_shape runs it), its
+/// lattice fitted at `level` and its features detected.
+struct LocalRun {
+  std::unique_ptr<Shape> world;  ///< the file's shape, which `shape` may refer to
+  std::unique_ptr<Shape> shape;
+  StuffOptions options;
+  Fit fit;
+  Features features;
+};
+LocalRun local_run(const std::string& file, int level) {
+  LocalRun r;
+  r.world = load_mesh_file(kCgal + "/" + file);
+  r.shape = r.world->normalised(normalisation_of(r.world->bounds()));
+  r.options.max_level = level;
+  r.fit = fit_lattice(r.shape->bounds(), r.options);
+  r.features = detect_features(r.shape->surface_triangles());
+  return r;
+}
+
 //= spec/stuffing.md S35 type=test
 TEST(CreaseCuts, TheGuardKeepsS10sIntervalOnFandisk) {
   // On CGAL's fandisk at level 3 (in S24's local coordinates, as
@@ -72,14 +92,9 @@ TEST(CreaseCuts, TheGuardKeepsS10sIntervalOnFandisk) {
   // are kept at S5's points and S5-S9 run again. The mesh kept has cut
   // points placed, every tetrahedron positively oriented and in S10's
   // interval.
-  const auto fandisk = load_mesh_file(kCgal + "/fandisk.off");
-  const auto local = fandisk->normalised(normalisation_of(fandisk->bounds()));
-  StuffOptions options;
-  options.max_level = 3;
-  const Fit fit = fit_lattice(local->bounds(), options);
-  const Features features = detect_features(local->surface_triangles());
+  const LocalRun f = local_run("fandisk.off", 3);
   CreaseCuts report;
-  const Stuffed st = stuff_on_creases(*local, fit, options, features, kCreaseCutDistance, &report);
+  const Stuffed st = stuff_on_creases(*f.shape, f.fit, f.options, f.features, kCreaseCutDistance, &report);
   EXPECT_GT(report.placed, 0u);
   EXPECT_GT(report.excluded, 0u);
   EXPECT_GE(report.rounds, 2u);
@@ -110,22 +125,21 @@ TEST(CreaseCuts, TheMeshKeptLosesNothingTheRunWithoutItConforms) {
   // section 37), which the test first
   // establishes. The mesh S35.8 keeps must hold every one of them, as S32's
   // checker verifies on that mesh with the run without's corners and pieces.
-  const auto anchor = load_mesh_file(kCgal + "/anchor.off");
-  const auto local = anchor->normalised(normalisation_of(anchor->bounds()));
-  StuffOptions options;
-  options.max_level = 2;
-  const Fit fit = fit_lattice(local->bounds(), options);
-  const Features features = detect_features(local->surface_triangles());
+  const LocalRun a = local_run("anchor.off", 2);
+  const Shape& local = *a.shape;
+  const StuffOptions& options = a.options;
+  const Fit& fit = a.fit;
+  const Features& features = a.features;
   constexpr double kDelta = 0.5;
 
-  Stuffed without = stuff_fitted(*local, fit, options, Impl::fast);
+  Stuffed without = stuff_fitted(local, fit, options, Impl::fast);
   const FeatureConformity expected = conform(without.mesh, features, fit.h);
-  Stuffed placed = stuff_on_creases(*local, fit, options, features, kDelta);
+  Stuffed placed = stuff_on_creases(local, fit, options, features, kDelta);
   const FeatureConformity all_curves = conform(placed.mesh, features, fit.h);
   ASSERT_FALSE(contains(all_curves, expected)) << "S35.7 alone loses nothing here: the input shows no loss";
   EXPECT_TRUE(find_feature_problem(fit, placed.mesh, expected).has_value());
 
-  const CreaseConformed kept = stuff_and_conform_on_creases(*local, fit, options, features, kDelta, fit.h, true);
+  const CreaseConformed kept = stuff_and_conform_on_creases(local, fit, options, features, kDelta, fit.h, true);
   EXPECT_EQ(find_feature_problem(fit, kept.stuffed.mesh, expected).value_or(""), "");
   EXPECT_TRUE(contains(kept.conformity, expected));
   EXPECT_GE(kept.conformity.curves_conformed, expected.curves_conformed);
