@@ -179,11 +179,7 @@ int run(const StuffOptions& o) {
     std::cerr << "bccmis stuff: " << r->file << ": " << r->welded_vertices
               << " repeated vertices welded (the coordinates of an earlier vertex)\n";
   stuff::Settings settings;
-  settings.lattice.max_level = o.max_level;
-  settings.lattice.min_level = o.min_level;
-  settings.lattice.cells = o.cells;
-  if (o.size > 0) settings.lattice.size = o.size;
-  settings.lattice.threads = o.threads;
+  settings.lattice = lattice_options(o);
   if (o.animate > 0) return run_animate(o, shape, settings.lattice, outputs);
   if (!o.path.empty() || o.compare) throw InputError("--path and --compare apply with --animate");
   settings.impl = o.impl == "reference" ? stuff::Impl::reference : stuff::Impl::fast;

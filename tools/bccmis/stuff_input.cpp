@@ -38,4 +38,14 @@ std::shared_ptr<const stuff::Shape> load_shape(const StuffOptions& o) {
   return stuff::load_mesh_file(o.input, o.strict, format);
 }
 
+stuff::StuffOptions lattice_options(const StuffOptions& o) {
+  stuff::StuffOptions lattice;
+  lattice.max_level = o.max_level;
+  lattice.min_level = o.min_level;
+  lattice.cells = o.cells;
+  if (o.size > 0) lattice.size = o.size;
+  lattice.threads = o.threads;
+  return lattice;
+}
+
 }  // namespace bccmis::cli

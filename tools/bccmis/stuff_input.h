@@ -11,6 +11,7 @@
 #include "bccmis/io/encoding.h"
 #include "bccmis/io/regions.h"
 #include "bccmis/stuff/shape.h"
+#include "bccmis/stuff/stuff.h"
 #include "commands.h"
 #include "io.h"
 
@@ -32,5 +33,9 @@ void add_tetrahedra_output(OutputSet& outputs, const std::string& path, const d3
 /// Throws InputError when both or neither are given, stuff::ShapeError when
 /// the shape is refused.
 std::shared_ptr<const stuff::Shape> load_shape(const StuffOptions& o);
+
+/// The lattice's options (-L, --min-level, --cells, --size, --threads) as
+/// the library takes them, for bccmis stuff and bccmis-mpi stuff alike.
+stuff::StuffOptions lattice_options(const StuffOptions& o);
 
 }  // namespace bccmis::cli

@@ -115,11 +115,7 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
     });
     // (2) the run on every rank (the library: D1-D13).
     distributed::RankSettings settings;
-    settings.lattice.max_level = o.max_level;
-    settings.lattice.min_level = o.min_level;
-    settings.lattice.cells = o.cells;
-    if (o.size > 0) settings.lattice.size = o.size;
-    settings.lattice.threads = o.threads;
+    settings.lattice = lattice_options(o);
     settings.features.on = o.features_on();
     if (o.feature_angle >= 0) settings.features.angle = o.feature_angle;
     settings.check = o.check;
