@@ -103,6 +103,11 @@ if(TARGET bccmis::stuff_surface)
                           ${bccmis_cgal_data}/data/meshes/double-torus-example.off -L 2 --cells 6
                   ${_bccmis_mpi_props})
 endif()
+# D1: a repaired INPUT's notices, as bccmis stuff prints them (rank 0, once).
+if(TARGET bccmis::stuff_surface)
+  bccmis_add_test(mpi.stuff_notices_cube_2_ranks
+                  COMMAND ${_bccmis_mpi_test} notices ${_bccmis_mpi_tools} 2 -- -L 2 ${_bccmis_mpi_props})
+endif()
 # D10: the forest refined by S3's test against G, and each rank's lattice.
 add_executable(bccmis_distributed_forest_test ${CMAKE_CURRENT_LIST_DIR}/forest_mpi_test.cpp)
 target_link_libraries(bccmis_distributed_forest_test PRIVATE bccmis::distributed_mpi bccmis::stuff bccmis::warnings)

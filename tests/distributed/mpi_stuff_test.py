@@ -32,6 +32,9 @@
       seconds and warped exactly, the volume and its relative error to a
       relative 1e-12 (summed in another order); warped is not computed ("-",
       null); the seconds name D11's phases.
+  mpi_stuff_test.py notices MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
+      a cube written with a duplicated face and a repeated vertex (a soup S21-S22 repairs): the
+      notice lines on stderr (the flaws, the welded vertices) are bccmis stuff's, each once (D1).
   mpi_stuff_test.py errors MPIRUN BCCMIS BCCMIS_MPI RANKS
       the options D1 refuses (each by name), an unreadable input, an unwritable output directory,
       and one rank that cannot put its piece in place: exit 2, a message, no .pvtu (D1, D6).
@@ -257,6 +260,57 @@ def stats_features(mpirun, bccmis, bccmis_mpi, ranks, args, work):
           f"({want['tetrahedra']} tetrahedra, {want['feature_edges']} feature edges) and {len(warned)} warning(s)")
 
 
+# A unit cube, outward faces, with vertex 8 a copy of vertex 0 (used by one
+# face: welded, S22) and the face 4 5 6 twice (a duplicate face, S21).
+FLAWED_CUBE = """OFF
+9 13 0
+0 0 0
+1 0 0
+1 1 0
+0 1 0
+0 0 1
+1 0 1
+1 1 1
+0 1 1
+0 0 0
+3 0 3 2
+3 0 2 1
+3 4 5 6
+3 4 6 7
+3 0 1 5
+3 0 5 4
+3 3 7 6
+3 3 6 2
+3 0 4 7
+3 8 7 3
+3 1 2 6
+3 1 6 5
+3 4 5 6
+"""
+
+
+def notice_lines(stderr, tool, path):
+    """The input's notices (D1: as bccmis stuff prints them), without the tool's name."""
+    head = f"{tool}: {path}: "
+    return [l[len(tool) + 2:] for l in stderr.splitlines() if l.startswith(head)]
+
+
+def notices(mpirun, bccmis, bccmis_mpi, ranks, args, work):
+    cube = os.path.join(work, "flawed_cube.off")
+    with open(cube, "w") as f:
+        f.write(FLAWED_CUBE)
+    serial = run([bccmis, "stuff", cube, *args, "--no-features", "-o", os.path.join(work, "serial.vtu")])
+    got = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", cube, *args, "--no-features", "-o",
+                                    os.path.join(work, "out.pvtu")])
+    want = notice_lines(serial.stderr, "bccmis stuff", cube)
+    have = notice_lines(got.stderr, "bccmis-mpi stuff", cube)
+    if len(want) != 2 or "duplicate face" not in want[0] or "welded" not in want[1]:
+        sys.exit(f"FAIL: bccmis stuff's notices on the flawed cube: {want}\n{serial.stderr}")
+    if have != want:
+        sys.exit(f"FAIL: {ranks} ranks: the notices {have}, bccmis stuff's {want}\n{got.stderr}")
+    print(f"ok: {ranks} ranks: bccmis stuff's {len(want)} notice lines, once: {want}")
+
+
 def errors(mpirun, bccmis, bccmis_mpi, ranks, work):
     def refused(args, index, says, no_features=True):
         extra = ["--no-features"] if no_features else []
@@ -305,6 +359,8 @@ def main():
             whole(mpirun, bccmis, bccmis_mpi, int(ranks), args, work, mode != "whole", mode == "whole-check-warns")
         elif mode == "stats-features":
             stats_features(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
+        elif mode == "notices":
+            notices(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
         elif mode == "stats":
             stats(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
         elif mode == "pvtu":

@@ -113,6 +113,7 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
       if (write && rank == 0) index.open(out);
       shape = load_shape(o);
     });
+    if (rank == 0 && !o.stats && !o.quiet) std::cerr << soup_notices(kTool, *shape);  // D1, as bccmis stuff
     // (2) the run on every rank (the library: D1-D13).
     distributed::RankSettings settings;
     settings.lattice = lattice_options(o);
