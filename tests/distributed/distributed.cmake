@@ -103,6 +103,10 @@ if(TARGET bccmis::stuff_surface)
                           ${bccmis_cgal_data}/data/meshes/double-torus-example.off -L 2 --cells 6
                   ${_bccmis_mpi_props})
 endif()
+# D12, D13: --hausdorff on the gathered mesh, as bccmis stuff's (text and JSON).
+bccmis_add_test(mpi.stuff_hausdorff_sphere_2_ranks
+                COMMAND ${_bccmis_mpi_test} hausdorff ${_bccmis_mpi_tools} 2 -- --shape sphere -L 2
+                ${_bccmis_mpi_props})
 # D1: a repaired INPUT's notices, as bccmis stuff prints them (rank 0, once).
 if(TARGET bccmis::stuff_surface)
   bccmis_add_test(mpi.stuff_notices_cube_2_ranks

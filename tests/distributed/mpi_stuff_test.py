@@ -35,6 +35,10 @@
   mpi_stuff_test.py notices MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
       a cube written with a duplicated face and a repeated vertex (a soup S21-S22 repairs): the
       notice lines on stderr (the flaws, the welded vertices) are bccmis stuff's, each once (D1).
+  mpi_stuff_test.py hausdorff MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
+      --gather --stats --hausdorff (text, then --json) print bccmis stuff's statistics with the
+      sampled Hausdorff distance: the hausdorff lines and member, and every other line and member
+      but the seconds and warped, exactly (D12, D13); without --gather, exit 2 naming D12.
   mpi_stuff_test.py errors MPIRUN BCCMIS BCCMIS_MPI RANKS
       the options D1 refuses (each by name), an unreadable input, an unwritable output directory,
       and one rank that cannot put its piece in place: exit 2, a message, no .pvtu (D1, D6).
@@ -196,6 +200,32 @@ def stats(mpirun, bccmis, bccmis_mpi, ranks, args, work):
           f"{serial_json['boundary_triangles']} boundary triangles)")
 
 
+def hausdorff(mpirun, bccmis, bccmis_mpi, ranks, args, work):
+    serial = [bccmis, "stuff", *args, "--stats", "--hausdorff", "-q"]
+    gathered = mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, "--gather", "--stats", "--hausdorff", "-q"]
+    # Text: the same lines in the same order, but the seconds and warped (D11).
+    want, got = run(serial).stdout.splitlines(), run(gathered).stdout.splitlines()
+    compared = lambda lines: [l for l in lines if not l.startswith("seconds_") and l.split()[0] not in NOT_COMPUTED]
+    if compared(got) != compared(want):
+        sys.exit(f"FAIL: {ranks} ranks: --gather --stats --hausdorff:\n{compared(got)}\nserial:\n{compared(want)}")
+    distances = [l for l in want if l.startswith("hausdorff")]
+    if len(distances) != 5:
+        sys.exit(f"FAIL: bccmis stuff --hausdorff printed no distance: {want}")
+    # JSON: the same members; every one but the seconds and warped equal.
+    j = json.loads(run(gathered + ["--json"]).stdout)
+    w = json.loads(run(serial + ["--json"]).stdout)
+    if list(j) != list(w):
+        sys.exit(f"FAIL: {ranks} ranks: the JSON members {list(j)}, serial {list(w)}")
+    for k in w:
+        if k not in ("seconds",) + NOT_COMPUTED and j[k] != w[k]:
+            sys.exit(f"FAIL: {ranks} ranks: {k} {j[k]}, serial {w[k]}")
+    # Without --gather no rank holds the boundary: refused, naming D12.
+    r = run(gathered[:gathered.index("--gather")] + gathered[gathered.index("--gather") + 1:], expect=2)
+    if "--hausdorff run on the mesh gathered on rank 0: add --gather (spec/distributed.md D12)" not in r.stderr:
+        sys.exit(f"FAIL: --hausdorff without --gather: no D12 refusal:\n{r.stderr}")
+    print(f"ok: {ranks} ranks: --gather --stats --hausdorff as bccmis stuff's ({distances}); refused without --gather")
+
+
 def warnings_of(stderr, tool):
     """The warnings a run printed on stderr (D13: as bccmis stuff prints them)."""
     head = tool + ": warning: "
@@ -324,7 +354,7 @@ def errors(mpirun, bccmis, bccmis_mpi, ranks, work):
             sys.exit(f"FAIL: {args}: a failed run left {left}")
     index = os.path.join(work, "out.pvtu")
     # D1: the options not split over ranks, each refused by name before any work.
-    for option in (["--hausdorff"], ["--animate", "2"], ["--memory-limit", "1"], ["--crease-cuts", "0.25"]):
+    for option in (["--animate", "2"], ["--memory-limit", "1"], ["--crease-cuts", "0.25"]):
         refused(["--shape", "sphere", "-L", "2", *option], index,
                 f"{option[0]} is not supported on several ranks yet (spec/distributed.md D1)",
                 no_features=option[0] != "--crease-cuts")  # which excludes --no-features
@@ -359,6 +389,8 @@ def main():
             whole(mpirun, bccmis, bccmis_mpi, int(ranks), args, work, mode != "whole", mode == "whole-check-warns")
         elif mode == "stats-features":
             stats_features(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
+        elif mode == "hausdorff":
+            hausdorff(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
         elif mode == "notices":
             notices(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
         elif mode == "stats":
