@@ -103,6 +103,18 @@ if(TARGET bccmis::stuff_surface)
                           ${bccmis_cgal_data}/data/meshes/double-torus-example.off -L 2 --cells 6
                   ${_bccmis_mpi_props})
 endif()
+# D12: --stats --check as bccmis stuff's: passing (the torus), the statistics
+# in its order; failing (CGAL's elephant at level 3, S27's extra components),
+# exit 1 and no statistics.
+bccmis_add_test(mpi.stuff_stats_check_torus_2_ranks
+                COMMAND ${_bccmis_mpi_test} stats-check ${_bccmis_mpi_tools} 2 -- --shape torus -L 2 --cells 6
+                ${_bccmis_mpi_props})
+if(TARGET bccmis::stuff_surface)
+  bccmis_add_test(mpi.stuff_stats_check_fails_elephant_2_ranks
+                  COMMAND ${_bccmis_mpi_test} stats-check ${_bccmis_mpi_tools} 2 --
+                          --failing ${bccmis_cgal_data}/data/meshes/elephant.off -L 3
+                  ${_bccmis_mpi_props})
+endif()
 # D12, D13: --hausdorff on the gathered mesh, as bccmis stuff's (text and JSON).
 bccmis_add_test(mpi.stuff_hausdorff_sphere_2_ranks
                 COMMAND ${_bccmis_mpi_test} hausdorff ${_bccmis_mpi_tools} 2 -- --shape sphere -L 2

@@ -39,6 +39,10 @@
       --gather --stats --hausdorff (text, then --json) print bccmis stuff's statistics with the
       sampled Hausdorff distance: the hausdorff lines and member, and every other line and member
       but the seconds and warped, exactly (D12, D13); without --gather, exit 2 naming D12.
+  mpi_stuff_test.py stats-check MPIRUN BCCMIS BCCMIS_MPI RANKS -- [--failing] STUFF_ARGS...
+      --gather --stats --check -o FILE.vtu against bccmis stuff --stats --check (D11, D12): passing
+      (--no-features), the statistics lines in the serial order (D11's rules); --failing (a mesh the
+      checker refuses), exit 1 on both, no statistics and no file on either, the same message.
   mpi_stuff_test.py errors MPIRUN BCCMIS BCCMIS_MPI RANKS
       the options D1 refuses (each by name), an unreadable input, an unwritable output directory,
       and one rank that cannot put its piece in place: exit 2, a message, no .pvtu (D1, D6).
@@ -154,6 +158,46 @@ def close(a, b):
     return abs(a - b) <= 1e-12 * max(abs(a), abs(b))
 
 
+def same_stats_lines(got, want, where):
+    """D11: --stats' `name value` lines as the serial ones, in order, but the seconds,
+    warped ("-") and the rounded sums (to a relative 1e-12)."""
+    strip = lambda lines: [l for l in lines if not l.startswith("seconds_")]
+    if [l.split()[0] for l in strip(got)] != [l.split()[0] for l in strip(want)]:
+        sys.exit(f"FAIL: {where}: the --stats lines differ:\n{strip(got)}\n{strip(want)}")
+    for g, w in zip(strip(got), strip(want)):
+        name = w.split()[0]
+        if name in NOT_COMPUTED:
+            if g != name + " -":
+                sys.exit(f"FAIL: {where}: '{g}', expected '{name} -'")
+        elif name in ROUNDED:
+            if not close(float(g.split()[1]), float(w.split()[1])):
+                sys.exit(f"FAIL: {where}: '{g}', serial '{w}'")
+        elif g != w:
+            sys.exit(f"FAIL: {where}: '{g}', serial '{w}'")
+
+
+def stats_check(mpirun, bccmis, bccmis_mpi, ranks, args, work):
+    serial_path, together = os.path.join(work, "serial.vtu"), os.path.join(work, "gathered.vtu")
+    failing = args[0] == "--failing"
+    args = args[1:] if failing else args
+    extra = ["--stats", "--check"] + (["--no-features"] if not failing else [])
+    said = run([bccmis, "stuff", *args, *extra, "-o", serial_path], expect=1 if failing else 0)
+    got = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, *extra, "--gather", "-o", together],
+              expect=1 if failing else 0)
+    if failing:
+        # D12: the checker's problem, exit 1, as bccmis stuff: no statistics, no file, the same message.
+        want = [l.split(": ", 1)[1] for l in said.stderr.splitlines() if l.startswith("bccmis: ")]
+        have = [l.split(": ", 2)[2] for l in got.stderr.splitlines() if l.startswith("bccmis-mpi stuff: rank ")]
+        if said.stdout or got.stdout or os.path.exists(serial_path) or os.path.exists(together):
+            sys.exit(f"FAIL: {ranks} ranks: a failed --check printed statistics or left a file:\n{got.stdout}")
+        if len(want) != 1 or have != want:
+            sys.exit(f"FAIL: {ranks} ranks: the failed --check says {have}, bccmis stuff {want}")
+        print(f"ok: {ranks} ranks: --stats --check failing: exit 1 as bccmis stuff, no statistics, '{want[0]}'")
+        return
+    same_stats_lines(got.stdout.splitlines(), said.stdout.splitlines(), f"{ranks} ranks --stats --check")
+    print(f"ok: {ranks} ranks: --gather --stats --check prints bccmis stuff's statistics in its order")
+
+
 def stats(mpirun, bccmis, bccmis_mpi, ranks, args, work):
     serial_text = run([bccmis, "stuff", *args, "--no-features", "--stats", "-q"]).stdout
     serial_json = json.loads(run([bccmis, "stuff", *args, "--no-features", "--stats", "--json", "-q"]).stdout)
@@ -162,20 +206,7 @@ def stats(mpirun, bccmis, bccmis_mpi, ranks, args, work):
     for extra in ([], ["-o", index]):
         # Text: `name value` lines, in order.
         got = run(mpi_run + ["--stats", *extra]).stdout.splitlines()
-        want = serial_text.splitlines()
-        strip = lambda lines: [l for l in lines if not l.startswith("seconds_")]
-        if [l.split()[0] for l in strip(got)] != [l.split()[0] for l in strip(want)]:
-            sys.exit(f"FAIL: {ranks} ranks {extra}: the --stats lines differ:\n{strip(got)}\n{strip(want)}")
-        for g, w in zip(strip(got), strip(want)):
-            name = w.split()[0]
-            if name in NOT_COMPUTED:
-                if g != name + " -":
-                    sys.exit(f"FAIL: {ranks} ranks {extra}: '{g}', expected '{name} -'")
-            elif name in ROUNDED:
-                if not close(float(g.split()[1]), float(w.split()[1])):
-                    sys.exit(f"FAIL: {ranks} ranks {extra}: '{g}', serial '{w}'")
-            elif g != w:
-                sys.exit(f"FAIL: {ranks} ranks {extra}: '{g}', serial '{w}'")
+        same_stats_lines(got, serial_text.splitlines(), f"{ranks} ranks {extra}")
         if [l.split()[0] for l in got if l.startswith("seconds_")] != ["seconds_" + p for p in RANK_PHASES]:
             sys.exit(f"FAIL: {ranks} ranks {extra}: the seconds' phases: {got}")
         # JSON: the same members in the same order.
@@ -389,6 +420,8 @@ def main():
             whole(mpirun, bccmis, bccmis_mpi, int(ranks), args, work, mode != "whole", mode == "whole-check-warns")
         elif mode == "stats-features":
             stats_features(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
+        elif mode == "stats-check":
+            stats_check(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
         elif mode == "hausdorff":
             hausdorff(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
         elif mode == "notices":
