@@ -32,6 +32,12 @@ set(_bccmis_mpi_test ${BCCMIS_SYSTEM_PYTHON3} ${CMAKE_CURRENT_LIST_DIR}/mpi_stuf
 set(_bccmis_mpi_tools ${BCCMIS_MPIRUN} $<TARGET_FILE:bccmis> $<TARGET_FILE:bccmis_mpi>)
 # ASan and oversubscribed ranks on a loaded machine: minutes, not seconds.
 set(_bccmis_mpi_props LABELS mpi TIMEOUT 300 PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
+# mpi.NAME: one mpi_stuff_test.py MODE run on RANKS ranks, bccmis stuff's
+# arguments after them.
+function(_bccmis_mpi_stuff_test name mode ranks)
+  bccmis_add_test(mpi.${name} COMMAND ${_bccmis_mpi_test} ${mode} ${_bccmis_mpi_tools} ${ranks} -- ${ARGN}
+                  ${_bccmis_mpi_props})
+endfunction()
 foreach(ranks 1 2 3 4)
   # On 2 ranks every format (.vtu binary and ASCII, .msh), else binary .vtu.
   set(_mode gather)
@@ -102,6 +108,20 @@ if(TARGET bccmis::stuff_surface)
                   COMMAND ${_bccmis_mpi_test} stats ${_bccmis_mpi_tools} 3 --
                           ${bccmis_cgal_data}/data/meshes/double-torus-example.off -L 2 --cells 6
                   ${_bccmis_mpi_props})
+endif()
+# D12: --stats --check as bccmis stuff's: passing (the torus), the statistics
+# in its order; failing (CGAL's elephant at level 3, S27's extra components),
+# exit 1 and no statistics.
+_bccmis_mpi_stuff_test(stuff_stats_check_torus_2_ranks stats-check 2 --shape torus -L 2 --cells 6)
+if(TARGET bccmis::stuff_surface)
+  _bccmis_mpi_stuff_test(stuff_stats_check_fails_elephant_2_ranks stats-check 2
+                         --failing ${bccmis_cgal_data}/data/meshes/elephant.off -L 3)
+endif()
+# D12, D13: --hausdorff on the gathered mesh, as bccmis stuff's (text and JSON).
+_bccmis_mpi_stuff_test(stuff_hausdorff_sphere_2_ranks hausdorff 2 --shape sphere -L 2)
+# D1: a repaired INPUT's notices, as bccmis stuff prints them (rank 0, once).
+if(TARGET bccmis::stuff_surface)
+  _bccmis_mpi_stuff_test(stuff_notices_cube_2_ranks notices 2 -L 2)
 endif()
 # D10: the forest refined by S3's test against G, and each rank's lattice.
 add_executable(bccmis_distributed_forest_test ${CMAKE_CURRENT_LIST_DIR}/forest_mpi_test.cpp)

@@ -32,6 +32,17 @@
       seconds and warped exactly, the volume and its relative error to a
       relative 1e-12 (summed in another order); warped is not computed ("-",
       null); the seconds name D11's phases.
+  mpi_stuff_test.py notices MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
+      a cube written with a duplicated face and a repeated vertex (a soup S21-S22 repairs): the
+      notice lines on stderr (the flaws, the welded vertices) are bccmis stuff's, each once (D1).
+  mpi_stuff_test.py hausdorff MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
+      --gather --stats --hausdorff (text, then --json) print bccmis stuff's statistics with the
+      sampled Hausdorff distance: the hausdorff lines and member, and every other line and member
+      but the seconds and warped, exactly (D12, D13); without --gather, exit 2 naming D12.
+  mpi_stuff_test.py stats-check MPIRUN BCCMIS BCCMIS_MPI RANKS -- [--failing] STUFF_ARGS...
+      --gather --stats --check -o FILE.vtu against bccmis stuff --stats --check (D11, D12): passing
+      (--no-features), the statistics lines in the serial order (D11's rules); --failing (a mesh the
+      checker refuses), exit 1 on both, no statistics and no file on either, the same message.
   mpi_stuff_test.py errors MPIRUN BCCMIS BCCMIS_MPI RANKS
       the options D1 refuses (each by name), an unreadable input, an unwritable output directory,
       and one rank that cannot put its piece in place: exit 2, a message, no .pvtu (D1, D6).
@@ -147,6 +158,46 @@ def close(a, b):
     return abs(a - b) <= 1e-12 * max(abs(a), abs(b))
 
 
+def same_stats_lines(got, want, where):
+    """D11: --stats' `name value` lines as the serial ones, in order, but the seconds,
+    warped ("-") and the rounded sums (to a relative 1e-12)."""
+    strip = lambda lines: [l for l in lines if not l.startswith("seconds_")]
+    if [l.split()[0] for l in strip(got)] != [l.split()[0] for l in strip(want)]:
+        sys.exit(f"FAIL: {where}: the --stats lines differ:\n{strip(got)}\n{strip(want)}")
+    for g, w in zip(strip(got), strip(want)):
+        name = w.split()[0]
+        if name in NOT_COMPUTED:
+            if g != name + " -":
+                sys.exit(f"FAIL: {where}: '{g}', expected '{name} -'")
+        elif name in ROUNDED:
+            if not close(float(g.split()[1]), float(w.split()[1])):
+                sys.exit(f"FAIL: {where}: '{g}', serial '{w}'")
+        elif g != w:
+            sys.exit(f"FAIL: {where}: '{g}', serial '{w}'")
+
+
+def stats_check(mpirun, bccmis, bccmis_mpi, ranks, args, work):
+    serial_path, together = os.path.join(work, "serial.vtu"), os.path.join(work, "gathered.vtu")
+    failing = args[0] == "--failing"
+    args = args[1:] if failing else args
+    extra = ["--stats", "--check"] + (["--no-features"] if not failing else [])
+    said = run([bccmis, "stuff", *args, *extra, "-o", serial_path], expect=1 if failing else 0)
+    got = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, *extra, "--gather", "-o", together],
+              expect=1 if failing else 0)
+    if failing:
+        # D12: the checker's problem, exit 1, as bccmis stuff: no statistics, no file, the same message.
+        want = [l.split(": ", 1)[1] for l in said.stderr.splitlines() if l.startswith("bccmis: ")]
+        have = [l.split(": ", 2)[2] for l in got.stderr.splitlines() if l.startswith("bccmis-mpi stuff: rank ")]
+        if said.stdout or got.stdout or os.path.exists(serial_path) or os.path.exists(together):
+            sys.exit(f"FAIL: {ranks} ranks: a failed --check printed statistics or left a file:\n{got.stdout}")
+        if len(want) != 1 or have != want:
+            sys.exit(f"FAIL: {ranks} ranks: the failed --check says {have}, bccmis stuff {want}")
+        print(f"ok: {ranks} ranks: --stats --check failing: exit 1 as bccmis stuff, no statistics, '{want[0]}'")
+        return
+    same_stats_lines(got.stdout.splitlines(), said.stdout.splitlines(), f"{ranks} ranks --stats --check")
+    print(f"ok: {ranks} ranks: --gather --stats --check prints bccmis stuff's statistics in its order")
+
+
 def stats(mpirun, bccmis, bccmis_mpi, ranks, args, work):
     serial_text = run([bccmis, "stuff", *args, "--no-features", "--stats", "-q"]).stdout
     serial_json = json.loads(run([bccmis, "stuff", *args, "--no-features", "--stats", "--json", "-q"]).stdout)
@@ -155,20 +206,7 @@ def stats(mpirun, bccmis, bccmis_mpi, ranks, args, work):
     for extra in ([], ["-o", index]):
         # Text: `name value` lines, in order.
         got = run(mpi_run + ["--stats", *extra]).stdout.splitlines()
-        want = serial_text.splitlines()
-        strip = lambda lines: [l for l in lines if not l.startswith("seconds_")]
-        if [l.split()[0] for l in strip(got)] != [l.split()[0] for l in strip(want)]:
-            sys.exit(f"FAIL: {ranks} ranks {extra}: the --stats lines differ:\n{strip(got)}\n{strip(want)}")
-        for g, w in zip(strip(got), strip(want)):
-            name = w.split()[0]
-            if name in NOT_COMPUTED:
-                if g != name + " -":
-                    sys.exit(f"FAIL: {ranks} ranks {extra}: '{g}', expected '{name} -'")
-            elif name in ROUNDED:
-                if not close(float(g.split()[1]), float(w.split()[1])):
-                    sys.exit(f"FAIL: {ranks} ranks {extra}: '{g}', serial '{w}'")
-            elif g != w:
-                sys.exit(f"FAIL: {ranks} ranks {extra}: '{g}', serial '{w}'")
+        same_stats_lines(got, serial_text.splitlines(), f"{ranks} ranks {extra}")
         if [l.split()[0] for l in got if l.startswith("seconds_")] != ["seconds_" + p for p in RANK_PHASES]:
             sys.exit(f"FAIL: {ranks} ranks {extra}: the seconds' phases: {got}")
         # JSON: the same members in the same order.
@@ -191,6 +229,32 @@ def stats(mpirun, bccmis, bccmis_mpi, ranks, args, work):
         sys.exit(f"FAIL: {ranks} ranks: --stats -o {index} wrote no .pvtu")
     print(f"ok: {ranks} ranks: --stats and --json as bccmis stuff's ({serial_json['tetrahedra']} tetrahedra, "
           f"{serial_json['boundary_triangles']} boundary triangles)")
+
+
+def hausdorff(mpirun, bccmis, bccmis_mpi, ranks, args, work):
+    serial = [bccmis, "stuff", *args, "--stats", "--hausdorff", "-q"]
+    gathered = mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, "--gather", "--stats", "--hausdorff", "-q"]
+    # Text: the same lines in the same order, but the seconds and warped (D11).
+    want, got = run(serial).stdout.splitlines(), run(gathered).stdout.splitlines()
+    compared = lambda lines: [l for l in lines if not l.startswith("seconds_") and l.split()[0] not in NOT_COMPUTED]
+    if compared(got) != compared(want):
+        sys.exit(f"FAIL: {ranks} ranks: --gather --stats --hausdorff:\n{compared(got)}\nserial:\n{compared(want)}")
+    distances = [l for l in want if l.startswith("hausdorff")]
+    if len(distances) != 5:
+        sys.exit(f"FAIL: bccmis stuff --hausdorff printed no distance: {want}")
+    # JSON: the same members; every one but the seconds and warped equal.
+    j = json.loads(run(gathered + ["--json"]).stdout)
+    w = json.loads(run(serial + ["--json"]).stdout)
+    if list(j) != list(w):
+        sys.exit(f"FAIL: {ranks} ranks: the JSON members {list(j)}, serial {list(w)}")
+    for k in w:
+        if k not in ("seconds",) + NOT_COMPUTED and j[k] != w[k]:
+            sys.exit(f"FAIL: {ranks} ranks: {k} {j[k]}, serial {w[k]}")
+    # Without --gather no rank holds the boundary: refused, naming D12.
+    r = run(gathered[:gathered.index("--gather")] + gathered[gathered.index("--gather") + 1:], expect=2)
+    if "--hausdorff run on the mesh gathered on rank 0: add --gather (spec/distributed.md D12)" not in r.stderr:
+        sys.exit(f"FAIL: --hausdorff without --gather: no D12 refusal:\n{r.stderr}")
+    print(f"ok: {ranks} ranks: --gather --stats --hausdorff as bccmis stuff's ({distances}); refused without --gather")
 
 
 def warnings_of(stderr, tool):
@@ -257,6 +321,57 @@ def stats_features(mpirun, bccmis, bccmis_mpi, ranks, args, work):
           f"({want['tetrahedra']} tetrahedra, {want['feature_edges']} feature edges) and {len(warned)} warning(s)")
 
 
+# A unit cube, outward faces, with vertex 8 a copy of vertex 0 (used by one
+# face: welded, S22) and the face 4 5 6 twice (a duplicate face, S21).
+FLAWED_CUBE = """OFF
+9 13 0
+0 0 0
+1 0 0
+1 1 0
+0 1 0
+0 0 1
+1 0 1
+1 1 1
+0 1 1
+0 0 0
+3 0 3 2
+3 0 2 1
+3 4 5 6
+3 4 6 7
+3 0 1 5
+3 0 5 4
+3 3 7 6
+3 3 6 2
+3 0 4 7
+3 8 7 3
+3 1 2 6
+3 1 6 5
+3 4 5 6
+"""
+
+
+def notice_lines(stderr, tool, path):
+    """The input's notices (D1: as bccmis stuff prints them), without the tool's name."""
+    head = f"{tool}: {path}: "
+    return [l[len(tool) + 2:] for l in stderr.splitlines() if l.startswith(head)]
+
+
+def notices(mpirun, bccmis, bccmis_mpi, ranks, args, work):
+    cube = os.path.join(work, "flawed_cube.off")
+    with open(cube, "w") as f:
+        f.write(FLAWED_CUBE)
+    serial = run([bccmis, "stuff", cube, *args, "--no-features", "-o", os.path.join(work, "serial.vtu")])
+    got = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", cube, *args, "--no-features", "-o",
+                                    os.path.join(work, "out.pvtu")])
+    want = notice_lines(serial.stderr, "bccmis stuff", cube)
+    have = notice_lines(got.stderr, "bccmis-mpi stuff", cube)
+    if len(want) != 2 or "duplicate face" not in want[0] or "welded" not in want[1]:
+        sys.exit(f"FAIL: bccmis stuff's notices on the flawed cube: {want}\n{serial.stderr}")
+    if have != want:
+        sys.exit(f"FAIL: {ranks} ranks: the notices {have}, bccmis stuff's {want}\n{got.stderr}")
+    print(f"ok: {ranks} ranks: bccmis stuff's {len(want)} notice lines, once: {want}")
+
+
 def errors(mpirun, bccmis, bccmis_mpi, ranks, work):
     def refused(args, index, says, no_features=True):
         extra = ["--no-features"] if no_features else []
@@ -270,7 +385,7 @@ def errors(mpirun, bccmis, bccmis_mpi, ranks, work):
             sys.exit(f"FAIL: {args}: a failed run left {left}")
     index = os.path.join(work, "out.pvtu")
     # D1: the options not split over ranks, each refused by name before any work.
-    for option in (["--hausdorff"], ["--animate", "2"], ["--memory-limit", "1"], ["--crease-cuts", "0.25"]):
+    for option in (["--animate", "2"], ["--memory-limit", "1"], ["--crease-cuts", "0.25"]):
         refused(["--shape", "sphere", "-L", "2", *option], index,
                 f"{option[0]} is not supported on several ranks yet (spec/distributed.md D1)",
                 no_features=option[0] != "--crease-cuts")  # which excludes --no-features
@@ -305,6 +420,12 @@ def main():
             whole(mpirun, bccmis, bccmis_mpi, int(ranks), args, work, mode != "whole", mode == "whole-check-warns")
         elif mode == "stats-features":
             stats_features(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
+        elif mode == "stats-check":
+            stats_check(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
+        elif mode == "hausdorff":
+            hausdorff(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
+        elif mode == "notices":
+            notices(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
         elif mode == "stats":
             stats(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
         elif mode == "pvtu":

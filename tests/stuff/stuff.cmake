@@ -68,6 +68,15 @@ if(TARGET bccmis::stuff_surface)
                    LABELS unit)
 endif()
 
+# S25: the memory estimate on its line, with and without S35.8's second
+# mesh (--crease-cuts), on CGAL's fandisk at level 2.
+if(TARGET bccmis::stuff_surface)
+  bccmis_add_gtest(stuff_memory_estimate_tests SOURCES memory_estimate_test.cpp
+                   LIBS bccmis::stuffing bccmis::stuff_surface
+                   DEFINITIONS BCCMIS_CGAL_MESHES_DIR="${bccmis_cgal_data}/data/meshes"
+                   LABELS unit)
+endif()
+
 # S35.7: cut points placed on the creases before warping, on CGAL's joint
 # and fandisk at level 3, with S10's bound and the feature checker; S35.8:
 # on CGAL's anchor at level 2 nothing the run without it conforms is lost.

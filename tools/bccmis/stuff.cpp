@@ -172,12 +172,7 @@ int run(const StuffOptions& o) {
     throw InputError(e.what());
   }
   stuff::PhaseSeconds seconds{{"input", stuff::seconds_since(t0)}};
-  if (const stuff::SoupReport* r = shape->soup_report(); r && r->flaw_count() > 0 && !o.stats && !o.quiet)
-    std::cerr << "bccmis stuff: " << r->file << ": " << r->summary()
-              << ": meshed as the solid where the winding number >= 1/2; --strict refuses\n";
-  if (const stuff::SoupReport* r = shape->soup_report(); r && r->welded_vertices > 0 && !o.stats && !o.quiet)
-    std::cerr << "bccmis stuff: " << r->file << ": " << r->welded_vertices
-              << " repeated vertices welded (the coordinates of an earlier vertex)\n";
+  if (!o.stats && !o.quiet) std::cerr << soup_notices("bccmis stuff", *shape);  // S21, S22
   stuff::Settings settings;
   settings.lattice = lattice_options(o);
   if (o.animate > 0) return run_animate(o, shape, settings.lattice, outputs);

@@ -1,12 +1,14 @@
 #include "stuff_input.h"
 
 #include <optional>
+#include <string>
 
 #include "bccmis/io/medit.h"
 #include "bccmis/io/msh.h"
 #include "bccmis/io/surface_format.h"
 #include "bccmis/io/vtu.h"
 #include "bccmis/stuff/mesh_shape.h"
+#include "bccmis/stuff/soup_report.h"
 #include "io.h"
 
 namespace bccmis::cli {
@@ -36,6 +38,19 @@ std::shared_ptr<const stuff::Shape> load_shape(const StuffOptions& o) {
   if (o.format == "ply") format = io::SurfaceFormat::ply;
   if (o.format == "stl") format = io::SurfaceFormat::stl;
   return stuff::load_mesh_file(o.input, o.strict, format);
+}
+
+std::string soup_notices(const std::string& tool, const stuff::Shape& shape) {
+  const stuff::SoupReport* r = shape.soup_report();
+  if (!r) return "";
+  std::string out;
+  if (r->flaw_count() > 0)
+    out += tool + ": " + r->file + ": " + r->summary() +
+           ": meshed as the solid where the winding number >= 1/2; --strict refuses\n";
+  if (r->welded_vertices > 0)
+    out += tool + ": " + r->file + ": " + std::to_string(r->welded_vertices) +
+           " repeated vertices welded (the coordinates of an earlier vertex)\n";
+  return out;
 }
 
 stuff::StuffOptions lattice_options(const StuffOptions& o) {

@@ -34,6 +34,13 @@ void add_tetrahedra_output(OutputSet& outputs, const std::string& path, const d3
 /// the shape is refused.
 std::shared_ptr<const stuff::Shape> load_shape(const StuffOptions& o);
 
+/// The notices of a repaired triangle-mesh INPUT (spec/cli.md, stuff;
+/// spec/stuffing.md S21, S22) as `tool` prints them on standard error: a
+/// line naming the flaws found, a line of the vertices welded, each when
+/// there are any; empty for a clean file or a built-in shape
+/// (spec/distributed.md D1: bccmis-mpi stuff prints the same lines).
+std::string soup_notices(const std::string& tool, const stuff::Shape& shape);
+
 /// The lattice's options (-L, --min-level, --cells, --size, --threads) as
 /// the library takes them, for bccmis stuff and bccmis-mpi stuff alike.
 stuff::StuffOptions lattice_options(const StuffOptions& o);

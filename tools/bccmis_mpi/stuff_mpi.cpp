@@ -59,22 +59,22 @@ void stage(MPI_Comm comm, Body&& body) {
 }
 
 /// D1: the options this slice does not split yet, the ones that need the
-/// gathered mesh (D12), and the one output (or none, with --stats).
+/// gathered mesh (D12: the features, --check, --hausdorff), and the one output (or none, with --stats).
 void check_options(const StuffOptions& o, bool gather) {
   const auto refuse = [](const std::string& what) {
     throw InputError(what + " is not supported on several ranks yet (spec/distributed.md D1)");
   };
-  if (o.hausdorff) refuse("--hausdorff");
   if (o.animate > 0 || !o.path.empty() || o.compare) refuse("--animate");
   if (o.impl != "fast") refuse("--impl " + o.impl);
   if (o.memory_limit_gb > 0) refuse("--memory-limit");
   if (o.crease_cuts > 0) refuse("--crease-cuts");  // S35.7 places cut points inside each piece's stuffing
   const bool features = o.features_on();
-  if ((features || o.check) && !gather)
-    throw InputError(
-        std::string(features ? "the features of a triangle-mesh INPUT (on by default, S29-S35)" : "--check") +
-        " run on the mesh gathered on rank 0: add --gather" + (features ? ", or --no-features" : "") +
-        " (spec/distributed.md D12)");
+  if ((features || o.check || o.hausdorff) && !gather)
+    throw InputError(std::string(features  ? "the features of a triangle-mesh INPUT (on by default, S29-S35)"
+                                 : o.check ? "--check"
+                                           : "--hausdorff") +
+                     " run on the mesh gathered on rank 0: add --gather" + (features ? ", or --no-features" : "") +
+                     " (spec/distributed.md D12)");
   if (o.outputs.empty() && o.stats) return;  // D11: the statistics alone
   if (o.outputs.size() != 1)
     throw InputError("give one output: -o FILE.pvtu (a piece per rank), or --gather -o FILE (.vtu, .msh, .mesh)");
@@ -113,12 +113,14 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
       if (write && rank == 0) index.open(out);
       shape = load_shape(o);
     });
+    if (rank == 0 && !o.stats && !o.quiet) std::cerr << soup_notices(kTool, *shape);  // D1, as bccmis stuff
     // (2) the run on every rank (the library: D1-D13).
     distributed::RankSettings settings;
     settings.lattice = lattice_options(o);
     settings.features.on = o.features_on();
     if (o.feature_angle >= 0) settings.features.angle = o.feature_angle;
     settings.check = o.check;
+    settings.hausdorff = o.hausdorff;
     settings.statistics = o.stats;
     settings.pieces = write && !gather;
     settings.gather = write && gather;

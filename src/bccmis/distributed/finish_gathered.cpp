@@ -16,7 +16,7 @@
 namespace bccmis::distributed {
 
 Finished finish_gathered(const stuff::Shape& world, const Replicated& r, d3::TetMeshF& mesh,
-                         const stuff::FeatureSettings& features, bool check, bool statistics) {
+                         const stuff::FeatureSettings& features, bool check, bool statistics, bool hausdorff) {
   const stuff::Shape& shape = *r.shape;  // S24's local coordinates, as the mesh
   Finished f;
   std::vector<std::array<std::uint32_t, 3>> boundary;
@@ -55,9 +55,10 @@ Finished finish_gathered(const stuff::Shape& world, const Replicated& r, d3::Tet
     if (more || (f.topology.nonmanifold_edges > 0 && input_manifold))
       throw stuff::CheckError(world.describe() + ": " + f.warnings.front());
   }
-  // D13: S13 and S33 in local coordinates, reported in world units.
+  // D13: S13 (with --hausdorff its sampled distance, as mesh_shape()) and
+  // S33 in local coordinates, reported in world units.
   if (statistics) {
-    f.statistics = stuff::to_world(stuff::statistics(shape, mesh, boundary, false), r.normalisation);
+    f.statistics = stuff::to_world(stuff::statistics(shape, mesh, boundary, hausdorff), r.normalisation);
     if (f.features)
       f.features->distance =
           std::ldexp(stuff::feature_distance(mesh, boundary, found, r.fit.h), r.normalisation.exponent);

@@ -31,13 +31,14 @@ struct Finished {
 /// after a split; with `check`, the checker's stuffed-mesh layer and the
 /// feature layer (S32); S27's topology and the warnings (D13); with
 /// `check`, S27's extra components or non-manifold edges refused; with
-/// `statistics`, S13 (no Hausdorff distance) and S33's feature distance
-/// (D13); then S24's map to world coordinates. `world` is the shape as read,
+/// `statistics`, S13 (its sampled Hausdorff distance with `hausdorff`) and
+/// S33's feature distance (D13); then S24's map to world coordinates. `world` is the shape as read,
 /// `r` as fitted() made it. Throws stuff::CheckError on a problem the checks
 /// find (S11, S32, S27's extra components or non-manifold edges),
 /// stuff::ShapeError on S27's lost component or S24's overflow, with
 /// mesh_shape()'s messages.
 Finished finish_gathered(const stuff::Shape& world, const Replicated& r, d3::TetMeshF& mesh,
-                         const stuff::FeatureSettings& features, bool check, bool statistics = false);
+                         const stuff::FeatureSettings& features, bool check, bool statistics = false,
+                         bool hausdorff = false);
 
 }  // namespace bccmis::distributed

@@ -44,8 +44,8 @@ RankRun stuff_on_ranks(const stuff::Shape& world, const RankSettings& s, MPI_Com
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
   RankRun run;
-  // D12: the features and --check run on the whole mesh, gathered in local coordinates.
-  const bool whole = s.features.on || s.check;
+  // D12: the features, --check and --hausdorff run on the whole mesh, gathered in local coordinates.
+  const bool whole = s.features.on || s.check || s.hausdorff;
   auto t = start;
   const auto phase = [&](const char* name) {
     run.seconds.emplace_back(name, stuff::seconds_since(t));
@@ -107,7 +107,9 @@ RankRun stuff_on_ranks(const stuff::Shape& world, const RankSettings& s, MPI_Com
       run.regions = io::regions_of(run.mesh.tets);
       return;
     }
-    Finished f = finish_gathered(world, *lattice, run.mesh, s.features, s.check, s.statistics && s.features.on);
+    // D13: rank 0's statistics of the whole mesh with the features or the distance.
+    const bool own = s.statistics && (s.features.on || s.hausdorff);
+    Finished f = finish_gathered(world, *lattice, run.mesh, s.features, s.check, own, s.hausdorff);
     run.regions = std::move(f.regions);
     run.report.topology = f.topology;
     run.report.warnings = std::move(f.warnings);

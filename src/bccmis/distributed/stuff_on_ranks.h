@@ -21,6 +21,7 @@ struct RankSettings {
   stuff::StuffOptions lattice;      ///< -L, --min-level, --cells, --size, --threads
   stuff::FeatureSettings features;  ///< on: D12 (needs gather)
   bool check = false;               ///< D12
+  bool hausdorff = false;           ///< with statistics: S13's distance on the gathered mesh (D12, D13)
   bool statistics = false;          ///< D11, D13
   bool pieces = false;              ///< a .vtu piece per rank: D7's global ids
   bool gather = false;              ///< the whole mesh on rank 0 (D5)

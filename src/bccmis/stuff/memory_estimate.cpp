@@ -25,11 +25,12 @@ std::string gigabytes(double bytes) {
 
 }  // namespace
 
-MemoryEstimate estimate_memory(const Shape& shape, const StuffOptions& options, double available_bytes) {
+MemoryEstimate estimate_memory(const Shape& shape, const StuffOptions& options, double available_bytes, int meshes) {
   const Fit fit = fit_lattice(shape.bounds(), options);
   MemoryEstimate e;
+  e.meshes = meshes;
   e.leaves = all_cubes(fit);
-  if (e.leaves * kBytesPerLeaf <= available_bytes) return e;
+  if (e.bytes() <= available_bytes) return e;
   // S25: the probe, at the smallest level P >= 2 with N 2^P > 10, when below L.
   int P = 2;
   while (std::ldexp(static_cast<double>(options.cells), P) <= 10) ++P;
@@ -57,9 +58,9 @@ std::optional<double> available_memory() {
   return std::nullopt;
 }
 
-void refuse_what_will_not_fit(const Shape& shape, const StuffOptions& options, double available_bytes) {
+void refuse_what_will_not_fit(const Shape& shape, const StuffOptions& options, double available_bytes, int meshes) {
   const Fit fit = fit_lattice(shape.bounds(), options);
-  const MemoryEstimate e = estimate_memory(shape, options, available_bytes);
+  const MemoryEstimate e = estimate_memory(shape, options, available_bytes, meshes);
   if (e.bytes() <= available_bytes) return;
   // The finest level that fits: the estimate falls by 4 (at least) a level.
   int fits = fit.size.L;
@@ -67,10 +68,13 @@ void refuse_what_will_not_fit(const Shape& shape, const StuffOptions& options, d
   while (fits > 0 && bytes > available_bytes) --fits, bytes /= 4;
   char leaves[32];
   std::snprintf(leaves, sizeof leaves, "%.3g", e.leaves);
-  throw ShapeError("max level " + std::to_string(fit.size.L) + " needs about " + leaves + " leaves, " +
-                   gigabytes(e.bytes()) + " by S25's estimate (" + std::to_string(static_cast<int>(kBytesPerLeaf)) +
-                   " bytes per estimated leaf), more than the " + gigabytes(available_bytes) +
-                   " of memory available; -L " + std::to_string(fits) + " would fit");
+  throw ShapeError(
+      "max level " + std::to_string(fit.size.L) + " needs about " + leaves + " leaves, " + gigabytes(e.bytes()) +
+      " by S25's estimate (" + std::to_string(static_cast<int>(kBytesPerLeaf)) + " bytes per estimated leaf" +
+      (meshes > 1 ? ", and " + std::to_string(static_cast<int>(kSecondMeshBytesPerLeaf)) + " for S35.8's second mesh"
+                  : std::string()) +
+      "), more than the " + gigabytes(available_bytes) + " of memory available; -L " + std::to_string(fits) +
+      " would fit");
 }
 
 }  // namespace bccmis::stuff

@@ -128,9 +128,11 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
   if (options.size) options.size = std::ldexp(*options.size, -n.exponent);
   const Fit fit = fit_lattice(shape.bounds(), options);
   options.max_level = fit.size.L;
-  // S25: refuse before building what will not fit.
+  // S35.7-S35.8 (--crease-cuts): candidate meshes, two held at once.
+  const bool crease_cuts = settings.features.on && settings.features.crease_cuts > 0 && settings.impl == Impl::fast;
+  // S25: refuse before building what will not fit (a second mesh with S35.8).
   if (const auto limit = settings.memory_limit ? settings.memory_limit : available_memory())
-    refuse_what_will_not_fit(shape, options, *limit);
+    refuse_what_will_not_fit(shape, options, *limit, crease_cuts ? 2 : 1);
   r.fit = fit;
   r.fit.origin = n.to_world(fit.origin);
   r.fit.scale = std::ldexp(fit.scale, n.exponent);
@@ -146,7 +148,6 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
   // S35.7-S35.8: the features first, the meshes with and without the cut
   // points near them placed on them, each conformed, and the one kept.
   Features features;
-  const bool crease_cuts = settings.features.on && settings.features.crease_cuts > 0 && settings.impl == Impl::fast;
   CreaseConformed creased;
   double crease_feature_seconds = 0;
   if (crease_cuts) {
