@@ -240,7 +240,7 @@ class Lattice {
 
   d3::LatticeSize size_;
   std::int64_t extent_[3] = {0, 0, 0};  ///< the domain: W*S, H*S, D*S
-  Pool<Center> centers_;  ///< spec/lattice3d.md §9.8
+  Pool<Center> centers_;                ///< spec/lattice3d.md §9.8
   Pool<Node> nodes_;
   Index free_centers_ = kNone;
   Index free_nodes_ = kNone;

@@ -4,8 +4,6 @@
 #include <cstring>
 #include <new>
 
-#include "bccmis/fast/lattice.h"  // fast::detail::advise_huge_pages
-
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
@@ -28,6 +26,19 @@ bool injected_failure() {
 }
 
 #if defined(__linux__)
+// Huge pages for the whole mapping (the lattice's other arrays' rule,
+// fast::detail::advise_huge_pages, from 4 MiB up), never for part of it: a
+// part would split the mapping, and mremap moves only a range inside one
+// mapping (it fails with EFAULT otherwise).
+void advise_huge_pages(void* p, std::size_t bytes) {
+#if defined(MADV_HUGEPAGE)
+  if (bytes >= (std::size_t{4} << 20)) madvise(p, bytes, MADV_HUGEPAGE);  // advice only: errors ignored
+#else
+  (void)p;
+  (void)bytes;
+#endif
+}
+
 void* map(std::size_t bytes) {
   if (injected_failure()) throw std::bad_alloc();
   void* p = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
@@ -53,7 +64,7 @@ void* pool_grow(void* old, std::size_t old_bytes, std::size_t used, std::size_t&
       if (used != 0) std::memcpy(p, old, used);
       pool_free(old, old_bytes);
     }
-    bccmis::fast::detail::advise_huge_pages(p, bytes);
+    advise_huge_pages(p, bytes);
     return p;
   }
 #endif
