@@ -15,6 +15,7 @@ namespace {
 constexpr std::align_val_t kAlign{64};
 constexpr std::size_t kPage = 4096;
 
+#if defined(__linux__)
 // The test hook of pool.h: true when this mmap / mremap is to fail.
 bool injected_failure() {
   long left = pool_map_countdown.load(std::memory_order_relaxed);
@@ -25,7 +26,6 @@ bool injected_failure() {
   return false;
 }
 
-#if defined(__linux__)
 // Huge pages for the whole mapping (the lattice's other arrays' rule,
 // fast::detail::advise_huge_pages, from 4 MiB up), never for part of it: a
 // part would split the mapping, and mremap moves only a range inside one
