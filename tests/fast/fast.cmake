@@ -57,3 +57,8 @@ bccmis_add_gtest(fast_d3_position_table_test SOURCES d3/position_table_test.cpp 
 # Bulk construction: from_graph of reference states, refine_each /
 # coarsen_each against single reference calls.
 bccmis_add_gtest(fast_d3_bulk_test SOURCES d3/bulk_test.cpp LIBS bccmis::fast bccmis::d3 LABELS unit)
+
+# The record pools (spec/lattice3d.md §9.8): growth across the switch from
+# heap blocks to mappings, every byte kept, a refused growth (operator new,
+# mmap, mremap) leaving the pool and a refining lattice unchanged.
+bccmis_add_gtest(fast_d3_pool_test SOURCES d3/pool_test.cpp LIBS bccmis::fast LABELS unit)

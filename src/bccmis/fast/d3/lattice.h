@@ -18,9 +18,10 @@
 //     center's position) only; the other nodes are found from a cell and a
 //     direction. The 8 children of a cell take their homes from one hash
 //     of the cell.
-//   - refine and coarsen make room first (pools, table) and then only write,
-//     so in steady state they allocate nothing and a throwing allocation
-//     leaves the lattice as it was.
+//   - the records live in two pools (fast/d3/pool.h, §9.8) grown by one byte
+//     copy, or by mremap from 1 MiB up; refine and coarsen make room first
+//     (pools, table) and then only write, so in steady state they allocate
+//     nothing and a failed growth leaves the lattice as it was.
 //
 // The preconditions and refusal codes are those of the reference (bccmis/ops.h),
 // Y and J+ / J- are returned sorted by position, and the canonical state is
@@ -42,6 +43,7 @@
 #include "bccmis/d3/graph.h"
 #include "bccmis/d3/ops.h"  // d3::RefineResult, d3::CoarsenResult (to_sets)
 #include "bccmis/d3/point.h"
+#include "bccmis/fast/d3/pool.h"
 #include "bccmis/fast/d3/position_table.h"
 #include "bccmis/fast/lattice.h"  // kMaxReserveHint
 #include "bccmis/fast/small_points.h"
@@ -238,8 +240,8 @@ class Lattice {
 
   d3::LatticeSize size_;
   std::int64_t extent_[3] = {0, 0, 0};  ///< the domain: W*S, H*S, D*S
-  bccmis::fast::detail::Array<Center> centers_;
-  bccmis::fast::detail::Array<Node> nodes_;
+  Pool<Center> centers_;                ///< spec/lattice3d.md §9.8
+  Pool<Node> nodes_;
   Index free_centers_ = kNone;
   Index free_nodes_ = kNone;
   std::size_t free_center_count_ = 0;

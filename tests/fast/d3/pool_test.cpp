@@ -1,0 +1,163 @@
+// bccmis::d3::fast::Pool (spec/lattice3d.md §9.8): growth across the switch
+// from heap blocks to mappings keeps every byte, the switch stands at
+// exactly 1 MiB, a failed growth (operator new, mmap or mremap) leaves the
+// pool unchanged, copies hold the same bytes; and a failed mremap inside a
+// refine leaves the lattice unchanged.
+#include <gtest/gtest.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <new>
+#include <string>
+#include <vector>
+
+#include "bccmis/fast/d3/lattice.h"
+#include "bccmis/fast/d3/pool.h"
+
+namespace {
+
+using bccmis::d3::fast::Pool;
+namespace detail = bccmis::d3::fast::detail;
+
+struct Rec {  // 128 bytes, like a center record
+  std::uint64_t w[16];
+};
+
+std::uint64_t word(std::size_t i, std::size_t k) { return (i * 0x9E3779B97F4A7C15ull) ^ (k * 0xD6E8FEB86659FD93ull); }
+
+// Every record i holds its own pattern, byte for byte.
+::testing::AssertionResult intact(const Pool<Rec>& pool) {
+  for (std::size_t i = 0; i < pool.size(); ++i)
+    for (std::size_t k = 0; k < 16; ++k)
+      if (pool[i].w[k] != word(i, k))
+        return ::testing::AssertionFailure() << "record " << i << " word " << k << " of " << pool.size();
+  return ::testing::AssertionSuccess();
+}
+
+void append(Pool<Rec>& pool, std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) {
+    Rec& r = pool.emplace_back();
+    for (std::size_t k = 0; k < 16; ++k) {
+      EXPECT_EQ(r.w[k], 0u);  // value-initialized
+      r.w[k] = word(pool.size() - 1, k);
+    }
+  }
+}
+
+// Mapped blocks are whole pages; heap blocks hold exactly what was asked.
+constexpr std::size_t kLine = detail::kPoolMapBytes / sizeof(Rec);  // records in 1 MiB
+
+struct Countdown {  // the §9.8 test hook, reset however the test ends
+  explicit Countdown(long k) { detail::pool_map_countdown = k; }
+  ~Countdown() { detail::pool_map_countdown = -1; }
+};
+
+TEST(Fast3Pool, GrowthAcrossTheMapSwitchKeepsEveryByte) {
+  // spec/lattice3d.md §9.8: growth by half, from the heap to a mapping at
+  // 1 MiB and then by mremap; every record checked after every growth.
+  Pool<Rec> pool;
+  std::size_t growths = 0, heap_growths = 0, mapped_growths = 0;
+  while (pool.size() < 12 * kLine) {  // past 4 MiB too, where the mapping asks for huge pages
+    const std::size_t before = pool.capacity();
+    append(pool, 1);
+    if (pool.capacity() != before) {
+      ++growths;
+      (pool.capacity() * sizeof(Rec) >= detail::kPoolMapBytes ? mapped_growths : heap_growths) += 1;
+      ASSERT_TRUE(intact(pool)) << "after growing to " << pool.capacity();
+    }
+  }
+  EXPECT_GT(heap_growths, 3u);
+  EXPECT_GE(mapped_growths, 5u);  // one mmap and a copy, then mremap
+  ASSERT_TRUE(intact(pool));
+}
+
+TEST(Fast3Pool, TheSwitchStandsAtOneMiB) {
+  // spec/lattice3d.md §9.8: below 1 MiB a heap block, at 1 MiB a mapping.
+  // With every mapping refused, 1 MiB - 1 record still grows and 1 MiB throws.
+  Pool<Rec> below, at;
+  append(below, 3);
+  append(at, 3);
+  const std::size_t capacity = at.capacity();
+  const Countdown refuse(0);
+  below.reserve(kLine - 1);
+  EXPECT_EQ(below.capacity(), kLine - 1);
+  EXPECT_THROW(at.reserve(kLine), std::bad_alloc);
+  EXPECT_EQ(at.capacity(), capacity);
+  EXPECT_TRUE(intact(below));
+  EXPECT_TRUE(intact(at));
+}
+
+TEST(Fast3Pool, AFailedGrowthLeavesThePoolUnchanged) {
+  // spec/lattice3d.md §9.8: the first mapping (mmap, from a heap block) and a
+  // later one (mremap) refused; the pool keeps its block, size and bytes.
+  for (const std::size_t records : {kLine / 2, kLine + 5}) {  // heap -> mmap, mapped -> mremap
+    Pool<Rec> pool;
+    append(pool, records);
+    const Rec* data = pool.data();
+    const std::size_t capacity = pool.capacity();
+    {
+      const Countdown refuse(0);
+      EXPECT_THROW(pool.reserve(4 * kLine), std::bad_alloc) << records;
+    }
+    EXPECT_EQ(pool.data(), data);
+    EXPECT_EQ(pool.capacity(), capacity);
+    EXPECT_EQ(pool.size(), records);
+    EXPECT_TRUE(intact(pool));
+    pool.reserve(4 * kLine);  // and it still grows
+    EXPECT_GE(pool.capacity(), 4 * kLine);
+    EXPECT_TRUE(intact(pool));
+  }
+}
+
+TEST(Fast3Pool, CopiesHoldTheSameBytes) {
+  for (const std::size_t records : {std::size_t{0}, std::size_t{7}, 2 * kLine + 3}) {
+    Pool<Rec> pool;
+    append(pool, records);
+    Pool<Rec> copy(pool);
+    EXPECT_EQ(copy.size(), records);
+    EXPECT_TRUE(intact(copy));
+    if (records != 0) {
+      copy[0].w[0] ^= 1;  // its own block
+      EXPECT_TRUE(intact(pool));
+    }
+    Pool<Rec> assigned;
+    append(assigned, 2);
+    assigned = pool;
+    EXPECT_TRUE(intact(assigned));
+    Pool<Rec> moved(std::move(assigned));
+    EXPECT_EQ(moved.size(), records);
+    EXPECT_TRUE(intact(moved));
+  }
+}
+
+TEST(Fast3Pool, AFailedMremapLeavesTheLatticeUnchanged) {
+  // spec/lattice3d.md §9.8, §9.5: refine grows the pools before it writes.
+  // Every refine is first tried with the next mapping refused; the center
+  // pool passes 1 MiB (8192 centers) on the way to 16 384 cells, so that
+  // fails once at the mmap and then at each mremap, and the refused refine
+  // must leave the lattice as its twin, which never fails.
+  using bccmis::d3::fast::Lattice;
+  Lattice g({4, 4, 2, 3}), twin({4, 4, 2, 3});
+  int failures = 0;
+  for (int level = 0; level < 3; ++level) {
+    for (const bccmis::d3::Point& c : g.cells()) {
+      try {
+        const Countdown refuse(0);
+        ASSERT_TRUE(g.refine(c).applied());
+      } catch (const std::bad_alloc&) {
+        ++failures;
+        ASSERT_TRUE(bccmis::d3::fast::canonical_state(g) == bccmis::d3::fast::canonical_state(twin))
+            << "failure " << failures << " changed the lattice";
+        ASSERT_FALSE(g.audit());
+        ASSERT_TRUE(g.refine(c).applied());
+      }
+      ASSERT_TRUE(twin.refine(c).applied());
+    }
+  }
+  EXPECT_GE(failures, 2);  // the mmap, then at least one mremap
+  EXPECT_EQ(g.cell_count(), 16384u);
+  EXPECT_TRUE(bccmis::d3::fast::canonical_state(g) == bccmis::d3::fast::canonical_state(twin));
+}
+
+}  // namespace
