@@ -1,11 +1,15 @@
 #include "stuff_input.h"
 
+#include <charconv>
+#include <cmath>
+#include <cstdio>
 #include <optional>
 
 #include "bccmis/io/medit.h"
 #include "bccmis/io/msh.h"
 #include "bccmis/io/surface_format.h"
 #include "bccmis/io/vtu.h"
+#include "bccmis/stuff/animate_shape.h"
 #include "bccmis/stuff/mesh_shape.h"
 #include "io.h"
 
@@ -36,6 +40,28 @@ std::shared_ptr<const stuff::Shape> load_shape(const StuffOptions& o) {
   if (o.format == "ply") format = io::SurfaceFormat::ply;
   if (o.format == "stl") format = io::SurfaceFormat::stl;
   return stuff::load_mesh_file(o.input, o.strict, format);
+}
+
+stuff::Vec3 parse_path(const std::string& text, const stuff::Shape& shape) {
+  if (text.empty()) return stuff::default_path(shape);
+  stuff::Vec3 d{};
+  std::size_t at = 0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const std::size_t end = i < 2 ? text.find(',', at) : text.size();
+    if (end == std::string::npos) throw InputError("--path '" + text + "': expected DX,DY,DZ");
+    const std::string item = text.substr(at, end - at);
+    const auto [ptr, ec] = std::from_chars(item.data(), item.data() + item.size(), d[i]);
+    if (item.empty() || ec != std::errc() || ptr != item.data() + item.size() || !std::isfinite(d[i]))
+      throw InputError("--path '" + text + "': '" + item + "' is not a number");
+    at = end + 1;
+  }
+  return d;
+}
+
+std::string numbered(const std::string& stem, int k, std::string_view extension) {
+  char digits[16];
+  std::snprintf(digits, sizeof digits, "_%04d", k);
+  return stem + digits + std::string(extension);
 }
 
 stuff::StuffOptions lattice_options(const StuffOptions& o) {
