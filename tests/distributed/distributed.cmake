@@ -2,7 +2,7 @@
 # (spec/distributed.md), label mpi. In one process, the pieces of any split
 # of the leaves gathered are stuff()'s mesh; under mpirun on 1-4 ranks
 # (oversubscribed on small machines), bccmis-mpi stuff against bccmis stuff
-# (tests/distributed/mpi_stuff_test.py): --gather byte for byte (with the
+# (tests/distributed/mpi_stuff_test.py; --animate: mpi_animate_test.py, D14): --gather byte for byte (with the
 # features and --check, D12; their statistics and warnings, D13), the .pvtu's pieces by vertex positions and
 # conformity, and the failures.
 bccmis_add_gtest(distributed_tests SOURCES stuff_leaves_test.cpp LIBS bccmis::distributed bccmis::stuff PREFIX distributed. NO_PRETTY_VALUES
@@ -133,4 +133,12 @@ foreach(ranks 2 3)
                   ${_bccmis_mpi_props} FAIL_REGULAR_EXPRESSION "FAIL")
 endforeach()
 bccmis_add_test(mpi.stuff_errors_3_ranks COMMAND ${_bccmis_mpi_test} errors ${_bccmis_mpi_tools} 3
+                ${_bccmis_mpi_props})
+# D14: --animate on ranks, each frame (pieces and gathered) against bccmis
+# stuff --animate's, and the options refused with it.
+set(_bccmis_mpi_animate_test ${BCCMIS_SYSTEM_PYTHON3} ${CMAKE_CURRENT_LIST_DIR}/mpi_animate_test.py)
+bccmis_add_test(mpi.stuff_animate_sphere_2_ranks
+                COMMAND ${_bccmis_mpi_animate_test} frames ${_bccmis_mpi_tools} 2 -- --shape sphere -L 3 --animate 2
+                ${_bccmis_mpi_props})
+bccmis_add_test(mpi.stuff_animate_refusals_2_ranks COMMAND ${_bccmis_mpi_animate_test} refusals ${_bccmis_mpi_tools} 2
                 ${_bccmis_mpi_props})

@@ -385,7 +385,7 @@ def errors(mpirun, bccmis, bccmis_mpi, ranks, work):
             sys.exit(f"FAIL: {args}: a failed run left {left}")
     index = os.path.join(work, "out.pvtu")
     # D1: the options not split over ranks, each refused by name before any work.
-    for option in (["--animate", "2"], ["--memory-limit", "1"], ["--crease-cuts", "0.25"]):
+    for option in (["--memory-limit", "1"], ["--crease-cuts", "0.25"]):
         refused(["--shape", "sphere", "-L", "2", *option], index,
                 f"{option[0]} is not supported on several ranks yet (spec/distributed.md D1)",
                 no_features=option[0] != "--crease-cuts")  # which excludes --no-features

@@ -5,9 +5,6 @@
 // sampled Hausdorff distance). The
 // library does the work (bccmis/stuff/mesh_shape.h, animate_shape.h); this
 // file parses, calls and prints.
-#include <charconv>
-#include <cmath>
-#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -50,23 +47,6 @@ stuff::Progress progress_of(const StuffOptions& o) {
   return [](std::string_view what) { std::cerr << "bccmis stuff: " << what << std::endl; };
 }
 
-/// "DX,DY,DZ", or the library's default path when empty.
-Vec3 parse_path(const std::string& text, const stuff::Shape& shape) {
-  if (text.empty()) return stuff::default_path(shape);
-  Vec3 d{};
-  std::size_t at = 0;
-  for (std::size_t i = 0; i < 3; ++i) {
-    const std::size_t end = i < 2 ? text.find(',', at) : text.size();
-    if (end == std::string::npos) throw InputError("--path '" + text + "': expected DX,DY,DZ");
-    const std::string item = text.substr(at, end - at);
-    const auto [ptr, ec] = std::from_chars(item.data(), item.data() + item.size(), d[i]);
-    if (item.empty() || ec != std::errc() || ptr != item.data() + item.size() || !std::isfinite(d[i]))
-      throw InputError("--path '" + text + "': '" + item + "' is not a number");
-    at = end + 1;
-  }
-  return d;
-}
-
 /// --animate N -o OUT.pvd: frames 0..N (frame 0 the shape where it is),
 /// written as OUT_0000.vtu ... beside the .pvd (spec/stuffing.md S15).
 int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>& shape, stuff::StuffOptions so,
@@ -85,13 +65,8 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
   const std::string pvd = o.outputs.empty() ? "" : o.outputs[0];
   const std::string stem = pvd.substr(0, pvd.size() - 4);
   const std::string base = stem.substr(stem.find_last_of('/') + 1);
-  const auto frame_name = [&](int k) {
-    char buf[16];
-    std::snprintf(buf, sizeof buf, "_%04d.vtu", k);
-    return std::string(buf);
-  };
   if (!pvd.empty()) {  // every file created before the first frame is made
-    for (int k = 0; k <= o.animate; ++k) outputs.open(stem + frame_name(k));
+    for (int k = 0; k <= o.animate; ++k) outputs.open(numbered(stem, k, ".vtu"));
     outputs.open(pvd);
   }
   std::vector<std::pair<int, std::string>> frames;  // the .pvd index: timestep, file
@@ -105,8 +80,8 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
     const stuff::FrameReport& r = f.report;
     const d3::TetMeshF& mesh = *f.mesh;
     if (!pvd.empty()) {
-      outputs.add(stem + frame_name(k), [&](std::ostream& out) { io::write_vtu(out, mesh, encoding(o)); });
-      frames.emplace_back(k, base + frame_name(k));
+      outputs.add(numbered(stem, k, ".vtu"), [&](std::ostream& out) { io::write_vtu(out, mesh, encoding(o)); });
+      frames.emplace_back(k, numbered(base, k, ".vtu"));
     }
     json.begin_object()
         .member("frame", k)

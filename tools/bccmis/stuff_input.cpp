@@ -1,5 +1,8 @@
 #include "stuff_input.h"
 
+#include <charconv>
+#include <cmath>
+#include <cstdio>
 #include <optional>
 #include <string>
 
@@ -7,6 +10,7 @@
 #include "bccmis/io/msh.h"
 #include "bccmis/io/surface_format.h"
 #include "bccmis/io/vtu.h"
+#include "bccmis/stuff/animate_shape.h"
 #include "bccmis/stuff/mesh_shape.h"
 #include "bccmis/stuff/soup_report.h"
 #include "io.h"
@@ -51,6 +55,28 @@ std::string soup_notices(const std::string& tool, const stuff::Shape& shape) {
     out += tool + ": " + r->file + ": " + std::to_string(r->welded_vertices) +
            " repeated vertices welded (the coordinates of an earlier vertex)\n";
   return out;
+}
+
+stuff::Vec3 parse_path(const std::string& text, const stuff::Shape& shape) {
+  if (text.empty()) return stuff::default_path(shape);
+  stuff::Vec3 d{};
+  std::size_t at = 0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const std::size_t end = i < 2 ? text.find(',', at) : text.size();
+    if (end == std::string::npos) throw InputError("--path '" + text + "': expected DX,DY,DZ");
+    const std::string item = text.substr(at, end - at);
+    const auto [ptr, ec] = std::from_chars(item.data(), item.data() + item.size(), d[i]);
+    if (item.empty() || ec != std::errc() || ptr != item.data() + item.size() || !std::isfinite(d[i]))
+      throw InputError("--path '" + text + "': '" + item + "' is not a number");
+    at = end + 1;
+  }
+  return d;
+}
+
+std::string numbered(const std::string& stem, int k, std::string_view extension) {
+  char digits[16];
+  std::snprintf(digits, sizeof digits, "_%04d", k);
+  return stem + digits + std::string(extension);
 }
 
 stuff::StuffOptions lattice_options(const StuffOptions& o) {

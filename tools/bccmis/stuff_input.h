@@ -41,6 +41,15 @@ std::shared_ptr<const stuff::Shape> load_shape(const StuffOptions& o);
 /// (spec/distributed.md D1: bccmis-mpi stuff prints the same lines).
 std::string soup_notices(const std::string& tool, const stuff::Shape& shape);
 
+/// --path "DX,DY,DZ" (the whole motion of --animate, spec/stuffing.md
+/// S14), or the library's default path for `shape` when `text` is empty.
+/// Throws InputError naming the item that is not a number.
+stuff::Vec3 parse_path(const std::string& text, const stuff::Shape& shape);
+
+/// STEM_NNNN plus `extension`: a frame of --animate (k), a rank's piece
+/// (spec/distributed.md D1, D14).
+std::string numbered(const std::string& stem, int k, std::string_view extension);
+
 /// The lattice's options (-L, --min-level, --cells, --size, --threads) as
 /// the library takes them, for bccmis stuff and bccmis-mpi stuff alike.
 stuff::StuffOptions lattice_options(const StuffOptions& o);

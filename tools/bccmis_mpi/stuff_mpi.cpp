@@ -1,19 +1,21 @@
 // bccmis-mpi stuff: the options checked, the shape read, the run on every
 // rank as one library call (distributed::stuff_on_ranks, spec/distributed.md
-// D1-D13), the outputs written and the report printed, the ranks agreeing
-// after each stage (D6).
+// D1-D13; distributed::animate_on_ranks with --animate, D14), the outputs written and the report printed, the ranks
+// agreeing after each stage (D6).
 #include "stuff_mpi.h"
 
 #include <algorithm>
 #include <cstdint>
-#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "bccmis/distributed/animate_on_ranks.h"
 #include "bccmis/distributed/ranks.h"
 #include "bccmis/distributed/stuff_on_ranks.h"
+#include "bccmis/io/pvd.h"
 #include "bccmis/io/pvtu.h"
 #include "bccmis/io/vtu.h"
 #include "bccmis/p4est/bridge.h"
@@ -64,7 +66,7 @@ void check_options(const StuffOptions& o, bool gather) {
   const auto refuse = [](const std::string& what) {
     throw InputError(what + " is not supported on several ranks yet (spec/distributed.md D1)");
   };
-  if (o.animate > 0 || !o.path.empty() || o.compare) refuse("--animate");
+  if (!o.path.empty() || o.compare) throw InputError("--path and --compare apply with --animate");
   if (o.impl != "fast") refuse("--impl " + o.impl);
   if (o.memory_limit_gb > 0) refuse("--memory-limit");
   if (o.crease_cuts > 0) refuse("--crease-cuts");  // S35.7 places cut points inside each piece's stuffing
@@ -86,13 +88,105 @@ void check_options(const StuffOptions& o, bool gather) {
 }
 
 /// The piece of rank r beside FILE.pvtu: FILE_RRRR.vtu.
-std::string piece_path(const std::string& pvtu, int r) {
-  char suffix[24];
-  std::snprintf(suffix, sizeof suffix, "_%04d.vtu", r);
-  return pvtu.substr(0, pvtu.size() - 5) + suffix;
-}
+std::string piece_path(const std::string& pvtu, int r) { return numbered(pvtu.substr(0, pvtu.size() - 5), r, ".vtu"); }
 
 std::string file_name(const std::string& path) { return path.substr(path.find_last_of('/') + 1); }
+
+/// D14: what --animate on ranks refuses, and its one output.
+void check_animate_options(const StuffOptions& o, bool gather) {
+  const auto refuse = [](const std::string& what) {
+    throw InputError(what + " is not supported with --animate on several ranks (spec/distributed.md D14)");
+  };
+  if (o.hausdorff) refuse("--hausdorff");  // which, as --json, implies --stats
+  if (o.json) refuse("--json");
+  if (o.stats) refuse("--stats");
+  if (o.compare) refuse("--compare");
+  if (o.check) refuse("--check");
+  if (o.features || o.feature_angle >= 0 || o.crease_cuts > 0) refuse("the features");
+  if (o.impl != "fast") refuse("--impl " + o.impl);
+  if (o.memory_limit_gb > 0) refuse("--memory-limit");
+  const std::string extension = gather ? ".vtu" : ".pvtu";
+  if (o.outputs.size() != 1 || !ends_with(o.outputs[0], extension))
+    throw InputError(std::string("--animate writes a frame a file and their .pvd beside them: give ") +
+                     (gather ? "--gather -o FILE.vtu (frames FILE_KKKK.vtu)"
+                             : "-o FILE.pvtu (frames FILE_KKKK.pvtu, pieces FILE_KKKK_RRRR.vtu)") +
+                     " (spec/distributed.md D14)");
+}
+
+/// D14: --animate N on every rank: every frame's files staged as its
+/// meshes come, renamed once every frame succeeded on every rank (D6).
+int run_animate(const StuffOptions& o, bool gather, MPI_Comm comm) {
+  int rank = 0, size = 0;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  OutputSet pieces, index;  // index: rank 0's frames (.pvtu or --gather .vtu) and the .pvd, renamed last
+  const std::string out = o.outputs.empty() ? std::string() : o.outputs[0];
+  const std::string stem = out.substr(0, out.find_last_of('.'));
+  const std::string extension = gather ? ".vtu" : ".pvtu";
+  const std::string pvd = stem + ".pvd";
+  std::shared_ptr<const stuff::Shape> shape;
+  distributed::RankAnimation settings;
+  std::vector<std::pair<int, std::string>> frames;  // the .pvd index: timestep, file
+  bool written = false;                             // this rank wrote a piece
+  try {
+    stage(comm, [&] {
+      check_animate_options(o, gather);
+      for (int k = 0; k <= o.animate; ++k) {
+        if (!gather) pieces.open(piece_path(numbered(stem, k, extension), rank));
+        if (rank == 0) index.open(numbered(stem, k, extension));
+      }
+      if (rank == 0) index.open(pvd);
+      shape = load_shape(o);
+      settings.path = parse_path(o.path, *shape);
+    });
+    settings.lattice = lattice_options(o);
+    settings.frames = o.animate;
+    settings.pieces = !gather;
+    settings.gather = gather;
+    const auto on_frame = [&](int k, distributed::RankRun& run) {
+      const std::string frame = numbered(stem, k, extension);
+      const std::uint64_t mine = run.piece.mesh.tets.size();
+      std::uint64_t tetrahedra = 0;
+      for (const std::uint64_t n : run.tetrahedra) tetrahedra += n;
+      distributed::on_every_rank(comm, "writing frame " + std::to_string(k), [&] {
+        if (!gather && mine > 0) {  // a rank whose leaves make no tetrahedron writes no piece (D1)
+          pieces.add(piece_path(frame, rank),
+                     [&](std::ostream& s) { io::write_vtu_piece(s, run.piece.mesh, run.ids, encoding(o)); });
+          written = true;
+        }
+        if (rank != 0) return;
+        if (gather) {
+          add_tetrahedra_output(index, frame, run.mesh, run.regions, encoding(o));
+        } else {
+          std::vector<std::string> names;
+          for (int r = 0; r < size; ++r)
+            if (run.tetrahedra[static_cast<std::size_t>(r)] > 0) names.push_back(file_name(piece_path(frame, r)));
+          index.add(frame, [&](std::ostream& s) { io::write_pvtu(s, names); });
+        }
+        frames.emplace_back(k, file_name(frame));
+      });
+      if (rank == 0 && !o.quiet)
+        std::cerr << kTool << ": frame " << k << "/" << o.animate << ": " << tetrahedra << " tetrahedra\n";
+    };
+    stage(comm, [&] { distributed::animate_on_ranks(shape, settings, comm, on_frame); });
+    stage(comm, [&] {
+      if (rank == 0) index.add(pvd, [&](std::ostream& s) { io::write_pvd(s, frames); });
+    });
+    // The pieces renamed into place on every rank, then rank 0's files (D6).
+    stage(comm, [&] {
+      if (written) pieces.commit();
+    });
+    stage(comm, [&] {
+      if (rank == 0) index.commit();
+    });
+    if (rank == 0 && !o.quiet)
+      std::cerr << kTool << ": " << o.animate + 1 << " frames from " << size << " rank" << (size == 1 ? "" : "s")
+                << " written to " << pvd << "\n";
+  } catch (const Stop& stop) {
+    return stop.code;
+  }
+  return kExitOk;
+}
 
 }  // namespace
 
@@ -100,6 +194,7 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
   int rank = 0, size = 0;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
+  if (o.animate > 0) return run_animate(o, gather, comm);
   OutputSet pieces, index;  // index: rank 0's .pvtu or --gather file, renamed last
   std::shared_ptr<const stuff::Shape> shape;
   const std::string& out = o.outputs.empty() ? std::string() : o.outputs[0];

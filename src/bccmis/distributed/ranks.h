@@ -83,6 +83,22 @@ struct RankFailed : std::runtime_error {
 /// the others RankFailed naming it and `what` (the step).
 void rethrow_on_every_rank(const std::exception_ptr& failed, const std::string& what, MPI_Comm comm);
 
+/// D6: `body` on this rank, then rethrow_on_every_rank: the lowest failing
+/// rank rethrows its error, every other rank throws RankFailed. A
+/// RankFailed inside `body` (a collective step failed on another rank) is
+/// that rank's to report.
+template <class Body>
+void on_every_rank(MPI_Comm comm, const std::string& what, Body&& body) {
+  std::exception_ptr failed;
+  try {
+    body();
+  } catch (const RankFailed&) {
+  } catch (...) {
+    failed = std::current_exception();
+  }
+  rethrow_on_every_rank(failed, what, comm);
+}
+
 /// D6, D10: this rank's piece (D3, D4), stuffed on its lattice L_r
 /// (local_lattice of the leaves it knows) with one more layer of ghosts
 /// (forest.expand()) while some rank's stuffed leaves are open; every rank

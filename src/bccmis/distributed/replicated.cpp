@@ -20,6 +20,13 @@ stuff::Fit fit_of(const stuff::Shape& local, const stuff::Normalisation& n, stuf
   return fit;
 }
 
+/// D1: the partition's deepest level.
+void check_deepest(int level, int deepest) {
+  if (level > deepest)
+    throw stuff::ShapeError("max level " + std::to_string(level) + ": the partition (p8est) reaches level " +
+                            std::to_string(deepest) + " at most (spec/distributed.md D1)");
+}
+
 }  // namespace
 
 Replicated fitted(const stuff::Shape& world, const stuff::StuffOptions& options, int deepest) {
@@ -27,10 +34,16 @@ Replicated fitted(const stuff::Shape& world, const stuff::StuffOptions& options,
   std::unique_ptr<stuff::Shape> local = world.normalised(n);
   stuff::StuffOptions o = options;
   const stuff::Fit fit = fit_of(*local, n, o);
-  if (fit.size.L > deepest)
-    throw stuff::ShapeError("max level " + std::to_string(fit.size.L) + ": the partition (p8est) reaches level " +
-                            std::to_string(deepest) + " at most (spec/distributed.md D1)");
+  check_deepest(fit.size.L, deepest);
   return Replicated{n, std::move(local), o, fit, std::nullopt};
+}
+
+Replicated in_world(std::unique_ptr<stuff::Shape> moved, const stuff::Fit& fit, const stuff::StuffOptions& options,
+                    int deepest) {
+  check_deepest(fit.size.L, deepest);
+  stuff::StuffOptions o = options;
+  o.max_level = fit.size.L;
+  return Replicated{stuff::Normalisation{}, std::move(moved), o, fit, std::nullopt};
 }
 
 Replicated replicate(const stuff::Shape& world, const stuff::StuffOptions& options, int deepest) {

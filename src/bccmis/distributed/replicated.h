@@ -29,6 +29,13 @@ struct Replicated {
 /// replicate() does.
 Replicated fitted(const stuff::Shape& world, const stuff::StuffOptions& options, int deepest);
 
+/// D14: `moved` (world coordinates, owned) in the lattice `fit` (S14's,
+/// fitted to the box the shape sweeps), with S24's map the identity: the
+/// serial animation runs in world coordinates. Throws ShapeError as
+/// fitted() does when fit's level is above `deepest`.
+Replicated in_world(std::unique_ptr<stuff::Shape> moved, const stuff::Fit& fit, const stuff::StuffOptions& options,
+                    int deepest);
+
 /// S24, S2, S3 for `world` as mesh_shape() does them. Throws ShapeError as
 /// fit_lattice() does, and, before building anything, when the level used
 /// is above `deepest` (the partition's deepest level, D2). `world` must

@@ -18,27 +18,15 @@
 
 namespace bccmis::distributed {
 
-namespace {
-
-/// D6: `body` on this rank, then the agreement: the lowest failing rank
-/// rethrows its error, every other rank throws RankFailed. A RankFailed
-/// inside `body` (a collective step failed on another rank) is that rank's
-/// to report.
-template <class Body>
-void step(MPI_Comm comm, const char* what, Body&& body) {
-  std::exception_ptr failed;
-  try {
-    body();
-  } catch (const RankFailed&) {
-  } catch (...) {
-    failed = std::current_exception();
-  }
-  rethrow_on_every_rank(failed, what, comm);
+RankRun stuff_on_ranks(const stuff::Shape& world, const RankSettings& s, MPI_Comm comm,
+                       stuff::Clock::time_point start) {
+  // S24, S2: the fit every rank makes alike.
+  std::optional<Replicated> lattice;
+  on_every_rank(comm, "fitting the lattice", [&] { lattice.emplace(fitted(world, s.lattice, P8EST_QMAXLEVEL)); });
+  return stuff_on_ranks(world, *lattice, s, comm, start);
 }
 
-}  // namespace
-
-RankRun stuff_on_ranks(const stuff::Shape& world, const RankSettings& s, MPI_Comm comm,
+RankRun stuff_on_ranks(const stuff::Shape& world, Replicated& lattice, const RankSettings& s, MPI_Comm comm,
                        stuff::Clock::time_point start) {
   int rank = 0, size = 0;
   MPI_Comm_rank(comm, &rank);
@@ -51,24 +39,22 @@ RankRun stuff_on_ranks(const stuff::Shape& world, const RankSettings& s, MPI_Com
     run.seconds.emplace_back(name, stuff::seconds_since(t));
     t = stuff::Clock::now();
   };
-  // S24, S2: the fit every rank makes alike.
-  std::optional<Replicated> lattice;
-  step(comm, "fitting the lattice", [&] { lattice.emplace(fitted(world, s.lattice, P8EST_QMAXLEVEL)); });
   phase("input");
   // D10: the partitioned forest, then this rank's piece on its own lattice.
   std::unique_ptr<Forest> forest;
-  step(comm, "building the forest",
-       [&] { forest = std::make_unique<Forest>(*lattice->shape, lattice->fit, lattice->options, comm); });
+  on_every_rank(comm, "building the forest",
+                [&] { forest = std::make_unique<Forest>(*lattice.shape, lattice.fit, lattice.options, comm); });
   phase("forest");
   stuff::StuffQuality quality;  // D11: the piece's, in local coordinates
-  step(comm, "stuffing its piece",
-       [&] { run.piece = stuff_own_piece(*lattice, *forest, comm, s.statistics ? &quality : nullptr, !whole); });
+  on_every_rank(comm, "stuffing its piece", [&] {
+    run.piece = stuff_own_piece(lattice, *forest, comm, s.statistics ? &quality : nullptr, !whole);
+  });
   phase("pieces");
   const std::int64_t leaves = forest->global_leaves();
   forest.reset();
   // D7: the pieces' global vertex numbers.
   std::vector<std::uint8_t> owned;
-  step(comm, "numbering the vertices", [&] {
+  on_every_rank(comm, "numbering the vertices", [&] {
     if (s.pieces || s.statistics) run.ids = global_ids(run.piece, comm, &owned);
   });
   // Every rank's tetrahedra; an empty mesh refused on their sum (S21, S26).
@@ -77,26 +63,26 @@ RankRun stuff_on_ranks(const stuff::Shape& world, const RankSettings& s, MPI_Com
   MPI_Allgather(&mine, 1, MPI_UINT64_T, run.tetrahedra.data(), 1, MPI_UINT64_T, comm);
   std::uint64_t tetrahedra = 0;
   for (const std::uint64_t n : run.tetrahedra) tetrahedra += n;
-  step(comm, "counting the tetrahedra", [&] {
+  on_every_rank(comm, "counting the tetrahedra", [&] {
     if (rank == 0 && tetrahedra == 0) {
-      stuff::Fit fit = lattice->fit;
-      fit.h = std::ldexp(fit.h, lattice->normalisation.exponent);
+      stuff::Fit fit = lattice.fit;
+      fit.h = std::ldexp(fit.h, lattice.normalisation.exponent);
       throw stuff::ShapeError(stuff::empty_mesh_message(world, fit));
     }
   });
   // D11: S13's statistics reduced on rank 0 (a lost component refused, S27).
-  step(comm, "reducing the statistics", [&] {
-    if (s.statistics) run.report = rank_statistics(world, *lattice, run.piece, quality, run.ids, owned, leaves, comm);
+  on_every_rank(comm, "reducing the statistics", [&] {
+    if (s.statistics) run.report = rank_statistics(world, lattice, run.piece, quality, run.ids, owned, leaves, comm);
   });
   run.warned = s.statistics;
   phase("statistics");
   run.since = t;
   // D5: the pieces on rank 0; D12, D13: the whole mesh finished there.
   std::vector<std::vector<std::byte>> bytes;
-  step(comm, "gathering the pieces", [&] {
+  on_every_rank(comm, "gathering the pieces", [&] {
     if (s.gather || whole) bytes = gather_bytes(to_bytes(run.piece), 0, comm);
   });
-  step(comm, "finishing the gathered mesh", [&] {
+  on_every_rank(comm, "finishing the gathered mesh", [&] {
     if (rank != 0 || !(s.gather || whole)) return;
     std::vector<LeafPiece> all;
     for (const auto& b : bytes) all.push_back(from_bytes(b));
@@ -109,7 +95,7 @@ RankRun stuff_on_ranks(const stuff::Shape& world, const RankSettings& s, MPI_Com
     }
     // D13: rank 0's statistics of the whole mesh with the features or the distance.
     const bool own = s.statistics && (s.features.on || s.hausdorff);
-    Finished f = finish_gathered(world, *lattice, run.mesh, s.features, s.check, own, s.hausdorff);
+    Finished f = finish_gathered(world, lattice, run.mesh, s.features, s.check, own, s.hausdorff);
     run.regions = std::move(f.regions);
     run.report.topology = f.topology;
     run.report.warnings = std::move(f.warnings);

@@ -10,6 +10,7 @@
 
 #include "bccmis/d3/tet_mesh.h"
 #include "bccmis/distributed/leaf_piece.h"
+#include "bccmis/distributed/replicated.h"
 #include "bccmis/io/regions.h"
 #include "bccmis/stuff/mesh_shape.h"
 #include "bccmis/stuff/stopwatch.h"
@@ -48,5 +49,12 @@ struct RankRun {
 /// agree (D6): the lowest failing rank throws its error (ShapeError,
 /// CheckError, ...), every other rank RankFailed.
 RankRun stuff_on_ranks(const stuff::Shape& world, const RankSettings& s, MPI_Comm comm, stuff::Clock::time_point start);
+
+/// The same run in a lattice fitted by the caller (D14: a frame of a moving
+/// shape, in_world()): D2-D13 from the forest on, `world` the shape
+/// `lattice` holds as the messages name it. `lattice` as fitted() or
+/// in_world() made it; its lattice is released.
+RankRun stuff_on_ranks(const stuff::Shape& world, Replicated& lattice, const RankSettings& s, MPI_Comm comm,
+                       stuff::Clock::time_point start);
 
 }  // namespace bccmis::distributed

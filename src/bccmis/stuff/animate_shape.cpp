@@ -14,6 +14,10 @@ Vec3 default_path(const Shape& shape) {
   return {1.5 * (b.hi[0] - b.lo[0]), 0, 0};
 }
 
+Vec3 frame_offset(const Vec3& path, int k, int frames) {
+  return {path[0] * k / frames, path[1] * k / frames, path[2] * k / frames};
+}
+
 Fit fit_moving(const Shape& shape, const Vec3& path, const StuffOptions& options) {
   const Fit fit = fit_lattice(swept_bounds(shape, path), options);
   check_moving_fit(fit);
@@ -38,7 +42,7 @@ AnimationSummary animate_shape(const std::shared_ptr<const Shape>& shape, const 
   for (int k = 0; k <= n; ++k) {
     Frame frame;
     frame.index = k;
-    const Vec3 offset{settings.path[0] * k / n, settings.path[1] * k / n, settings.path[2] * k / n};
+    const Vec3 offset = frame_offset(settings.path, k, n);
     if (k == 0) {
       frame.report.leaves = moving.lattice().cell_count();
       frame.report.lattice_seconds = initial;

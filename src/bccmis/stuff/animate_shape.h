@@ -40,6 +40,10 @@ struct AnimationSummary {
 /// The default path: 1.5 times the shape's x extent along x.
 Vec3 default_path(const Shape& shape);
 
+/// S15: frame k's offset, (k / frames) path, one expression for every
+/// caller (the serial animation, the ranks' frames: spec/distributed.md D14).
+Vec3 frame_offset(const Vec3& path, int k, int frames);
+
 /// S14: the lattice fitted to the box the shape sweeps. Throws ShapeError
 /// as fit_lattice() does, and when the moving lattice cannot hold it (S16).
 Fit fit_moving(const Shape& shape, const Vec3& path, const StuffOptions& options);

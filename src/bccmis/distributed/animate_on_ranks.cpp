@@ -1,0 +1,44 @@
+// spec/distributed.md D14: the frames of a moving shape, each one
+// stuff_on_ranks run in the lattice of S14.
+#include "bccmis/distributed/animate_on_ranks.h"
+
+#include <p8est.h>
+
+#include <optional>
+#include <string>
+
+#include "bccmis/distributed/ranks.h"
+#include "bccmis/distributed/replicated.h"
+#include "bccmis/stuff/animate_shape.h"
+#include "bccmis/stuff/stopwatch.h"
+
+namespace bccmis::distributed {
+
+void animate_on_ranks(const std::shared_ptr<const stuff::Shape>& world, const RankAnimation& s, MPI_Comm comm,
+                      const std::function<void(int, RankRun&)>& on_frame) {
+  // S14: the serial animation's lattice, fitted once by every rank alike.
+  std::optional<stuff::Fit> fit;
+  on_every_rank(comm, "fitting the lattice", [&] { fit = stuff::fit_moving(*world, s.path, s.lattice); });
+  RankSettings settings;
+  settings.lattice = s.lattice;
+  settings.pieces = s.pieces;
+  settings.gather = s.gather;
+  for (int k = 0; k <= s.frames; ++k) {
+    const auto start = stuff::Clock::now();
+    // D14: frame k in world coordinates, S24's map the identity.
+    std::optional<Replicated> frame;
+    on_every_rank(comm, "moving the shape", [&] {
+      frame.emplace(in_world(stuff::translated(world, stuff::frame_offset(s.path, k, s.frames)), *fit, s.lattice,
+                             P8EST_QMAXLEVEL));
+    });
+    RankRun run;
+    try {
+      run = stuff_on_ranks(*frame->shape, *frame, settings, comm, start);
+    } catch (const stuff::ShapeError& e) {  // S26's empty frame, named as the serial animation names it
+      throw stuff::ShapeError("frame " + std::to_string(k) + ": " + e.what());
+    }
+    on_frame(k, run);
+  }
+}
+
+}  // namespace bccmis::distributed

@@ -1,0 +1,101 @@
+#!/usr/bin/env python3
+"""bccmis-mpi stuff --animate against bccmis stuff --animate (spec/distributed.md D14).
+
+  mpi_animate_test.py frames MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
+      with --animate in STUFF_ARGS: every frame's union of pieces (-o OUT.pvtu:
+      OUT_KKKK.pvtu, its pieces OUT_KKKK_RRRR.vtu) and every gathered frame
+      (--gather -o OUT.vtu: OUT_KKKK.vtu) holds the serial frame's tetrahedra
+      (by vertex positions, bit for bit, with their levels), and each OUT.pvd
+      lists the frames as the serial .pvd does (timesteps 0 .. N).
+  mpi_animate_test.py refusals MPIRUN BCCMIS BCCMIS_MPI RANKS
+      the options D14 refuses with --animate, each by name: exit 2, D14 named,
+      nothing written.
+"""
+import collections
+import os
+import sys
+import tempfile
+import xml.etree.ElementTree as ET
+
+import meshio
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from mpi_stuff_test import mpi, run, tets_of  # noqa: E402
+
+
+def pvd_frames(path):
+    """The (timestep, file) pairs a .pvd lists."""
+    return [(int(d.get("timestep")), d.get("file")) for d in ET.parse(path).getroot().iter("DataSet")]
+
+
+def pvtu_tets(work, index):
+    sources = [p.get("Source") for p in ET.parse(os.path.join(work, index)).getroot().iter("Piece")]
+    tets = []
+    for source in sources:
+        tets += tets_of(meshio.read(os.path.join(work, source)))
+    return tets, len(sources)
+
+
+def frames(mpirun, bccmis, bccmis_mpi, ranks, args, work):
+    run([bccmis, "stuff", *args, "-q", "-o", os.path.join(work, "serial.pvd")])
+    run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, "-q", "-o", os.path.join(work, "out.pvtu")])
+    run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, "-q", "--gather", "-o", os.path.join(work, "whole.vtu")])
+    serial = pvd_frames(os.path.join(work, "serial.pvd"))
+    steps = [k for k, _ in serial]
+    if len(serial) < 2 or steps != list(range(len(serial))):
+        sys.exit(f"FAIL: the serial .pvd lists {serial}")
+    for stem, ext in (("out", ".pvtu"), ("whole", ".vtu")):
+        want = [(k, f"{stem}_{k:04d}{ext}") for k in steps]
+        got = pvd_frames(os.path.join(work, stem + ".pvd"))
+        if got != want:
+            sys.exit(f"FAIL: {stem}.pvd lists {got}, expected {want}")
+    counts, meshes = [], []
+    for k, name in serial:
+        want = collections.Counter(tets_of(meshio.read(os.path.join(work, name))))
+        meshes.append(want)
+        pieces, n = pvtu_tets(work, f"out_{k:04d}.pvtu")
+        if collections.Counter(pieces) != want or len(pieces) != sum(want.values()):
+            sys.exit(f"FAIL: {ranks} ranks: frame {k}: the union of its {n} pieces ({len(pieces)} tetrahedra) "
+                     f"differs from the serial frame's {sum(want.values())} tetrahedra")
+        whole = collections.Counter(tets_of(meshio.read(os.path.join(work, f"whole_{k:04d}.vtu"))))
+        if whole != want:
+            sys.exit(f"FAIL: {ranks} ranks: frame {k}: the gathered frame differs from the serial frame")
+        counts.append(sum(want.values()))
+    if meshes[0] == meshes[1]:
+        sys.exit("FAIL: the serial frames 0 and 1 are the same mesh: the shape does not move")
+    print(f"ok: {ranks} ranks: {len(serial)} frames ({counts} tetrahedra), pieces and gathered, "
+          "are the serial frames; the .pvd files list them")
+
+
+def refusals(mpirun, bccmis_mpi, ranks, work):
+    base = ["--shape", "sphere", "-L", "2", "--animate", "2", "-q"]
+    out = ["-o", os.path.join(work, "out.pvtu")]
+    cases = [(["--stats"], out, "--stats"), (["--json"], out, "--json"), (["--compare"], out, "--compare"),
+             (["--check"], out, "--check"), (["--hausdorff"], out, "--hausdorff"),
+             (["--features"], out, "the features"), (["--gather"], ["-o", os.path.join(work, "out.msh")], "--gather"),
+             ([], ["-o", os.path.join(work, "out.vtu")], "-o FILE.pvtu")]
+    for extra, output, says in cases:
+        r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *base, *extra, *output], expect=2)
+        if says not in r.stderr or "spec/distributed.md D14" not in r.stderr:
+            sys.exit(f"FAIL: {extra} {output}: stderr does not name '{says}' and D14:\n{r.stderr}")
+        if os.listdir(work):
+            sys.exit(f"FAIL: {extra} {output}: a refused run left {os.listdir(work)}")
+    r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", "--shape", "sphere", "-L", "2", "--path", "1,0,0", *out],
+            expect=2)
+    if "--path and --compare apply with --animate" not in r.stderr or os.listdir(work):
+        sys.exit(f"FAIL: --path without --animate: not refused as bccmis stuff refuses it:\n{r.stderr}")
+    print(f"ok: {ranks} ranks: {len(cases)} options refused with --animate (D14), --path without it")
+
+
+def main():
+    mode, mpirun, bccmis, bccmis_mpi, ranks = sys.argv[1:6]
+    args = sys.argv[7:] if len(sys.argv) > 6 and sys.argv[6] == "--" else []
+    with tempfile.TemporaryDirectory() as work:
+        if mode == "frames":
+            frames(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
+        else:
+            refusals(mpirun, bccmis_mpi, int(ranks), work)
+
+
+if __name__ == "__main__":
+    main()
