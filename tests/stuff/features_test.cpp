@@ -273,6 +273,26 @@ TEST(FeatureConformity, FandiskKeepsItsCornersWithinTheBound) {
   EXPECT_FALSE(without.features);
 }
 
+//= spec/stuffing.md S30 type=test
+TEST(FeatureConformity, TetrahedronKeepsItsAcuteCorners) {
+  // S30.1: the tetrahedron (0, 0, 0), e_x, e_y, e_z (CGAL's
+  // tetrahedron.off) at level 3: no boundary vertex within h of its three
+  // acute corners (the nearest 1.633 h away), so they are searched within
+  // 2 h; each curve then ends at a corner's vertex moved by more than h,
+  // which the search of its path finds at its new place.
+  const std::vector<Vec3> corners{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const Tris faces{{1, 2, 3}, {0, 2, 1}, {0, 1, 3}, {0, 3, 2}};
+  const Meshed m = mesh_with(*make_mesh_shape(corners, faces, "tetrahedron"), 3, true);  // S32's checker passes
+  ASSERT_TRUE(m.features);
+  EXPECT_EQ(m.features->corners, 4u);
+  EXPECT_EQ(m.features->curves, 6u);
+  EXPECT_EQ(m.features->corners_conformed, 4u);
+  EXPECT_EQ(m.features->curves_conformed, 6u);
+  EXPECT_LT(m.features->distance, 1e-12);
+  EXPECT_GE(m.statistics->quality.min_dihedral, kDihedralBounds[0]);
+  EXPECT_LE(m.statistics->quality.max_dihedral, kDihedralBounds[1]);
+}
+
 //= spec/stuffing.md S35 type=test
 TEST(FeatureConformity, SplitsThatConformNothingAreUndone) {
   // S35.4: a piece its splits leave unconformed is left as if they had not

@@ -179,19 +179,23 @@ class Snapper {
       if (journal_ && u < journal_->vertices && (p != mesh_.vertices[u] || kind != mesh_.kind[u])) ++journal_->moved;
       keep(mesh_.vertices, u);
       keep(mesh_.kind, u);
+      if (!neighbours_[u].empty()) refile(u, mesh_.vertices[u], p);
       mesh_.vertices[u] = p;
       mesh_.kind[u] = kind;
     }
     return true;
   }
 
-  /// S30.1: the nearest free boundary vertex within h whose move onto c is
-  /// accepted, taken; none: -1.
+  /// S30.1: the nearest free boundary vertex within h (none there: within
+  /// kWideCorner h) whose move onto c is accepted, taken; none: -1.
   std::int64_t snap_corner(const Vec3& c, FeatureConformity& r) {
     std::vector<std::pair<double, std::uint32_t>> candidates;
-    const auto [box_lo, box_hi] = box_around(c, h_);
-    for (const std::uint32_t v : grid_.in_box(box_lo, box_hi))
-      if (const double d = distance(mesh_.vertices[v], c); !taken_[v] && d <= h_) candidates.emplace_back(d, v);
+    for (const double radius : {h_, kWideCorner * h_}) {
+      const auto [box_lo, box_hi] = box_around(c, radius);
+      for (const std::uint32_t v : grid_.in_box(box_lo, box_hi))
+        if (const double d = distance(mesh_.vertices[v], c); !taken_[v] && d <= radius) candidates.emplace_back(d, v);
+      if (!candidates.empty()) break;
+    }
     std::sort(candidates.begin(), candidates.end());
     for (const auto& [d, v] : candidates)
       if (move(v, c, r)) {
@@ -441,6 +445,15 @@ class Snapper {
     return true;
   }
 
+  /// S30's search: boundary vertex v moved from x to y filed at y, and
+  /// back at x when the journal is rolled back.
+  void refile(std::uint32_t v, const Vec3& x, const Vec3& y) {
+    if (x == y) return;
+    grid_.erase(v, x, x);
+    grid_.insert(v, y, y);
+    if (journal_) journal_->steps.emplace_back([this, v, x, y] { grid_.erase(v, y, y), grid_.insert(v, x, x); });
+  }
+
   /// S35.4's record of a piece's splits and what followed them: the sizes
   /// before (everything appended after them is taken off) and, for every
   /// element changed, a step putting back its value before the change.
@@ -536,6 +549,9 @@ class Snapper {
   // S34: the fractions of v's move its interior neighbours make, in the order tried.
   static constexpr std::array<double, 7> kRoomWeights{0.5, 1, 0.25, 0.75, 1.5, 2, -0.5};
 
+  // S30.1: a corner with no candidate within h searched within 2 h.
+  static constexpr double kWideCorner = 2;
+
   // S30.2: paths sought at most 8 times; an edge costs its length plus 4 times its ends' distances to C.
   static constexpr int kAttempts = 8;
   static constexpr double kNear = 4;
@@ -588,7 +604,7 @@ class Snapper {
   std::vector<std::array<std::uint32_t, 3>> triangles_;   ///< the boundary triangles, S35's splits included
   std::vector<std::vector<std::uint32_t>> triangles_at_;  ///< those at each vertex
   std::vector<char> taken_;
-  BoxGrid grid_;                    ///< the boundary vertices, in cubes of side h
+  BoxGrid grid_;                    ///< the boundary vertices at their current places, in cubes of side h (S30)
   std::optional<Journal> journal_;  ///< open while a piece's splits may be undone (S35.4)
 };
 
