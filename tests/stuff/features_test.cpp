@@ -5,7 +5,9 @@
 // fandisk (S34: interior vertices moved to make room; S35: boundary edges
 // split onto the creases, undone on CGAL's anchor where they conform
 // nothing, and on CGAL's turbine where vertices moved after them are put
-// back; a piece conformed from its other end on CGAL's anchor), with S10's dihedral
+// back; a piece conformed from its other end on CGAL's anchor; corners and
+// loop ends with no boundary vertex within h searched within 2 h, on a
+// tetrahedron and CGAL's turbine), with S10's dihedral
 // bound on every mesh, and the checker's feature layer catching a corner moved off and a curve not covered.
 #include <gtest/gtest.h>
 
@@ -15,6 +17,7 @@
 #include <cstdint>
 #include <numbers>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "bccmis/invariants/d3/feature_conformity.h"
@@ -291,6 +294,34 @@ TEST(FeatureConformity, TetrahedronKeepsItsAcuteCorners) {
   EXPECT_LT(m.features->distance, 1e-12);
   EXPECT_GE(m.statistics->quality.min_dihedral, kDihedralBounds[0]);
   EXPECT_LE(m.statistics->quality.max_dihedral, kDihedralBounds[1]);
+}
+
+//= spec/stuffing.md S30 type=test
+TEST(FeatureConformity, LoopEndsMovedBeyondHAreFoundAtTheirNewPlaces) {
+  // S30's search: CGAL's turbine at level 3 has 24 loops and no corner;
+  // some loop ends have no boundary vertex within h and take one within
+  // 2 h (S30.1), moved there by more than h. The path of each piece then
+  // starts at that vertex, which a grid of the places before S30 would not
+  // file within h of the loop (its search finds it at its new place).
+  const auto turbine = load_mesh_file(kCgal + "/turbine.off");
+  Settings s;
+  s.lattice.max_level = 3;
+  s.features.on = true;
+  s.check = true;  // S11's layer with S10's interval, then S32's
+  std::string said;
+  try {
+    mesh_shape(*turbine, s, [&said](std::string_view what) { said.append(what).append("\n"); });
+    ADD_FAILURE() << "no CheckError";
+  } catch (const CheckError& e) {
+    // S11's and S32's layers passed; S27 then reports the boundary's
+    // non-manifold edges, as it does without features.
+    EXPECT_NE(std::string(e.what()).find("non-manifold edges"), std::string::npos) << e.what();
+  }
+  EXPECT_NE(said.find("0 corners; conformed 0 corners, "), std::string::npos) << said;
+  const auto at = said.find(" of 24 curves");
+  ASSERT_NE(at, std::string::npos) << said;
+  const auto from = said.rfind(' ', at - 1) + 1;
+  EXPECT_GE(std::stoi(said.substr(from, at - from)), 4) << said;  // none within h alone
 }
 
 //= spec/stuffing.md S35 type=test
