@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "bccmis/invariants/d3/feature_conformity.h"
+#include "bccmis/stuff/conform_features.h"
 #include "bccmis/stuff/features.h"
 #include "bccmis/stuff/mesh_shape.h"
 #include "bccmis/stuff/surface.h"
@@ -294,6 +295,17 @@ TEST(FeatureConformity, TetrahedronKeepsItsAcuteCorners) {
   EXPECT_LT(m.features->distance, 1e-12);
   EXPECT_GE(m.statistics->quality.min_dihedral, kDihedralBounds[0]);
   EXPECT_LE(m.statistics->quality.max_dihedral, kDihedralBounds[1]);
+}
+
+//= spec/stuffing.md S30 type=test
+TEST(FeatureConformity, CornerSearchWidensOnlyWithNothingWithinH) {
+  // S30.1's line: a candidate at exactly h keeps the search within h; the
+  // next double above h, or none, widens it to 2 h.
+  const double h = 0.125;
+  EXPECT_EQ(corner_search_radius(0, h), h);
+  EXPECT_EQ(corner_search_radius(h, h), h);
+  EXPECT_EQ(corner_search_radius(std::nextafter(h, HUGE_VAL), h), 2 * h);
+  EXPECT_EQ(corner_search_radius(HUGE_VAL, h), 2 * h);
 }
 
 //= spec/stuffing.md S30 type=test

@@ -21,6 +21,9 @@ namespace {
 
 double distance(const Vec3& a, const Vec3& b) { return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
 
+// S30.1: a corner with no candidate within h searched within 2 h.
+constexpr double kWideCorner = 2;
+
 /// Items (points, or segments by their boxes) filed in a grid of cubes of
 /// side `side` by the cubes their boxes meet, for the queries of a box.
 class BoxGrid {
@@ -186,17 +189,17 @@ class Snapper {
     return true;
   }
 
-  /// S30.1: the nearest free boundary vertex within h (none there: within
-  /// kWideCorner h) whose move onto c is accepted, taken; none: -1.
+  /// S30.1: the nearest free boundary vertex within corner_search_radius
+  /// whose move onto c is accepted, taken; none: -1.
   std::int64_t snap_corner(const Vec3& c, FeatureConformity& r) {
     std::vector<std::pair<double, std::uint32_t>> candidates;
-    for (const double radius : {h_, kWideCorner * h_}) {
-      const auto [box_lo, box_hi] = box_around(c, radius);
-      for (const std::uint32_t v : grid_.in_box(box_lo, box_hi))
-        if (const double d = distance(mesh_.vertices[v], c); !taken_[v] && d <= radius) candidates.emplace_back(d, v);
-      if (!candidates.empty()) break;
-    }
+    const auto [box_lo, box_hi] = box_around(c, kWideCorner * h_);
+    for (const std::uint32_t v : grid_.in_box(box_lo, box_hi))
+      if (const double d = distance(mesh_.vertices[v], c); !taken_[v] && d <= kWideCorner * h_)
+        candidates.emplace_back(d, v);
     std::sort(candidates.begin(), candidates.end());
+    const double radius = corner_search_radius(candidates.empty() ? HUGE_VAL : candidates.front().first, h_);
+    std::erase_if(candidates, [radius](const auto& candidate) { return candidate.first > radius; });
     for (const auto& [d, v] : candidates)
       if (move(v, c, r)) {
         taken_[v] = 1;
@@ -549,9 +552,6 @@ class Snapper {
   // S34: the fractions of v's move its interior neighbours make, in the order tried.
   static constexpr std::array<double, 7> kRoomWeights{0.5, 1, 0.25, 0.75, 1.5, 2, -0.5};
 
-  // S30.1: a corner with no candidate within h searched within 2 h.
-  static constexpr double kWideCorner = 2;
-
   // S30.2: paths sought at most 8 times; an edge costs its length plus 4 times its ends' distances to C.
   static constexpr int kAttempts = 8;
   static constexpr double kNear = 4;
@@ -665,6 +665,8 @@ FeatureConformity conform_features(d3::TetMeshF& mesh, const std::vector<std::ar
   }
   return r;
 }
+
+double corner_search_radius(double nearest, double h) { return nearest <= h ? h : kWideCorner * h; }
 
 double feature_distance(const d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
                         const Features& features, double h) {
