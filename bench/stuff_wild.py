@@ -50,7 +50,7 @@ longest bounding-box side / (4 * 2^L - 10), the fit of the default 4 cells).
 The peers at a comparable size, not matched (matching costs several runs a
 file; bench/stuff_compare.sh does that for clean inputs): CGAL with
 cell_size = facet_size = h, facet_distance h / 20; TetGen with -a h^3.
-Files bccmis does not read (e.g. .ply) are given to the peers as OFF.
+PLY files are given to the peers as OFF.
 
 Output (in --out DIR, default build/stuff_wild): table.md (a row per
 file: triangles, flaws found here and in bccmis's JSON, per mesher the
@@ -103,7 +103,6 @@ from json_tail import last_json  # noqa: E402
 
 ARCHIVE = "/usr/share/doc/libcgal-dev/data.tar.gz"
 MESH_EXT = (".off", ".stl", ".ply", ".obj")
-BCCMIS_READS = (".off", ".stl", ".obj")
 
 
 def run(cmd, timeout, memory_gb, cwd=None):
@@ -201,7 +200,8 @@ def run_bccmis(bccmis, path, level, strict, args, work, ref, fl):
         # the same run without --check writes that mesh, checked below.
         cmd = [c for c in cmd if c != "--check"]
         status, so, se, secs = run(cmd, args.timeout, args.memory_gb)
-    r = {"mesher": "bccmis" + (" --strict" if strict else ""), "command": " ".join(cmd[1:]), "seconds": secs}
+    r = {"mesher": "bccmis" + (" --strict" if strict else ""), "command": " ".join(cmd[1:]), "seconds": secs,
+         "status": status, "last_stderr": (se.strip().splitlines() or [""])[-1][:200]}
     if status == 0 and topology:
         r["topology"] = topology[0].split(": ", 2)[-1]
     j = last_json(so)

@@ -5,7 +5,9 @@
 // fandisk (S34: interior vertices moved to make room; S35: boundary edges
 // split onto the creases, undone on CGAL's anchor where they conform
 // nothing, and on CGAL's turbine where vertices moved after them are put
-// back; a piece conformed from its other end on CGAL's anchor), with S10's dihedral
+// back; a piece conformed from its other end on CGAL's anchor; corners and
+// loop ends with no boundary vertex within h searched within 2 h, on a
+// tetrahedron and CGAL's turbine), with S10's dihedral
 // bound on every mesh, and the checker's feature layer catching a corner moved off and a curve not covered.
 #include <gtest/gtest.h>
 
@@ -15,9 +17,11 @@
 #include <cstdint>
 #include <numbers>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "bccmis/invariants/d3/feature_conformity.h"
+#include "bccmis/stuff/conform_features.h"
 #include "bccmis/stuff/features.h"
 #include "bccmis/stuff/mesh_shape.h"
 #include "bccmis/stuff/surface.h"
@@ -271,6 +275,65 @@ TEST(FeatureConformity, FandiskKeepsItsCornersWithinTheBound) {
   // The creases kept make the volume error several times smaller.
   EXPECT_LT(std::abs(with.statistics->relative_volume_error), std::abs(without.statistics->relative_volume_error) / 4);
   EXPECT_FALSE(without.features);
+}
+
+//= spec/stuffing.md S30 type=test
+TEST(FeatureConformity, TetrahedronKeepsItsAcuteCorners) {
+  // S30.1: the tetrahedron (0, 0, 0), e_x, e_y, e_z (CGAL's
+  // tetrahedron.off) at level 3: no boundary vertex within h of its three
+  // acute corners (the nearest 1.633 h away), so they are searched within
+  // 2 h; each curve then ends at a corner's vertex moved by more than h,
+  // which the search of its path finds at its new place.
+  const std::vector<Vec3> corners{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const Tris faces{{1, 2, 3}, {0, 2, 1}, {0, 1, 3}, {0, 3, 2}};
+  const Meshed m = mesh_with(*make_mesh_shape(corners, faces, "tetrahedron"), 3, true);  // S32's checker passes
+  ASSERT_TRUE(m.features);
+  EXPECT_EQ(m.features->corners, 4u);
+  EXPECT_EQ(m.features->curves, 6u);
+  EXPECT_EQ(m.features->corners_conformed, 4u);
+  EXPECT_EQ(m.features->curves_conformed, 6u);
+  EXPECT_LT(m.features->distance, 1e-12);
+  EXPECT_GE(m.statistics->quality.min_dihedral, kDihedralBounds[0]);
+  EXPECT_LE(m.statistics->quality.max_dihedral, kDihedralBounds[1]);
+}
+
+//= spec/stuffing.md S30 type=test
+TEST(FeatureConformity, CornerSearchWidensOnlyWithNothingWithinH) {
+  // S30.1's line: a candidate at exactly h keeps the search within h; the
+  // next double above h, or none, widens it to 2 h.
+  const double h = 0.125;
+  EXPECT_EQ(corner_search_radius(0, h), h);
+  EXPECT_EQ(corner_search_radius(h, h), h);
+  EXPECT_EQ(corner_search_radius(std::nextafter(h, HUGE_VAL), h), 2 * h);
+  EXPECT_EQ(corner_search_radius(HUGE_VAL, h), 2 * h);
+}
+
+//= spec/stuffing.md S30 type=test
+TEST(FeatureConformity, LoopEndsMovedBeyondHAreFoundAtTheirNewPlaces) {
+  // S30's search: CGAL's turbine at level 3 has 24 loops and no corner;
+  // some loop ends have no boundary vertex within h and take one within
+  // 2 h (S30.1), moved there by more than h. The path of each piece then
+  // starts at that vertex, which a grid of the places before S30 would not
+  // file within h of the loop (its search finds it at its new place).
+  const auto turbine = load_mesh_file(kCgal + "/turbine.off");
+  Settings s;
+  s.lattice.max_level = 3;
+  s.features.on = true;
+  s.check = true;  // S11's layer with S10's interval, then S32's
+  std::string said;
+  try {
+    mesh_shape(*turbine, s, [&said](std::string_view what) { said.append(what).append("\n"); });
+    ADD_FAILURE() << "no CheckError";
+  } catch (const CheckError& e) {
+    // S11's and S32's layers passed; S27 then reports the boundary's
+    // non-manifold edges, as it does without features.
+    EXPECT_NE(std::string(e.what()).find("non-manifold edges"), std::string::npos) << e.what();
+  }
+  EXPECT_NE(said.find("0 corners; conformed 0 corners, "), std::string::npos) << said;
+  const auto at = said.find(" of 24 curves");
+  ASSERT_NE(at, std::string::npos) << said;
+  const auto from = said.rfind(' ', at - 1) + 1;
+  EXPECT_GE(std::stoi(said.substr(from, at - from)), 4) << said;  // none within h alone
 }
 
 //= spec/stuffing.md S35 type=test

@@ -21,6 +21,9 @@ namespace {
 
 double distance(const Vec3& a, const Vec3& b) { return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
 
+// S30.1: a corner with no candidate within h searched within 2 h.
+constexpr double kWideCorner = 2;
+
 /// Items (points, or segments by their boxes) filed in a grid of cubes of
 /// side `side` by the cubes their boxes meet, for the queries of a box.
 class BoxGrid {
@@ -179,20 +182,24 @@ class Snapper {
       if (journal_ && u < journal_->vertices && (p != mesh_.vertices[u] || kind != mesh_.kind[u])) ++journal_->moved;
       keep(mesh_.vertices, u);
       keep(mesh_.kind, u);
+      if (!neighbours_[u].empty()) refile(u, mesh_.vertices[u], p);
       mesh_.vertices[u] = p;
       mesh_.kind[u] = kind;
     }
     return true;
   }
 
-  /// S30.1: the nearest free boundary vertex within h whose move onto c is
-  /// accepted, taken; none: -1.
+  /// S30.1: the nearest free boundary vertex within corner_search_radius
+  /// whose move onto c is accepted, taken; none: -1.
   std::int64_t snap_corner(const Vec3& c, FeatureConformity& r) {
     std::vector<std::pair<double, std::uint32_t>> candidates;
-    const auto [box_lo, box_hi] = box_around(c, h_);
+    const auto [box_lo, box_hi] = box_around(c, kWideCorner * h_);
     for (const std::uint32_t v : grid_.in_box(box_lo, box_hi))
-      if (const double d = distance(mesh_.vertices[v], c); !taken_[v] && d <= h_) candidates.emplace_back(d, v);
+      if (const double d = distance(mesh_.vertices[v], c); !taken_[v] && d <= kWideCorner * h_)
+        candidates.emplace_back(d, v);
     std::sort(candidates.begin(), candidates.end());
+    const double radius = corner_search_radius(candidates.empty() ? HUGE_VAL : candidates.front().first, h_);
+    std::erase_if(candidates, [radius](const auto& candidate) { return candidate.first > radius; });
     for (const auto& [d, v] : candidates)
       if (move(v, c, r)) {
         taken_[v] = 1;
@@ -441,6 +448,15 @@ class Snapper {
     return true;
   }
 
+  /// S30's search: boundary vertex v moved from x to y filed at y, and
+  /// back at x when the journal is rolled back.
+  void refile(std::uint32_t v, const Vec3& x, const Vec3& y) {
+    if (x == y) return;
+    grid_.erase(v, x, x);
+    grid_.insert(v, y, y);
+    if (journal_) journal_->steps.emplace_back([this, v, x, y] { grid_.erase(v, y, y), grid_.insert(v, x, x); });
+  }
+
   /// S35.4's record of a piece's splits and what followed them: the sizes
   /// before (everything appended after them is taken off) and, for every
   /// element changed, a step putting back its value before the change.
@@ -588,7 +604,7 @@ class Snapper {
   std::vector<std::array<std::uint32_t, 3>> triangles_;   ///< the boundary triangles, S35's splits included
   std::vector<std::vector<std::uint32_t>> triangles_at_;  ///< those at each vertex
   std::vector<char> taken_;
-  BoxGrid grid_;                    ///< the boundary vertices, in cubes of side h
+  BoxGrid grid_;                    ///< the boundary vertices at their current places, in cubes of side h (S30)
   std::optional<Journal> journal_;  ///< open while a piece's splits may be undone (S35.4)
 };
 
@@ -649,6 +665,8 @@ FeatureConformity conform_features(d3::TetMeshF& mesh, const std::vector<std::ar
   }
   return r;
 }
+
+double corner_search_radius(double nearest, double h) { return nearest <= h ? h : kWideCorner * h; }
 
 double feature_distance(const d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
                         const Features& features, double h) {

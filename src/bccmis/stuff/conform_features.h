@@ -48,6 +48,11 @@ struct FeatureConformity {
 FeatureConformity conform_features(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
                                    const Features& features, double h, bool split_edges = true);
 
+/// S30.1: the radius within which a corner's candidates are sought, given
+/// the distance `nearest` from the corner to its nearest free boundary
+/// vertex (HUGE_VAL when none within 2 h): h when nearest <= h, else 2 h.
+double corner_search_radius(double nearest, double h);
+
 /// S33: the largest distance from a point of a feature curve's polyline to
 /// the nearest edge of the boundary triangles; 0 without features. `h`
 /// (the finest side) sizes the search grid only.
