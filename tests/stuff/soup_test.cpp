@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "bccmis/io/off.h"
+#include "bccmis/json_writer.h"
 #include "bccmis/stuff/mesh_shape.h"
 #include "bccmis/stuff/soup_report.h"
 #include "bccmis/stuff/surface.h"
@@ -436,7 +437,14 @@ TEST(SoupMeshing, LoneTriangleEnclosesNoVolume) {
     mesh_shape(*shape, s);
     ADD_FAILURE() << "no ShapeError";
   } catch (const ShapeError& e) {
-    EXPECT_STREQ(e.what(), "patch: encloses no volume (the winding number is below 1/2 at every lattice vertex)");
+    // S21: the message names the fit's finest cell side and level. The
+    // triangle's box is 1 x 1 x 0.5; fit_lattice (S2) sizes h from it alone.
+    const Fit fit = fit_lattice(shape->bounds(), s.lattice);
+    ASSERT_EQ(fit.size.L, 3);
+    EXPECT_EQ(std::string(e.what()),
+              "patch: encloses no volume (the winding number is below 1/2 at every lattice vertex); a solid thinner "
+              "than the finest cell side " +
+                  JsonWriter::number(fit.h) + " needs a level above 3");
   }
 }
 

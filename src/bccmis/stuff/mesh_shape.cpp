@@ -74,7 +74,8 @@ std::vector<std::string> mesh_warnings(const Shape& world, const MeshTopology& t
 
 std::string empty_mesh_message(const Shape& shape, const Fit& fit) {
   if (const SoupReport* soup = shape.soup_report(); soup && soup->flaw_count() > 0)
-    return soup->file + ": encloses no volume (the winding number is below 1/2 at every lattice vertex)";
+    return soup->file + ": encloses no volume (the winding number is below 1/2 at every lattice vertex); a solid " +
+           "thinner than the finest cell side " + number(fit.h) + " needs a level above " + std::to_string(fit.size.L);
   return shape.describe() + ": the mesh is empty: " + level_hint(shape.bounds(), fit);
 }
 
