@@ -5,7 +5,11 @@
 // stuff.cpp. Exit codes as bccmis's (spec/cli.md), the same on every rank.
 #include <CLI/CLI.hpp>
 
+#include <cmath>
+#include <cstdlib>
 #include <iostream>
+#include <optional>
+#include <string>
 
 #include "bccmis/p4est/bridge.h"
 #include "io.h"
@@ -28,6 +32,19 @@ int main(int argc, char** argv) {
                 "Gather the mesh on rank 0 and write one file (.vtu, .msh, .mesh), the bytes bccmis stuff writes; "
                 "a triangle mesh's features and --check run there and need it; "
                 "without it, -o names a .pvtu and every rank writes its .vtu piece beside it");
+  double threshold = 0;
+  CLI::Option* repartition =
+      cmd->add_option("--repartition-threshold", threshold,
+                      "With --animate: repartition the forest after a frame's step when the largest rank's leaf "
+                      "count exceeds T times the mean (T >= 1; default 1.1; spec/distributed.md D15)")
+          ->type_name("T")
+          ->check([](const std::string& value) -> std::string {
+            char* end = nullptr;
+            const double t = std::strtod(value.c_str(), &end);
+            if (end == value.c_str() || *end != '\0' || !std::isfinite(t) || t < 1)
+              return "'" + value + "' is not a number >= 1 (spec/distributed.md D15)";
+            return {};
+          });
   cmd->footer("Example:\n  mpirun -n 2 bccmis-mpi stuff --shape torus -L 4 -o torus.pvtu");
   try {
     app.parse(argc, argv);
@@ -43,5 +60,5 @@ int main(int argc, char** argv) {
     if (rank == 0) std::cerr << "bccmis-mpi: " << why << "\nRun 'bccmis-mpi stuff --help' for usage.\n";
     return kExitInput;
   }
-  return run_mpi(o, gather, MPI_COMM_WORLD);
+  return run_mpi(o, gather, repartition->count() > 0 ? std::optional<double>(threshold) : std::nullopt, MPI_COMM_WORLD);
 }

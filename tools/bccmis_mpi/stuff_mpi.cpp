@@ -1,6 +1,6 @@
 // bccmis-mpi stuff: the options checked, the shape read, the run on every
 // rank as one library call (distributed::stuff_on_ranks, spec/distributed.md
-// D1-D13; distributed::animate_on_ranks with --animate, D14), the outputs written and the report printed, the ranks
+// D1-D13; distributed::animate_on_ranks with --animate, D14, D15), the outputs written and the report printed, the ranks
 // agreeing after each stage (D6).
 #include "stuff_mpi.h"
 
@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -62,11 +63,12 @@ void stage(MPI_Comm comm, Body&& body) {
 
 /// D1: the options this slice does not split yet, the ones that need the
 /// gathered mesh (D12: the features, --check, --hausdorff), and the one output (or none, with --stats).
-void check_options(const StuffOptions& o, bool gather) {
+void check_options(const StuffOptions& o, bool gather, bool threshold) {
   const auto refuse = [](const std::string& what) {
     throw InputError(what + " is not supported on several ranks yet (spec/distributed.md D1)");
   };
   if (!o.path.empty() || o.compare) throw InputError("--path and --compare apply with --animate");
+  if (threshold) throw InputError("--repartition-threshold applies with --animate (spec/distributed.md D15)");
   if (o.impl != "fast") refuse("--impl " + o.impl);
   if (o.memory_limit_gb > 0) refuse("--memory-limit");
   if (o.crease_cuts > 0) refuse("--crease-cuts");  // S35.7 places cut points inside each piece's stuffing
@@ -115,7 +117,7 @@ void check_animate_options(const StuffOptions& o, bool gather) {
 
 /// D14: --animate N on every rank: every frame's files staged as its
 /// meshes come, renamed once every frame succeeded on every rank (D6).
-int run_animate(const StuffOptions& o, bool gather, MPI_Comm comm) {
+int run_animate(const StuffOptions& o, bool gather, double threshold, MPI_Comm comm) {
   int rank = 0, size = 0;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
@@ -143,7 +145,8 @@ int run_animate(const StuffOptions& o, bool gather, MPI_Comm comm) {
     settings.frames = o.animate;
     settings.pieces = !gather;
     settings.gather = gather;
-    const auto on_frame = [&](int k, distributed::RankRun& run) {
+    settings.threshold = threshold;
+    const auto on_frame = [&](int k, distributed::RankRun& run, const distributed::ForestStep& step) {
       const std::string frame = numbered(stem, k, extension);
       const std::uint64_t mine = run.piece.mesh.tets.size();
       std::uint64_t tetrahedra = 0;
@@ -165,8 +168,14 @@ int run_animate(const StuffOptions& o, bool gather, MPI_Comm comm) {
         }
         frames.emplace_back(k, file_name(frame));
       });
-      if (rank == 0 && !o.quiet)
-        std::cerr << kTool << ": frame " << k << "/" << o.animate << ": " << tetrahedra << " tetrahedra\n";
+      if (rank == 0 && !o.quiet) {
+        std::cerr << kTool << ": frame " << k << "/" << o.animate << ": " << tetrahedra << " tetrahedra";
+        if (k > 0)  // D15: what the step did to the forest
+          std::cerr << "; forest: " << step.coarsened << " coarsened, " << step.refined << " refined, "
+                    << step.corrections << " corrections, imbalance " << step.imbalance
+                    << (step.repartitioned ? ", repartitioned" : "");
+        std::cerr << "\n";
+      }
     };
     stage(comm, [&] { distributed::animate_on_ranks(shape, settings, comm, on_frame); });
     stage(comm, [&] {
@@ -190,11 +199,11 @@ int run_animate(const StuffOptions& o, bool gather, MPI_Comm comm) {
 
 }  // namespace
 
-int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
+int run_mpi(const StuffOptions& o, bool gather, std::optional<double> threshold, MPI_Comm comm) {
   int rank = 0, size = 0;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
-  if (o.animate > 0) return run_animate(o, gather, comm);
+  if (o.animate > 0) return run_animate(o, gather, threshold.value_or(distributed::kRepartitionThreshold), comm);
   OutputSet pieces, index;  // index: rank 0's .pvtu or --gather file, renamed last
   std::shared_ptr<const stuff::Shape> shape;
   const std::string& out = o.outputs.empty() ? std::string() : o.outputs[0];
@@ -203,7 +212,7 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
   try {
     // (1) the options, the outputs' temporaries, the shape.
     stage(comm, [&] {
-      check_options(o, gather);
+      check_options(o, gather, threshold.has_value());
       if (write && !gather) pieces.open(piece_path(out, rank));
       if (write && rank == 0) index.open(out);
       shape = load_shape(o);

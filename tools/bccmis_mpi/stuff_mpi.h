@@ -3,12 +3,15 @@
 
 #include <mpi.h>
 
+#include <optional>
+
 #include "commands.h"
 
 namespace bccmis::cli {
 
 /// The run on this rank, collective over `comm`: the exit code, the same on
-/// every rank (D6).
-int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm);
+/// every rank (D6). `threshold`: --repartition-threshold when given (D15,
+/// with --animate only).
+int run_mpi(const StuffOptions& o, bool gather, std::optional<double> threshold, MPI_Comm comm);
 
 }  // namespace bccmis::cli

@@ -1,9 +1,10 @@
-// spec/distributed.md D14: the frames of a moving shape, each one
-// stuff_on_ranks run in the lattice of S14.
+// spec/distributed.md D14, D15: the frames of a moving shape in the
+// lattice of S14, the forest built once and moved by a step a frame.
 #include "bccmis/distributed/animate_on_ranks.h"
 
 #include <p8est.h>
 
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -15,7 +16,7 @@
 namespace bccmis::distributed {
 
 void animate_on_ranks(const std::shared_ptr<const stuff::Shape>& world, const RankAnimation& s, MPI_Comm comm,
-                      const std::function<void(int, RankRun&)>& on_frame) {
+                      const std::function<void(int, RankRun&, const ForestStep&)>& on_frame) {
   // S14: the serial animation's lattice, fitted once by every rank alike.
   std::optional<stuff::Fit> fit;
   on_every_rank(comm, "fitting the lattice", [&] { fit = stuff::fit_moving(*world, s.path, s.lattice); });
@@ -23,6 +24,7 @@ void animate_on_ranks(const std::shared_ptr<const stuff::Shape>& world, const Ra
   settings.lattice = s.lattice;
   settings.pieces = s.pieces;
   settings.gather = s.gather;
+  std::unique_ptr<Forest> forest;
   for (int k = 0; k <= s.frames; ++k) {
     const auto start = stuff::Clock::now();
     // D14: frame k in world coordinates, S24's map the identity.
@@ -31,13 +33,21 @@ void animate_on_ranks(const std::shared_ptr<const stuff::Shape>& world, const Ra
       frame.emplace(in_world(stuff::translated(world, stuff::frame_offset(s.path, k, s.frames)), *fit, s.lattice,
                              P8EST_QMAXLEVEL));
     });
+    // D10's forest for frame 0, D15's step to frame k after.
+    ForestStep step;
+    on_every_rank(comm, k == 0 ? "building the forest" : "moving the forest", [&] {
+      if (!forest)
+        forest = std::make_unique<Forest>(*frame->shape, frame->fit, frame->options, comm);
+      else
+        step = forest->move_to(*frame->shape, frame->fit, frame->options, s.threshold);
+    });
     RankRun run;
     try {
-      run = stuff_on_ranks(*frame->shape, *frame, settings, comm, start);
+      run = stuff_on_ranks(*frame->shape, *frame, *forest, settings, comm, start);
     } catch (const stuff::ShapeError& e) {  // S26's empty frame, named as the serial animation names it
       throw stuff::ShapeError("frame " + std::to_string(k) + ": " + e.what());
     }
-    on_frame(k, run);
+    on_frame(k, run, step);
   }
 }
 

@@ -5,59 +5,48 @@
 #include <vector>
 
 #include "bccmis/distributed/ranks.h"
+#include "bccmis/distributed/s3_callbacks.h"
 
 namespace bccmis::distributed {
 
-namespace {
-
 using namespace p4est_bridge;
-
-/// What S3's test reads: the shape, the fit and the options, the same on
-/// every rank (D10), and the brick's coordinate map; `failed`, the first
-/// exception the test threw on this rank (D6).
-struct Test {
-  const Brick3* brick;
-  const stuff::Shape* shape;
-  const stuff::Fit* fit;
-  const stuff::StuffOptions* options;
-  std::exception_ptr failed;
-};
-
-/// p8est_refine's callback: S3's test on the octant's leaf. An exception
-/// cannot cross p8est's C code: the first is kept and nothing more is
-/// refined (D6: the ranks then agree and every rank throws).
-int refine_by_s3(p8est_t* forest, p4est_topidx_t tree, p8est_quadrant_t* q) {
-  auto* test = static_cast<Test*>(forest->user_pointer);
-  if (test->failed) return 0;
-  try {
-    const Leaf3 leaf = test->brick->to_leaf(P4<3>::quadrant(tree, *q));
-    return stuff::s3_refines(*test->shape, *test->fit, *test->options, leaf.center, leaf.level) ? 1 : 0;
-  } catch (...) {
-    test->failed = std::current_exception();
-    return 0;
-  }
-}
-
-}  // namespace
 
 Forest::Forest(const stuff::Shape& shape, const stuff::Fit& fit, const stuff::StuffOptions& options, MPI_Comm comm)
     : brick_(fit.size) {
-  Test test{&brick_, &shape, &fit, &options, nullptr};
+  detail::S3Test test{&brick_, &shape, &fit, &options, nullptr};
   forest_.reset(p8est_new_ext(comm, brick_.connectivity(), 0, 0, 1, 0, nullptr, &test));
+  refine_and_balance(test, fit.size.L, true);
+  forest_->user_pointer = nullptr;
+  build_ghost();
+}
+
+void Forest::refine_and_balance(detail::S3Test& test, int L, bool partition) {
   // S3's loop: refine every leaf that passes the test (recursively), then
   // what the edge balance forces, until no leaf passes (D10: the smallest
   // edge-balanced refinement in which no leaf passes the test, S3's lattice).
+  forest_->user_pointer = &test;
   for (p4est_gloidx_t before = -1; before != forest_->global_num_quadrants;) {
     before = forest_->global_num_quadrants;
-    p8est_refine_ext(forest_.get(), 1, fit.size.L, refine_by_s3, nullptr, nullptr);
+    p8est_refine_ext(forest_.get(), 1, L, detail::refine_by_s3, nullptr, nullptr);
     // D6: one forest on every rank before balance and partition.
-    rethrow_on_every_rank(test.failed, "S3's test while the forest was refined", comm);
+    rethrow_on_every_rank(test.failed, "S3's test while the forest was refined", forest_->mpicomm);
     p8est_balance(forest_.get(), P8EST_CONNECT_EDGE, nullptr);
-    p8est_partition(forest_.get(), 0, nullptr);  // uniform by count (D2)
+    // Uniform by count (D2), families of sibling leaves kept on one rank (D15).
+    if (partition) p8est_partition(forest_.get(), 1, nullptr);
   }
-  forest_->user_pointer = nullptr;
+}
+
+void Forest::build_ghost() {
+  if (ghost_ != nullptr) p8est_ghost_destroy(ghost_);
   ghost_ = p8est_ghost_new(forest_.get(), P8EST_CONNECT_FULL);
   for (int layer = 1; layer < kGhostLayers; ++layer) expand();
+}
+
+std::vector<std::int64_t> Forest::leaves_per_rank() const {
+  std::vector<std::int64_t> n(static_cast<std::size_t>(forest_->mpisize));
+  for (std::size_t r = 0; r < n.size(); ++r)
+    n[r] = forest_->global_first_quadrant[r + 1] - forest_->global_first_quadrant[r];
+  return n;
 }
 
 Forest::~Forest() {

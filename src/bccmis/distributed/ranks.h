@@ -33,7 +33,7 @@ std::vector<d3::Point> own_leaves(const d3::fast::Lattice& g, MPI_Comm comm);
 /// D10: the forest of the S3 lattice built by p8est on every rank at once
 /// (p8est_new on the brick of the level-0 cubes, p8est_refine with S3's
 /// test, p8est_balance in edge mode, repeated until no leaf passes the test;
-/// p8est_partition uniform by count, D2), and this rank's ghost layer
+/// p8est_partition uniform by count, families kept whole, D2, D15), and this rank's ghost layer
 /// (p8est_ghost, P8EST_CONNECT_FULL, expanded to kGhostLayers layers),
 /// widened by expand(). No rank holds
 /// the whole lattice. Collective over `comm` (construction and expand()).
@@ -42,6 +42,19 @@ std::vector<d3::Point> own_leaves(const d3::fast::Lattice& g, MPI_Comm comm);
 /// its face, the leaves across that center's faces) and each needs its
 /// touching leaves known, one more.
 inline constexpr int kGhostLayers = 4;
+
+namespace detail {
+struct S3Test;
+}
+
+/// D15: what a step of a moving shape did to the forest (every rank's).
+struct ForestStep {
+  std::int64_t coarsened = 0;  ///< families replaced by their parent (step 1)
+  std::int64_t refined = 0;    ///< leaves refined, by the test or the balance (step 2)
+  int corrections = 0;         ///< partitions corrected for a split family (step 1)
+  double imbalance = 1;        ///< before step 3: max_r n_r / (N / P)
+  bool repartitioned = false;  ///< step 3
+};
 
 class Forest {
  public:
@@ -62,8 +75,26 @@ class Forest {
   void expand();
   /// The leaves of every rank.
   std::int64_t global_leaves() const;
+  /// The leaves of each rank, in rank order.
+  std::vector<std::int64_t> leaves_per_rank() const;
+
+  /// D15: the forest moved to S3's lattice for `shape` (the same fit and
+  /// options): families whose parent fails S3's test coarsened, the
+  /// partition corrected while such a family is split between ranks, then
+  /// D10's refine and balance loop; p8est_partition (for coarsening) when
+  /// the imbalance exceeds `threshold` (repartition_needed); the ghost
+  /// layer rebuilt. Collective; S3's test throwing on a rank throws on
+  /// every rank as the constructor does (D6).
+  ForestStep move_to(const stuff::Shape& shape, const stuff::Fit& fit, const stuff::StuffOptions& options,
+                     double threshold);
 
  private:
+  /// D10's loop: refine by `test` to level L and balance until the leaves
+  /// stop changing, partitioned each round when `partition`.
+  void refine_and_balance(detail::S3Test& test, int L, bool partition);
+  /// The ghost layer, kGhostLayers deep, built again.
+  void build_ghost();
+
   p4est_bridge::Brick3 brick_;
   p4est_bridge::Forest3Ptr forest_;
   p8est_ghost_t* ghost_ = nullptr;

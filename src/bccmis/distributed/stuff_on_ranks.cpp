@@ -9,6 +9,7 @@
 #include <exception>
 #include <memory>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -23,11 +24,19 @@ RankRun stuff_on_ranks(const stuff::Shape& world, const RankSettings& s, MPI_Com
   // S24, S2: the fit every rank makes alike.
   std::optional<Replicated> lattice;
   on_every_rank(comm, "fitting the lattice", [&] { lattice.emplace(fitted(world, s.lattice, P8EST_QMAXLEVEL)); });
-  return stuff_on_ranks(world, *lattice, s, comm, start);
+  const double input = stuff::seconds_since(start);
+  const auto t = stuff::Clock::now();
+  // D10: the partitioned forest.
+  std::unique_ptr<Forest> forest;
+  on_every_rank(comm, "building the forest",
+                [&] { forest = std::make_unique<Forest>(*lattice->shape, lattice->fit, lattice->options, comm); });
+  RankRun run = stuff_on_ranks(world, *lattice, *forest, s, comm, t);
+  run.seconds.insert(run.seconds.begin(), std::pair<std::string, double>("input", input));
+  return run;
 }
 
-RankRun stuff_on_ranks(const stuff::Shape& world, Replicated& lattice, const RankSettings& s, MPI_Comm comm,
-                       stuff::Clock::time_point start) {
+RankRun stuff_on_ranks(const stuff::Shape& world, Replicated& lattice, Forest& forest, const RankSettings& s,
+                       MPI_Comm comm, stuff::Clock::time_point start) {
   int rank = 0, size = 0;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
@@ -39,19 +48,14 @@ RankRun stuff_on_ranks(const stuff::Shape& world, Replicated& lattice, const Ran
     run.seconds.emplace_back(name, stuff::seconds_since(t));
     t = stuff::Clock::now();
   };
-  phase("input");
-  // D10: the partitioned forest, then this rank's piece on its own lattice.
-  std::unique_ptr<Forest> forest;
-  on_every_rank(comm, "building the forest",
-                [&] { forest = std::make_unique<Forest>(*lattice.shape, lattice.fit, lattice.options, comm); });
   phase("forest");
+  // D10: this rank's piece on its own lattice.
   stuff::StuffQuality quality;  // D11: the piece's, in local coordinates
   on_every_rank(comm, "stuffing its piece", [&] {
-    run.piece = stuff_own_piece(lattice, *forest, comm, s.statistics ? &quality : nullptr, !whole);
+    run.piece = stuff_own_piece(lattice, forest, comm, s.statistics ? &quality : nullptr, !whole);
   });
   phase("pieces");
-  const std::int64_t leaves = forest->global_leaves();
-  forest.reset();
+  const std::int64_t leaves = forest.global_leaves();
   // D7: the pieces' global vertex numbers.
   std::vector<std::uint8_t> owned;
   on_every_rank(comm, "numbering the vertices", [&] {

@@ -17,6 +17,8 @@
 
 namespace bccmis::distributed {
 
+class Forest;
+
 /// What a run is told (D1).
 struct RankSettings {
   stuff::StuffOptions lattice;      ///< -L, --min-level, --cells, --size, --threads
@@ -50,11 +52,13 @@ struct RankRun {
 /// CheckError, ...), every other rank RankFailed.
 RankRun stuff_on_ranks(const stuff::Shape& world, const RankSettings& s, MPI_Comm comm, stuff::Clock::time_point start);
 
-/// The same run in a lattice fitted by the caller (D14: a frame of a moving
-/// shape, in_world()): D2-D13 from the forest on, `world` the shape
-/// `lattice` holds as the messages name it. `lattice` as fitted() or
-/// in_world() made it; its lattice is released.
-RankRun stuff_on_ranks(const stuff::Shape& world, Replicated& lattice, const RankSettings& s, MPI_Comm comm,
-                       stuff::Clock::time_point start);
+/// The same run in a lattice fitted by the caller, on `forest` (D10's for
+/// lattice.shape; D14, D15: a frame of a moving shape, in_world(), the
+/// forest built or moved by the caller, its time `forest` from `start`):
+/// D3-D13, `world` the shape `lattice` holds as the messages name it.
+/// `lattice` as fitted() or in_world() made it; its lattice is released.
+/// The forest's ghost layer may be widened (stuff_own_piece).
+RankRun stuff_on_ranks(const stuff::Shape& world, Replicated& lattice, Forest& forest, const RankSettings& s,
+                       MPI_Comm comm, stuff::Clock::time_point start);
 
 }  // namespace bccmis::distributed
