@@ -5,7 +5,7 @@
 # (tests/distributed/mpi_stuff_test.py; --animate: mpi_animate_test.py, D14): --gather byte for byte (with the
 # features and --check, D12; their statistics and warnings, D13), the .pvtu's pieces by vertex positions and
 # conformity, and the failures.
-bccmis_add_gtest(distributed_tests SOURCES stuff_leaves_test.cpp LIBS bccmis::distributed bccmis::stuff PREFIX distributed. NO_PRETTY_VALUES
+bccmis_add_gtest(distributed_tests SOURCES stuff_leaves_test.cpp repartition_test.cpp LIBS bccmis::distributed bccmis::stuff PREFIX distributed. NO_PRETTY_VALUES
                  LABELS unit mpi)
 # D10: a rank's lattice from the leaves it knows, against the whole lattice.
 if(TARGET bccmis::stuff_surface)
@@ -135,10 +135,20 @@ endforeach()
 bccmis_add_test(mpi.stuff_errors_3_ranks COMMAND ${_bccmis_mpi_test} errors ${_bccmis_mpi_tools} 3
                 ${_bccmis_mpi_props})
 # D14: --animate on ranks, each frame (pieces and gathered) against bccmis
-# stuff --animate's, and the options refused with it.
+# stuff --animate's, and the options refused with it. D15: the forest kept
+# and moved a step a frame, every step coarsening and refining (a partition
+# corrected for a split family in each; on 3 ranks a repartition a frame).
 set(_bccmis_mpi_animate_test ${BCCMIS_SYSTEM_PYTHON3} ${CMAKE_CURRENT_LIST_DIR}/mpi_animate_test.py)
 bccmis_add_test(mpi.stuff_animate_sphere_2_ranks
                 COMMAND ${_bccmis_mpi_animate_test} frames ${_bccmis_mpi_tools} 2 -- --shape sphere -L 3 --animate 2
+                ${_bccmis_mpi_props})
+bccmis_add_test(mpi.stuff_animate_steps_sphere_2_ranks
+                COMMAND ${_bccmis_mpi_animate_test} steps ${_bccmis_mpi_tools} 2 -- --shape sphere -L 2 --cells 5
+                        --animate 3
+                ${_bccmis_mpi_props})
+bccmis_add_test(mpi.stuff_animate_steps_sphere_3_ranks
+                COMMAND ${_bccmis_mpi_animate_test} steps ${_bccmis_mpi_tools} 3 -- --shape sphere -L 2 --cells 8
+                        --animate 3 --repartition-threshold 1
                 ${_bccmis_mpi_props})
 bccmis_add_test(mpi.stuff_animate_refusals_2_ranks COMMAND ${_bccmis_mpi_animate_test} refusals ${_bccmis_mpi_tools} 2
                 ${_bccmis_mpi_props})

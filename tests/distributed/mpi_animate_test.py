@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""bccmis-mpi stuff --animate against bccmis stuff --animate (spec/distributed.md D14).
+"""bccmis-mpi stuff --animate against bccmis stuff --animate (spec/distributed.md D14, D15).
 
   mpi_animate_test.py frames MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
       with --animate in STUFF_ARGS: every frame's union of pieces (-o OUT.pvtu:
@@ -7,12 +7,17 @@
       (--gather -o OUT.vtu: OUT_KKKK.vtu) holds the serial frame's tetrahedra
       (by vertex positions, bit for bit, with their levels), and each OUT.pvd
       lists the frames as the serial .pvd does (timesteps 0 .. N).
+  mpi_animate_test.py steps MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
+      the same, and D15's step of every frame after the first (rank 0's
+      "forest: ..." line) both coarsened and refined leaves; with
+      --repartition-threshold 1 in STUFF_ARGS, every step repartitioned.
   mpi_animate_test.py refusals MPIRUN BCCMIS BCCMIS_MPI RANKS
       the options D14 refuses with --animate, each by name: exit 2, D14 named,
       nothing written.
 """
 import collections
 import os
+import re
 import sys
 import tempfile
 import xml.etree.ElementTree as ET
@@ -36,9 +41,31 @@ def pvtu_tets(work, index):
     return tets, len(sources)
 
 
-def frames(mpirun, bccmis, bccmis_mpi, ranks, args, work):
-    run([bccmis, "stuff", *args, "-q", "-o", os.path.join(work, "serial.pvd")])
-    run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, "-q", "-o", os.path.join(work, "out.pvtu")])
+FOREST = re.compile(r"frame (\d+)/\d+: \d+ tetrahedra; forest: (\d+) coarsened, (\d+) refined, "
+                    r"(\d+) corrections, imbalance ([0-9.]+)(, repartitioned)?")
+
+
+def frames(mpirun, bccmis, bccmis_mpi, ranks, args, work, steps=False):
+    serial_args = [a for i, a in enumerate(args) if a != "--repartition-threshold"
+                   and (i == 0 or args[i - 1] != "--repartition-threshold")]
+    run([bccmis, "stuff", *serial_args, "-q", "-o", os.path.join(work, "serial.pvd")])
+    r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, *([] if steps else ["-q"]),
+                                  "-o", os.path.join(work, "out.pvtu")])
+    if steps:
+        forest = [m.groups() for m in FOREST.finditer(r.stderr)]
+        frames_after_0 = int(args[args.index("--animate") + 1])
+        if [int(g[0]) for g in forest] != list(range(1, frames_after_0 + 1)):
+            sys.exit(f"FAIL: rank 0 reports the steps of frames {[g[0] for g in forest]}:\n{r.stderr}")
+        for k, coarsened, refined, _, _, _ in forest:
+            if int(coarsened) == 0 or int(refined) == 0:
+                sys.exit(f"FAIL: frame {k}'s step coarsened {coarsened} and refined {refined} families: "
+                         "the path does not exercise both")
+        if "--repartition-threshold" in args and args[args.index("--repartition-threshold") + 1] == "1":
+            if not all(g[5] for g in forest):
+                sys.exit(f"FAIL: --repartition-threshold 1: a step with imbalance above 1 not repartitioned:\n"
+                         f"{r.stderr}")
+        print(f"{ranks} ranks: steps (coarsened, refined, corrections, imbalance, repartitioned): "
+              f"{[(int(g[1]), int(g[2]), int(g[3]), float(g[4]), bool(g[5])) for g in forest]}")
     run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, "-q", "--gather", "-o", os.path.join(work, "whole.vtu")])
     serial = pvd_frames(os.path.join(work, "serial.pvd"))
     steps = [k for k, _ in serial]
@@ -84,15 +111,25 @@ def refusals(mpirun, bccmis_mpi, ranks, work):
             expect=2)
     if "--path and --compare apply with --animate" not in r.stderr or os.listdir(work):
         sys.exit(f"FAIL: --path without --animate: not refused as bccmis stuff refuses it:\n{r.stderr}")
-    print(f"ok: {ranks} ranks: {len(cases)} options refused with --animate (D14), --path without it")
+    # D15: --repartition-threshold T, T a number >= 1, with --animate only.
+    for value in ["0.99", "nan"]:
+        r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *base, "--repartition-threshold", value, *out], expect=2)
+        if "--repartition-threshold" not in r.stderr or "D15" not in r.stderr or os.listdir(work):
+            sys.exit(f"FAIL: --repartition-threshold {value}: not refused naming it and D15:\n{r.stderr}")
+    r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", "--shape", "sphere", "-L", "2", "--repartition-threshold", "2",
+                                  *out], expect=2)
+    if "--repartition-threshold applies with --animate" not in r.stderr or os.listdir(work):
+        sys.exit(f"FAIL: --repartition-threshold without --animate: not refused:\n{r.stderr}")
+    print(f"ok: {ranks} ranks: {len(cases)} options refused with --animate (D14), --path without it, "
+          "bad --repartition-threshold values and the option without --animate (D15)")
 
 
 def main():
     mode, mpirun, bccmis, bccmis_mpi, ranks = sys.argv[1:6]
     args = sys.argv[7:] if len(sys.argv) > 6 and sys.argv[6] == "--" else []
     with tempfile.TemporaryDirectory() as work:
-        if mode == "frames":
-            frames(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
+        if mode in ("frames", "steps"):
+            frames(mpirun, bccmis, bccmis_mpi, int(ranks), args, work, steps=mode == "steps")
         else:
             refusals(mpirun, bccmis_mpi, int(ranks), work)
 
