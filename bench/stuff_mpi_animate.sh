@@ -7,7 +7,10 @@
 # included), summed over the ranks (/usr/bin/time inside mpirun). The serial
 # frame from scratch is what --compare adds to a frame (it stuffs every
 # frame again from scratch, writing nothing). Serial runs on one thread, as
-# a rank stuffs on one (D1).
+# a rank stuffs on one (D1). After the table, rank 0's line of each step of
+# the N-frame runs (D15: families coarsened, leaves refined, partition
+# corrections, imbalance, repartitioned); MPI_ARGS (environment) go to
+# bccmis-mpi only, e.g. MPI_ARGS="--repartition-threshold 1".
 #   bench/stuff_mpi_animate.sh BUILD_DIR N "RANKS..." STUFF_ARGS...
 #   bench/stuff_mpi_animate.sh build/release 4 "1 2" --shape sphere -L 5
 set -euo pipefail
@@ -30,9 +33,10 @@ mpi_cpu() {
   shift 2
   rm -f "$work"/rank*.time
   # shellcheck disable=SC2016
+  # shellcheck disable=SC2086
   mpirun --allow-run-as-root --oversubscribe -n "$p" sh -c \
     '/usr/bin/time -f "%U %S" -o "$0/rank$OMPI_COMM_WORLD_RANK.time" "$@"' "$work" \
-    "$bccmis_mpi" stuff "$@" --animate "$n" --binary -q -o "$work/p$n.pvtu"
+    "$bccmis_mpi" stuff "$@" ${MPI_ARGS:-} --animate "$n" --binary -o "$work/p$n.pvtu" 2> "$work/steps_${p}_$n.log"
   cpu "$work"/rank*.time
 }
 step=$(per_frame "$(serial_cpu "$frames" "$@")" "$(serial_cpu 1 "$@")")
@@ -43,4 +47,9 @@ echo "| bccmis stuff --animate: S15-S16's step, its .vtu written | $step |"
 echo "| bccmis stuff: a frame from scratch (what --compare adds) | $(echo "$with_scratch - $step" | bc -l | xargs printf %.3f) |"
 for p in $ranks; do
   echo "| bccmis-mpi stuff --animate, $p rank$([ "$p" = 1 ] || echo s), its .pvtu written, all ranks' CPU | $(per_frame "$(mpi_cpu "$p" "$frames" "$@")" "$(mpi_cpu "$p" 1 "$@")") |"
+done
+for p in $ranks; do
+  echo
+  echo "$p rank(s), the steps of the $frames-frame run:"
+  grep -o 'frame [0-9]*/[0-9]*: .*forest: .*' "$work/steps_${p}_$frames.log" || true
 done
