@@ -147,7 +147,7 @@ bccmis_add_test(mpi.stuff_animate_steps_sphere_2_ranks
                         --animate 3
                 ${_bccmis_mpi_props})
 bccmis_add_test(mpi.stuff_animate_steps_sphere_3_ranks
-                COMMAND ${_bccmis_mpi_animate_test} steps ${_bccmis_mpi_tools} 3 -- --shape sphere -L 2 --cells 8
+                COMMAND ${_bccmis_mpi_animate_test} steps ${_bccmis_mpi_tools} 3 -- --shape sphere -L 2 --cells 6
                         --animate 3 --repartition-threshold 1
                 ${_bccmis_mpi_props})
 bccmis_add_test(mpi.stuff_animate_refusals_2_ranks COMMAND ${_bccmis_mpi_animate_test} refusals ${_bccmis_mpi_tools} 2
