@@ -14,8 +14,8 @@
 #include <string>
 
 #include "bccmis/distributed/ranks.h"
-#include "bccmis/distributed/replicated.h"
 #include "bccmis/distributed/repartition.h"
+#include "bccmis/distributed/replicated.h"
 #include "bccmis/p4est/bridge.h"
 #include "bccmis/stuff/animate_shape.h"
 
@@ -63,8 +63,9 @@ int main(int argc, char** argv) {
   distributed::Replicated first = frame(0);
   distributed::Forest kept(*first.shape, first.fit, first.options, MPI_COMM_WORLD);
   if (rank == 0) {
-    std::printf("| frame | leaves | forest from the brick, CPU s | D15's step, CPU s | coarsened | refined | "
-                "corrections | imbalance | repartitioned |\n|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
+    std::printf(
+        "| frame | leaves | forest from the brick, CPU s | D15's step, CPU s | coarsened | refined | "
+        "corrections | imbalance | repartitioned |\n|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
   }
   for (int k = 1; k <= frames; ++k) {
     const distributed::Replicated r = frame(k);
@@ -74,9 +75,9 @@ int main(int argc, char** argv) {
     const double moved = ranks_cpu([&] { step = kept.move_to(*r.shape, r.fit, r.options, threshold); });
     if (rank == 0)
       std::printf("| %d | %lld | %.3f | %.3f | %lld | %lld | %d | %.3f | %s |\n", k,
-                  static_cast<long long>(kept.global_leaves()), scratch, moved,
-                  static_cast<long long>(step.coarsened), static_cast<long long>(step.refined), step.corrections,
-                  step.imbalance, step.repartitioned ? "yes" : "no");
+                  static_cast<long long>(kept.global_leaves()), scratch, moved, static_cast<long long>(step.coarsened),
+                  static_cast<long long>(step.refined), step.corrections, step.imbalance,
+                  step.repartitioned ? "yes" : "no");
   }
   return 0;
 }

@@ -1,7 +1,7 @@
 // bccmis-mpi stuff: the options checked, the shape read, the run on every
 // rank as one library call (distributed::stuff_on_ranks, spec/distributed.md
-// D1-D13; distributed::animate_on_ranks with --animate, D14, D15), the outputs written and the report printed, the ranks
-// agreeing after each stage (D6).
+// D1-D13; distributed::animate_on_ranks with --animate, D14, D15), the outputs written and the report printed, the
+// ranks agreeing after each stage (D6).
 #include "stuff_mpi.h"
 
 #include <algorithm>

@@ -19,11 +19,11 @@ namespace bccmis::distributed {
 
 /// What an animation on ranks is told (D14).
 struct RankAnimation {
-  stuff::StuffOptions lattice;  ///< -L, --min-level, --cells, --size, --threads
-  int frames = 1;               ///< steps after frame 0 (> 0)
-  stuff::Vec3 path{};           ///< the whole motion: frame k at offset k path / frames (S15)
-  bool pieces = false;          ///< a .vtu piece per rank and frame: D7's global ids
-  bool gather = false;          ///< each frame's whole mesh on rank 0 (D5)
+  stuff::StuffOptions lattice;               ///< -L, --min-level, --cells, --size, --threads
+  int frames = 1;                            ///< steps after frame 0 (> 0)
+  stuff::Vec3 path{};                        ///< the whole motion: frame k at offset k path / frames (S15)
+  bool pieces = false;                       ///< a .vtu piece per rank and frame: D7's global ids
+  bool gather = false;                       ///< each frame's whole mesh on rank 0 (D5)
   double threshold = kRepartitionThreshold;  ///< D15: repartitioned when the imbalance exceeds it
 };
 

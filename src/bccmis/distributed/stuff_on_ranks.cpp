@@ -51,9 +51,8 @@ RankRun stuff_on_ranks(const stuff::Shape& world, Replicated& lattice, Forest& f
   phase("forest");
   // D10: this rank's piece on its own lattice.
   stuff::StuffQuality quality;  // D11: the piece's, in local coordinates
-  on_every_rank(comm, "stuffing its piece", [&] {
-    run.piece = stuff_own_piece(lattice, forest, comm, s.statistics ? &quality : nullptr, !whole);
-  });
+  on_every_rank(comm, "stuffing its piece",
+                [&] { run.piece = stuff_own_piece(lattice, forest, comm, s.statistics ? &quality : nullptr, !whole); });
   phase("pieces");
   const std::int64_t leaves = forest.global_leaves();
   // D7: the pieces' global vertex numbers.
