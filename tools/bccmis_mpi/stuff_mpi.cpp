@@ -60,7 +60,7 @@ void stage(MPI_Comm comm, Body&& body) {
   if (!a.ok()) throw Stop{a.code};
 }
 
-/// D1: the options this slice does not split yet, the ones that need the
+/// D1: the option this slice does not split yet, the ones that need the
 /// gathered mesh (D12: the features, --check, --hausdorff), and the one output (or none, with --stats).
 void check_options(const StuffOptions& o, bool gather) {
   const auto refuse = [](const std::string& what) {
@@ -68,8 +68,6 @@ void check_options(const StuffOptions& o, bool gather) {
   };
   if (!o.path.empty() || o.compare) throw InputError("--path and --compare apply with --animate");
   if (o.impl != "fast") refuse("--impl " + o.impl);
-  if (o.memory_limit_gb > 0) refuse("--memory-limit");
-  if (o.crease_cuts > 0) refuse("--crease-cuts");  // S35.7 places cut points inside each piece's stuffing
   const bool features = o.features_on();
   if ((features || o.check || o.hausdorff) && !gather)
     throw InputError(std::string(features  ? "the features of a triangle-mesh INPUT (on by default, S29-S35)"
@@ -104,7 +102,7 @@ void check_animate_options(const StuffOptions& o, bool gather) {
   if (o.check) refuse("--check");
   if (o.features || o.feature_angle >= 0 || o.crease_cuts > 0) refuse("the features");
   if (o.impl != "fast") refuse("--impl " + o.impl);
-  if (o.memory_limit_gb > 0) refuse("--memory-limit");
+  if (o.memory_limit_gb > 0) refuse("--memory-limit");  // the serial animation does not estimate (S25) either
   const std::string extension = gather ? ".vtu" : ".pvtu";
   if (o.outputs.size() != 1 || !ends_with(o.outputs[0], extension))
     throw InputError(std::string("--animate writes a frame a file and their .pvd beside them: give ") +
@@ -214,9 +212,11 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
     settings.lattice = lattice_options(o);
     settings.features.on = o.features_on();
     if (o.feature_angle >= 0) settings.features.angle = o.feature_angle;
+    settings.features.crease_cuts = o.crease_cuts;  // D16: S35.8 on rank 0 (features need --gather, D12)
     settings.check = o.check;
     settings.hausdorff = o.hausdorff;
     settings.statistics = o.stats;
+    if (o.memory_limit_gb > 0) settings.memory_limit = o.memory_limit_gb * 1e9;  // D16: per rank
     settings.pieces = write && !gather;
     settings.gather = write && gather;
     distributed::RankRun run;
@@ -254,7 +254,8 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
       for (const std::string& warning : run.report.warnings) std::cerr << kTool << ": warning: " << warning << "\n";
     if (rank == 0 && o.stats) std::cout << stats_text(shape->describe(), run.report, seconds, o.json) << std::flush;
     if (rank == 0 && !o.quiet && write)
-      std::cerr << kTool << ": " << tetrahedra << " tetrahedra"
+      std::cerr << kTool << ": " << (gather ? run.mesh.tets.size() : tetrahedra)
+                << " tetrahedra"  // gathered: after S35's splits and S35.8's choice
                 << (gather ? ", " + std::to_string(run.mesh.vertices.size()) + " vertices,"
                            : " in " +
                                  std::to_string(std::count_if(run.tetrahedra.begin(), run.tetrahedra.end(),

@@ -4,6 +4,7 @@
 // (spec/distributed.md D12, D13).
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,13 +23,17 @@ struct Finished {
   std::vector<std::string> warnings;             ///< S26, S27 (mesh_warnings)
   std::optional<stuff::FeatureReport> features;  ///< S33, with the features on
   std::optional<stuff::Statistics> statistics;   ///< S13 in world units, when asked
+  /// S6's cut points of the candidate S35.8 kept when it is B or C (made on
+  /// rank 0's whole lattice, D16); unset for A (D11's count stands).
+  std::optional<std::size_t> cut_points;
 };
 
 /// D12: mesh_shape()'s steps after S9, in its order, on `mesh`, the whole
 /// mesh gathered (gather_pieces) from pieces kept in S24's local
 /// coordinates: S11's boundary and M23's regions; with `features.on`, S29 on
 /// the shape's triangles and S30-S35 (conform_features), the regions again
-/// after a split; with `check`, the checker's stuffed-mesh layer and the
+/// after a split (with `features.crease_cuts`, S35.8's candidates, the
+/// gathered mesh as A, B and C stuffed (S3-S9) as the serial run stuffs them, D16); with `check`, the checker's stuffed-mesh layer and the
 /// feature layer (S32); S27's topology and the warnings (D13); with
 /// `check`, S27's extra components or non-manifold edges refused; with
 /// `statistics`, S13 (its sampled Hausdorff distance with `hausdorff`) and

@@ -1,11 +1,12 @@
 // bccmis::distributed::stuff_on_ranks: the whole run of `bccmis-mpi stuff`
 // on every rank as one library call (spec/distributed.md D1-D13), as
-// mesh_shape() is for `bccmis stuff`: the tool parses, writes and prints.
+// mesh_shape() is for `bccmis stuff`, D16's memory estimate included: the tool parses, writes and prints.
 #pragma once
 
 #include <mpi.h>
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "bccmis/d3/tet_mesh.h"
@@ -26,6 +27,9 @@ struct RankSettings {
   bool statistics = false;          ///< D11, D13
   bool pieces = false;              ///< a .vtu piece per rank: D7's global ids
   bool gather = false;              ///< the whole mesh on rank 0 (D5)
+  /// D16: the memory one rank may take (--memory-limit); unset: MemAvailable
+  /// of its node's /proc/meminfo over the ranks sharing that node.
+  std::optional<double> memory_limit;
 };
 
 /// One rank's result. On rank 0 only: mesh, regions, report, warned.
@@ -41,7 +45,7 @@ struct RankRun {
   stuff::Clock::time_point since;         ///< the end of `statistics`: D11's write phase starts here
 };
 
-/// D1-D13 on every rank: the fit (S24, S2), the forest (D10), this rank's
+/// D1-D13 on every rank: the fit (S24, S2), D16's memory estimate, the forest (D10), this rank's
 /// piece (D3, D4, D6), D7's numbers, the refusal of an empty mesh (S21,
 /// S26: ShapeError with empty_mesh_message), D11's statistics, and with
 /// `gather` the pieces gathered on rank 0, the feature step, --check and

@@ -1,0 +1,38 @@
+// bccmis::distributed::rank_memory: S25's estimate before building, split
+// over the ranks of bccmis-mpi stuff (spec/distributed.md D16): what one
+// rank's peak will hold, from the leaves S25 estimates for the whole run.
+#pragma once
+
+#include "bccmis/stuff/memory_estimate.h"
+#include "bccmis/stuff/shape.h"
+#include "bccmis/stuff/stuff.h"
+
+namespace bccmis::distributed {
+
+/// D16: where a rank stands in the run, for its estimate.
+struct RankRole {
+  int rank = 0;
+  int ranks = 1;
+  bool gathers = false;     ///< the mesh gathered on rank 0 (--gather, or D12's features, --check, --hausdorff)
+  bool crease_cuts = false;  ///< S35.8's candidates B and C made on rank 0 (D16)
+};
+
+/// D16: rank `role.rank`'s peak bytes for a run whose leaves S25 estimates
+/// at `leaves` (E): its share of the stuffing, kBytesPerLeaf E / P (D2:
+/// uniform by count; D10: nothing else grows with the whole lattice); on
+/// rank 0 with the mesh gathered, the largest of that, its piece
+/// (kSecondMeshBytesPerLeaf E / P) beside D12's three copies of the whole
+/// mesh (3 kSecondMeshBytesPerLeaf E), and with --crease-cuts its piece
+/// beside S35.8's serial candidates (A gathered, B stuffed: S25's estimate
+/// with two meshes, (kBytesPerLeaf + kSecondMeshBytesPerLeaf) E).
+double rank_bytes(double leaves, const RankRole& role);
+
+/// D16: throws stuff::ShapeError, with S25's message naming the rank, when
+/// rank_bytes() of S25's leaves for `shape` (local coordinates, `options`
+/// at the fitted level) exceeds `available_bytes`; equal fits. The leaves
+/// are every cube of the fitted lattice when their rank_bytes() fits, else
+/// S25's probe (estimate_memory), as one process does.
+void refuse_what_will_not_fit_on_rank(const stuff::Shape& shape, const stuff::StuffOptions& options,
+                                      double available_bytes, const RankRole& role);
+
+}  // namespace bccmis::distributed
