@@ -138,12 +138,14 @@ endforeach()
 # D16: --memory-limit per rank on its line, the sphere at level 2 on 2 ranks
 # (4,096 leaves, every cube: 1900 x 4096 / 2 bytes a rank; with --gather
 # rank 0's 420 x 4096 / 2 + 3 x 420 x 4096), and --crease-cuts with --gather
-# (S35.8 on rank 0: CGAL's P.off at level 2 keeps B, 16 curves of 21 against
-# A's 15, in a second) as bccmis stuff's bytes and statistics.
+# (S35.8 on rank 0: CGAL's P.off at level 2 keeps B with delta 1/4 and C with
+# 1/2, 16 curves of 21 against A's 15, each in a second) as bccmis stuff's bytes and statistics.
 _bccmis_mpi_stuff_test(stuff_memory_limit_sphere_2_ranks memory 2 0.0038912 0.00602112 --shape sphere -L 2)
 if(TARGET bccmis::stuff_surface)
-  _bccmis_mpi_stuff_test(stuff_crease_cuts_p_2_ranks stats-features 2
-                         ${bccmis_cgal_data}/data/meshes/P.off -L 2 --crease-cuts 0.25)
+  foreach(delta 0.25 0.5)
+    _bccmis_mpi_stuff_test(stuff_crease_cuts_${delta}_p_2_ranks stats-features 2
+                           ${bccmis_cgal_data}/data/meshes/P.off -L 2 --crease-cuts ${delta})
+  endforeach()
 endif()
 bccmis_add_test(mpi.stuff_errors_3_ranks COMMAND ${_bccmis_mpi_test} errors ${_bccmis_mpi_tools} 3
                 ${_bccmis_mpi_props})
