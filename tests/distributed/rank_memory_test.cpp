@@ -58,8 +58,9 @@ TEST(RankMemory, OnTheLineNamingTheRank) {
     const double line = rank_bytes(s.leaves(), role);
     EXPECT_EQ(refusal(s, line, role), "");
     const std::string why = refusal(s, std::nextafter(line, 0.0), role);
-    EXPECT_NE(why.find("GB on rank " + std::to_string(role.rank) + " by D16's estimate (1900 bytes per estimated leaf over " +
-                       std::to_string(role.ranks) + " ranks"),
+    EXPECT_NE(why.find("GB on rank " + std::to_string(role.rank) +
+                       " by D16's estimate (1900 bytes per estimated leaf over " + std::to_string(role.ranks) +
+                       " ranks"),
               std::string::npos)
         << why;
     EXPECT_NE(why.find("of memory available to a rank; -L "), std::string::npos) << why;

@@ -33,15 +33,12 @@ struct Finished {
 /// coordinates: S11's boundary and M23's regions; with `features.on`, S29 on
 /// the shape's triangles and S30-S35 (conform_features), the regions again
 /// after a split (with `features.crease_cuts`, S35.8's candidates, the
-/// gathered mesh as A, B and C stuffed (S3-S9) as the serial run stuffs them, D16); with `check`, the checker's stuffed-mesh layer and the
-/// feature layer (S32); S27's topology and the warnings (D13); with
-/// `check`, S27's extra components or non-manifold edges refused; with
-/// `statistics`, S13 (its sampled Hausdorff distance with `hausdorff`) and
-/// S33's feature distance (D13); then S24's map to world coordinates. `world` is the shape as read,
-/// `r` as fitted() made it. Throws stuff::CheckError on a problem the checks
-/// find (S11, S32, S27's extra components or non-manifold edges),
-/// stuff::ShapeError on S27's lost component or S24's overflow, with
-/// mesh_shape()'s messages.
+/// gathered mesh as A, B and C stuffed (S3-S9) as the serial run stuffs them, D16); with `check`, the checker's
+/// stuffed-mesh layer and the feature layer (S32); S27's topology and the warnings (D13); with `check`, S27's extra
+/// components or non-manifold edges refused; with `statistics`, S13 (its sampled Hausdorff distance with `hausdorff`)
+/// and S33's feature distance (D13); then S24's map to world coordinates. `world` is the shape as read, `r` as fitted()
+/// made it. Throws stuff::CheckError on a problem the checks find (S11, S32, S27's extra components or non-manifold
+/// edges), stuff::ShapeError on S27's lost component or S24's overflow, with mesh_shape()'s messages.
 Finished finish_gathered(const stuff::Shape& world, const Replicated& r, d3::TetMeshF& mesh,
                          const stuff::FeatureSettings& features, bool check, bool statistics = false,
                          bool hausdorff = false);

@@ -32,10 +32,9 @@ void refuse_what_will_not_fit_on_rank(const stuff::Shape& shape, const stuff::St
   if (role.rank == 0 && role.gathers)
     how += ", and " + std::to_string(static_cast<int>(stuff::kSecondMeshBytesPerLeaf)) +
            " a leaf for each whole mesh rank 0 holds" + (role.crease_cuts ? " and S35.8's candidates" : "");
-  throw stuff::ShapeError(stuff::too_much_memory(stuff::fit_lattice(shape.bounds(), options).size.L, leaves, bytes,
-                                                 available_bytes, "on rank " + std::to_string(role.rank) +
-                                                                      " by D16's estimate",
-                                                 how, " to a rank"));
+  throw stuff::ShapeError(
+      stuff::too_much_memory(stuff::fit_lattice(shape.bounds(), options).size.L, leaves, bytes, available_bytes,
+                             "on rank " + std::to_string(role.rank) + " by D16's estimate", how, " to a rank"));
 }
 
 }  // namespace bccmis::distributed

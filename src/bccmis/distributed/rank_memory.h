@@ -13,7 +13,7 @@ namespace bccmis::distributed {
 struct RankRole {
   int rank = 0;
   int ranks = 1;
-  bool gathers = false;     ///< the mesh gathered on rank 0 (--gather, or D12's features, --check, --hausdorff)
+  bool gathers = false;      ///< the mesh gathered on rank 0 (--gather, or D12's features, --check, --hausdorff)
   bool crease_cuts = false;  ///< S35.8's candidates B and C made on rank 0 (D16)
 };
 

@@ -77,9 +77,9 @@ void refuse_what_will_not_fit(const Shape& shape, const StuffOptions& options, d
   throw ShapeError(too_much_memory(
       fit.size.L, e.leaves, e.bytes(), available_bytes, "by S25's estimate",
       std::to_string(static_cast<int>(kBytesPerLeaf)) + " bytes per estimated leaf" +
-          (meshes > 1 ? ", and " + std::to_string(static_cast<int>(kSecondMeshBytesPerLeaf)) +
-                            " for S35.8's second mesh"
-                      : std::string())));
+          (meshes > 1
+               ? ", and " + std::to_string(static_cast<int>(kSecondMeshBytesPerLeaf)) + " for S35.8's second mesh"
+               : std::string())));
 }
 
 }  // namespace bccmis::stuff
