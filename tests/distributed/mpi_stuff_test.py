@@ -2,8 +2,9 @@
 """bccmis-mpi stuff against bccmis stuff (spec/distributed.md).
 
   mpi_stuff_test.py gather|gather-every-format MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
-      --gather --no-features's binary .vtu (every format: also ASCII .vtu and .msh) equals
-      bccmis stuff --no-features's byte for byte (D1, D5).
+      --gather --no-features's binary .vtu (every format: also ASCII .vtu and .msh, then one run
+      writing .vtu, .msh, .mesh, .off and .obj at once) equals bccmis stuff --no-features's byte
+      for byte (D1, D5).
   mpi_stuff_test.py whole|whole-check|whole-check-warns MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
       --gather (whole-check: --gather --check) writes bccmis stuff's file byte for byte with
       the features on as there (a triangle-mesh INPUT's by default, D12), and
@@ -91,6 +92,17 @@ def gather(mpirun, bccmis, bccmis_mpi, ranks, args, work, every_format):
         if a != b:
             sys.exit(f"FAIL: {ranks} ranks, {ext} {extra}: the gathered file differs from bccmis stuff's "
                      f"({len(a)} and {len(b)} bytes)")
+    if every_format:  # D1: several outputs at once, the boundary surface (.off, .obj) among them
+        exts = (".vtu", ".msh", ".mesh", ".off", ".obj")
+        outs = lambda stem: [a for e in exts for a in ("-o", os.path.join(work, stem + e))]
+        run([bccmis, "stuff", *args, "--no-features", "--surface-vertices", "all", "-q", *outs("serial_all")])
+        run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, "--no-features", "--surface-vertices", "all", "-q",
+                                  "--gather", *outs("gathered_all")])
+        for e in exts:
+            if open(os.path.join(work, "serial_all" + e), "rb").read() != open(
+                    os.path.join(work, "gathered_all" + e), "rb").read():
+                sys.exit(f"FAIL: {ranks} ranks: --gather with {len(exts)} outputs: its {e} differs from bccmis stuff's")
+        formats += tuple((e, ["(with the others)"]) for e in exts)
     print(f"ok: {ranks} ranks: --gather writes bccmis stuff's bytes ({', '.join(e + ' ' + ' '.join(x) for e, x in formats)})")
 
 

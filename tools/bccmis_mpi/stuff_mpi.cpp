@@ -76,11 +76,18 @@ void check_options(const StuffOptions& o, bool gather) {
                      " run on the mesh gathered on rank 0: add --gather" + (features ? ", or --no-features" : "") +
                      " (spec/distributed.md D12)");
   if (o.outputs.empty() && o.stats) return;  // D11: the statistics alone
+  if (gather && !o.outputs.empty()) {        // D1: the whole mesh on rank 0, as bccmis stuff writes it
+    for (const std::string& path : o.outputs)
+      if (!ends_with(path, ".vtu") && !ends_with(path, ".msh") && !ends_with(path, ".mesh") &&
+          !ends_with(path, ".off") && !ends_with(path, ".obj"))
+        throw InputError("output '" + path + "': --gather writes .vtu, .msh, .mesh, .off or .obj");
+    return;
+  }
   if (o.outputs.size() != 1)
-    throw InputError("give one output: -o FILE.pvtu (a piece per rank), or --gather -o FILE (.vtu, .msh, .mesh)");
+    throw InputError(
+        "give one output: -o FILE.pvtu (a piece per rank), or --gather -o FILE (.vtu, .msh, .mesh, "
+        ".off, .obj; several)");
   const std::string& path = o.outputs[0];
-  if (gather && !ends_with(path, ".vtu") && !ends_with(path, ".msh") && !ends_with(path, ".mesh"))
-    throw InputError("output '" + path + "': --gather writes .vtu, .msh or .mesh");
   if (!gather && !ends_with(path, ".pvtu"))
     throw InputError("output '" + path + "': without --gather the output is a .pvtu (its pieces beside it)");
 }
@@ -203,7 +210,8 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
     stage(comm, [&] {
       check_options(o, gather);
       if (write && !gather) pieces.open(piece_path(out, rank));
-      if (write && rank == 0) index.open(out);
+      if (write && rank == 0)
+        for (const std::string& path : o.outputs) index.open(path);
       shape = load_shape(o);
     });
     if (rank == 0 && !o.stats && !o.quiet) std::cerr << soup_notices(kTool, *shape);  // D1, as bccmis stuff
@@ -238,7 +246,7 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
           index.add(out, [&](std::ostream& s) { io::write_pvtu(s, names); });
         }
       } else if (rank == 0) {
-        add_tetrahedra_output(index, out, run.mesh, run.regions, encoding(o));
+        add_mesh_outputs(index, o, run.mesh, run.regions, run.boundary);
       }
     });
     // (4) the pieces renamed into place on every rank, then the index.
@@ -261,7 +269,8 @@ int run_mpi(const StuffOptions& o, bool gather, MPI_Comm comm) {
                                  std::to_string(std::count_if(run.tetrahedra.begin(), run.tetrahedra.end(),
                                                               [](std::uint64_t n) { return n > 0; })) +
                                  " pieces")
-                << " from " << size << " rank" << (size == 1 ? "" : "s") << " written to " << out << "\n";
+                << " from " << size << " rank" << (size == 1 ? "" : "s") << " written to "
+                << (o.outputs.size() == 1 ? out : std::to_string(o.outputs.size()) + " files") << "\n";
   } catch (const Stop& stop) {
     return stop.code;
   }

@@ -21,7 +21,7 @@ Finished finish_gathered(const stuff::Shape& world, const Replicated& r, d3::Tet
                          const stuff::FeatureSettings& features, bool check, bool statistics, bool hausdorff) {
   const stuff::Shape& shape = *r.shape;  // S24's local coordinates, as the mesh
   Finished f;
-  std::vector<std::array<std::uint32_t, 3>> boundary;
+  std::vector<std::array<std::uint32_t, 3>>& boundary = f.boundary;
   f.regions = io::regions_of(mesh.tets, &boundary);
   // S29-S35: the same call, on the same mesh and boundary, as mesh_shape()'s.
   stuff::Features found;

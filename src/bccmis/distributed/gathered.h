@@ -4,7 +4,9 @@
 // (spec/distributed.md D12, D13).
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,11 +20,12 @@ namespace bccmis::distributed {
 
 /// D13: what finish_gathered found, as mesh_shape() reports it.
 struct Finished {
-  io::Regions regions;                           ///< M23's, for the writers
-  stuff::MeshTopology topology;                  ///< S27, of the boundary after S35's splits
-  std::vector<std::string> warnings;             ///< S26, S27 (mesh_warnings)
-  std::optional<stuff::FeatureReport> features;  ///< S33, with the features on
-  std::optional<stuff::Statistics> statistics;   ///< S13 in world units, when asked
+  io::Regions regions;                                 ///< M23's, for the writers
+  std::vector<std::array<std::uint32_t, 3>> boundary;  ///< S11, outward (after S35's splits): .off, .obj
+  stuff::MeshTopology topology;                        ///< S27, of the boundary after S35's splits
+  std::vector<std::string> warnings;                   ///< S26, S27 (mesh_warnings)
+  std::optional<stuff::FeatureReport> features;        ///< S33, with the features on
+  std::optional<stuff::Statistics> statistics;         ///< S13 in world units, when asked
   /// S6's cut points of the candidate S35.8 kept when it is B or C (made on
   /// rank 0's whole lattice, D16); unset for A (D11's count stands).
   std::optional<std::size_t> cut_points;

@@ -5,6 +5,7 @@
 
 #include <mpi.h>
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -34,15 +35,16 @@ struct RankSettings {
 
 /// One rank's result. On rank 0 only: mesh, regions, report, warned.
 struct RankRun {
-  LeafPiece piece;                        ///< this rank's (world coordinates unless gathered whole)
-  std::vector<std::int64_t> ids;          ///< D7, with pieces or statistics
-  std::vector<std::uint64_t> tetrahedra;  ///< every rank's count
-  d3::TetMeshF mesh;                      ///< with gather: the whole mesh, world coordinates
-  io::Regions regions;                    ///< M23's, of mesh
-  stuff::Meshed report;                   ///< with statistics: D11, D13
-  bool warned = false;                    ///< report.warnings holds S27's comparison (D13)
-  stuff::PhaseSeconds seconds;            ///< D11's input, forest, pieces, statistics (from `start`)
-  stuff::Clock::time_point since;         ///< the end of `statistics`: D11's write phase starts here
+  LeafPiece piece;                                     ///< this rank's (world coordinates unless gathered whole)
+  std::vector<std::int64_t> ids;                       ///< D7, with pieces or statistics
+  std::vector<std::uint64_t> tetrahedra;               ///< every rank's count
+  d3::TetMeshF mesh;                                   ///< with gather: the whole mesh, world coordinates
+  io::Regions regions;                                 ///< M23's, of mesh
+  std::vector<std::array<std::uint32_t, 3>> boundary;  ///< S11's, of mesh (the .off/.obj outputs)
+  stuff::Meshed report;                                ///< with statistics: D11, D13
+  bool warned = false;                                 ///< report.warnings holds S27's comparison (D13)
+  stuff::PhaseSeconds seconds;                         ///< D11's input, forest, pieces, statistics (from `start`)
+  stuff::Clock::time_point since;                      ///< the end of `statistics`: D11's write phase starts here
 };
 
 /// D1-D13 on every rank: the fit (S24, S2), D16's memory estimate, the forest (D10), this rank's
