@@ -1,7 +1,6 @@
 // spec/distributed.md D16 in one process: S25's estimate split over the
 // ranks, tested on its line (a limit equal to a rank's estimate lets the
-// run go on, the next double below refuses it, naming the rank), and on one
-// rank without the gathered mesh S25's own estimate and line.
+// run go on, the next double below refuses it, naming the rank).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -43,39 +42,32 @@ std::string refusal(const Sphere& s, double limit, const RankRole& role) {
 TEST(RankMemory, EachRoleHoldsWhatD16Says) {
   const double E = Sphere().leaves();
   ASSERT_GT(E, 0);
-  EXPECT_EQ(rank_bytes(E, {0, 1, false, false}), 1900 * E);  // S25's
-  EXPECT_EQ(rank_bytes(E, {1, 2, false, false}), 1900 * E / 2);
-  EXPECT_EQ(rank_bytes(E, {1, 2, true, true}), 1900 * E / 2);  // only rank 0 gathers
-  EXPECT_EQ(rank_bytes(E, {0, 2, true, false}), 420 * E / 2 + 3 * 420 * E);
-  EXPECT_EQ(rank_bytes(E, {0, 2, true, true}), 420 * E / 2 + 420 * E + 1900 * E);
-  EXPECT_EQ(rank_bytes(E, {0, 1, true, false}), 1900 * E);  // its stuffing is the larger on one rank
+  EXPECT_EQ(rank_bytes(E, {0, 1, false, false}), 3700 * E);
+  EXPECT_EQ(rank_bytes(E, {1, 2, false, false}), 3700 * E / 2);
+  EXPECT_EQ(rank_bytes(E, {1, 2, true, true}), 3700 * E / 2);  // only rank 0 gathers
+  EXPECT_EQ(rank_bytes(E, {0, 2, true, false}), 3700 * E / 2 + 3 * 420 * E);
+  EXPECT_EQ(rank_bytes(E, {0, 2, true, true}), 3700 * E / 2 + 3 * 420 * E + 1900 * E);
+  EXPECT_EQ(rank_bytes(E, {0, 1, true, false}), 3700 * E + 3 * 420 * E);
 }
 
 //= spec/distributed.md D16 type=test
 TEST(RankMemory, OnTheLineNamingTheRank) {
   const Sphere s;
-  for (const RankRole role : {RankRole{1, 2, false, false}, RankRole{0, 2, true, false}, RankRole{0, 3, true, true}}) {
+  for (const RankRole role : {RankRole{0, 1, false, false}, RankRole{1, 2, false, false}, RankRole{0, 2, true, false},
+                              RankRole{0, 3, true, true}}) {
     const double line = rank_bytes(s.leaves(), role);
     EXPECT_EQ(refusal(s, line, role), "");
     const std::string why = refusal(s, std::nextafter(line, 0.0), role);
+    const std::string ranks = std::to_string(role.ranks) + (role.ranks == 1 ? " rank" : " ranks");
     EXPECT_NE(why.find("GB on rank " + std::to_string(role.rank) +
-                       " by D16's estimate (1900 bytes per estimated leaf over " + std::to_string(role.ranks) +
-                       " ranks"),
+                       " by D16's estimate (3700 bytes per estimated leaf over " + ranks),
               std::string::npos)
         << why;
     EXPECT_NE(why.find("of memory available to a rank; -L "), std::string::npos) << why;
+    if (role.crease_cuts) {
+      EXPECT_NE(why.find("and 1900 for S35.8's candidates"), std::string::npos) << why;
+    }
   }
-}
-
-//= spec/distributed.md D16 type=test
-TEST(RankMemory, OneRankIsS25) {
-  const Sphere s;
-  const double line = 1900 * s.leaves();
-  const RankRole one{0, 1, false, false};
-  EXPECT_EQ(refusal(s, line, one), "");
-  EXPECT_NO_THROW(stuff::refuse_what_will_not_fit(*s.local, s.options, line));
-  EXPECT_NE(refusal(s, std::nextafter(line, 0.0), one), "");
-  EXPECT_THROW(stuff::refuse_what_will_not_fit(*s.local, s.options, std::nextafter(line, 0.0)), stuff::ShapeError);
 }
 
 }  // namespace

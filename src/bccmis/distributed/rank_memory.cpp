@@ -1,21 +1,17 @@
 // spec/distributed.md D16: S25's estimate split over the ranks (rank_memory.h).
 #include "bccmis/distributed/rank_memory.h"
 
-#include <algorithm>
 #include <cmath>
 #include <string>
 
 namespace bccmis::distributed {
 
 double rank_bytes(double leaves, const RankRole& role) {
-  const double P = role.ranks;
-  const double own = stuff::kBytesPerLeaf * leaves / P;
-  if (role.rank != 0 || !role.gathers) return own;
-  const double mesh = stuff::kSecondMeshBytesPerLeaf * leaves;  // one whole mesh's arrays (S25)
-  const double piece = mesh / P;
-  double peak = std::max(own, piece + 3 * mesh);  // D12: the bytes, the pieces decoded, the gathered mesh
-  if (role.crease_cuts) peak = std::max(peak, piece + mesh + stuff::kBytesPerLeaf * leaves);  // A beside B's run
-  return peak;
+  double bytes = kRankBytesPerLeaf * leaves / role.ranks;  // 1. the rank's share
+  if (role.rank != 0) return bytes;
+  if (role.gathers) bytes += 3 * stuff::kSecondMeshBytesPerLeaf * leaves;  // 2. D12: bytes, pieces, whole mesh
+  if (role.crease_cuts) bytes += stuff::kBytesPerLeaf * leaves;            // 3. S35.8's B (or C) on rank 0
+  return bytes;
 }
 
 void refuse_what_will_not_fit_on_rank(const stuff::Shape& shape, const stuff::StuffOptions& options,
@@ -26,12 +22,15 @@ void refuse_what_will_not_fit_on_rank(const stuff::Shape& shape, const stuff::St
   const double leaves = stuff::estimate_memory(shape, options, -1).leaves;
   const double bytes = rank_bytes(leaves, role);
   if (bytes <= available_bytes) return;
-  const std::string per_leaf = std::to_string(static_cast<int>(stuff::kBytesPerLeaf)) + " bytes per estimated leaf";
+  const std::string per_leaf = std::to_string(static_cast<int>(kRankBytesPerLeaf)) + " bytes per estimated leaf";
   const std::string ranks = std::to_string(role.ranks) + " rank" + (role.ranks == 1 ? "" : "s");
   std::string how = per_leaf + " over " + ranks;
   if (role.rank == 0 && role.gathers)
     how += ", and " + std::to_string(static_cast<int>(stuff::kSecondMeshBytesPerLeaf)) +
-           " a leaf for each whole mesh rank 0 holds" + (role.crease_cuts ? " and S35.8's candidates" : "");
+           " a leaf for each of the 3 whole meshes rank 0 holds" +
+           (role.crease_cuts
+                ? ", and " + std::to_string(static_cast<int>(stuff::kBytesPerLeaf)) + " for S35.8's candidates"
+                : "");
   throw stuff::ShapeError(
       stuff::too_much_memory(stuff::fit_lattice(shape.bounds(), options).size.L, leaves, bytes, available_bytes,
                              "on rank " + std::to_string(role.rank) + " by D16's estimate", how, " to a rank"));

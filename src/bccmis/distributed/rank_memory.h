@@ -17,14 +17,20 @@ struct RankRole {
   bool crease_cuts = false;  ///< S35.8's candidates B and C made on rank 0 (D16)
 };
 
+/// D16: the bytes a rank's peak holds per estimated leaf of its share
+/// (E / P), measured on ranks: the sphere at level 5 on 2 ranks peaked at
+/// 3,660 bytes per leaf of its share (rank 0, 355 MB of 97,000), more than
+/// one process's 1,900 (S25): a rank's piece keeps S8's keys, its blocks
+/// their ghosts, and MPI its buffers.
+inline constexpr double kRankBytesPerLeaf = 3700;
+
 /// D16: rank `role.rank`'s peak bytes for a run whose leaves S25 estimates
-/// at `leaves` (E): its share of the stuffing, kBytesPerLeaf E / P (D2:
-/// uniform by count; D10: nothing else grows with the whole lattice); on
-/// rank 0 with the mesh gathered, the largest of that, its piece
-/// (kSecondMeshBytesPerLeaf E / P) beside D12's three copies of the whole
-/// mesh (3 kSecondMeshBytesPerLeaf E), and with --crease-cuts its piece
-/// beside S35.8's serial candidates (A gathered, B stuffed: S25's estimate
-/// with two meshes, (kBytesPerLeaf + kSecondMeshBytesPerLeaf) E).
+/// at `leaves` (E): its share of the stuffing, kRankBytesPerLeaf E / P (D2:
+/// uniform by count; D10: no rank builds the whole lattice); on rank 0 with
+/// the mesh gathered, plus D12's three copies of the whole mesh
+/// (3 kSecondMeshBytesPerLeaf E); with --crease-cuts, plus S35.8's serial
+/// candidate B (or C) beside them (S25's one-process estimate,
+/// kBytesPerLeaf E).
 double rank_bytes(double leaves, const RankRole& role);
 
 /// D16: throws stuff::ShapeError, with S25's message naming the rank, when
