@@ -45,9 +45,9 @@ TEST(RankMemory, EachRoleHoldsWhatD16Says) {
   EXPECT_EQ(rank_bytes(E, {0, 1, false, false}), 3700 * E);
   EXPECT_EQ(rank_bytes(E, {1, 2, false, false}), 3700 * E / 2);
   EXPECT_EQ(rank_bytes(E, {1, 2, true, true}), 3700 * E / 2);  // only rank 0 gathers
-  EXPECT_EQ(rank_bytes(E, {0, 2, true, false}), 3700 * E / 2 + 3 * 420 * E);
-  EXPECT_EQ(rank_bytes(E, {0, 2, true, true}), 3700 * E / 2 + 3 * 420 * E + 1900 * E);
-  EXPECT_EQ(rank_bytes(E, {0, 1, true, false}), 3700 * E + 3 * 420 * E);
+  EXPECT_EQ(rank_bytes(E, {0, 2, true, false}), 3700 * E / 2 + 4 * 420 * E);
+  EXPECT_EQ(rank_bytes(E, {0, 2, true, true}), 3700 * E / 2 + 4 * 420 * E + 1900 * E);
+  EXPECT_EQ(rank_bytes(E, {0, 1, true, false}), 3700 * E + 4 * 420 * E);
 }
 
 //= spec/distributed.md D16 type=test

@@ -9,8 +9,8 @@ namespace bccmis::distributed {
 double rank_bytes(double leaves, const RankRole& role) {
   double bytes = kRankBytesPerLeaf * leaves / role.ranks;  // 1. the rank's share
   if (role.rank != 0) return bytes;
-  if (role.gathers) bytes += 3 * stuff::kSecondMeshBytesPerLeaf * leaves;  // 2. D12: bytes, pieces, whole mesh
-  if (role.crease_cuts) bytes += stuff::kBytesPerLeaf * leaves;            // 3. S35.8's B (or C) on rank 0
+  if (role.gathers) bytes += kGatheredMeshes * stuff::kSecondMeshBytesPerLeaf * leaves;  // 2. D12's copies
+  if (role.crease_cuts) bytes += stuff::kBytesPerLeaf * leaves;  // 3. S35.8's B (or C) on rank 0
   return bytes;
 }
 
@@ -26,8 +26,8 @@ void refuse_what_will_not_fit_on_rank(const stuff::Shape& shape, const stuff::St
   const std::string ranks = std::to_string(role.ranks) + " rank" + (role.ranks == 1 ? "" : "s");
   std::string how = per_leaf + " over " + ranks;
   if (role.rank == 0 && role.gathers)
-    how += ", and " + std::to_string(static_cast<int>(stuff::kSecondMeshBytesPerLeaf)) +
-           " a leaf for each of the 3 whole meshes rank 0 holds" +
+    how += ", and " + std::to_string(static_cast<int>(kGatheredMeshes)) + " x " +
+           std::to_string(static_cast<int>(stuff::kSecondMeshBytesPerLeaf)) + " for the mesh gathered on rank 0" +
            (role.crease_cuts
                 ? ", and " + std::to_string(static_cast<int>(stuff::kBytesPerLeaf)) + " for S35.8's candidates"
                 : "");

@@ -24,11 +24,17 @@ struct RankRole {
 /// their ghosts, and MPI its buffers.
 inline constexpr double kRankBytesPerLeaf = 3700;
 
+/// D16: the whole meshes (kSecondMeshBytesPerLeaf each) rank 0 holds while
+/// gathering: D12's three copies (the bytes, the pieces decoded, the
+/// gathered mesh), the first two carrying S8's key beside each vertex, so
+/// about four meshes' bytes (measured: 1,400-1,680 bytes a leaf).
+inline constexpr double kGatheredMeshes = 4;
+
 /// D16: rank `role.rank`'s peak bytes for a run whose leaves S25 estimates
 /// at `leaves` (E): its share of the stuffing, kRankBytesPerLeaf E / P (D2:
 /// uniform by count; D10: no rank builds the whole lattice); on rank 0 with
-/// the mesh gathered, plus D12's three copies of the whole mesh
-/// (3 kSecondMeshBytesPerLeaf E); with --crease-cuts, plus S35.8's serial
+/// the mesh gathered, plus D12's copies of the whole mesh
+/// (kGatheredMeshes kSecondMeshBytesPerLeaf E); with --crease-cuts, plus S35.8's serial
 /// candidate B (or C) beside them (S25's one-process estimate,
 /// kBytesPerLeaf E).
 double rank_bytes(double leaves, const RankRole& role);
