@@ -109,13 +109,14 @@ RankRun stuff_on_ranks(const stuff::Shape& world, Replicated& lattice, const Ran
     all = {};
     bytes = {};  // the whole mesh alone on rank 0 from here (D12's memory)
     if (!whole) {
-      run.regions = io::regions_of(run.mesh.tets);
+      run.regions = io::regions_of(run.mesh.tets, &run.boundary);
       return;
     }
     // D13: rank 0's statistics of the whole mesh with the features or the distance.
     const bool own = s.statistics && (s.features.on || s.hausdorff);
     Finished f = finish_gathered(world, lattice, run.mesh, s.features, s.check, own, s.hausdorff);
     run.regions = std::move(f.regions);
+    run.boundary = std::move(f.boundary);
     run.report.topology = f.topology;
     run.report.warnings = std::move(f.warnings);
     if (f.statistics) {
