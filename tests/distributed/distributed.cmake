@@ -7,6 +7,9 @@
 # conformity, and the failures.
 bccmis_add_gtest(distributed_tests SOURCES stuff_leaves_test.cpp repartition_test.cpp LIBS bccmis::distributed bccmis::stuff PREFIX distributed. NO_PRETTY_VALUES
                  LABELS unit mpi)
+# D16: S25's memory estimate split over the ranks, on its line.
+bccmis_add_gtest(distributed_rank_memory_tests SOURCES rank_memory_test.cpp LIBS bccmis::distributed bccmis::stuff
+                 PREFIX distributed. NO_PRETTY_VALUES LABELS unit mpi)
 # D10: a rank's lattice from the leaves it knows, against the whole lattice.
 if(TARGET bccmis::stuff_surface)
   bccmis_add_gtest(distributed_local_lattice_tests SOURCES local_lattice_test.cpp
@@ -132,6 +135,18 @@ foreach(ranks 2 3)
                           $<TARGET_FILE:bccmis_distributed_forest_test>
                   ${_bccmis_mpi_props} FAIL_REGULAR_EXPRESSION "FAIL")
 endforeach()
+# D16: --memory-limit per rank on its line, the sphere at level 2 on 2 ranks
+# (4,096 leaves, every cube: 3700 x 4096 / 2 bytes a rank; with --gather
+# rank 0's 4 x 420 x 4096 more), and --crease-cuts with --gather
+# (S35.8 on rank 0: CGAL's P.off at level 2 keeps B with delta 1/4 and C with
+# 1/2, 16 curves of 21 against A's 15, each in a second) as bccmis stuff's bytes and statistics.
+_bccmis_mpi_stuff_test(stuff_memory_limit_sphere_2_ranks memory 2 0.0075776 0.01445888 --shape sphere -L 2)
+if(TARGET bccmis::stuff_surface)
+  foreach(delta 0.25 0.5)
+    _bccmis_mpi_stuff_test(stuff_crease_cuts_${delta}_p_2_ranks stats-features 2
+                           ${bccmis_cgal_data}/data/meshes/P.off -L 2 --crease-cuts ${delta})
+  endforeach()
+endif()
 bccmis_add_test(mpi.stuff_errors_3_ranks COMMAND ${_bccmis_mpi_test} errors ${_bccmis_mpi_tools} 3
                 ${_bccmis_mpi_props})
 # D14: --animate on ranks, each frame (pieces and gathered) against bccmis

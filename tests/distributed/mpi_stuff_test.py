@@ -2,8 +2,9 @@
 """bccmis-mpi stuff against bccmis stuff (spec/distributed.md).
 
   mpi_stuff_test.py gather|gather-every-format MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
-      --gather --no-features's binary .vtu (every format: also ASCII .vtu and .msh) equals
-      bccmis stuff --no-features's byte for byte (D1, D5).
+      --gather --no-features's binary .vtu (every format: also ASCII .vtu and .msh, then one run
+      writing .vtu, .msh, .mesh, .off and .obj at once) equals bccmis stuff --no-features's byte
+      for byte (D1, D5).
   mpi_stuff_test.py whole|whole-check|whole-check-warns MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
       --gather (whole-check: --gather --check) writes bccmis stuff's file byte for byte with
       the features on as there (a triangle-mesh INPUT's by default, D12), and
@@ -43,8 +44,12 @@
       --gather --stats --check -o FILE.vtu against bccmis stuff --stats --check (D11, D12): passing
       (--no-features), the statistics lines in the serial order (D11's rules); --failing (a mesh the
       checker refuses), exit 1 on both, no statistics and no file on either, the same message.
+  mpi_stuff_test.py memory MPIRUN BCCMIS BCCMIS_MPI RANKS -- PER_RANK RANK0 STUFF_ARGS...
+      D16 on its line: --memory-limit PER_RANK (GB, every rank's estimate of a .pvtu run) meshes, one
+      byte less refuses (exit 2), each rank's line naming it, nothing written; with --gather, RANK0 (rank 0's
+      estimate, the whole mesh beside its share) meshes, one byte less refuses rank 0 alone.
   mpi_stuff_test.py errors MPIRUN BCCMIS BCCMIS_MPI RANKS
-      the options D1 refuses (each by name), an unreadable input, an unwritable output directory,
+      the option D1 refuses (by name), --crease-cuts without --gather (D12, D16), an unreadable input, an unwritable output directory,
       and one rank that cannot put its piece in place: exit 2, a message, no .pvtu (D1, D6).
 """
 import collections
@@ -87,6 +92,17 @@ def gather(mpirun, bccmis, bccmis_mpi, ranks, args, work, every_format):
         if a != b:
             sys.exit(f"FAIL: {ranks} ranks, {ext} {extra}: the gathered file differs from bccmis stuff's "
                      f"({len(a)} and {len(b)} bytes)")
+    if every_format:  # D1: several outputs at once, the boundary surface (.off, .obj) among them
+        exts = (".vtu", ".msh", ".mesh", ".off", ".obj")
+        outs = lambda stem: [a for e in exts for a in ("-o", os.path.join(work, stem + e))]
+        run([bccmis, "stuff", *args, "--no-features", "--surface-vertices", "all", "-q", *outs("serial_all")])
+        run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, "--no-features", "--surface-vertices", "all", "-q",
+                                  "--gather", *outs("gathered_all")])
+        for e in exts:
+            if open(os.path.join(work, "serial_all" + e), "rb").read() != open(
+                    os.path.join(work, "gathered_all" + e), "rb").read():
+                sys.exit(f"FAIL: {ranks} ranks: --gather with {len(exts)} outputs: its {e} differs from bccmis stuff's")
+        formats += tuple((e, ["(with the others)"]) for e in exts)
     print(f"ok: {ranks} ranks: --gather writes bccmis stuff's bytes ({', '.join(e + ' ' + ' '.join(x) for e, x in formats)})")
 
 
@@ -301,6 +317,8 @@ def stats_features(mpirun, bccmis, bccmis_mpi, ranks, args, work):
     want = json.loads(said.stdout)
     if "feature_edges" not in want or want["feature_edges"] == 0:
         sys.exit(f"FAIL: bccmis stuff found no features here: {said.stdout}")
+    if "--crease-cuts" in args and not want.get("crease_cuts_kept"):  # D16: rank 0 keeps S35.8's B or C
+        sys.exit(f"FAIL: bccmis stuff kept the mesh without placement here (candidate A): {said.stdout}")
     got = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, *extra, "--gather", "-o", together])
     if open(serial, "rb").read() != open(together, "rb").read():
         sys.exit(f"FAIL: {ranks} ranks: the gathered file differs from bccmis stuff's")
@@ -384,11 +402,12 @@ def errors(mpirun, bccmis, bccmis_mpi, ranks, work):
         if left:
             sys.exit(f"FAIL: {args}: a failed run left {left}")
     index = os.path.join(work, "out.pvtu")
-    # D1: the options not split over ranks, each refused by name before any work.
-    for option in (["--memory-limit", "1"], ["--crease-cuts", "0.25"]):
-        refused(["--shape", "sphere", "-L", "2", *option], index,
-                f"{option[0]} is not supported on several ranks yet (spec/distributed.md D1)",
-                no_features=option[0] != "--crease-cuts")  # which excludes --no-features
+    # D1: the option not split over ranks, refused by name before any work;
+    # D16: --crease-cuts (the features) without --gather, as the features (D12).
+    refused(["--shape", "sphere", "-L", "2", "--impl", "reference"], index,
+            "--impl reference is not supported on several ranks yet (spec/distributed.md D1)")
+    refused(["--shape", "sphere", "-L", "2", "--crease-cuts", "0.25"], index,
+            "run on the mesh gathered on rank 0: add --gather", no_features=False)  # which excludes --no-features
     refused([os.path.join(work, "missing.off"), "-L", "2"], index, "missing.off")
     refused(["--shape", "sphere", "-L", "2"], os.path.join(work, "no_such_dir", "out.pvtu"), "no_such_dir")
     # S21 as bccmis stuff says it: an open flat square (a soup with four
@@ -406,8 +425,45 @@ def errors(mpirun, bccmis, bccmis_mpi, ranks, work):
     last = ranks - 1
     os.mkdir(os.path.join(work, f"out_{last:04d}.vtu"))
     refused(["--shape", "sphere", "-L", "2"], index, f"rank {last}")
-    print(f"ok: {ranks} ranks: D1's refused options, an unreadable input, an unwritable directory, a soup enclosing no volume and one "
+    print(f"ok: {ranks} ranks: D1's refused option, --crease-cuts without --gather, an unreadable input, an unwritable directory, a soup enclosing no volume and one "
           "rank's failed piece exit 2 with no .pvtu")
+
+
+def memory(mpirun, bccmis, bccmis_mpi, ranks, args, work, per_rank, rank0):
+    """D16 on its line: --memory-limit (GB, per rank) equal to a rank's estimate."""
+    def limited(gigabytes, extra, out, expect):
+        r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, *extra, "--memory-limit", gigabytes, "-q", "-o", out],
+                expect=expect)
+        if expect == 0 and not os.path.exists(out):
+            sys.exit(f"FAIL: --memory-limit {gigabytes} {extra}: nothing written")
+        if expect == 2 and (os.path.exists(out) or os.listdir(work)):
+            sys.exit(f"FAIL: --memory-limit {gigabytes} {extra}: a refused run left {os.listdir(work)}")
+        if expect == 0:
+            for f in os.listdir(work):
+                os.remove(os.path.join(work, f))
+        return r.stderr
+    index, gathered = os.path.join(work, "out.pvtu"), os.path.join(work, "out.vtu")
+    # Pieces: every rank's share, 3700 bytes per estimated leaf over the ranks.
+    limited(per_rank, [], index, 0)
+    said = limited(below(per_rank), [], index, 2)
+    # Every rank fails and prints its line; mpirun may drop a line of a rank it
+    # ends first, so at least one, each naming its own rank.
+    named = [r for r in range(ranks) if f"bccmis-mpi stuff: rank {r}: max level" in said]
+    if not named or any(f"GB on rank {r} by D16's estimate" not in said for r in named):
+        sys.exit(f"FAIL: one byte below every rank's estimate: no rank named, or a line naming another:\n{said}")
+    # --gather: rank 0 also holds the whole mesh; the other ranks their share.
+    limited(rank0, ["--gather"], gathered, 0)
+    said = limited(below(rank0), ["--gather"], gathered, 2)
+    named = [r for r in range(ranks) if f"bccmis-mpi stuff: rank {r}: " in said]
+    if named != [0] or "and 4 x 420 for the mesh gathered on rank 0" not in said:
+        sys.exit(f"FAIL: one byte below rank 0's estimate with --gather: ranks {named} refused:\n{said}")
+    print(f"ok: {ranks} ranks: --memory-limit {per_rank} GB meshes, one byte less refuses every rank; with --gather "
+          f"{rank0} GB meshes, one byte less refuses rank 0 alone")
+
+
+def below(gigabytes):
+    """One byte less than `gigabytes` (a decimal number of whole bytes), as a decimal string."""
+    return f"{(round(float(gigabytes) * 1e9) - 1) / 1e9:.10f}"
 
 
 def main():
@@ -426,6 +482,9 @@ def main():
             hausdorff(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
         elif mode == "notices":
             notices(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
+        elif mode == "memory":
+            per_rank, rank0, *rest = args
+            memory(mpirun, bccmis, bccmis_mpi, int(ranks), rest, work, per_rank, rank0)
         elif mode == "stats":
             stats(mpirun, bccmis, bccmis_mpi, int(ranks), args, work)
         elif mode == "pvtu":

@@ -9,6 +9,7 @@ if(TARGET bccmis::stuff_surface)
       "data.tar.gz of libcgal-demo, CGAL's sample meshes")
   set(bccmis_cgal_meshes elephant.off double-torus-example.off icosahedron.off corner_poly.off prim.off 3torus.off
                          fandisk.off anchor.off turbine.off joint.off # sharp features (features_test.cpp, crease_cuts_test.cpp)
+                         P.off # S35.8 keeps B at level 2 (mpi.stuff_crease_cuts_p_2_ranks, spec/distributed.md D16)
                          # flawed files for cli.stuff_wild_files (below)
                          bones.off blob.off mpi.off cube4-shuffled.off colored_tetra.ply)
   set(bccmis_cgal_data ${CMAKE_CURRENT_BINARY_DIR}/cgal_data)

@@ -10,8 +10,6 @@
 #include <optional>
 #include <string>
 
-#include "bccmis/io/obj.h"
-#include "bccmis/io/off.h"
 #include "bccmis/io/pvd.h"
 #include "bccmis/io/vtu.h"
 #include "bccmis/json_writer.h"
@@ -175,14 +173,7 @@ int run(const StuffOptions& o) {
 
   const auto t = stuff::Clock::now();
   const d3::TetMeshF& mesh = m.stuffed.mesh;
-  for (const std::string& path : o.outputs) {
-    const bool all = o.surface_vertices == "all";
-    add_tetrahedra_output(outputs, path, mesh, m.regions, encoding(o));
-    if (ends_with(path, ".off"))
-      outputs.add(path, [&](std::ostream& out) { io::write_off(out, mesh, m.boundary, all); });
-    if (ends_with(path, ".obj"))
-      outputs.add(path, [&](std::ostream& out) { io::write_obj(out, mesh, m.boundary, all); });
-  }
+  add_mesh_outputs(outputs, o, mesh, m.regions, m.boundary);
   seconds.emplace_back("write", stuff::seconds_since(t));
   if (o.stats) outputs.add("-", stats_text(shape->describe(), m, seconds, o.json));
   outputs.commit();

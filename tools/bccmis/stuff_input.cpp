@@ -8,6 +8,8 @@
 
 #include "bccmis/io/medit.h"
 #include "bccmis/io/msh.h"
+#include "bccmis/io/obj.h"
+#include "bccmis/io/off.h"
 #include "bccmis/io/surface_format.h"
 #include "bccmis/io/vtu.h"
 #include "bccmis/stuff/animate_shape.h"
@@ -29,6 +31,18 @@ void add_tetrahedra_output(OutputSet& outputs, const std::string& path, const d3
   if (ends_with(path, ".msh"))
     outputs.add(path, [&](std::ostream& out) { io::write_msh(out, mesh, regions, encoding); });
   if (ends_with(path, ".mesh")) outputs.add(path, [&](std::ostream& out) { io::write_medit(out, mesh, regions); });
+}
+
+void add_mesh_outputs(OutputSet& outputs, const StuffOptions& o, const d3::TetMeshF& mesh, const io::Regions& regions,
+                      const std::vector<std::array<std::uint32_t, 3>>& boundary) {
+  const bool all = o.surface_vertices == "all";
+  for (const std::string& path : o.outputs) {
+    add_tetrahedra_output(outputs, path, mesh, regions, encoding(o));
+    if (ends_with(path, ".off"))
+      outputs.add(path, [&, all](std::ostream& out) { io::write_off(out, mesh, boundary, all); });
+    if (ends_with(path, ".obj"))
+      outputs.add(path, [&, all](std::ostream& out) { io::write_obj(out, mesh, boundary, all); });
+  }
 }
 
 std::shared_ptr<const stuff::Shape> load_shape(const StuffOptions& o) {

@@ -3,9 +3,12 @@
 // writers of the tetrahedra.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "bccmis/d3/tet_mesh.h"
 #include "bccmis/io/encoding.h"
@@ -28,6 +31,12 @@ io::Encoding encoding(const StuffOptions& o);
 /// last two); any other extension stages nothing.
 void add_tetrahedra_output(OutputSet& outputs, const std::string& path, const d3::TetMeshF& mesh,
                            const io::Regions& regions, io::Encoding encoding);
+
+/// Stages every `-o` of `o` for the whole mesh: add_tetrahedra_output, and
+/// .off/.obj the boundary `boundary` (S11; --surface-vertices). One rule for
+/// bccmis stuff and bccmis-mpi stuff --gather (spec/distributed.md D1).
+void add_mesh_outputs(OutputSet& outputs, const StuffOptions& o, const d3::TetMeshF& mesh, const io::Regions& regions,
+                      const std::vector<std::array<std::uint32_t, 3>>& boundary);
 
 /// The shape to mesh: --shape NAME or the input mesh (--format, --strict).
 /// Throws InputError when both or neither are given, stuff::ShapeError when

@@ -61,7 +61,7 @@ void stage(MPI_Comm comm, Body&& body) {
   if (!a.ok()) throw Stop{a.code};
 }
 
-/// D1: the options this slice does not split yet, the ones that need the
+/// D1: the option this slice does not split yet, the ones that need the
 /// gathered mesh (D12: the features, --check, --hausdorff), and the one output (or none, with --stats).
 void check_options(const StuffOptions& o, bool gather, bool threshold) {
   const auto refuse = [](const std::string& what) {
@@ -70,8 +70,6 @@ void check_options(const StuffOptions& o, bool gather, bool threshold) {
   if (!o.path.empty() || o.compare) throw InputError("--path and --compare apply with --animate");
   if (threshold) throw InputError("--repartition-threshold applies with --animate (spec/distributed.md D15)");
   if (o.impl != "fast") refuse("--impl " + o.impl);
-  if (o.memory_limit_gb > 0) refuse("--memory-limit");
-  if (o.crease_cuts > 0) refuse("--crease-cuts");  // S35.7 places cut points inside each piece's stuffing
   const bool features = o.features_on();
   if ((features || o.check || o.hausdorff) && !gather)
     throw InputError(std::string(features  ? "the features of a triangle-mesh INPUT (on by default, S29-S35)"
@@ -80,11 +78,18 @@ void check_options(const StuffOptions& o, bool gather, bool threshold) {
                      " run on the mesh gathered on rank 0: add --gather" + (features ? ", or --no-features" : "") +
                      " (spec/distributed.md D12)");
   if (o.outputs.empty() && o.stats) return;  // D11: the statistics alone
+  if (gather && !o.outputs.empty()) {        // D1: the whole mesh on rank 0, as bccmis stuff writes it
+    for (const std::string& path : o.outputs)
+      if (!ends_with(path, ".vtu") && !ends_with(path, ".msh") && !ends_with(path, ".mesh") &&
+          !ends_with(path, ".off") && !ends_with(path, ".obj"))
+        throw InputError("output '" + path + "': --gather writes .vtu, .msh, .mesh, .off or .obj");
+    return;
+  }
   if (o.outputs.size() != 1)
-    throw InputError("give one output: -o FILE.pvtu (a piece per rank), or --gather -o FILE (.vtu, .msh, .mesh)");
+    throw InputError(
+        "give one output: -o FILE.pvtu (a piece per rank), or --gather -o FILE (.vtu, .msh, .mesh, "
+        ".off, .obj; several)");
   const std::string& path = o.outputs[0];
-  if (gather && !ends_with(path, ".vtu") && !ends_with(path, ".msh") && !ends_with(path, ".mesh"))
-    throw InputError("output '" + path + "': --gather writes .vtu, .msh or .mesh");
   if (!gather && !ends_with(path, ".pvtu"))
     throw InputError("output '" + path + "': without --gather the output is a .pvtu (its pieces beside it)");
 }
@@ -106,7 +111,7 @@ void check_animate_options(const StuffOptions& o, bool gather) {
   if (o.check) refuse("--check");
   if (o.features || o.feature_angle >= 0 || o.crease_cuts > 0) refuse("the features");
   if (o.impl != "fast") refuse("--impl " + o.impl);
-  if (o.memory_limit_gb > 0) refuse("--memory-limit");
+  if (o.memory_limit_gb > 0) refuse("--memory-limit");  // the serial animation does not estimate (S25) either
   const std::string extension = gather ? ".vtu" : ".pvtu";
   if (o.outputs.size() != 1 || !ends_with(o.outputs[0], extension))
     throw InputError(std::string("--animate writes a frame a file and their .pvd beside them: give ") +
@@ -214,7 +219,8 @@ int run_mpi(const StuffOptions& o, bool gather, std::optional<double> threshold,
     stage(comm, [&] {
       check_options(o, gather, threshold.has_value());
       if (write && !gather) pieces.open(piece_path(out, rank));
-      if (write && rank == 0) index.open(out);
+      if (write && rank == 0)
+        for (const std::string& path : o.outputs) index.open(path);
       shape = load_shape(o);
     });
     if (rank == 0 && !o.stats && !o.quiet) std::cerr << soup_notices(kTool, *shape);  // D1, as bccmis stuff
@@ -223,9 +229,11 @@ int run_mpi(const StuffOptions& o, bool gather, std::optional<double> threshold,
     settings.lattice = lattice_options(o);
     settings.features.on = o.features_on();
     if (o.feature_angle >= 0) settings.features.angle = o.feature_angle;
+    settings.features.crease_cuts = o.crease_cuts;  // D16: S35.8 on rank 0 (features need --gather, D12)
     settings.check = o.check;
     settings.hausdorff = o.hausdorff;
     settings.statistics = o.stats;
+    if (o.memory_limit_gb > 0) settings.memory_limit = o.memory_limit_gb * 1e9;  // D16: per rank
     settings.pieces = write && !gather;
     settings.gather = write && gather;
     distributed::RankRun run;
@@ -247,7 +255,7 @@ int run_mpi(const StuffOptions& o, bool gather, std::optional<double> threshold,
           index.add(out, [&](std::ostream& s) { io::write_pvtu(s, names); });
         }
       } else if (rank == 0) {
-        add_tetrahedra_output(index, out, run.mesh, run.regions, encoding(o));
+        add_mesh_outputs(index, o, run.mesh, run.regions, run.boundary);
       }
     });
     // (4) the pieces renamed into place on every rank, then the index.
@@ -263,13 +271,15 @@ int run_mpi(const StuffOptions& o, bool gather, std::optional<double> threshold,
       for (const std::string& warning : run.report.warnings) std::cerr << kTool << ": warning: " << warning << "\n";
     if (rank == 0 && o.stats) std::cout << stats_text(shape->describe(), run.report, seconds, o.json) << std::flush;
     if (rank == 0 && !o.quiet && write)
-      std::cerr << kTool << ": " << tetrahedra << " tetrahedra"
+      std::cerr << kTool << ": " << (gather ? run.mesh.tets.size() : tetrahedra)
+                << " tetrahedra"  // gathered: after S35's splits and S35.8's choice
                 << (gather ? ", " + std::to_string(run.mesh.vertices.size()) + " vertices,"
                            : " in " +
                                  std::to_string(std::count_if(run.tetrahedra.begin(), run.tetrahedra.end(),
                                                               [](std::uint64_t n) { return n > 0; })) +
                                  " pieces")
-                << " from " << size << " rank" << (size == 1 ? "" : "s") << " written to " << out << "\n";
+                << " from " << size << " rank" << (size == 1 ? "" : "s") << " written to "
+                << (o.outputs.size() == 1 ? out : std::to_string(o.outputs.size()) + " files") << "\n";
   } catch (const Stop& stop) {
     return stop.code;
   }

@@ -14,16 +14,35 @@
 #include <vector>
 
 #include "bccmis/distributed/gathered.h"
+#include "bccmis/distributed/rank_memory.h"
 #include "bccmis/distributed/ranks.h"
 #include "bccmis/distributed/replicated.h"
+#include "bccmis/stuff/memory_estimate.h"
 
 namespace bccmis::distributed {
 
 RankRun stuff_on_ranks(const stuff::Shape& world, const RankSettings& s, MPI_Comm comm,
                        stuff::Clock::time_point start) {
-  // S24, S2: the fit every rank makes alike.
+  int rank = 0, size = 0;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  // D16: without a limit, a rank may take its node's memory available over the ranks sharing the node.
+  MPI_Comm node;
+  MPI_Comm_split_type(comm, MPI_COMM_TYPE_SHARED, rank, MPI_INFO_NULL, &node);
+  int on_node = 1;
+  MPI_Comm_size(node, &on_node);
+  MPI_Comm_free(&node);
+  // S24, S2: the fit every rank makes alike; D16: each rank's estimate against its limit.
   std::optional<Replicated> lattice;
-  on_every_rank(comm, "fitting the lattice", [&] { lattice.emplace(fitted(world, s.lattice, P8EST_QMAXLEVEL)); });
+  on_every_rank(comm, "fitting the lattice", [&] {
+    lattice.emplace(fitted(world, s.lattice, P8EST_QMAXLEVEL));
+    std::optional<double> limit = s.memory_limit;
+    if (!limit)
+      if (const auto available = stuff::available_memory()) limit = *available / on_node;
+    const RankRole role{rank, size, s.gather || s.features.on || s.check || s.hausdorff,
+                        s.features.on && s.features.crease_cuts > 0};
+    if (limit) refuse_what_will_not_fit_on_rank(*lattice->shape, lattice->options, *limit, role);
+  });
   const double input = stuff::seconds_since(start);
   const auto t = stuff::Clock::now();
   // D10: the partitioned forest.
@@ -93,18 +112,20 @@ RankRun stuff_on_ranks(const stuff::Shape& world, Replicated& lattice, Forest& f
     all = {};
     bytes = {};  // the whole mesh alone on rank 0 from here (D12's memory)
     if (!whole) {
-      run.regions = io::regions_of(run.mesh.tets);
+      run.regions = io::regions_of(run.mesh.tets, &run.boundary);
       return;
     }
     // D13: rank 0's statistics of the whole mesh with the features or the distance.
     const bool own = s.statistics && (s.features.on || s.hausdorff);
     Finished f = finish_gathered(world, lattice, run.mesh, s.features, s.check, own, s.hausdorff);
     run.regions = std::move(f.regions);
+    run.boundary = std::move(f.boundary);
     run.report.topology = f.topology;
     run.report.warnings = std::move(f.warnings);
     if (f.statistics) {
       run.report.statistics = f.statistics;
       run.report.features = f.features;
+      if (f.cut_points) run.report.stuffed.cut_points = *f.cut_points;  // D16: B's or C's, as the serial run counts
     }
     run.warned = true;
   });

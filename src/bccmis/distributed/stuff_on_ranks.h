@@ -1,11 +1,13 @@
 // bccmis::distributed::stuff_on_ranks: the whole run of `bccmis-mpi stuff`
 // on every rank as one library call (spec/distributed.md D1-D13), as
-// mesh_shape() is for `bccmis stuff`: the tool parses, writes and prints.
+// mesh_shape() is for `bccmis stuff`, D16's memory estimate included: the tool parses, writes and prints.
 #pragma once
 
 #include <mpi.h>
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "bccmis/d3/tet_mesh.h"
@@ -28,22 +30,26 @@ struct RankSettings {
   bool statistics = false;          ///< D11, D13
   bool pieces = false;              ///< a .vtu piece per rank: D7's global ids
   bool gather = false;              ///< the whole mesh on rank 0 (D5)
+  /// D16: the memory one rank may take (--memory-limit); unset: MemAvailable
+  /// of its node's /proc/meminfo over the ranks sharing that node.
+  std::optional<double> memory_limit;
 };
 
 /// One rank's result. On rank 0 only: mesh, regions, report, warned.
 struct RankRun {
-  LeafPiece piece;                        ///< this rank's (world coordinates unless gathered whole)
-  std::vector<std::int64_t> ids;          ///< D7, with pieces or statistics
-  std::vector<std::uint64_t> tetrahedra;  ///< every rank's count
-  d3::TetMeshF mesh;                      ///< with gather: the whole mesh, world coordinates
-  io::Regions regions;                    ///< M23's, of mesh
-  stuff::Meshed report;                   ///< with statistics: D11, D13
-  bool warned = false;                    ///< report.warnings holds S27's comparison (D13)
-  stuff::PhaseSeconds seconds;            ///< D11's input, forest, pieces, statistics (from `start`)
-  stuff::Clock::time_point since;         ///< the end of `statistics`: D11's write phase starts here
+  LeafPiece piece;                                     ///< this rank's (world coordinates unless gathered whole)
+  std::vector<std::int64_t> ids;                       ///< D7, with pieces or statistics
+  std::vector<std::uint64_t> tetrahedra;               ///< every rank's count
+  d3::TetMeshF mesh;                                   ///< with gather: the whole mesh, world coordinates
+  io::Regions regions;                                 ///< M23's, of mesh
+  std::vector<std::array<std::uint32_t, 3>> boundary;  ///< S11's, of mesh (the .off/.obj outputs)
+  stuff::Meshed report;                                ///< with statistics: D11, D13
+  bool warned = false;                                 ///< report.warnings holds S27's comparison (D13)
+  stuff::PhaseSeconds seconds;                         ///< D11's input, forest, pieces, statistics (from `start`)
+  stuff::Clock::time_point since;                      ///< the end of `statistics`: D11's write phase starts here
 };
 
-/// D1-D13 on every rank: the fit (S24, S2), the forest (D10), this rank's
+/// D1-D13 on every rank: the fit (S24, S2), D16's memory estimate, the forest (D10), this rank's
 /// piece (D3, D4, D6), D7's numbers, the refusal of an empty mesh (S21,
 /// S26: ShapeError with empty_mesh_message), D11's statistics, and with
 /// `gather` the pieces gathered on rank 0, the feature step, --check and

@@ -69,4 +69,14 @@ CreaseConformed stuff_and_conform_on_creases(const Shape& shape, const Fit& fit,
                                              PhaseTimes* times = nullptr, double* feature_seconds = nullptr,
                                              const std::function<void(std::size_t, double)>& on_lattice = {});
 
+/// S35.8 from candidate A's stuffing on: `without` is S5-S9's mesh on `fit`
+/// (stuff_fitted's, or the same mesh gathered from the pieces of several
+/// ranks, spec/distributed.md D12), conformed as A; B and C are made here
+/// and the one kept as stuff_and_conform_on_creases says (which is
+/// stuff_fitted, then this). `times` and `feature_seconds` are added to,
+/// not reset.
+CreaseConformed conform_on_creases(Stuffed without, const Shape& shape, const Fit& fit, const StuffOptions& options,
+                                   const Features& features, double delta, double h, bool split_edges,
+                                   PhaseTimes* times = nullptr, double* feature_seconds = nullptr);
+
 }  // namespace bccmis::stuff

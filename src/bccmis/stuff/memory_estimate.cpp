@@ -58,23 +58,28 @@ std::optional<double> available_memory() {
   return std::nullopt;
 }
 
+std::string too_much_memory(int level, double leaves, double bytes, double available_bytes, const std::string& whose,
+                            const std::string& how, const std::string& for_whom) {
+  // The finest level that fits: the estimate falls by 4 (at least) a level.
+  int fits = level;
+  for (double b = bytes; fits > 0 && b > available_bytes; b /= 4) --fits;
+  char count[32];
+  std::snprintf(count, sizeof count, "%.3g", leaves);
+  return "max level " + std::to_string(level) + " needs about " + count + " leaves, " + gigabytes(bytes) + " " + whose +
+         " (" + how + "), more than the " + gigabytes(available_bytes) + " of memory available" + for_whom + "; -L " +
+         std::to_string(fits) + " would fit";
+}
+
 void refuse_what_will_not_fit(const Shape& shape, const StuffOptions& options, double available_bytes, int meshes) {
   const Fit fit = fit_lattice(shape.bounds(), options);
   const MemoryEstimate e = estimate_memory(shape, options, available_bytes, meshes);
   if (e.bytes() <= available_bytes) return;
-  // The finest level that fits: the estimate falls by 4 (at least) a level.
-  int fits = fit.size.L;
-  double bytes = e.bytes();
-  while (fits > 0 && bytes > available_bytes) --fits, bytes /= 4;
-  char leaves[32];
-  std::snprintf(leaves, sizeof leaves, "%.3g", e.leaves);
-  throw ShapeError(
-      "max level " + std::to_string(fit.size.L) + " needs about " + leaves + " leaves, " + gigabytes(e.bytes()) +
-      " by S25's estimate (" + std::to_string(static_cast<int>(kBytesPerLeaf)) + " bytes per estimated leaf" +
-      (meshes > 1 ? ", and " + std::to_string(static_cast<int>(kSecondMeshBytesPerLeaf)) + " for S35.8's second mesh"
-                  : std::string()) +
-      "), more than the " + gigabytes(available_bytes) + " of memory available; -L " + std::to_string(fits) +
-      " would fit");
+  throw ShapeError(too_much_memory(
+      fit.size.L, e.leaves, e.bytes(), available_bytes, "by S25's estimate",
+      std::to_string(static_cast<int>(kBytesPerLeaf)) + " bytes per estimated leaf" +
+          (meshes > 1
+               ? ", and " + std::to_string(static_cast<int>(kSecondMeshBytesPerLeaf)) + " for S35.8's second mesh"
+               : std::string())));
 }
 
 }  // namespace bccmis::stuff

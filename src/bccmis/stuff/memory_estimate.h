@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 
 #include "bccmis/stuff/shape.h"
 #include "bccmis/stuff/stuff.h"
@@ -33,6 +34,14 @@ struct MemoryEstimate {
   double bytes() const { return leaves * bytes_per_leaf(); }
 };
 MemoryEstimate estimate_memory(const Shape& shape, const StuffOptions& options, double available_bytes, int meshes = 1);
+
+/// S25's refusal: "max level L needs about LEAVES leaves, BYTES GB WHOSE
+/// (HOW), more than the AVAILABLE GB of memory available[ FOR]; -L N would
+/// fit", N the finest level whose estimate (falling by 4 a level) fits.
+/// `whose` is "by S25's estimate" for one process; bccmis-mpi stuff names
+/// the rank (spec/distributed.md D16).
+std::string too_much_memory(int level, double leaves, double bytes, double available_bytes, const std::string& whose,
+                            const std::string& how, const std::string& for_whom = "");
 
 /// MemAvailable of /proc/meminfo in bytes, or nothing when it cannot be read.
 std::optional<double> available_memory();
