@@ -295,6 +295,24 @@ TEST(SoupWindingNumber, SideIsRightWhereTheFarFieldIsWrong) {
   EXPECT_LT(w.full_sums() - before, static_cast<std::uint64_t>(undecided_first));  // ... and mostly sufficed
 }
 
+// spec/stuffing.md S18, S20a: an estimate certifies w >= threshold when
+// value - threshold >= error (1 + 4u), w < threshold when value - threshold
+// < -error (1 + 4u); on the first line it decides, one step (a difference
+// 2^-52 smaller in magnitude) inside either line it does not, one step
+// beyond the second it does. With error 1 and threshold 1/2 every value
+// and difference below is exact: the lines are 1/2 +- (1 + 2^-51).
+TEST(SoupWindingNumber, CertifiedSignStandsOnItsLine) {
+  const double margin = 1 + 0x1p-51;  // 1 (1 + 4u)
+  const double step = 0x1p-52;
+  auto sign = [](double value) { return WindingNumber::certified_sign({value, 1}, 0.5); };
+  EXPECT_EQ(sign(0.5 + margin), 1);
+  EXPECT_EQ(sign(0.5 + (margin - step)), 0);
+  EXPECT_EQ(sign(0.5 - margin), 0);  // not below the line: undecided
+  EXPECT_EQ(sign(0.5 - (margin + step)), -1);
+  EXPECT_EQ(sign(0.5), 0);
+  EXPECT_EQ(WindingNumber::certified_sign({0.5, 0}, 0.5), 1);  // no error: w >= 1/2 exactly (the tie rule)
+}
+
 // spec/stuffing.md S19: points exactly on a clean closed cube are on the
 // surface (0): a face, a face's diagonal, an edge, a corner.
 TEST(SoupWindingNumber, SideOnACubeIsZero) {

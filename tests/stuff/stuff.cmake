@@ -53,7 +53,7 @@ if(TARGET bccmis::stuff_surface)
   # Triangle soups (spec/stuffing.md S20-S23): the inspection, flawed cubes
   # meshed, the soup's shape against the clean shape on CGAL's meshes.
   bccmis_add_gtest(stuff_soup_tests SOURCES soup_test.cpp
-                   LIBS bccmis::stuffing bccmis::stuff_surface bccmis::io
+                   LIBS bccmis::stuffing bccmis::stuff_surface bccmis::io bccmis::soup
                    DEFINITIONS BCCMIS_STUFF_TEST_DIR="${CMAKE_CURRENT_LIST_DIR}"
                                BCCMIS_CGAL_MESHES_DIR="${bccmis_cgal_data}/data/meshes"
                    LABELS unit)

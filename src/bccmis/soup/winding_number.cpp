@@ -441,6 +441,16 @@ WindingNumber::Estimate WindingNumber::estimate(const Vec3& q) const { return es
 
 WindingNumber::Estimate WindingNumber::estimate(const Vec3& q, double beta) const { return impl_->run(q, beta, {}); }
 
+// spec/stuffing.md S18: |w - value| <= error; the difference's rounding:
+// compare with error (1 + 4u).
+int WindingNumber::certified_sign(const Estimate& e, double threshold) {
+  const double margin = e.error * (1 + 4 * kU);
+  const double diff = e.value - threshold;
+  if (diff >= margin) return 1;
+  if (diff < -margin) return -1;
+  return 0;
+}
+
 WindingNumber::Estimate WindingNumber::direct_bounded(const Vec3& q) const { return impl_->exact(q, {}); }
 
 double WindingNumber::direct(const Vec3& q) const { return impl_->exact(q, {}).value; }
@@ -486,11 +496,7 @@ bool WindingNumber::Impl::at_least(const Vec3& q, std::span<const std::uint32_t>
   for (;;) {
     const double g = gamma_of(terms), ge = gamma_of(exact_terms);
     const double bound = (exact_error * (1 + ge) + far_error + g * sum_abs * (1 + 2 * g)) * (1 + 4 * kU);
-    // |w - sum| <= bound; the difference's rounding: compare with bound (1 + 4u).
-    const double margin = bound * (1 + 4 * kU);
-    const double diff = sum - threshold;
-    if (diff >= margin) return true;
-    if (diff < -margin) return false;
+    if (const int sign = certified_sign({sum, bound}, threshold); sign != 0) return sign > 0;
     if (far.empty()) {
       full_sums.fetch_add(1, std::memory_order_relaxed);
       return true;

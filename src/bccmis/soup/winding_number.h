@@ -46,6 +46,11 @@ class WindingNumber {
   /// that are on the wrong side of 1/2.
   Estimate estimate(const Vec3& q, double beta) const;
 
+  /// The sign of w(q) - threshold that an estimate certifies (S18): 1 when
+  /// value - threshold >= error (1 + 4u) (the difference's rounding), -1 when
+  /// value - threshold < -error (1 + 4u), else 0 (the bound does not decide).
+  static int certified_sign(const Estimate& e, double threshold);
+
   /// direct(q) with a bound on its rounding error (S18).
   Estimate direct_bounded(const Vec3& q) const;
 

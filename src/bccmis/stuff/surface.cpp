@@ -864,39 +864,48 @@ class SoupShape final : public Shape {
   using EdgeTree = CGAL::AABB_tree<CGAL::AABB_traits<K, EdgePrimitive>>;
 
   static std::vector<soup::Vec3> to_soup(const std::vector<Vec3>& v) { return {v.begin(), v.end()}; }
-  /// S20: w(p) - 1/2 with a bound on its error: the estimate with beta 4,
-  /// or with beta 16 where the first bound does not decide the sign.
-  soup::WindingNumber::Estimate excess(const Vec3& p) const {
-    soup::WindingNumber::Estimate e = wn_.estimate(p);
-    if (std::abs(e.value - 0.5) <= e.error) e = wn_.estimate(p, 4 * soup::WindingNumber::kBeta);
-    e.value -= 0.5;
-    return e;
+  /// S20a: the sign of w(p) - 1/2 certified by the first of the estimates
+  /// with beta 4, 8 and 16 (from the rung `first` on) whose bound decides
+  /// it, with that estimate and its rung; sign 0 (and the beta-16
+  /// estimate) when none decides.
+  struct LevelSide {
+    int sign = 0;
+    double value = 0;
+    int rung = 0;
+  };
+  LevelSide level_side(const Vec3& p, int first) const {
+    soup::WindingNumber::Estimate e;
+    for (int rung = first; rung < 3; ++rung) {
+      e = wn_.estimate(p, soup::WindingNumber::kBeta * (1 << rung));
+      if (const int sign = soup::WindingNumber::certified_sign(e, 0.5); sign != 0) return {sign, e.value, rung};
+    }
+    return {0, e.value, 2};
   }
 
-  /// S20: where w passes 1/2 on [a, b] away from the triangles: regula falsi
+  /// S20a: where w passes 1/2 on [a, b] away from the triangles: regula falsi
   /// (Illinois) on g(t) = s (w - 1/2), s = 1 when a (side sa) is inside,
-  /// with a halving every fourth step, down to 2^-30 of the segment.
+  /// with a halving every fourth step, on certified signs only: the first
+  /// point (the ends included) whose sign no estimate decides is the cut
+  /// point; else the bracket is narrowed down to 2^-30 of the segment. Each
+  /// step starts at the rung that decided the step before it (the first
+  /// step at the higher of the ends').
   double level_crossing(const Vec3& a, const Vec3& b, int sa) const {
     const double s = sa < 0 ? 1 : -1;
-    // The ends' sides are certified; an end whose bound does not decide
-    // the sign of g counts as just on its side.
-    auto end_value = [&](const Vec3& p, double sign) {
-      const auto e = excess(p);
-      const double g = s * e.value;
-      return sign * g > e.error ? g : sign * e.error;
-    };
-    double lo = 0, hi = 1;
-    double glo = end_value(a, 1), ghi = end_value(b, -1);
+    const LevelSide at_a = level_side(a, 0);
+    if (at_a.sign == 0) return 0;
+    const LevelSide at_b = level_side(b, 0);
+    if (at_b.sign == 0) return 1;
+    double lo = 0, hi = 1, glo = s * (at_a.value - 0.5), ghi = s * (at_b.value - 0.5);
+    int rung = std::max(at_a.rung, at_b.rung);
     int kept = 0;  // 1: lo kept last step, -1: hi kept last step
     for (int step = 0; hi - lo > 0x1p-30; ++step) {
       double t = (lo * ghi - hi * glo) / (ghi - glo);
       if (step % 4 == 3 || !(t > lo && t < hi)) t = (lo + hi) / 2;
-      const auto e = excess(at(a, b, t));
-      // Where no bound decides (|w - 1/2| <= the bound), the estimate's own
-      // sign steers: the bracket stays in that zone around {w = 1/2}.
-      const double g = s * e.value;
-      if (g == 0) return t;
-      if (g > 0) {
+      const LevelSide here = level_side(at(a, b, t), rung);
+      if (here.sign == 0) return t;
+      rung = here.rung;
+      const double g = s * (here.value - 0.5);
+      if (s * here.sign > 0) {
         lo = t, glo = g;
         if (kept == -1) ghi /= 2;
         kept = -1;
