@@ -1,5 +1,6 @@
-// spec/distributed.md D14, D15: the frames of a moving shape in the
-// lattice of S14, the forest built once and moved by a step a frame.
+// spec/distributed.md D14, D15, D17: the frames of a moving shape in the
+// lattice of S14, the forest built once and moved by a step a frame, each
+// frame reported and, with check, its forest checked.
 #include "bccmis/distributed/animate_on_ranks.h"
 
 #include <p8est.h>
@@ -16,7 +17,7 @@
 namespace bccmis::distributed {
 
 void animate_on_ranks(const std::shared_ptr<const stuff::Shape>& world, const RankAnimation& s, MPI_Comm comm,
-                      const std::function<void(int, RankRun&, const ForestStep&)>& on_frame) {
+                      const std::function<void(const RankFrame&)>& on_frame) {
   // S14: the serial animation's lattice, fitted once by every rank alike.
   std::optional<stuff::Fit> fit;
   on_every_rank(comm, "fitting the lattice", [&] { fit = stuff::fit_moving(*world, s.path, s.lattice); });
@@ -24,6 +25,7 @@ void animate_on_ranks(const std::shared_ptr<const stuff::Shape>& world, const Ra
   settings.lattice = s.lattice;
   settings.pieces = s.pieces;
   settings.gather = s.gather;
+  settings.check = s.check && s.gather;  // D12's check needs the gathered mesh (D17)
   std::unique_ptr<Forest> forest;
   for (int k = 0; k <= s.frames; ++k) {
     const auto start = stuff::Clock::now();
@@ -41,13 +43,33 @@ void animate_on_ranks(const std::shared_ptr<const stuff::Shape>& world, const Ra
       else
         step = forest->move_to(*frame->shape, frame->fit, frame->options, s.threshold);
     });
+    const std::string name = "frame " + std::to_string(k) + ": ";
+    // D17 step 1: the moved forest against the one built from the brick.
+    if (s.check && k > 0)
+      on_every_rank(comm, "checking the forest", [&] {
+        const ForestDigest moved = forest_digest(*forest, comm);
+        const ForestDigest built = forest_digest(Forest(*frame->shape, frame->fit, frame->options, comm), comm);
+        if (moved != built)
+          throw stuff::CheckError(name + "the moved forest differs from the forest built for the frame (" +
+                                  std::to_string(moved.leaves) + " leaves against " + std::to_string(built.leaves) +
+                                  (moved.leaves == built.leaves ? ", other leaves or order" : "") +
+                                  "; spec/distributed.md D15, D17)");
+      });
+    RankFrame f;
+    f.index = k;
+    f.step = step;
+    f.leaves = forest->global_leaves();
     RankRun run;
     try {
       run = stuff_on_ranks(*frame->shape, *frame, *forest, settings, comm, start);
     } catch (const stuff::ShapeError& e) {  // S26's empty frame, named as the serial animation names it
-      throw stuff::ShapeError("frame " + std::to_string(k) + ": " + e.what());
+      throw stuff::ShapeError(name + e.what());
+    } catch (const stuff::CheckError& e) {  // D17 step 2, D12's check of the gathered frame
+      throw stuff::CheckError(name + e.what());
     }
-    on_frame(k, run, step);
+    f.seconds = stuff::seconds_since(start);
+    f.run = &run;
+    on_frame(f);
   }
 }
 
