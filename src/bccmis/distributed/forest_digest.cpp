@@ -4,6 +4,7 @@
 #include <mpi.h>
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "bccmis/distributed/ranks.h"
@@ -28,15 +29,20 @@ std::uint64_t leaf_hash(const d3::Point& c) {
 
 }  // namespace
 
+std::uint64_t leaves_digest(std::uint64_t first, std::span<const d3::Point> leaves) {
+  std::uint64_t sum = 0;  // unsigned: the sum and products are mod 2^64
+  std::uint64_t i = first;
+  for (const d3::Point& c : leaves) sum += (2 * i++ + 1) * leaf_hash(c);
+  return sum;
+}
+
 ForestDigest forest_digest(const Forest& forest, MPI_Comm comm) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   const std::vector<std::int64_t> counts = forest.leaves_per_rank();
   std::uint64_t first = 0;  // this rank's first global index
   for (int r = 0; r < rank; ++r) first += static_cast<std::uint64_t>(counts[static_cast<std::size_t>(r)]);
-  std::uint64_t sum = 0;  // unsigned: the sum and products are mod 2^64
-  std::uint64_t i = first;
-  for (const d3::Point& c : forest.own()) sum += (2 * i++ + 1) * leaf_hash(c);
+  const std::uint64_t sum = leaves_digest(first, forest.own());
   ForestDigest d;
   d.leaves = forest.global_leaves();
   MPI_Allreduce(&sum, &d.sum, 1, MPI_UINT64_T, MPI_SUM, comm);

@@ -110,6 +110,10 @@ struct ForestDigest {
   bool operator==(const ForestDigest&) const = default;
 };
 
+/// D17: one rank's term of the sum: its leaves `leaves` in order, the
+/// first at global index `first`.
+std::uint64_t leaves_digest(std::uint64_t first, std::span<const d3::Point> leaves);
+
 /// D17: `forest`'s digest, the same on every rank. Collective over `comm`.
 ForestDigest forest_digest(const Forest& forest, MPI_Comm comm);
 
