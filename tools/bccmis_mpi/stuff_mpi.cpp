@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "animate_report.h"
 #include "bccmis/distributed/animate_on_ranks.h"
 #include "bccmis/distributed/ranks.h"
 #include "bccmis/distributed/stuff_on_ranks.h"
@@ -21,7 +22,6 @@
 #include "bccmis/io/vtu.h"
 #include "bccmis/p4est/bridge.h"
 #include "bccmis/stuff/mesh_shape.h"
-#include "animate_report.h"
 #include "io.h"
 #include "stuff_input.h"
 #include "stuff_stats.h"
@@ -124,7 +124,7 @@ int run_animate(const StuffOptions& o, bool gather, double threshold, MPI_Comm c
   int rank = 0, size = 0;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
-  OutputSet pieces, index;  // index: rank 0's frames (.pvtu or --gather .vtu) and the .pvd, renamed last
+  OutputSet pieces, index;                // index: rank 0's frames (.pvtu or --gather .vtu) and the .pvd, renamed last
   const bool write = !o.outputs.empty();  // else --stats alone (D17)
   const std::string out = write ? o.outputs[0] : std::string();
   const std::string stem = out.substr(0, out.find_last_of('.'));

@@ -33,10 +33,10 @@ struct RankAnimation {
 /// One frame, as animate_on_ranks() hands it on (D17's report).
 struct RankFrame {
   int index = 0;
-  RankRun* run = nullptr;    ///< valid during the call only; the callback may take its contents
-  ForestStep step;           ///< D15's step to this frame (frame 0: all zero)
-  std::int64_t leaves = 0;   ///< the forest's global leaf count
-  double seconds = 0;        ///< rank 0's wall seconds from moving the shape to the end of the stuffing
+  RankRun* run = nullptr;   ///< valid during the call only; the callback may take its contents
+  ForestStep step;          ///< D15's step to this frame (frame 0: all zero)
+  std::int64_t leaves = 0;  ///< the forest's global leaf count
+  double seconds = 0;       ///< rank 0's wall seconds from moving the shape to the end of the stuffing
 };
 
 /// D14 on every rank: the lattice fitted to the swept box (S14,
