@@ -7,7 +7,7 @@
       (--gather -o OUT.vtu: OUT_KKKK.vtu) holds the serial frame's tetrahedra
       (by vertex positions, bit for bit, with their levels), and each OUT.pvd
       lists the frames as the serial .pvd does (timesteps 0 .. N); the pieces run with
-      --json and the gathered run with --stats --check (D17): each frame's tetrahedra the
+      --json --compare and the gathered run with --stats --check (D17): each frame's tetrahedra the
       serial frame's cells, its leaves the serial --stats frame's, the check passing.
   mpi_animate_test.py steps MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
       the same, and D15's step of every frame after the first (rank 0's
@@ -52,7 +52,7 @@ def frames(mpirun, bccmis, bccmis_mpi, ranks, args, work, steps=False):
     serial_args = [a for i, a in enumerate(args) if a != "--repartition-threshold"
                    and (i == 0 or args[i - 1] != "--repartition-threshold")]
     serial_table = run([bccmis, "stuff", *serial_args, "-q", "--stats", "-o", os.path.join(work, "serial.pvd")]).stdout
-    r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, *([] if steps else ["-q"]), "--json",
+    r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, *([] if steps else ["-q"]), "--json", "--compare",
                                   "-o", os.path.join(work, "out.pvtu")])
     report = json.loads(r.stdout)
     if steps:
@@ -135,12 +135,19 @@ def same_report(report, table, serial_table, counts):
     steps = [f["seconds"] for f in frames[1:]]
     if abs(report["mean_step_seconds"] - sum(steps) / len(steps)) > 1e-6 * report["mean_step_seconds"]:
         sys.exit(f"FAIL: mean_step_seconds {report['mean_step_seconds']}, the frames' {steps}")
+    # --compare: every later frame also built from the brick and timed, the ratio of the means.
+    scratch = [f["scratch_seconds"] for f in frames[1:]]
+    if not all(t > 0 for t in scratch) or frames[0]["scratch_seconds"] != 0 or "scratch_seconds" in text[0]:
+        sys.exit(f"FAIL: --compare: scratch seconds {[f['scratch_seconds'] for f in frames]}, the table {text[0]}")
+    ratio = report["mean_scratch_seconds"] / report["mean_step_seconds"]
+    if abs(report["speedup"] - ratio) > 1e-6 * ratio:
+        sys.exit(f"FAIL: --compare: speedup {report['speedup']}, the means' ratio {ratio}")
 
 
 def refusals(mpirun, bccmis_mpi, ranks, work):
     base = ["--shape", "sphere", "-L", "2", "--animate", "2", "-q"]
     out = ["-o", os.path.join(work, "out.pvtu")]
-    cases = [(["--compare"], out, "--compare"), (["--hausdorff"], out, "--hausdorff"),
+    cases = [(["--hausdorff"], out, "--hausdorff"),
              (["--features"], out, "the features"), (["--gather"], ["-o", os.path.join(work, "out.msh")], "--gather"),
              ([], ["-o", os.path.join(work, "out.vtu")], "-o FILE.pvtu")]
     for extra, output, says in cases:

@@ -13,7 +13,9 @@ namespace bccmis::cli {
 /// D17's lines, a frame at a time, printed after the last frame.
 class AnimateReport {
  public:
-  AnimateReport();
+  /// With `compare`, each frame's scratch_seconds and the summary's
+  /// mean_scratch_seconds and speedup.
+  explicit AnimateReport(bool compare);
   /// Frame f, whose pieces hold `tetrahedra` in all.
   void add(const distributed::RankFrame& f, std::uint64_t tetrahedra);
   /// The text table, or with `json` the JSON object, with the summary.
@@ -22,7 +24,8 @@ class AnimateReport {
  private:
   JsonWriter json_;
   std::string table_;
-  double step_seconds_ = 0;  ///< frames 1..N
+  bool compare_;
+  double step_seconds_ = 0, scratch_seconds_ = 0;  ///< frames 1..N
   int steps_ = 0;
 };
 

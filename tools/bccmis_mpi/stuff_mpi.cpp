@@ -102,7 +102,6 @@ void check_animate_options(const StuffOptions& o, bool gather) {
     throw InputError(what + " is not supported with --animate on several ranks (spec/distributed.md D14)");
   };
   if (o.hausdorff) refuse("--hausdorff");
-  if (o.compare) refuse("--compare");
   if (o.features || o.feature_angle >= 0 || o.crease_cuts > 0) refuse("the features");
   if (o.impl != "fast") refuse("--impl " + o.impl);
   if (o.memory_limit_gb > 0) refuse("--memory-limit");
@@ -151,7 +150,8 @@ int run_animate(const StuffOptions& o, bool gather, double threshold, MPI_Comm c
     settings.gather = gather;
     settings.check = o.check;
     settings.threshold = threshold;
-    AnimateReport report;  // D17, rank 0's
+    settings.compare = o.compare;
+    AnimateReport report(o.compare);  // D17, rank 0's
     const auto on_frame = [&](const distributed::RankFrame& f) {
       const int k = f.index;
       distributed::RankRun& run = *f.run;

@@ -59,18 +59,35 @@ void animate_on_ranks(const std::shared_ptr<const stuff::Shape>& world, const Ra
       throw stuff::CheckError(name + e.what());
     }
     f.seconds = stuff::seconds_since(start);
-    // D17 step 1: the moved forest against the one built from the brick
-    // (after the frame's seconds: the check's forest is not the frame's work).
-    if (s.check && k > 0)
-      on_every_rank(comm, "checking the forest", [&] {
-        const ForestDigest moved = forest_digest(*forest, comm);
-        const ForestDigest built = forest_digest(Forest(*frame->shape, frame->fit, frame->options, comm), comm);
-        if (moved != built && rank == 0)  // the digests are every rank's: rank 0 reports (D6)
-          throw stuff::CheckError(name + "the moved forest differs from the forest built for the frame (" +
-                                  std::to_string(moved.leaves) + " leaves against " + std::to_string(built.leaves) +
-                                  (moved.leaves == built.leaves ? ", other leaves or order" : "") +
-                                  "; spec/distributed.md D15, D17)");
+    // D17: the frame from the brick (after the frame's seconds: it is not
+    // the frame's work), its forest checked against the moved one, its
+    // stuffing timed with --compare.
+    if ((s.check || s.compare) && k > 0) {
+      const auto scratch_start = stuff::Clock::now();
+      std::optional<Replicated> scratch;
+      std::optional<Forest> built;
+      on_every_rank(comm, "building the frame from the brick", [&] {
+        scratch.emplace(in_world(stuff::translated(world, stuff::frame_offset(s.path, k, s.frames)), *fit, s.lattice,
+                                 P8EST_QMAXLEVEL));
+        built.emplace(*scratch->shape, scratch->fit, scratch->options, comm);
       });
+      if (s.compare) {
+        RankSettings same = settings;  // the frame's work (its pieces, its gathering) without the check
+        same.check = false;
+        stuff_on_ranks(*scratch->shape, *scratch, *built, same, comm, scratch_start);
+        f.scratch_seconds = stuff::seconds_since(scratch_start);
+      }
+      if (s.check)
+        on_every_rank(comm, "checking the forest", [&] {
+          const ForestDigest moved = forest_digest(*forest, comm);
+          const ForestDigest expected = forest_digest(*built, comm);
+          if (moved != expected && rank == 0)  // the digests are every rank's: rank 0 reports (D6)
+            throw stuff::CheckError(
+                name + "the moved forest differs from the forest built for the frame (" + std::to_string(moved.leaves) +
+                " leaves against " + std::to_string(expected.leaves) +
+                (moved.leaves == expected.leaves ? ", other leaves or order" : "") + "; spec/distributed.md D15, D17)");
+        });
+    }
     f.run = &run;
     on_frame(f);
   }

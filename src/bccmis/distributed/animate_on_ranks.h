@@ -21,22 +21,24 @@ namespace bccmis::distributed {
 
 /// What an animation on ranks is told (D14).
 struct RankAnimation {
-  stuff::StuffOptions lattice;               ///< -L, --min-level, --cells, --size, --threads
-  int frames = 1;                            ///< steps after frame 0 (> 0)
-  stuff::Vec3 path{};                        ///< the whole motion: frame k at offset k path / frames (S15)
-  bool pieces = false;                       ///< a .vtu piece per rank and frame: D7's global ids
-  bool gather = false;                       ///< each frame's whole mesh on rank 0 (D5)
-  bool check = false;                        ///< D17: the moved forest against the built one; D12's check (gather)
+  stuff::StuffOptions lattice;  ///< -L, --min-level, --cells, --size, --threads
+  int frames = 1;               ///< steps after frame 0 (> 0)
+  stuff::Vec3 path{};           ///< the whole motion: frame k at offset k path / frames (S15)
+  bool pieces = false;          ///< a .vtu piece per rank and frame: D7's global ids
+  bool gather = false;          ///< each frame's whole mesh on rank 0 (D5)
+  bool check = false;           ///< D17: the moved forest against the built one; D12's check (gather)
+  bool compare = false;         ///< D17: also every later frame from the brick (its forest and stuffing), timed
   double threshold = kRepartitionThreshold;  ///< D15: repartitioned when the imbalance exceeds it
 };
 
 /// One frame, as animate_on_ranks() hands it on (D17's report).
 struct RankFrame {
   int index = 0;
-  RankRun* run = nullptr;   ///< valid during the call only; the callback may take its contents
-  ForestStep step;          ///< D15's step to this frame (frame 0: all zero)
-  std::int64_t leaves = 0;  ///< the forest's global leaf count
-  double seconds = 0;       ///< rank 0's wall seconds from moving the shape to the end of the stuffing
+  RankRun* run = nullptr;      ///< valid during the call only; the callback may take its contents
+  ForestStep step;             ///< D15's step to this frame (frame 0: all zero)
+  std::int64_t leaves = 0;     ///< the forest's global leaf count
+  double seconds = 0;          ///< rank 0's wall seconds from moving the shape to the end of the stuffing
+  double scratch_seconds = 0;  ///< with compare, frames after 0: the same frame built from the brick
 };
 
 /// D14 on every rank: the lattice fitted to the swept box (S14,
