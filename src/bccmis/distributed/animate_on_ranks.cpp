@@ -28,15 +28,16 @@ void animate_on_ranks(const std::shared_ptr<const stuff::Shape>& world, const Ra
   settings.pieces = s.pieces;
   settings.gather = s.gather;
   settings.check = s.check && s.gather;  // D12's check needs the gathered mesh (D17)
+  // D14: frame k in world coordinates, S24's map the identity.
+  const auto frame_at = [&](int k) {
+    return in_world(stuff::translated(world, stuff::frame_offset(s.path, k, s.frames)), *fit, s.lattice,
+                    P8EST_QMAXLEVEL);
+  };
   std::unique_ptr<Forest> forest;
   for (int k = 0; k <= s.frames; ++k) {
     const auto start = stuff::Clock::now();
-    // D14: frame k in world coordinates, S24's map the identity.
     std::optional<Replicated> frame;
-    on_every_rank(comm, "moving the shape", [&] {
-      frame.emplace(in_world(stuff::translated(world, stuff::frame_offset(s.path, k, s.frames)), *fit, s.lattice,
-                             P8EST_QMAXLEVEL));
-    });
+    on_every_rank(comm, "moving the shape", [&] { frame.emplace(frame_at(k)); });
     // D10's forest for frame 0, D15's step to frame k after.
     ForestStep step;
     on_every_rank(comm, k == 0 ? "building the forest" : "moving the forest", [&] {
@@ -67,8 +68,7 @@ void animate_on_ranks(const std::shared_ptr<const stuff::Shape>& world, const Ra
       std::optional<Replicated> scratch;
       std::optional<Forest> built;
       on_every_rank(comm, "building the frame from the brick", [&] {
-        scratch.emplace(in_world(stuff::translated(world, stuff::frame_offset(s.path, k, s.frames)), *fit, s.lattice,
-                                 P8EST_QMAXLEVEL));
+        scratch.emplace(frame_at(k));
         built.emplace(*scratch->shape, scratch->fit, scratch->options, comm);
       });
       if (s.compare) {
