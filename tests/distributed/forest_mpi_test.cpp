@@ -117,6 +117,29 @@ std::set<std::tuple<int, d3::Point>> internal_cells(const d3::fast::Lattice& g) 
 }
 
 //= spec/distributed.md#D15 type=test
+//= spec/distributed.md#D17 type=test
+// D17's check: the moved forest's digest is that of the forest built from
+// the brick for the moved shape, not that of the forest of the frame before
+// (a wrong forest, as an off-by-one frame offset makes); a rank's leaves in
+// another order change its term.
+void check_digest(const distributed::Forest& forest, const stuff::Shape& start, const stuff::Shape& moved,
+                  const stuff::Fit& fit, const stuff::StuffOptions& options, const std::string& at) {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  const distributed::ForestDigest digest = distributed::forest_digest(forest, MPI_COMM_WORLD);
+  const distributed::ForestDigest built =
+      distributed::forest_digest(distributed::Forest(moved, fit, options, MPI_COMM_WORLD), MPI_COMM_WORLD);
+  const distributed::ForestDigest before =
+      distributed::forest_digest(distributed::Forest(start, fit, options, MPI_COMM_WORLD), MPI_COMM_WORLD);
+  expect(digest == built, rank, at + "the digest differs from the forest built for the moved shape");
+  expect(!(digest == before), rank, at + "the digest equals the forest of the frame before");
+  std::vector<d3::Point> own = forest.own();
+  const std::uint64_t in_order = distributed::leaves_digest(7, own);
+  std::reverse(own.begin(), own.end());
+  if (own.size() > 1)
+    expect(distributed::leaves_digest(7, own) != in_order, rank, at + "the leaves reversed have the same digest");
+}
+
 // The forest of `name` at offset `from` moved by D15's step to offset `to`
 // (the fit of the path from there to there): its leaves are the lattice G
 // built for the moved shape (their count; each rank's own leaves are
@@ -157,6 +180,7 @@ int check_step(const char* name, int level, int cells, const stuff::Vec3& from, 
   expect(step.refined == static_cast<std::int64_t>(is.size()) - kept, rank,
          at + std::to_string(step.refined) + " leaves refined, expected " +
              std::to_string(static_cast<std::int64_t>(is.size()) - kept));
+  check_digest(forest, *start, *moved, fit, options, at);
   if (rank == 0)
     std::printf("%s%lld coarsened, %lld refined, %d corrections, imbalance %.3f%s\n", at.c_str(),
                 static_cast<long long>(step.coarsened), static_cast<long long>(step.refined), step.corrections,

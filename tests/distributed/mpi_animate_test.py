@@ -6,16 +6,19 @@
       OUT_KKKK.pvtu, its pieces OUT_KKKK_RRRR.vtu) and every gathered frame
       (--gather -o OUT.vtu: OUT_KKKK.vtu) holds the serial frame's tetrahedra
       (by vertex positions, bit for bit, with their levels), and each OUT.pvd
-      lists the frames as the serial .pvd does (timesteps 0 .. N).
+      lists the frames as the serial .pvd does (timesteps 0 .. N); the pieces run with
+      --json --compare and the gathered run with --stats --check (D17): each frame's tetrahedra the
+      serial frame's cells, its leaves the serial --stats frame's, the check passing.
   mpi_animate_test.py steps MPIRUN BCCMIS BCCMIS_MPI RANKS -- STUFF_ARGS...
       the same, and D15's step of every frame after the first (rank 0's
       "forest: ..." line) both coarsened and refined leaves; with
       --repartition-threshold 1 in STUFF_ARGS, every step repartitioned.
   mpi_animate_test.py refusals MPIRUN BCCMIS BCCMIS_MPI RANKS
       the options D14 refuses with --animate, each by name: exit 2, D14 named,
-      nothing written.
+      nothing written; --check without --gather (D17, naming D12).
 """
 import collections
+import json
 import os
 import re
 import sys
@@ -48,9 +51,10 @@ FOREST = re.compile(r"frame (\d+)/\d+: \d+ tetrahedra; forest: (\d+) coarsened, 
 def frames(mpirun, bccmis, bccmis_mpi, ranks, args, work, steps=False):
     serial_args = [a for i, a in enumerate(args) if a != "--repartition-threshold"
                    and (i == 0 or args[i - 1] != "--repartition-threshold")]
-    run([bccmis, "stuff", *serial_args, "-q", "-o", os.path.join(work, "serial.pvd")])
-    r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, *([] if steps else ["-q"]),
+    serial_table = run([bccmis, "stuff", *serial_args, "-q", "--stats", "-o", os.path.join(work, "serial.pvd")]).stdout
+    r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, *([] if steps else ["-q"]), "--json", "--compare",
                                   "-o", os.path.join(work, "out.pvtu")])
+    report = json.loads(r.stdout)
     if steps:
         forest = [m.groups() for m in FOREST.finditer(r.stderr)]
         frames_after_0 = int(args[args.index("--animate") + 1])
@@ -66,7 +70,8 @@ def frames(mpirun, bccmis, bccmis_mpi, ranks, args, work, steps=False):
                          f"{r.stderr}")
         print(f"{ranks} ranks: steps (coarsened, refined, corrections, imbalance, repartitioned): "
               f"{[(int(g[1]), int(g[2]), int(g[3]), float(g[4]), bool(g[5])) for g in forest]}")
-    run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, "-q", "--gather", "-o", os.path.join(work, "whole.vtu")])
+    table = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *args, "-q", "--stats", "--check", "--gather",
+                                      "-o", os.path.join(work, "whole.vtu")]).stdout
     serial = pvd_frames(os.path.join(work, "serial.pvd"))
     steps = [k for k, _ in serial]
     if len(serial) < 2 or steps != list(range(len(serial))):
@@ -88,17 +93,61 @@ def frames(mpirun, bccmis, bccmis_mpi, ranks, args, work, steps=False):
         if whole != want:
             sys.exit(f"FAIL: {ranks} ranks: frame {k}: the gathered frame differs from the serial frame")
         counts.append(sum(want.values()))
+    same_report(report, table, serial_table, counts)
     if meshes[0] == meshes[1]:
         sys.exit("FAIL: the serial frames 0 and 1 are the same mesh: the shape does not move")
     print(f"ok: {ranks} ranks: {len(serial)} frames ({counts} tetrahedra), pieces and gathered, "
-          "are the serial frames; the .pvd files list them")
+          "are the serial frames; the .pvd files list them; --json and --stats report them (D17), --check passes")
+
+
+#= spec/distributed.md#D17 type=test
+def same_report(report, table, serial_table, counts):
+    """D17: the --json frames (pieces run) and the --stats table (gathered, --check run) name the same
+    forests, each frame's tetrahedra are the serial .vtu frame's cells (counted by meshio) and its leaves
+    the serial --stats frame's leaves."""
+    header, *rows = table.splitlines()
+    names = header.split()
+    if names != ["frame", "coarsened", "refined", "corrections", "imbalance", "repartitioned", "leaves",
+                 "tetrahedra", "seconds"] or rows[-1].split()[0] != "mean_step_seconds":
+        sys.exit(f"FAIL: the --stats table:\n{table}")
+    text = [dict(zip(names, row.split())) for row in rows[:-1]]
+    serial_rows = serial_table.splitlines()
+    serial_names = serial_rows[0].split()
+    serial = [dict(zip(serial_names, row.split())) for row in serial_rows[1:len(counts) + 1]]
+    frames = report["frames"]
+    if [f["frame"] for f in frames] != list(range(len(counts))) or len(text) != len(counts):
+        sys.exit(f"FAIL: the reports list frames {[f['frame'] for f in frames]} and {len(text)} rows, "
+                 f"the serial run {len(counts)}")
+    for f, t, s, n in zip(frames, text, serial, counts):
+        k = f["frame"]
+        if f["tetrahedra"] != n or int(t["tetrahedra"]) != n:
+            sys.exit(f"FAIL: frame {k}: --json {f['tetrahedra']}, --stats {t['tetrahedra']} tetrahedra, "
+                     f"the serial frame's .vtu {n}")
+        if f["leaves"] != int(s["leaves"]) or int(t["leaves"]) != f["leaves"]:
+            sys.exit(f"FAIL: frame {k}: --json {f['leaves']}, --stats {t['leaves']} leaves, serial {s['leaves']}")
+        for name in ("coarsened", "refined", "corrections"):
+            if int(t[name]) != f[name]:
+                sys.exit(f"FAIL: frame {k}: {name} {t[name]} (--stats) against {f[name]} (--json)")
+        if int(t["repartitioned"]) != int(f["repartitioned"]) or float(t["imbalance"]) != f["imbalance"]:
+            sys.exit(f"FAIL: frame {k}: the imbalance or repartition differ between --stats and --json")
+        if (k == 0) != (f["coarsened"] == 0 and f["refined"] == 0) or not f["seconds"] > 0:
+            sys.exit(f"FAIL: frame {k}: a step's counts or seconds: {f}")
+    steps = [f["seconds"] for f in frames[1:]]
+    if abs(report["mean_step_seconds"] - sum(steps) / len(steps)) > 1e-6 * report["mean_step_seconds"]:
+        sys.exit(f"FAIL: mean_step_seconds {report['mean_step_seconds']}, the frames' {steps}")
+    # --compare: every later frame also built from the brick and timed, the ratio of the means.
+    scratch = [f["scratch_seconds"] for f in frames[1:]]
+    if not all(t > 0 for t in scratch) or frames[0]["scratch_seconds"] != 0 or "scratch_seconds" in text[0]:
+        sys.exit(f"FAIL: --compare: scratch seconds {[f['scratch_seconds'] for f in frames]}, the table {text[0]}")
+    ratio = report["mean_scratch_seconds"] / report["mean_step_seconds"]
+    if abs(report["speedup"] - ratio) > 1e-6 * ratio:
+        sys.exit(f"FAIL: --compare: speedup {report['speedup']}, the means' ratio {ratio}")
 
 
 def refusals(mpirun, bccmis_mpi, ranks, work):
     base = ["--shape", "sphere", "-L", "2", "--animate", "2", "-q"]
     out = ["-o", os.path.join(work, "out.pvtu")]
-    cases = [(["--stats"], out, "--stats"), (["--json"], out, "--json"), (["--compare"], out, "--compare"),
-             (["--check"], out, "--check"), (["--hausdorff"], out, "--hausdorff"),
+    cases = [(["--hausdorff"], out, "--hausdorff"),
              (["--features"], out, "the features"), (["--gather"], ["-o", os.path.join(work, "out.msh")], "--gather"),
              ([], ["-o", os.path.join(work, "out.vtu")], "-o FILE.pvtu")]
     for extra, output, says in cases:
@@ -107,6 +156,10 @@ def refusals(mpirun, bccmis_mpi, ranks, work):
             sys.exit(f"FAIL: {extra} {output}: stderr does not name '{says}' and D14:\n{r.stderr}")
         if os.listdir(work):
             sys.exit(f"FAIL: {extra} {output}: a refused run left {os.listdir(work)}")
+    # D17: --check needs the gathered frames (D12).
+    r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *base, "--check", *out], expect=2)
+    if "--check" not in r.stderr or "add --gather" not in r.stderr or "D12" not in r.stderr or os.listdir(work):
+        sys.exit(f"FAIL: --animate --check without --gather: not refused naming D12:\n{r.stderr}")
     r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", "--shape", "sphere", "-L", "2", "--path", "1,0,0", *out],
             expect=2)
     if "--path and --compare apply with --animate" not in r.stderr or os.listdir(work):
@@ -120,7 +173,8 @@ def refusals(mpirun, bccmis_mpi, ranks, work):
                                   *out], expect=2)
     if "--repartition-threshold applies with --animate" not in r.stderr or os.listdir(work):
         sys.exit(f"FAIL: --repartition-threshold without --animate: not refused:\n{r.stderr}")
-    print(f"ok: {ranks} ranks: {len(cases)} options refused with --animate (D14), --path without it, "
+    print(f"ok: {ranks} ranks: {len(cases)} options refused with --animate (D14), --check without --gather "
+          "(D17), --path without it, "
           "bad --repartition-threshold values and the option without --animate (D15)")
 
 

@@ -1,6 +1,6 @@
 // bccmis-mpi stuff: the options checked, the shape read, the run on every
 // rank as one library call (distributed::stuff_on_ranks, spec/distributed.md
-// D1-D13; distributed::animate_on_ranks with --animate, D14, D15), the outputs written and the report printed, the
+// D1-D13; distributed::animate_on_ranks with --animate, D14, D15, D17), the outputs written and the report printed, the
 // ranks agreeing after each stage (D6).
 #include "stuff_mpi.h"
 
@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "animate_report.h"
 #include "bccmis/distributed/animate_on_ranks.h"
 #include "bccmis/distributed/ranks.h"
 #include "bccmis/distributed/stuff_on_ranks.h"
@@ -99,19 +100,19 @@ std::string piece_path(const std::string& pvtu, int r) { return numbered(pvtu.su
 
 std::string file_name(const std::string& path) { return path.substr(path.find_last_of('/') + 1); }
 
-/// D14: what --animate on ranks refuses, and its one output.
+/// D14: what --animate on ranks refuses, and its one output (none with
+/// --stats alone, D17).
 void check_animate_options(const StuffOptions& o, bool gather) {
   const auto refuse = [](const std::string& what) {
     throw InputError(what + " is not supported with --animate on several ranks (spec/distributed.md D14)");
   };
-  if (o.hausdorff) refuse("--hausdorff");  // which, as --json, implies --stats
-  if (o.json) refuse("--json");
-  if (o.stats) refuse("--stats");
-  if (o.compare) refuse("--compare");
-  if (o.check) refuse("--check");
+  if (o.hausdorff) refuse("--hausdorff");
   if (o.features || o.feature_angle >= 0 || o.crease_cuts > 0) refuse("the features");
   if (o.impl != "fast") refuse("--impl " + o.impl);
   if (o.memory_limit_gb > 0) refuse("--memory-limit");  // the serial animation does not estimate (S25) either
+  if (o.check && !gather)                               // D17: D12's check of each gathered frame
+    throw InputError("--check runs on the mesh gathered on rank 0: add --gather (spec/distributed.md D12, D17)");
+  if (o.outputs.empty() && o.stats) return;  // D17: the report alone
   const std::string extension = gather ? ".vtu" : ".pvtu";
   if (o.outputs.size() != 1 || !ends_with(o.outputs[0], extension))
     throw InputError(std::string("--animate writes a frame a file and their .pvd beside them: give ") +
@@ -121,13 +122,15 @@ void check_animate_options(const StuffOptions& o, bool gather) {
 }
 
 /// D14: --animate N on every rank: every frame's files staged as its
-/// meshes come, renamed once every frame succeeded on every rank (D6).
+/// meshes come, renamed once every frame succeeded on every rank (D6);
+/// D17's report printed by rank 0 after the last frame.
 int run_animate(const StuffOptions& o, bool gather, double threshold, MPI_Comm comm) {
   int rank = 0, size = 0;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
-  OutputSet pieces, index;  // index: rank 0's frames (.pvtu or --gather .vtu) and the .pvd, renamed last
-  const std::string out = o.outputs.empty() ? std::string() : o.outputs[0];
+  OutputSet pieces, index;                // index: rank 0's frames (.pvtu or --gather .vtu) and the .pvd, renamed last
+  const bool write = !o.outputs.empty();  // else --stats alone (D17)
+  const std::string out = write ? o.outputs[0] : std::string();
   const std::string stem = out.substr(0, out.find_last_of('.'));
   const std::string extension = gather ? ".vtu" : ".pvtu";
   const std::string pvd = stem + ".pvd";
@@ -138,25 +141,33 @@ int run_animate(const StuffOptions& o, bool gather, double threshold, MPI_Comm c
   try {
     stage(comm, [&] {
       check_animate_options(o, gather);
-      for (int k = 0; k <= o.animate; ++k) {
+      for (int k = 0; k <= o.animate && write; ++k) {
         if (!gather) pieces.open(piece_path(numbered(stem, k, extension), rank));
         if (rank == 0) index.open(numbered(stem, k, extension));
       }
-      if (rank == 0) index.open(pvd);
+      if (rank == 0 && write) index.open(pvd);
       shape = load_shape(o);
       settings.path = parse_path(o.path, *shape);
     });
     settings.lattice = lattice_options(o);
     settings.frames = o.animate;
-    settings.pieces = !gather;
+    settings.pieces = write && !gather;
     settings.gather = gather;
+    settings.check = o.check;
     settings.threshold = threshold;
-    const auto on_frame = [&](int k, distributed::RankRun& run, const distributed::ForestStep& step) {
+    settings.compare = o.compare;
+    AnimateReport report(o.compare);  // D17, rank 0's
+    const auto on_frame = [&](const distributed::RankFrame& f) {
+      const int k = f.index;
+      distributed::RankRun& run = *f.run;
+      const distributed::ForestStep& step = f.step;
       const std::string frame = numbered(stem, k, extension);
       const std::uint64_t mine = run.piece.mesh.tets.size();
       std::uint64_t tetrahedra = 0;
       for (const std::uint64_t n : run.tetrahedra) tetrahedra += n;
+      if (rank == 0 && o.stats) report.add(f, tetrahedra);
       distributed::on_every_rank(comm, "writing frame " + std::to_string(k), [&] {
+        if (!write) return;
         if (!gather && mine > 0) {  // a rank whose leaves make no tetrahedron writes no piece (D1)
           pieces.add(piece_path(frame, rank),
                      [&](std::ostream& s) { io::write_vtu_piece(s, run.piece.mesh, run.ids, encoding(o)); });
@@ -184,7 +195,7 @@ int run_animate(const StuffOptions& o, bool gather, double threshold, MPI_Comm c
     };
     stage(comm, [&] { distributed::animate_on_ranks(shape, settings, comm, on_frame); });
     stage(comm, [&] {
-      if (rank == 0) index.add(pvd, [&](std::ostream& s) { io::write_pvd(s, frames); });
+      if (rank == 0 && write) index.add(pvd, [&](std::ostream& s) { io::write_pvd(s, frames); });
     });
     // The pieces renamed into place on every rank, then rank 0's files (D6).
     stage(comm, [&] {
@@ -193,7 +204,8 @@ int run_animate(const StuffOptions& o, bool gather, double threshold, MPI_Comm c
     stage(comm, [&] {
       if (rank == 0) index.commit();
     });
-    if (rank == 0 && !o.quiet)
+    if (rank == 0 && o.stats) std::cout << report.finish(o.json) << std::flush;
+    if (rank == 0 && !o.quiet && write)
       std::cerr << kTool << ": " << o.animate + 1 << " frames from " << size << " rank" << (size == 1 ? "" : "s")
                 << " written to " << pvd << "\n";
   } catch (const Stop& stop) {

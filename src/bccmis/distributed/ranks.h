@@ -100,6 +100,23 @@ class Forest {
   p8est_ghost_t* ghost_ = nullptr;
 };
 
+/// D17: a forest's leaves, to compare two forests of the same fit without
+/// gathering them: the global count and the sum over the leaves, in
+/// p8est's global order, of (2i + 1) h(center), mod 2^64 (i the global
+/// index, h splitmix64 over the coordinates).
+struct ForestDigest {
+  std::int64_t leaves = 0;
+  std::uint64_t sum = 0;
+  bool operator==(const ForestDigest&) const = default;
+};
+
+/// D17: one rank's term of the sum: its leaves `leaves` in order, the
+/// first at global index `first`.
+std::uint64_t leaves_digest(std::uint64_t first, std::span<const d3::Point> leaves);
+
+/// D17: `forest`'s digest, the same on every rank. Collective over `comm`.
+ForestDigest forest_digest(const Forest& forest, MPI_Comm comm);
+
 /// D6: thrown on every rank but the failing one when a collective step
 /// failed on another rank (`rank`, the lowest that failed), which throws
 /// its own error.
