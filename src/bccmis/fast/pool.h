@@ -7,6 +7,7 @@
 #pragma once
 
 #include <atomic>
+#include <cassert>
 #include <cstddef>
 #include <cstring>
 #include <new>
@@ -116,7 +117,10 @@ class Pool {
   /// The index of a record appended in room already reserved (size() <
   /// capacity()), its bytes not written: the caller writes every field it
   /// will read (spec/lattice3d.md §9.9).
-  std::size_t append_reserved() { return size_++; }
+  std::size_t append_reserved() {
+    assert(size_ < capacity());
+    return size_++;
+  }
   /// A pool of n records whose bytes are all zero. A mapped block's pages
   /// are zero already (the kernel fills them when first touched), so from
   /// 1 MiB up nothing is written here (spec/lattice3d.md §9.9); a heap
