@@ -3,9 +3,10 @@
 // refined cell coarsened again, level by level from the finest, back to the
 // initial lattice; the time per operation of each level and of the whole
 // sweep, for the reference (d3::Graph) and the fast lattice
-// (d3::fast::Lattice). Within a level the operations run in position order
-// (sweep) or, with --random, in a shuffled order (fixed seed): on a uniform
-// level every order is allowed. A plain program (one run; the CPU time of
+// (d3::fast::Lattice, with its memory_bytes() per cell after each level's
+// refines: the pools' and the position table's capacity). Within a level
+// the operations run in position order (sweep) or, with --random, in a
+// shuffled order (fixed seed): on a uniform level every order is allowed. A plain program (one run; the CPU time of
 // the thread, CLOCK_THREAD_CPUTIME_ID, so that other processes' time slices
 // on a shared machine are not counted), not a Google Benchmark: the sweep is
 // one long workload. With --verify the
@@ -77,8 +78,11 @@ Totals sweep(const char* name, L& g, bool random, bool verify, const State& stat
     const double ns = timed_all(name, "refine", todo, [&](const d3::Point& c) { return refine(g, c).applied(); });
     t.refine_ns += ns;
     refines += todo.size();
-    std::printf("%-9s refine  level %d -> %d: %9zu ops, %9zu cells, %8.1f ns/op\n", name, level, level + 1, todo.size(),
+    std::printf("%-9s refine  level %d -> %d: %9zu ops, %9zu cells, %8.1f ns/op", name, level, level + 1, todo.size(),
                 cell_count(g), ns / static_cast<double>(todo.size()));
+    if constexpr (requires { g.memory_bytes(); })  // capacity of the pools and the table over the cells
+      std::printf(", %6.1f B/cell", static_cast<double>(g.memory_bytes()) / static_cast<double>(cell_count(g)));
+    std::printf("\n");
   }
   if (verify) t.refined_state = state(g);
   for (int level = size_of(g).L - 1; level >= 0; --level) {

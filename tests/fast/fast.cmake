@@ -61,4 +61,4 @@ bccmis_add_gtest(fast_d3_bulk_test SOURCES d3/bulk_test.cpp LIBS bccmis::fast bc
 # The record pools (spec/lattice3d.md §9.8): growth across the switch from
 # heap blocks to mappings, every byte kept, a refused growth (operator new,
 # mmap, mremap) leaving the pool and a refining lattice unchanged.
-bccmis_add_gtest(fast_d3_pool_test SOURCES d3/pool_test.cpp LIBS bccmis::fast LABELS unit)
+bccmis_add_gtest(fast_pool_test SOURCES pool_test.cpp LIBS bccmis::fast LABELS unit)

@@ -919,8 +919,9 @@ int coordinate_bits(const LatticeSize& size) {
   return std::bit_width(static_cast<std::uint64_t>(std::max(size.W * S, size.H * S)));
 }
 
-template <class Pool, class Position>
-std::vector<Index> sorted_slots(const Pool& pool, std::size_t live, const LatticeSize& size, const Position& position) {
+template <class Records, class Position>
+std::vector<Index> sorted_slots(const Records& pool, std::size_t live, const LatticeSize& size,
+                                const Position& position) {
   std::vector<Index> out;
   out.reserve(live);
   for_each_sorted(

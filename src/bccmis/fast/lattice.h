@@ -11,7 +11,8 @@
 //     midpoint of one cell, which then occupies two quadrants). The paper's
 //     set operations become a fixed number of slot writes: O(1).
 //   - centers (48 bytes) and nodes (16 bytes) live in two flat pools with
-//     free lists. Only centers store a position (integer, spec/formats.md);
+//     free lists (fast/pool.h, the 3D lattice's: grown by one byte copy, or
+//     by mremap from 1 MiB up, spec/lattice3d.md §9.8). Only centers store a position (integer, spec/formats.md);
 //     a cell's level follows from its position, and a node's position from
 //     any cell around it.
 //   - a position -> vertex table (Robin Hood open addressing, 4 bytes a
@@ -44,6 +45,7 @@
 #include <utility>
 #include <vector>
 
+#include "bccmis/fast/pool.h"
 #include "bccmis/fast/small_points.h"
 #include "bccmis/graph.h"
 #include "bccmis/io/format.h"
@@ -53,7 +55,7 @@
 namespace bccmis::fast {
 
 namespace detail {
-/// The allocator of the pools and the position table: 64-byte aligned (a
+/// The allocator of the position table: 64-byte aligned (a
 /// table line of 16 slots is one cache line), and arrays of 4 MiB and up ask
 /// the kernel for transparent huge pages (madvise, Linux): they are accessed
 /// at random once they outgrow the caches, and 2 MiB pages cut the TLB
@@ -218,8 +220,8 @@ class Lattice {
     }
   }
 
-  const detail::Array<Center>& center_pool() const { return centers_; }
-  const detail::Array<Node>& node_pool() const { return nodes_; }
+  const Pool<Center>& center_pool() const { return centers_; }
+  const Pool<Node>& node_pool() const { return nodes_; }
   /// Position of a live node.
   Point node_position(Index n) const;
   /// The level of a live center slot.
@@ -323,8 +325,8 @@ class Lattice {
   Index alloc_node() { return pop_or_append(nodes_, &Node::cell, free_nodes_, free_node_count_); }
   // The head of a pool's free list, linked through the first entry of each
   // free record's `link` array, or a new record at the pool's end.
-  template <class Pool, class Record>
-  static Index pop_or_append(Pool& pool, Index (Record::*link)[4], Index& free_head, std::size_t& free_count) {
+  template <class Records, class Record>
+  static Index pop_or_append(Records& pool, Index (Record::*link)[4], Index& free_head, std::size_t& free_count) {
     if (free_head == kNone) {
       pool.emplace_back();
       return static_cast<Index>(pool.size() - 1);
@@ -352,8 +354,8 @@ class Lattice {
 
   LatticeSize size_;
   std::int64_t extent_x_ = 0, extent_y_ = 0;  ///< the domain: W*S by H*S
-  detail::Array<Center> centers_;
-  detail::Array<Node> nodes_;
+  Pool<Center> centers_;                      ///< spec/lattice3d.md §9.8, §9.9: the 3D lattice's pools
+  Pool<Node> nodes_;
   Index free_centers_ = kNone;
   Index free_nodes_ = kNone;
   std::size_t free_center_count_ = 0;

@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "bccmis/fast/d3/lattice.h"
 #include "bccmis/fast/d3/position_table.h"
 
 namespace {
@@ -98,6 +99,63 @@ TEST(Fast3PositionTable, AgreesWithAMapThroughInsertsErasesRenamesAndRehashes) {
   while (m.table.used() * 5 > slots * 3) slots *= 2;
   m.table.rehash(slots);
   ASSERT_NO_FATAL_FAILURE(m.check("after shrinking"));
+}
+
+TEST(Fast3PositionTable, GrowthStandsOnTheLoadLineAndTheSizeLine) {
+  // spec/lattice3d.md §9.9: keys * 5 <= slots * 3 keeps the table; the
+  // first key past it multiplies the slots by 4 below 2^17 slots (1 MiB),
+  // by 2 from there. 0.6 x 32 = 19.2: 19 keys fit, 20 do not.
+  EXPECT_EQ(PositionTable::grown(32, 19), 32u);
+  EXPECT_EQ(PositionTable::grown(32, 20), 128u);
+  EXPECT_EQ(PositionTable::grown(32, 77), 512u);  // 76.8 fit in 128: two steps
+  // The size line: 2^16 slots (512 KiB) still grow 4x, 2^17 (1 MiB) 2x.
+  EXPECT_EQ(PositionTable::grown(std::size_t{1} << 16, 39321), std::size_t{1} << 16);  // 0.6 x 2^16 = 39321.6
+  EXPECT_EQ(PositionTable::grown(std::size_t{1} << 16, 39322), std::size_t{1} << 18);
+  EXPECT_EQ(PositionTable::grown(std::size_t{1} << 17, 78643), std::size_t{1} << 17);  // 0.6 x 2^17 = 78643.2
+  EXPECT_EQ(PositionTable::grown(std::size_t{1} << 17, 78644), std::size_t{1} << 18);
+}
+
+TEST(Fast3PositionTable, AMappedFreshTableIsEmptyWithoutAWrite) {
+  // spec/lattice3d.md §9.9: a table of 1 MiB and more is a fresh mapping
+  // whose zero pages are its empty slots; one below is zeroed. Both filled,
+  // emptied, refilled after a rehash between the two kinds.
+  for (const std::size_t slots : {std::size_t{1} << 16, std::size_t{1} << 17, std::size_t{1} << 18}) {
+    Model m;
+    m.table.reset(slots);
+    ASSERT_EQ(m.table.slots(), slots);
+    ASSERT_NO_FATAL_FAILURE(m.check("fresh"));
+    for (std::uint64_t i = 0; i < slots / 8; ++i) {  // keys of distinct 32 stored bits, all over the table
+      const std::uint64_t key = 3 * i + 1;
+      const Ref ref = static_cast<Ref>(m.key_of.size());
+      m.key_of.push_back(key);
+      m.table.insert(ref, hash_of(key));
+      m.ref_of[key] = ref;
+    }
+    ASSERT_NO_FATAL_FAILURE(m.check("filled"));
+    m.table.rehash(slots * 2);
+    ASSERT_NO_FATAL_FAILURE(m.check("after a rehash"));
+    m.table.reset(slots);  // a fresh table again: nothing of the old one
+    m.ref_of.clear();
+    ASSERT_NO_FATAL_FAILURE(m.check("reset"));
+  }
+}
+
+TEST(Fast3PositionTable, ARefineGrowsTheTableAtTheLoadLine) {
+  // spec/lattice3d.md §9.9, §9.5: a refine makes room for its 8 new keys
+  // first. 3 level-0 cells: 3 -> 11 -> 19 keys, and 19 fit in 32 slots (the
+  // refine before the line); 4 cells: 4 -> 12 -> 20, and that second refine
+  // grows the table 4x (the refine that crosses it).
+  using bccmis::d3::fast::Lattice;
+  for (const long long cells : {3, 4}) {
+    Lattice g({cells, 1, 1, 2});
+    ASSERT_EQ(g.table_slots(), 32u);
+    ASSERT_TRUE(g.refine(g.cells()[0]).applied());
+    ASSERT_EQ(g.table_slots(), 32u) << cells;
+    ASSERT_TRUE(g.refine(g.cells().back()).applied());
+    EXPECT_EQ(g.table_keys(), static_cast<std::size_t>(cells) + 16);
+    EXPECT_EQ(g.table_slots(), cells == 3 ? 32u : 128u) << cells;
+    EXPECT_FALSE(g.audit());
+  }
 }
 
 }  // namespace

@@ -328,8 +328,7 @@ Index Lattice::find_node(const Point& p) const {
 inline Index Lattice::alloc_center(const Point& p) {
   Index c;
   if (free_centers_ == kNone) {
-    centers_.emplace_back();
-    c = static_cast<Index>(centers_.size() - 1);
+    c = static_cast<Index>(centers_.append_reserved());  // room made first (§9.8); every field written below
   } else {
     c = free_centers_;
     free_centers_ = centers_[c].nbr[0];
@@ -351,8 +350,7 @@ inline Index Lattice::alloc_node() {
 inline Index Lattice::alloc_node_record() {
   Index n;
   if (free_nodes_ == kNone) {
-    nodes_.emplace_back();
-    n = static_cast<Index>(nodes_.size() - 1);
+    n = static_cast<Index>(nodes_.append_reserved());  // room made first (§9.8); the caller writes its 8 slots (§9.5)
   } else {
     n = free_nodes_;
     free_nodes_ = nodes_[n].cell[0];
@@ -391,9 +389,9 @@ void Lattice::ensure_room(std::size_t new_centers, std::size_t new_nodes, std::s
   };
   grow(centers_, free_center_count_, new_centers);
   grow(nodes_, free_node_count_, new_nodes);
-  std::size_t slots = table_.slots();
-  while ((table_.used() + new_keys) * 5 > slots * 3) slots *= 2;
-  if (slots != table_.slots()) table_.rehash(slots);
+  // §9.9: load at most 0.6; 4x below 1 MiB of slots, 2x from there.
+  if (const std::size_t slots = PositionTable::grown(table_.slots(), table_.used() + new_keys); slots != table_.slots())
+    table_.rehash(slots);
 }
 
 void Lattice::reserve(std::size_t cells) {

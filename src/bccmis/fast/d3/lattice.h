@@ -18,7 +18,7 @@
 //     center's position) only; the other nodes are found from a cell and a
 //     direction. The 8 children of a cell take their homes from one hash
 //     of the cell.
-//   - the records live in two pools (fast/d3/pool.h, §9.8) grown by one byte
+//   - the records live in two pools (fast/pool.h, §9.8) grown by one byte
 //     copy, or by mremap from 1 MiB up; refine and coarsen make room first
 //     (pools, table) and then only write, so in steady state they allocate
 //     nothing and a failed growth leaves the lattice as it was.
@@ -43,9 +43,9 @@
 #include "bccmis/d3/graph.h"
 #include "bccmis/d3/ops.h"  // d3::RefineResult, d3::CoarsenResult (to_sets)
 #include "bccmis/d3/point.h"
-#include "bccmis/fast/d3/pool.h"
 #include "bccmis/fast/d3/position_table.h"
 #include "bccmis/fast/lattice.h"  // kMaxReserveHint
+#include "bccmis/fast/pool.h"
 #include "bccmis/fast/small_points.h"
 #include "bccmis/lattice.h"
 #include "bccmis/ops.h"
@@ -129,6 +129,9 @@ class Lattice {
   void reserve(std::size_t cells);
   /// Bytes held by the pools and the position table (capacity, not size).
   std::size_t memory_bytes() const;
+  /// The position table's slots and keys (spec/lattice3d.md §9.4, §9.9).
+  std::size_t table_slots() const { return table_.slots(); }
+  std::size_t table_keys() const { return table_.used(); }
 
   /// Internal consistency: every link is mirrored, every live record is in
   /// the position table under its position, the counts add up. Empty when
@@ -240,8 +243,8 @@ class Lattice {
 
   d3::LatticeSize size_;
   std::int64_t extent_[3] = {0, 0, 0};  ///< the domain: W*S, H*S, D*S
-  Pool<Center> centers_;                ///< spec/lattice3d.md §9.8
-  Pool<Node> nodes_;
+  bccmis::fast::Pool<Center> centers_;  ///< spec/lattice3d.md §9.8
+  bccmis::fast::Pool<Node> nodes_;
   Index free_centers_ = kNone;
   Index free_nodes_ = kNone;
   std::size_t free_center_count_ = 0;

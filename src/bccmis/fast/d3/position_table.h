@@ -16,7 +16,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "bccmis/fast/lattice.h"  // fast::detail::Array (64-byte aligned, huge pages)
+#include "bccmis/fast/pool.h"
 
 namespace bccmis::d3::fast {
 
@@ -49,6 +49,15 @@ class PositionTable {
   void erase(Ref ref, std::uint64_t hash);
   /// Names another reference in ref's entry (the key, and so the hash, stay).
   void replace(Ref ref, std::uint64_t hash, Ref by) { slots_[slot_of(ref, top(hash))].ref1 = by + 1; }
+  /// spec/lattice3d.md §9.9: the slots for `keys` keys in a table of
+  /// `slots`: unchanged while keys * 5 <= slots * 3 (load at most 0.6);
+  /// otherwise multiplied by 4 while below kQuadrupleBelow slots (1 MiB),
+  /// by 2 from there, until the load line holds.
+  static std::size_t grown(std::size_t slots, std::size_t keys) {
+    while (keys * 5 > slots * 3) slots *= slots < kQuadrupleBelow ? 4 : 2;
+    return slots;
+  }
+  static constexpr std::size_t kQuadrupleBelow = std::size_t{1} << 17;
   /// The same entries in a table of `slots` slots (a power of two, at least
   /// 32, above used() / 0.6 for the caller's load): homes from the stored
   /// hashes (§9.4). May throw std::bad_alloc, and then nothing changed.
@@ -76,8 +85,8 @@ class PositionTable {
   }
   void place(Entry entry);
 
-  bccmis::fast::detail::Array<Entry> slots_;
-  int shift_ = 32;  ///< 32 - b for 2^b slots
+  bccmis::fast::Pool<Entry> slots_;  ///< spec/lattice3d.md §9.8, §9.9
+  int shift_ = 32;                   ///< 32 - b for 2^b slots
   std::size_t used_ = 0;
 };
 
@@ -87,7 +96,8 @@ inline void PositionTable::reset(std::size_t slots) {
   int bits = 5;
   while ((std::size_t{1} << bits) < slots) ++bits;
   if (bits > 32) throw std::length_error("d3::fast::PositionTable: more than 2^32 slots");
-  bccmis::fast::detail::Array<Entry> fresh(std::size_t{1} << bits, Entry{0, 0});  // may throw: nothing changed
+  // §9.9: a mapped table's zero pages come from the kernel, unwritten.
+  auto fresh = bccmis::fast::Pool<Entry>::zeroed(std::size_t{1} << bits);  // may throw: nothing changed
   slots_.swap(fresh);
   shift_ = 32 - bits;
   used_ = 0;

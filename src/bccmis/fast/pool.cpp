@@ -1,5 +1,5 @@
-// bccmis::d3::fast: the pools' blocks (spec/lattice3d.md §9.8).
-#include "bccmis/fast/d3/pool.h"
+// bccmis::fast: the pools' blocks (spec/lattice3d.md §9.8).
+#include "bccmis/fast/pool.h"
 
 #include <cstring>
 #include <new>
@@ -8,7 +8,7 @@
 #include <sys/mman.h>
 #endif
 
-namespace bccmis::d3::fast::detail {
+namespace bccmis::fast::detail {
 
 namespace {
 
@@ -30,7 +30,7 @@ bool injected_failure() {
 // fast::detail::advise_huge_pages, from 4 MiB up), never for part of it: a
 // part would split the mapping, and mremap moves only a range inside one
 // mapping (it fails with EFAULT otherwise).
-void advise_huge_pages(void* p, std::size_t bytes) {
+void advise_whole_mapping(void* p, std::size_t bytes) {
 #if defined(MADV_HUGEPAGE)
   if (bytes >= (std::size_t{4} << 20)) madvise(p, bytes, MADV_HUGEPAGE);  // advice only: errors ignored
 #else
@@ -51,10 +51,10 @@ void* map(std::size_t bytes) {
 
 void* pool_grow(void* old, std::size_t old_bytes, std::size_t used, std::size_t& bytes) {
 #if defined(__linux__)
-  if (bytes >= kPoolMapBytes) {
+  if (pool_block_is_mapped(bytes)) {
     bytes = (bytes + kPage - 1) & ~(kPage - 1);
     void* p = nullptr;
-    if (old_bytes >= kPoolMapBytes) {
+    if (pool_block_is_mapped(old_bytes)) {
       // §9.8: the pages move, not their bytes; on failure the old mapping stays.
       if (injected_failure()) throw std::bad_alloc();
       p = mremap(old, old_bytes, bytes, MREMAP_MAYMOVE);
@@ -64,7 +64,7 @@ void* pool_grow(void* old, std::size_t old_bytes, std::size_t used, std::size_t&
       if (used != 0) std::memcpy(p, old, used);
       pool_free(old, old_bytes);
     }
-    advise_huge_pages(p, bytes);
+    advise_whole_mapping(p, bytes);
     return p;
   }
 #endif
@@ -77,7 +77,7 @@ void* pool_grow(void* old, std::size_t old_bytes, std::size_t used, std::size_t&
 void pool_free(void* block, std::size_t bytes) noexcept {
   if (block == nullptr) return;
 #if defined(__linux__)
-  if (bytes >= kPoolMapBytes) {
+  if (pool_block_is_mapped(bytes)) {
     munmap(block, bytes);
     return;
   }
@@ -85,4 +85,4 @@ void pool_free(void* block, std::size_t bytes) noexcept {
   ::operator delete(block, kAlign);
 }
 
-}  // namespace bccmis::d3::fast::detail
+}  // namespace bccmis::fast::detail

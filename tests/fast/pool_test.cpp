@@ -1,4 +1,4 @@
-// bccmis::d3::fast::Pool (spec/lattice3d.md §9.8): growth across the switch
+// bccmis::fast::Pool (spec/lattice3d.md §9.8): growth across the switch
 // from heap blocks to mappings keeps every byte, the switch stands at
 // exactly 1 MiB, a failed growth (operator new, mmap or mremap) leaves the
 // pool unchanged, copies hold the same bytes; and a failed mremap inside a
@@ -13,12 +13,12 @@
 #include <vector>
 
 #include "bccmis/fast/d3/lattice.h"
-#include "bccmis/fast/d3/pool.h"
+#include "bccmis/fast/pool.h"
 
 namespace {
 
-using bccmis::d3::fast::Pool;
-namespace detail = bccmis::d3::fast::detail;
+using bccmis::fast::Pool;
+namespace detail = bccmis::fast::detail;
 
 struct Rec {  // 128 bytes, like a center record
   std::uint64_t w[16];
@@ -53,7 +53,7 @@ struct Countdown {  // the §9.8 test hook, reset however the test ends
   ~Countdown() { detail::pool_map_countdown = -1; }
 };
 
-TEST(Fast3Pool, GrowthAcrossTheMapSwitchKeepsEveryByte) {
+TEST(FastPool, GrowthAcrossTheMapSwitchKeepsEveryByte) {
   // spec/lattice3d.md §9.8: growth by half, from the heap to a mapping at
   // 1 MiB and then by mremap; every record checked after every growth.
   Pool<Rec> pool;
@@ -72,7 +72,7 @@ TEST(Fast3Pool, GrowthAcrossTheMapSwitchKeepsEveryByte) {
   ASSERT_TRUE(intact(pool));
 }
 
-TEST(Fast3Pool, TheSwitchStandsAtOneMiB) {
+TEST(FastPool, TheSwitchStandsAtOneMiB) {
   // spec/lattice3d.md §9.8: below 1 MiB a heap block, at 1 MiB a mapping.
   // With every mapping refused, 1 MiB - 1 record still grows and 1 MiB throws.
   Pool<Rec> below, at;
@@ -88,7 +88,7 @@ TEST(Fast3Pool, TheSwitchStandsAtOneMiB) {
   EXPECT_TRUE(intact(at));
 }
 
-TEST(Fast3Pool, AFailedGrowthLeavesThePoolUnchanged) {
+TEST(FastPool, AFailedGrowthLeavesThePoolUnchanged) {
   // spec/lattice3d.md §9.8: the first mapping (mmap, from a heap block) and a
   // later one (mremap) refused; the pool keeps its block, size and bytes.
   for (const std::size_t records : {kLine / 2, kLine + 5}) {  // heap -> mmap, mapped -> mremap
@@ -110,7 +110,7 @@ TEST(Fast3Pool, AFailedGrowthLeavesThePoolUnchanged) {
   }
 }
 
-TEST(Fast3Pool, CopiesHoldTheSameBytes) {
+TEST(FastPool, CopiesHoldTheSameBytes) {
   for (const std::size_t records : {std::size_t{0}, std::size_t{7}, 2 * kLine + 3}) {
     Pool<Rec> pool;
     append(pool, records);
@@ -131,7 +131,7 @@ TEST(Fast3Pool, CopiesHoldTheSameBytes) {
   }
 }
 
-TEST(Fast3Pool, AFailedMremapLeavesTheLatticeUnchanged) {
+TEST(FastPool, AFailedMremapLeavesTheLatticeUnchanged) {
   // spec/lattice3d.md §9.8, §9.5: refine grows the pools before it writes.
   // Every refine is first tried with the next mapping refused; the center
   // pool passes 1 MiB (8192 centers) on the way to 16 384 cells, so that
@@ -158,6 +158,50 @@ TEST(Fast3Pool, AFailedMremapLeavesTheLatticeUnchanged) {
   EXPECT_GE(failures, 2);  // the mmap, then at least one mremap
   EXPECT_EQ(g.cell_count(), 16384u);
   EXPECT_TRUE(bccmis::d3::fast::canonical_state(g) == bccmis::d3::fast::canonical_state(twin));
+}
+
+TEST(FastPool, ZeroedPoolsAreZeroOnBothSidesOfTheMapSwitch) {
+  // spec/lattice3d.md §9.9: a heap block is zeroed, a fresh mapping's pages
+  // are zero unwritten; a dirty heap block freed first, so that a block
+  // reused without zeroing would show it.
+  for (const std::size_t records : {std::size_t{7}, std::size_t{100}, kLine - 1, kLine, 3 * kLine}) {
+    {
+      Pool<Rec> dirty;
+      append(dirty, records);
+    }
+    const Pool<Rec> pool = Pool<Rec>::zeroed(records);
+    ASSERT_EQ(pool.size(), records);
+    for (std::size_t i = 0; i < records; ++i)
+      for (std::size_t k = 0; k < 16; ++k) ASSERT_EQ(pool[i].w[k], 0u) << records << " records: " << i << ", " << k;
+  }
+}
+
+TEST(FastPool, AppendInReservedRoomAssignAndShrink) {
+  // spec/lattice3d.md §9.9: append_reserved takes the next record of the
+  // room made first, with no growth; assign and shrink_to_fit (the 2D
+  // lattice's calls) keep every byte.
+  Pool<Rec> pool;
+  pool.reserve(10);
+  const Rec* data = pool.data();
+  const std::size_t capacity = pool.capacity();
+  for (std::size_t i = 0; i < 10; ++i) {
+    ASSERT_EQ(pool.append_reserved(), i);
+    for (std::size_t k = 0; k < 16; ++k) pool[i].w[k] = word(i, k);
+  }
+  EXPECT_EQ(pool.data(), data);
+  EXPECT_EQ(pool.capacity(), capacity);
+  EXPECT_TRUE(intact(pool));
+  pool.reserve(100);
+  pool.shrink_to_fit();
+  EXPECT_EQ(pool.capacity(), 10u);
+  EXPECT_TRUE(intact(pool));
+  Rec one{};
+  one.w[3] = 7;
+  pool.assign(4, one);
+  ASSERT_EQ(pool.size(), 4u);
+  for (const Rec& r : pool) EXPECT_EQ(r.w[3], 7u);
+  pool.push_back(one);
+  EXPECT_EQ(pool.size(), 5u);
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// bccmis::d3::fast: the record pools of the fast 3D lattice
+// bccmis::fast: the record pools of the fast lattices, 2D and 3D
 // (spec/lattice3d.md §9.8): one contiguous block of trivially copyable
 // records named by index, grown by one byte copy of the used records (below
 // 1 MiB, from the heap) or by mremap with no copy at all (from 1 MiB up, an
@@ -7,6 +7,7 @@
 #pragma once
 
 #include <atomic>
+#include <cassert>
 #include <cstddef>
 #include <cstring>
 #include <new>
@@ -14,7 +15,7 @@
 #include <type_traits>
 #include <utility>
 
-namespace bccmis::d3::fast {
+namespace bccmis::fast {
 
 namespace detail {
 /// spec/lattice3d.md §9.8: blocks of this many bytes and more are mapped.
@@ -29,6 +30,16 @@ void* pool_grow(void* old, std::size_t old_bytes, std::size_t used, std::size_t&
 /// Frees a block of `bytes` bytes from pool_grow (null with 0: nothing).
 void pool_free(void* block, std::size_t bytes) noexcept;
 
+/// Whether a block of this many bytes is a mapping (§9.8; Linux only).
+constexpr bool pool_block_is_mapped(std::size_t bytes) {
+#if defined(__linux__)
+  return bytes >= kPoolMapBytes;
+#else
+  (void)bytes;
+  return false;
+#endif
+}
+
 /// For tests: when not negative, the number of mmap / mremap calls that
 /// succeed before one fails as if the kernel refused (then -1 again). The
 /// heap blocks fail through operator new.
@@ -36,7 +47,7 @@ inline std::atomic<long> pool_map_countdown{-1};
 }  // namespace detail
 
 /// A pool of trivially copyable records (spec/lattice3d.md §9.8): the
-/// std::vector calls the lattice uses, with growth by a byte copy or by
+/// std::vector calls the lattices use, with growth by a byte copy or by
 /// remapping. Copyable (the copy holds exactly the used records) and movable.
 template <class T>
 class Pool {
@@ -83,6 +94,10 @@ class Pool {
   const T* data() const { return data_; }
   T& operator[](std::size_t i) { return data_[i]; }
   const T& operator[](std::size_t i) const { return data_[i]; }
+  T* begin() { return data_; }
+  T* end() { return data_ + size_; }
+  const T* begin() const { return data_; }
+  const T* end() const { return data_ + size_; }
 
   /// Room for n records (no change when there is); throws std::bad_alloc
   /// with the pool unchanged.
@@ -98,6 +113,38 @@ class Pool {
     if (size_ == capacity()) reserve(size_ + size_ / 2 + 1);
     return *::new (static_cast<void*>(data_ + size_++)) T();
   }
+  void push_back(const T& value) { emplace_back() = value; }
+  /// The index of a record appended in room already reserved (size() <
+  /// capacity()), its bytes not written: the caller writes every field it
+  /// will read (spec/lattice3d.md §9.9).
+  std::size_t append_reserved() {
+    assert(size_ < capacity());
+    return size_++;
+  }
+  /// A pool of n records whose bytes are all zero. A mapped block's pages
+  /// are zero already (the kernel fills them when first touched), so from
+  /// 1 MiB up nothing is written here (spec/lattice3d.md §9.9); a heap
+  /// block is zeroed. Throws std::bad_alloc.
+  static Pool zeroed(std::size_t n) {
+    Pool pool;
+    pool.reserve(n);
+    if (!detail::pool_block_is_mapped(pool.bytes_) && n != 0)
+      std::memset(static_cast<void*>(pool.data_), 0, n * sizeof(T));
+    pool.size_ = n;
+    return pool;
+  }
+  /// n copies of value.
+  void assign(std::size_t n, const T& value) {
+    reserve(n);
+    for (std::size_t i = 0; i < n; ++i) ::new (static_cast<void*>(data_ + i)) T(value);
+    size_ = n;
+  }
+  /// A block of exactly the used records (rounded up to whole pages when
+  /// mapped); may throw std::bad_alloc, and then nothing changed.
+  void shrink_to_fit() {
+    Pool exact(*this);
+    swap(exact);
+  }
   /// n records; the new ones value-initialized.
   void resize(std::size_t n) {
     reserve(n);
@@ -111,4 +158,4 @@ class Pool {
   std::size_t bytes_ = 0;  ///< the block's size: heap below kPoolMapBytes, mapped from it up
 };
 
-}  // namespace bccmis::d3::fast
+}  // namespace bccmis::fast
