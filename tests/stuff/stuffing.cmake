@@ -100,4 +100,11 @@ bccmis_cli_test(stuff_features_and_no_features 2 ARGS stuff --shape sphere --fea
 bccmis_cli_test(stuff_feature_angle_range 2 ARGS stuff --shape sphere --feature-angle 181 --stats
                 STDERR_REGEX "--feature-angle: Value 181 not in range")
 bccmis_cli_test(stuff_features_animate 2 ARGS stuff --shape sphere --features --animate 2 -o a.pvd
-                STDERR_REGEX "--features and --feature-angle apply without --animate")
+                STDERR_REGEX "--features, --feature-angle and --crease-cuts apply without --animate")
+# spec/cli.md: with --animate the options a moving shape does not take are refused, not ignored.
+bccmis_cli_test(stuff_crease_cuts_animate 2 ARGS stuff --shape sphere --crease-cuts 0.25 --animate 2 -o a.pvd
+                STDERR_REGEX "--features, --feature-angle and --crease-cuts apply without --animate")
+bccmis_cli_test(stuff_memory_limit_animate 2 ARGS stuff --shape sphere --memory-limit 8 --animate 2 -o a.pvd
+                STDERR_REGEX "--memory-limit applies without --animate \\(spec/stuffing.md S25")
+bccmis_cli_test(stuff_impl_reference_animate 2 ARGS stuff --shape sphere --impl reference --animate 2 -o a.pvd
+                STDERR_REGEX "--impl reference applies without --animate")

@@ -53,7 +53,14 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
     throw InputError("--animate writes one .pvd (ParaView's index) with its .vtu frames beside it: give -o FILE.pvd");
   if (o.outputs.empty() && !o.stats) throw InputError("nothing to do: give -o FILE.pvd or --stats");
   if (o.hausdorff) throw InputError("--hausdorff applies without --animate (a frame's statistics have no distance)");
-  if (o.features || o.feature_angle >= 0) throw InputError("--features and --feature-angle apply without --animate");
+  // spec/cli.md: what a moving shape does not take is refused, not ignored.
+  if (o.features || o.feature_angle >= 0 || o.crease_cuts > 0)
+    throw InputError("--features, --feature-angle and --crease-cuts apply without --animate");
+  if (o.memory_limit_gb > 0)
+    throw InputError(
+        "--memory-limit applies without --animate (spec/stuffing.md S25 estimates one lattice, not a moving one)");
+  if (o.impl != "fast")
+    throw InputError("--impl " + o.impl + " applies without --animate (a step moves the fast lattice, S15)");
   stuff::AnimateSettings settings;
   settings.lattice = so;
   settings.frames = o.animate;
