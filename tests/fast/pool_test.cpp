@@ -1,8 +1,9 @@
-// bccmis::fast::Pool (spec/lattice3d.md §9.8): growth across the switch
-// from heap blocks to mappings keeps every byte, the switch stands at
-// exactly 1 MiB, a failed growth (operator new, mmap or mremap) leaves the
-// pool unchanged, copies hold the same bytes; and a failed mremap inside a
-// refine leaves the lattice unchanged.
+// bccmis::fast::Pool (spec/lattice3d.md §9.8, §9.9): growth across the
+// switch from heap blocks to mappings keeps every byte, the switch stands at
+// exactly 1 MiB, a pool grows 4x below it and by an eighth from it, a failed
+// growth (operator new, mmap or mremap) leaves the pool unchanged, copies
+// hold the same bytes; and a failed mremap inside a refine leaves the
+// lattice unchanged.
 #include <gtest/gtest.h>
 
 #include <cstddef>
@@ -86,6 +87,23 @@ TEST(FastPool, TheSwitchStandsAtOneMiB) {
   EXPECT_EQ(at.capacity(), capacity);
   EXPECT_TRUE(intact(below));
   EXPECT_TRUE(intact(at));
+}
+
+TEST(FastPool, GrowthIsFourfoldOnTheHeapAndAnEighthOnceMapped) {
+  // spec/lattice3d.md §9.9: a pool short of room grows to max(need, 4 x
+  // capacity) while its block is on the heap, max(need, capacity + capacity
+  // / 8) once it is mapped. On the line: 1 MiB - 1 record is a heap block,
+  // 1 MiB a mapping.
+  Pool<Rec> below, at;
+  below.reserve(kLine - 1);
+  at.reserve(kLine);
+  EXPECT_EQ(below.grown_capacity(kLine), 4 * (kLine - 1));
+  EXPECT_EQ(at.grown_capacity(kLine + 1), kLine + kLine / 8);
+  // need wins when it is larger.
+  EXPECT_EQ(below.grown_capacity(5 * kLine), 5 * kLine);
+  EXPECT_EQ(at.grown_capacity(2 * kLine), 2 * kLine);
+  Pool<Rec> empty;
+  EXPECT_EQ(empty.grown_capacity(3), 3u);
 }
 
 TEST(FastPool, AFailedGrowthLeavesThePoolUnchanged) {

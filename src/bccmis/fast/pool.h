@@ -6,6 +6,7 @@
 // Growth succeeds whole or throws std::bad_alloc with the pool unchanged.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cassert>
 #include <cstddef>
@@ -107,6 +108,15 @@ class Pool {
     std::size_t bytes = n * sizeof(T);
     data_ = static_cast<T*>(detail::pool_grow(data_, bytes_, size_ * sizeof(T), bytes));
     bytes_ = bytes;
+  }
+  /// spec/lattice3d.md §9.9: the capacity this pool grows to when it must
+  /// hold `need` records: max(need, 4 x capacity) while its block is below
+  /// kPoolMapBytes (a heap block: growth is a copy, so few large steps),
+  /// max(need, capacity + capacity / 8) from there (a mapping: growth is an
+  /// mremap that copies nothing, so small steps and little unused capacity).
+  std::size_t grown_capacity(std::size_t need) const {
+    const std::size_t c = capacity();
+    return std::max(need, bytes_ >= detail::kPoolMapBytes ? c + c / 8 : 4 * c);
   }
   /// Appends a value-initialized record (grows by half when full).
   T& emplace_back() {

@@ -384,8 +384,8 @@ void Lattice::ensure_room(std::size_t new_centers, std::size_t new_nodes, std::s
     if (free_count + (pool.capacity() - pool.size()) >= wanted) return;
     const std::size_t need = pool.size() + (wanted - free_count);
     if (need > kMaxPool) throw std::length_error("d3::fast::Lattice: 2^26 or more vertices of one kind");
-    // Grow by half: amortized O(1), at most 1.5x the size in capacity.
-    pool.reserve(std::min(kMaxPool, std::max(need, pool.capacity() + pool.capacity() / 2)));
+    // §9.9: by 4 on the heap, by 1/8 once mapped; amortized O(1).
+    pool.reserve(std::min(kMaxPool, pool.grown_capacity(need)));
   };
   grow(centers_, free_center_count_, new_centers);
   grow(nodes_, free_node_count_, new_nodes);
