@@ -165,9 +165,10 @@ def refusals(mpirun, bccmis_mpi, ranks, work):
     if "--path and --compare apply with --animate" not in r.stderr or os.listdir(work):
         sys.exit(f"FAIL: --path without --animate: not refused as bccmis stuff refuses it:\n{r.stderr}")
     # D15: --repartition-threshold T, T a number >= 1, with --animate only.
-    for value in ["0.99", "nan"]:
+    for value in ["0.99", "nan", "inf"]:
         r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *base, "--repartition-threshold", value, *out], expect=2)
-        if "--repartition-threshold" not in r.stderr or "D15" not in r.stderr or os.listdir(work):
+        if (f"--repartition-threshold: '{value}' is not a finite number >= 1" not in r.stderr or "D15" not in r.stderr
+                or os.listdir(work)):
             sys.exit(f"FAIL: --repartition-threshold {value}: not refused naming it and D15:\n{r.stderr}")
     r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", "--shape", "sphere", "-L", "2", "--repartition-threshold", "2",
                                   *out], expect=2)

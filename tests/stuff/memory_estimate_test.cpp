@@ -23,17 +23,17 @@ constexpr int kLevel = 2;
 
 /// The estimate mesh_shape() makes: the shape in S24's local coordinates,
 /// the options at the fitted level.
-MemoryEstimate estimate_of(const Shape& world, int meshes) {
+MemoryEstimate estimate_of(const Shape& world, int meshes, int level = kLevel, double available = HUGE_VAL) {
   const std::unique_ptr<Shape> local = world.normalised(normalisation_of(world.bounds()));
   StuffOptions options;
-  options.max_level = kLevel;
+  options.max_level = level;
   options.max_level = fit_lattice(local->bounds(), options).size.L;
-  return estimate_memory(*local, options, HUGE_VAL, meshes);
+  return estimate_memory(*local, options, available, meshes);
 }
 
-Settings with_limit(double limit, double crease_cuts) {
+Settings with_limit(double limit, double crease_cuts, int level = kLevel) {
   Settings s;
-  s.lattice.max_level = kLevel;
+  s.lattice.max_level = level;
   s.features.on = true;
   s.features.crease_cuts = crease_cuts;
   s.memory_limit = limit;
@@ -75,6 +75,24 @@ TEST(MemoryEstimate, OnTheLineWithAndWithoutCreaseCuts) {
   // on; the next double below refuses it.
   EXPECT_EQ(refusal(*fandisk, with_limit(two, kCreaseCutDistance)), "");
   EXPECT_NE(refusal(*fandisk, with_limit(std::nextafter(two, 0.0), kCreaseCutDistance)), "");
+}
+
+//= spec/stuffing.md S25 type=test
+TEST(MemoryEstimate, TheLevelHintNeverBelowTheCoarsestLevelAllowed) {
+  // At the default 4 cells the coarsest max level is 2 (4 x 2^2 > 10). At
+  // level 3 the estimate over 4 is level 2's: a limit equal to it names
+  // -L 2, the next double below names no level (not -L 1, which S2 refuses).
+  // Below every cube's estimate S25 estimates by the probe (available -1).
+  const auto fandisk = load_mesh_file(kCgal + "/fandisk.off");
+  EXPECT_EQ(coarsest_max_level(StuffOptions{}), 2);
+  const double three = estimate_of(*fandisk, 1, 3, -1).bytes();
+  const std::string fits = refusal(*fandisk, with_limit(three / 4, 0, 3));
+  EXPECT_NE(fits.find("; -L 2 would fit"), std::string::npos) << fits;
+  const std::string none = refusal(*fandisk, with_limit(std::nextafter(three / 4, 0.0), 0, 3));
+  EXPECT_NE(none.find("; even -L 2, the coarsest max level these options allow, would not fit"), std::string::npos)
+      << none;
+  const std::string tiny = refusal(*fandisk, with_limit(1e-12, 0, 3));
+  EXPECT_NE(tiny.find("even -L 2"), std::string::npos) << tiny;
 }
 
 }  // namespace

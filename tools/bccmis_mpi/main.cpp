@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
             char* end = nullptr;
             const double t = std::strtod(value.c_str(), &end);
             if (end == value.c_str() || *end != '\0' || !std::isfinite(t) || t < 1)
-              return "'" + value + "' is not a number >= 1 (spec/distributed.md D15)";
+              return "'" + value + "' is not a finite number >= 1 (spec/distributed.md D15)";
             return {};
           });
   cmd->footer("Example:\n  mpirun -n 2 bccmis-mpi stuff --shape torus -L 4 -o torus.pvtu");

@@ -31,9 +31,10 @@ void refuse_what_will_not_fit_on_rank(const stuff::Shape& shape, const stuff::St
            (role.crease_cuts
                 ? ", and " + std::to_string(static_cast<int>(stuff::kBytesPerLeaf)) + " for S35.8's candidates"
                 : "");
-  throw stuff::ShapeError(
-      stuff::too_much_memory(stuff::fit_lattice(shape.bounds(), options).size.L, leaves, bytes, available_bytes,
-                             "on rank " + std::to_string(role.rank) + " by D16's estimate", how, " to a rank"));
+  throw stuff::ShapeError(stuff::too_much_memory(stuff::fit_lattice(shape.bounds(), options).size.L, leaves, bytes,
+                                                 available_bytes,
+                                                 "on rank " + std::to_string(role.rank) + " by D16's estimate", how,
+                                                 " to a rank", stuff::coarsest_max_level(options)));
 }
 
 }  // namespace bccmis::distributed

@@ -58,16 +58,27 @@ std::optional<double> available_memory() {
   return std::nullopt;
 }
 
+int coarsest_max_level(const StuffOptions& options) {
+  int level = std::max(options.min_level, 0);
+  while (level < 20 && std::ldexp(static_cast<double>(options.cells), level) <= 10) ++level;  // S2: N 2^L > 10
+  return level;
+}
+
 std::string too_much_memory(int level, double leaves, double bytes, double available_bytes, const std::string& whose,
-                            const std::string& how, const std::string& for_whom) {
-  // The finest level that fits: the estimate falls by 4 (at least) a level.
+                            const std::string& how, const std::string& for_whom, int coarsest) {
+  // The finest level that fits: the estimate falls by 4 (at least) a level;
+  // never below the coarsest level the options allow (S25).
   int fits = level;
-  for (double b = bytes; fits > 0 && b > available_bytes; b /= 4) --fits;
+  double b = bytes;
+  for (; fits > coarsest && b > available_bytes; b /= 4) --fits;
   char count[32];
   std::snprintf(count, sizeof count, "%.3g", leaves);
+  const std::string level_hint = b > available_bytes ? "even -L " + std::to_string(coarsest) +
+                                                           ", the coarsest max level these options allow, would not fit"
+                                                     : "-L " + std::to_string(fits) + " would fit";
   return "max level " + std::to_string(level) + " needs about " + count + " leaves, " + gigabytes(bytes) + " " + whose +
-         " (" + how + "), more than the " + gigabytes(available_bytes) + " of memory available" + for_whom + "; -L " +
-         std::to_string(fits) + " would fit";
+         " (" + how + "), more than the " + gigabytes(available_bytes) + " of memory available" + for_whom + "; " +
+         level_hint;
 }
 
 void refuse_what_will_not_fit(const Shape& shape, const StuffOptions& options, double available_bytes, int meshes) {
@@ -79,7 +90,8 @@ void refuse_what_will_not_fit(const Shape& shape, const StuffOptions& options, d
       std::to_string(static_cast<int>(kBytesPerLeaf)) + " bytes per estimated leaf" +
           (meshes > 1
                ? ", and " + std::to_string(static_cast<int>(kSecondMeshBytesPerLeaf)) + " for S35.8's second mesh"
-               : std::string())));
+               : std::string()),
+      "", coarsest_max_level(options)));
 }
 
 }  // namespace bccmis::stuff

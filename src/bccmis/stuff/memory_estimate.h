@@ -37,11 +37,17 @@ MemoryEstimate estimate_memory(const Shape& shape, const StuffOptions& options, 
 
 /// S25's refusal: "max level L needs about LEAVES leaves, BYTES GB WHOSE
 /// (HOW), more than the AVAILABLE GB of memory available[ FOR]; -L N would
-/// fit", N the finest level whose estimate (falling by 4 a level) fits.
+/// fit", N the finest level whose estimate (falling by 4 a level) fits, not
+/// below `coarsest`; when none from `coarsest` up fits: "; even -L C, the
+/// coarsest max level these options allow, would not fit" (S25).
 /// `whose` is "by S25's estimate" for one process; bccmis-mpi stuff names
 /// the rank (spec/distributed.md D16).
 std::string too_much_memory(int level, double leaves, double bytes, double available_bytes, const std::string& whose,
-                            const std::string& how, const std::string& for_whom = "");
+                            const std::string& how, const std::string& for_whom, int coarsest);
+
+/// S25: the coarsest max level `options` allow: at least --min-level, and
+/// the least L with --cells x 2^L > 10 (S2).
+int coarsest_max_level(const StuffOptions& options);
 
 /// MemAvailable of /proc/meminfo in bytes, or nothing when it cannot be read.
 std::optional<double> available_memory();
