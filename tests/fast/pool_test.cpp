@@ -2,14 +2,19 @@
 // switch from heap blocks to mappings keeps every byte, the switch stands at
 // exactly 1 MiB, a pool grows 4x below it and by an eighth from it, a failed
 // growth (operator new, mmap or mremap) leaves the pool unchanged, copies
-// hold the same bytes; and a failed mremap inside a refine leaves the
-// lattice unchanged.
+// hold the same bytes; a failed mremap inside a refine leaves the lattice
+// unchanged; and a block of 4 MiB and more is whole huge pages at a
+// huge-page boundary that the kernel was advised to back with them (§9.10,
+// read back from /proc/self/smaps).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <fstream>
 #include <new>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -109,21 +114,22 @@ TEST(FastPool, GrowthIsFourfoldOnTheHeapAndAnEighthOnceMapped) {
 TEST(FastPool, AFailedGrowthLeavesThePoolUnchanged) {
   // spec/lattice3d.md §9.8: the first mapping (mmap, from a heap block) and a
   // later one (mremap) refused; the pool keeps its block, size and bytes.
-  for (const std::size_t records : {kLine / 2, kLine + 5}) {  // heap -> mmap, mapped -> mremap
+  // heap -> mmap, mapped -> mremap onto a huge block, huge -> huge (§9.10)
+  for (const std::size_t records : {kLine / 2, kLine + 5, 5 * kLine}) {
     Pool<Rec> pool;
     append(pool, records);
     const Rec* data = pool.data();
     const std::size_t capacity = pool.capacity();
     {
       const Countdown refuse(0);
-      EXPECT_THROW(pool.reserve(4 * kLine), std::bad_alloc) << records;
+      EXPECT_THROW(pool.reserve(std::max(4 * kLine, 2 * records)), std::bad_alloc) << records;
     }
     EXPECT_EQ(pool.data(), data);
     EXPECT_EQ(pool.capacity(), capacity);
     EXPECT_EQ(pool.size(), records);
     EXPECT_TRUE(intact(pool));
-    pool.reserve(4 * kLine);  // and it still grows
-    EXPECT_GE(pool.capacity(), 4 * kLine);
+    pool.reserve(std::max(4 * kLine, 2 * records));  // and it still grows
+    EXPECT_GE(pool.capacity(), std::max(4 * kLine, 2 * records));
     EXPECT_TRUE(intact(pool));
   }
 }
@@ -223,3 +229,100 @@ TEST(FastPool, AppendInReservedRoomAssignAndShrink) {
 }
 
 }  // namespace
+
+// ---- Huge pages (spec/lattice3d.md §9.10) ----------------------------------
+
+// The /proc/self/smaps entry of the mapping holding `p`: its range, whether
+// it was advised to use huge pages (VmFlags "hg") and its AnonHugePages.
+struct Mapping {
+  std::uintptr_t begin = 0, end = 0;
+  bool advised = false;
+  std::size_t huge_kib = 0;
+};
+Mapping mapping_of(const void* p) {
+  const auto at = reinterpret_cast<std::uintptr_t>(p);
+  std::ifstream smaps("/proc/self/smaps");
+  Mapping m;
+  bool inside = false;
+  for (std::string line; std::getline(smaps, line);) {
+    std::istringstream words(line);
+    std::string first;
+    words >> first;
+    const std::size_t dash = first.find('-');
+    if (dash != std::string::npos && first.find(':') == std::string::npos) {  // "begin-end perms ..."
+      if (inside) break;
+      const std::uintptr_t begin = std::stoull(first.substr(0, dash), nullptr, 16);
+      const std::uintptr_t end = std::stoull(first.substr(dash + 1), nullptr, 16);
+      inside = begin <= at && at < end;
+      if (inside) m = {begin, end, false, 0};
+    } else if (inside && first == "AnonHugePages:") {
+      words >> m.huge_kib;
+    } else if (inside && first == "VmFlags:") {
+      for (std::string flag; words >> flag;) m.advised = m.advised || flag == "hg";
+    }
+  }
+  return m;
+}
+
+// Transparent huge pages are not off (/sys/kernel/mm/transparent_hugepage/
+// enabled reads "[always]" or "[madvise]"), so advised blocks get them.
+bool huge_pages_on() {
+  std::ifstream enabled("/sys/kernel/mm/transparent_hugepage/enabled");
+  std::string text;
+  std::getline(enabled, text);
+  return text.find("[always]") != std::string::npos || text.find("[madvise]") != std::string::npos;
+}
+
+// What §9.10 asks of a block of `bytes` at `p`: from kPoolHugeBytes up, whole
+// huge pages at a huge-page boundary, inside one mapping advised as a whole.
+::testing::AssertionResult huge_block(const void* p, std::size_t bytes) {
+  const auto at = reinterpret_cast<std::uintptr_t>(p);
+  if (at % detail::kPoolHugePage != 0) return ::testing::AssertionFailure() << "starts off a 2 MiB boundary";
+  if (bytes % detail::kPoolHugePage != 0)
+    return ::testing::AssertionFailure() << bytes << " bytes: not whole huge pages";
+  const Mapping m = mapping_of(p);
+  if (m.begin > at || m.end < at + bytes) return ::testing::AssertionFailure() << "not inside one mapping";
+  if (!m.advised) return ::testing::AssertionFailure() << "mapping not advised to use huge pages (no hg in VmFlags)";
+  return ::testing::AssertionSuccess();
+}
+
+TEST(FastPool, BlocksFromFourMiBAreWholeHugePagesAtABoundaryAndAdvised) {
+  // spec/lattice3d.md §9.10: the line at kPoolHugeBytes. A block of 4 MiB
+  // is huge; one of 4 MiB - 4 KiB is a plain mapping, not advised.
+  constexpr std::size_t kHugeLine = detail::kPoolHugeBytes / sizeof(Rec);
+  Pool<Rec> at, below;
+  at.reserve(kHugeLine);
+  below.reserve(kHugeLine - 4096 / sizeof(Rec));
+  EXPECT_EQ(at.capacity(), kHugeLine);
+  EXPECT_EQ(below.capacity(), kHugeLine - 4096 / sizeof(Rec));
+  EXPECT_TRUE(huge_block(at.data(), at.capacity() * sizeof(Rec)));
+  EXPECT_FALSE(mapping_of(below.data()).advised);
+  // A block just past the line is rounded up to whole huge pages.
+  Pool<Rec> past;
+  past.reserve(kHugeLine + 1);
+  EXPECT_EQ(past.capacity() * sizeof(Rec), detail::kPoolHugeBytes + detail::kPoolHugePage);
+  EXPECT_TRUE(huge_block(past.data(), past.capacity() * sizeof(Rec)));
+}
+
+TEST(FastPool, AGrowingPoolKeepsItsHugePages) {
+  // spec/lattice3d.md §9.10: a pool grown record by record past 4 MiB stays
+  // at a boundary, whole huge pages, advised, after every growth (in place
+  // or moved onto a reservation), and its written pages are huge pages
+  // (AnonHugePages), which a move to an address off a boundary would split.
+  Pool<Rec> pool;
+  std::size_t huge_growths = 0;
+  while (pool.size() < 24 * kLine) {  // 24 MiB
+    const std::size_t before = pool.capacity();
+    append(pool, 1);
+    if (pool.capacity() != before && pool.capacity() * sizeof(Rec) >= detail::kPoolHugeBytes) {
+      ++huge_growths;
+      ASSERT_TRUE(huge_block(pool.data(), pool.capacity() * sizeof(Rec))) << "after growing to " << pool.capacity();
+    }
+  }
+  EXPECT_GE(huge_growths, 3u);
+  ASSERT_TRUE(intact(pool));
+  ASSERT_TRUE(huge_pages_on()) << "transparent huge pages are off: this test needs them";
+  // The records written since the block reached 4 MiB: at least 20 MiB of
+  // whole huge pages (what was written below 4 MiB may be small pages).
+  EXPECT_GE(mapping_of(pool.data()).huge_kib, std::size_t{16} << 10);
+}

@@ -2,8 +2,9 @@
 // (spec/lattice3d.md §9.8): one contiguous block of trivially copyable
 // records named by index, grown by one byte copy of the used records (below
 // 1 MiB, from the heap) or by mremap with no copy at all (from 1 MiB up, an
-// anonymous mapping whose pages arrive zero-filled when first touched).
-// Growth succeeds whole or throws std::bad_alloc with the pool unchanged.
+// anonymous mapping whose pages arrive zero-filled when first touched; from
+// 4 MiB up whole huge pages at a huge-page boundary, advised to use them,
+// §9.10). Growth succeeds whole or throws std::bad_alloc with the pool unchanged.
 #pragma once
 
 #include <algorithm>
@@ -21,6 +22,18 @@ namespace bccmis::fast {
 namespace detail {
 /// spec/lattice3d.md §9.8: blocks of this many bytes and more are mapped.
 inline constexpr std::size_t kPoolMapBytes = std::size_t{1} << 20;
+/// spec/lattice3d.md §9.10: mapped blocks of this many bytes and more are
+/// whole huge pages of kPoolHugePage bytes, start at a multiple of it and are
+/// advised to use transparent huge pages.
+inline constexpr std::size_t kPoolHugeBytes = std::size_t{4} << 20;
+inline constexpr std::size_t kPoolHugePage = std::size_t{2} << 20;
+
+/// The size of a mapped block that holds `bytes`: whole pages, and whole
+/// huge pages from kPoolHugeBytes up (§9.10).
+constexpr std::size_t pool_mapped_bytes(std::size_t bytes) {
+  const std::size_t unit = bytes >= kPoolHugeBytes ? kPoolHugePage : std::size_t{4096};
+  return (bytes + unit - 1) & ~(unit - 1);
+}
 
 /// A block of at least `bytes` bytes holding the first `used` bytes of `old`
 /// (a block of `old_bytes` bytes from this function, or null with 0), which
