@@ -38,8 +38,8 @@ constexpr std::size_t pool_mapped_bytes(std::size_t bytes) {
 /// A block of at least `bytes` bytes holding the first `used` bytes of `old`
 /// (a block of `old_bytes` bytes from this function, or null with 0), which
 /// is freed. Returns the new block and sets `bytes` to its size (mapped
-/// blocks are whole pages). On failure throws std::bad_alloc and `old` is
-/// untouched (§9.8).
+/// blocks are whole pages, and whole huge pages from 4 MiB, §9.10). On
+/// failure throws std::bad_alloc and `old` is untouched (§9.8).
 void* pool_grow(void* old, std::size_t old_bytes, std::size_t used, std::size_t& bytes);
 /// Frees a block of `bytes` bytes from pool_grow (null with 0: nothing).
 void pool_free(void* block, std::size_t bytes) noexcept;
@@ -163,7 +163,8 @@ class Pool {
     size_ = n;
   }
   /// A block of exactly the used records (rounded up to whole pages when
-  /// mapped); may throw std::bad_alloc, and then nothing changed.
+  /// mapped, to whole huge pages from 4 MiB, §9.10); may throw
+  /// std::bad_alloc, and then nothing changed.
   void shrink_to_fit() {
     Pool exact(*this);
     swap(exact);
