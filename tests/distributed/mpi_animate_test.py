@@ -13,6 +13,12 @@
       the same, and D15's step of every frame after the first (rank 0's
       "forest: ..." line) both coarsened and refined leaves; with
       --repartition-threshold 1 in STUFF_ARGS, every step repartitioned.
+  mpi_animate_test.py faults MPIRUN BCCMIS BCCMIS_MPI RANKS
+      an empty frame (the sphere moved out of reach): bccmis stuff and the
+      ranks refuse it with exit 2 and the same message (S26, D14), nothing
+      written; D17's check of the moved forest, handed a wrong forest by its
+      test hook (BCCMIS_TEST_CHECK_PREVIOUS_FRAME), exit 1 naming the frame,
+      nothing written.
   mpi_animate_test.py refusals MPIRUN BCCMIS BCCMIS_MPI RANKS
       the options D14 refuses with --animate, each by name: exit 2, D14 named,
       nothing written; --check without --gather (D17, naming D12).
@@ -21,6 +27,7 @@ import collections
 import json
 import os
 import re
+import subprocess
 import sys
 import tempfile
 import xml.etree.ElementTree as ET
@@ -144,6 +151,43 @@ def same_report(report, table, serial_table, counts):
         sys.exit(f"FAIL: --compare: speedup {report['speedup']}, the means' ratio {ratio}")
 
 
+def message(stderr, prefix):
+    """The text after `prefix` on the line of stderr that starts with it."""
+    lines = [line[len(prefix):] for line in stderr.splitlines() if line.startswith(prefix)]
+    return lines[0] if len(lines) == 1 else None
+
+
+#= spec/distributed.md#D14 type=test
+#= spec/distributed.md#D17 type=test
+def faults(mpirun, bccmis, bccmis_mpi, ranks, work):
+    # D14: an empty frame refused as the serial animation refuses it, in its words.
+    far = ["--shape", "sphere", "-L", "3", "--animate", "3", "--path", "1e9,0,0"]
+    serial = run([bccmis, "stuff", *far, "-q", "-o", os.path.join(work, "serial.pvd")], expect=2)
+    r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *far, "-q", "-o", os.path.join(work, "out.pvtu")], expect=2)
+    want = message(serial.stderr, "bccmis: ")
+    got = message(r.stderr, "bccmis-mpi stuff: rank 0: ")
+    if want is None or not want.startswith("sphere r=1: frame 0: the mesh is empty: bad input for this level"):
+        sys.exit(f"FAIL: bccmis stuff's empty frame:\n{serial.stderr}")
+    if got != want:
+        sys.exit(f"FAIL: the ranks' empty frame says {got!r}, bccmis stuff {want!r}")
+    if os.listdir(work):
+        sys.exit(f"FAIL: an empty frame left {os.listdir(work)}")
+    # D17: the check of the moved forest against a wrong forest (frame k - 1's, by the test hook).
+    hook = "BCCMIS_TEST_CHECK_PREVIOUS_FRAME"
+    cmd = mpi(mpirun, ranks) + ["-x", hook, bccmis_mpi, "stuff", "--shape", "sphere", "-L", "2", "--animate", "1",
+                                "--gather", "--check", "-q", "-o", os.path.join(work, "whole.vtu")]
+    p = subprocess.run(cmd, capture_output=True, text=True, timeout=300, env={**os.environ, hook: "1"})
+    says = ("frame 1: the moved forest differs from the forest built for the frame (",
+            "; spec/distributed.md D15, D17)")
+    line = message(p.stderr, "bccmis-mpi stuff: rank 0: ")
+    if p.returncode != 1 or line is None or not line.startswith(says[0]) or not line.endswith(says[1]):
+        sys.exit(f"FAIL: the check of a wrong forest: exit {p.returncode} (expected 1), stderr:\n{p.stderr}")
+    if os.listdir(work):
+        sys.exit(f"FAIL: a failed check left {os.listdir(work)}")
+    print(f"ok: {ranks} ranks: an empty frame refused in bccmis stuff's words ({want[:40]}...), a wrong forest "
+          "refused by --check (exit 1), nothing written")
+
+
 def refusals(mpirun, bccmis_mpi, ranks, work):
     base = ["--shape", "sphere", "-L", "2", "--animate", "2", "-q"]
     out = ["-o", os.path.join(work, "out.pvtu")]
@@ -185,6 +229,8 @@ def main():
     with tempfile.TemporaryDirectory() as work:
         if mode in ("frames", "steps"):
             frames(mpirun, bccmis, bccmis_mpi, int(ranks), args, work, steps=mode == "steps")
+        elif mode == "faults":
+            faults(mpirun, bccmis, bccmis_mpi, int(ranks), work)
         else:
             refusals(mpirun, bccmis_mpi, int(ranks), work)
 
