@@ -165,5 +165,12 @@ bccmis_add_test(mpi.stuff_animate_steps_sphere_3_ranks
                 COMMAND ${_bccmis_mpi_animate_test} steps ${_bccmis_mpi_tools} 3 -- --shape sphere -L 2 --cells 6
                         --animate 3 --repartition-threshold 1
                 ${_bccmis_mpi_props})
+# D14, D17: an empty frame in bccmis stuff's words; the forest check's
+# failure, planted by its test hook.
+bccmis_add_test(mpi.stuff_animate_faults_2_ranks COMMAND ${_bccmis_mpi_animate_test} faults ${_bccmis_mpi_tools} 2
+                ${_bccmis_mpi_props})
+# D18: what a signal to the ranks leaves while they stage the frames.
+bccmis_add_test(mpi.stuff_animate_signals_2_ranks COMMAND ${_bccmis_mpi_animate_test} signals ${_bccmis_mpi_tools} 2
+                ${_bccmis_mpi_props})
 bccmis_add_test(mpi.stuff_animate_refusals_2_ranks COMMAND ${_bccmis_mpi_animate_test} refusals ${_bccmis_mpi_tools} 2
                 ${_bccmis_mpi_props})

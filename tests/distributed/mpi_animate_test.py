@@ -13,6 +13,17 @@
       the same, and D15's step of every frame after the first (rank 0's
       "forest: ..." line) both coarsened and refined leaves; with
       --repartition-threshold 1 in STUFF_ARGS, every step repartitioned.
+  mpi_animate_test.py faults MPIRUN BCCMIS BCCMIS_MPI RANKS
+      an empty frame (the sphere moved out of reach): bccmis stuff and the
+      ranks refuse it with exit 2 and the same message (S26, D14), nothing
+      written; D17's check of the moved forest, handed a wrong forest by its
+      test hook (BCCMIS_TEST_CHECK_PREVIOUS_FRAME), exit 1 naming the frame,
+      nothing written.
+  mpi_animate_test.py signals MPIRUN BCCMIS BCCMIS_MPI RANKS
+      D18: while the ranks stage their frames, SIGKILL to every rank leaves
+      one hidden staging directory and nothing else, which the next run of
+      the same outputs removes (saying so) before writing its own; SIGTERM
+      to every rank leaves nothing.
   mpi_animate_test.py refusals MPIRUN BCCMIS BCCMIS_MPI RANKS
       the options D14 refuses with --animate, each by name: exit 2, D14 named,
       nothing written; --check without --gather (D17, naming D12).
@@ -21,8 +32,11 @@ import collections
 import json
 import os
 import re
+import signal
+import subprocess
 import sys
 import tempfile
+import time
 import xml.etree.ElementTree as ET
 
 import meshio
@@ -144,6 +158,113 @@ def same_report(report, table, serial_table, counts):
         sys.exit(f"FAIL: --compare: speedup {report['speedup']}, the means' ratio {ratio}")
 
 
+def message(stderr, prefix):
+    """The text after `prefix` on the line of stderr that starts with it."""
+    lines = [line[len(prefix):] for line in stderr.splitlines() if line.startswith(prefix)]
+    return lines[0] if len(lines) == 1 else None
+
+
+#= spec/distributed.md#D14 type=test
+#= spec/distributed.md#D17 type=test
+def faults(mpirun, bccmis, bccmis_mpi, ranks, work):
+    # D14: an empty frame refused as the serial animation refuses it, in its words.
+    far = ["--shape", "sphere", "-L", "3", "--animate", "3", "--path", "1e9,0,0"]
+    serial = run([bccmis, "stuff", *far, "-q", "-o", os.path.join(work, "serial.pvd")], expect=2)
+    r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *far, "-q", "-o", os.path.join(work, "out.pvtu")], expect=2)
+    want = message(serial.stderr, "bccmis: ")
+    got = message(r.stderr, "bccmis-mpi stuff: rank 0: ")
+    if want is None or not want.startswith("sphere r=1: frame 0: the mesh is empty: bad input for this level"):
+        sys.exit(f"FAIL: bccmis stuff's empty frame:\n{serial.stderr}")
+    if got != want:
+        sys.exit(f"FAIL: the ranks' empty frame says {got!r}, bccmis stuff {want!r}")
+    if os.listdir(work):
+        sys.exit(f"FAIL: an empty frame left {os.listdir(work)}")
+    # D17: the check of the moved forest against a wrong forest (frame k - 1's, by the test hook).
+    hook = "BCCMIS_TEST_CHECK_PREVIOUS_FRAME"
+    cmd = mpi(mpirun, ranks) + ["-x", hook, bccmis_mpi, "stuff", "--shape", "sphere", "-L", "2", "--animate", "1",
+                                "--gather", "--check", "-q", "-o", os.path.join(work, "whole.vtu")]
+    p = subprocess.run(cmd, capture_output=True, text=True, timeout=300, env={**os.environ, hook: "1"})
+    says = ("frame 1: the moved forest differs from the forest built for the frame (",
+            "; spec/distributed.md D15, D17)")
+    line = message(p.stderr, "bccmis-mpi stuff: rank 0: ")
+    if p.returncode != 1 or line is None or not line.startswith(says[0]) or not line.endswith(says[1]):
+        sys.exit(f"FAIL: the check of a wrong forest: exit {p.returncode} (expected 1), stderr:\n{p.stderr}")
+    if os.listdir(work):
+        sys.exit(f"FAIL: a failed check left {os.listdir(work)}")
+    print(f"ok: {ranks} ranks: an empty frame refused in bccmis stuff's words ({want[:40]}...), a wrong forest "
+          "refused by --check (exit 1), nothing written")
+
+
+STAGING = re.compile(r"\.out\.staging-(\d+)@[^/]+\.tmp-[A-Za-z0-9]{6}")
+
+
+def ranks_of(bccmis_mpi, output):
+    """The pids of the processes running bccmis_mpi with `output` among their arguments."""
+    pids = []
+    for pid in filter(str.isdigit, os.listdir("/proc")):
+        try:
+            with open(f"/proc/{pid}/cmdline", "rb") as f:
+                argv = f.read().decode(errors="replace").split("\0")
+        except OSError:
+            continue
+        if os.path.basename(argv[0]) == os.path.basename(bccmis_mpi) and output in argv:
+            pids.append(int(pid))
+    return pids
+
+
+def signalled(mpirun, bccmis_mpi, ranks, work, sig):
+    """Runs the ranks until every rank's temporaries are in the staging directory, then sends `sig` to
+    every rank; what the run left in `work`."""
+    output = os.path.join(work, "out.pvtu")
+    frames = 2
+    staged = (frames + 1) * ranks + frames + 2  # every rank's pieces, rank 0's frames and .pvd
+    p = subprocess.Popen(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", "--shape", "sphere", "-L", "4", "--animate",
+                                               str(frames), "-q", "-o", output],
+                         stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    deadline = time.monotonic() + 120
+    while True:
+        dirs = [d for d in os.listdir(work) if STAGING.fullmatch(d)]
+        if len(dirs) == 1 and len(os.listdir(os.path.join(work, dirs[0]))) == staged:
+            break
+        if p.poll() is not None or time.monotonic() > deadline:
+            p.kill()
+            p.wait()
+            sys.exit(f"FAIL: {sig.name}: the ranks' {staged} temporaries did not appear in one staging "
+                     f"directory while they ran (exit {p.returncode}, {os.listdir(work)})")
+        time.sleep(0.001)
+    pids = ranks_of(bccmis_mpi, output)
+    if len(pids) != ranks:
+        p.kill()
+        sys.exit(f"FAIL: found {len(pids)} ranks, not {ranks}")
+    for pid in pids:
+        os.kill(pid, sig)
+    p.wait(timeout=120)
+    if p.returncode == 0:
+        sys.exit(f"FAIL: {sig.name} to the ranks: mpirun exited 0")
+    return sorted(os.listdir(work))
+
+
+#= spec/distributed.md#D18 type=test
+def signals(mpirun, bccmis_mpi, ranks, work):
+    left = signalled(mpirun, bccmis_mpi, ranks, work, signal.SIGTERM)
+    if left:
+        sys.exit(f"FAIL: SIGTERM to every rank left {left}")
+    left = signalled(mpirun, bccmis_mpi, ranks, work, signal.SIGKILL)
+    if len(left) != 1 or not STAGING.fullmatch(left[0]):
+        sys.exit(f"FAIL: SIGKILL to every rank left {left}, not one staging directory")
+    r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", "--shape", "sphere", "-L", "2", "--animate", "1",
+                                  "-o", os.path.join(work, "out.pvtu")])
+    says = f"bccmis-mpi stuff: removed {os.path.join(work, left[0])}, left by an interrupted run"
+    if says not in r.stderr.splitlines():
+        sys.exit(f"FAIL: the next run does not say '{says}':\n{r.stderr}")
+    want = sorted(["out.pvd"] + [f"out_{k:04d}.pvtu" for k in range(2)] +
+                  [f"out_{k:04d}_{q:04d}.vtu" for k in range(2) for q in range(ranks)])
+    if sorted(os.listdir(work)) != want:
+        sys.exit(f"FAIL: the next run left {sorted(os.listdir(work))}, expected {want}")
+    print(f"ok: {ranks} ranks: SIGTERM to every rank left nothing, SIGKILL one staging directory, removed by the "
+          "next run")
+
+
 def refusals(mpirun, bccmis_mpi, ranks, work):
     base = ["--shape", "sphere", "-L", "2", "--animate", "2", "-q"]
     out = ["-o", os.path.join(work, "out.pvtu")]
@@ -185,6 +306,10 @@ def main():
     with tempfile.TemporaryDirectory() as work:
         if mode in ("frames", "steps"):
             frames(mpirun, bccmis, bccmis_mpi, int(ranks), args, work, steps=mode == "steps")
+        elif mode == "signals":
+            signals(mpirun, bccmis_mpi, int(ranks), work)
+        elif mode == "faults":
+            faults(mpirun, bccmis, bccmis_mpi, int(ranks), work)
         else:
             refusals(mpirun, bccmis_mpi, int(ranks), work)
 

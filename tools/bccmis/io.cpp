@@ -200,6 +200,8 @@ bool copy_file_to(const std::string& from, std::ostream& to) {
 
 }  // namespace
 
+void OutputSet::stage_in(const std::string& dir) { staging_ = dir; }
+
 void OutputSet::open(const std::string& path) {
   if (path.empty() || path == "-" || opened_.count(path) > 0) return;
   staged_.push_back(create(path));
@@ -243,7 +245,9 @@ std::unique_ptr<OutputSet::Staged> OutputSet::create(const std::string& path) {
     stem = "bccmis-output";
   } else {
     s->target = resolve_links(path);
-    dir = s->target.has_parent_path() ? s->target.parent_path() : fs::path(".");
+    dir = !staging_.empty()             ? fs::path(staging_)
+          : s->target.has_parent_path() ? s->target.parent_path()
+                                        : fs::path(".");
     stem = "." + s->target.filename().string();
   }
   std::string tmpl = (dir / (stem + ".tmp-XXXXXX")).string();

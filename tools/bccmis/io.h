@@ -6,7 +6,8 @@
 //   - "-" is standard input or standard output;
 //   - a file that cannot be read is reported with the reason (errno);
 //   - outputs are staged: each is written to a temporary file beside its
-//     target and renamed over it only when the whole run has succeeded; on
+//     target (or in a staging directory beside it, OutputSet::stage_in)
+//     and renamed over it only when the whole run has succeeded; on
 //     failure every temporary is removed and no target is touched, and so
 //     on SIGINT, SIGTERM or SIGHUP (temporary_files.h);
 //   - a command opens its outputs' temporaries before its long work, so that
@@ -95,6 +96,11 @@ class OutputSet {
   OutputSet(const OutputSet&) = delete;
   OutputSet& operator=(const OutputSet&) = delete;
 
+  /// Makes every later temporary of a regular target in the directory `dir`
+  /// (an existing directory on the targets' file system, such as a
+  /// StagingDirectory beside them) instead of beside its target.
+  void stage_in(const std::string& dir);
+
   /// Creates the temporary for `path` now, to be written by a later add()
   /// of the same path: an output that cannot be created fails before the
   /// work that makes its text. An empty path or "-" opens nothing. Throws
@@ -119,6 +125,7 @@ class OutputSet {
   std::unique_ptr<Staged> create(const std::string& path);
   std::vector<std::unique_ptr<Staged>> staged_;
   std::unordered_map<std::string, Staged*> opened_;  ///< by path: created by open(), not yet written
+  std::string staging_;                              ///< stage_in()'s directory, or empty: beside the target
 };
 
 /// One output, staged and committed (see OutputSet).

@@ -21,10 +21,17 @@ std::vector<char*>& registered() {
   return paths;
 }
 
+// The registered directories, removed after the files.
+std::vector<char*>& directories() {
+  static std::vector<char*> paths;
+  return paths;
+}
+
 constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
 
 extern "C" void remove_temporaries(int sig) {
   for (char* path : registered()) ::unlink(path);
+  for (char* path : directories()) ::rmdir(path);
   ::signal(sig, SIG_DFL);
   ::raise(sig);
 }
@@ -79,13 +86,52 @@ int make_temporary(std::string& name) {
   return fd;
 }
 
-void untrack_temporary(const std::string& path) {
+namespace {
+
+// Removes `path` from `paths` (with the handled signals blocked).
+void untrack(std::vector<char*>& paths, const std::string& path) {
   SignalsBlocked blocked;
-  auto& paths = registered();
   const auto it = std::find_if(paths.begin(), paths.end(), [&](const char* p) { return path == p; });
   if (it == paths.end()) return;
   std::free(*it);
   paths.erase(it);
 }
+
+}  // namespace
+
+void untrack_temporary(const std::string& path) { untrack(registered(), path); }
+
+namespace {
+
+// Registers the directory `path`; the handled signals are blocked by the caller.
+void track_directory(const std::string& path) {
+  install_handler();
+  directories().reserve(directories().size() + 1);
+  char* copy = ::strdup(path.c_str());
+  if (copy == nullptr) throw std::bad_alloc();
+  directories().push_back(copy);
+}
+
+}  // namespace
+
+bool make_temporary_directory(std::string& name) {
+  SignalsBlocked blocked;
+  directories().reserve(directories().size() + 1);
+  if (::mkdtemp(name.data()) == nullptr) return false;
+  try {
+    track_directory(name);
+  } catch (...) {
+    ::rmdir(name.c_str());
+    throw;
+  }
+  return true;
+}
+
+void track_temporary_directory(const std::string& path) {
+  SignalsBlocked blocked;
+  track_directory(path);
+}
+
+void untrack_temporary_directory(const std::string& path) { untrack(directories(), path); }
 
 }  // namespace bccmis::cli

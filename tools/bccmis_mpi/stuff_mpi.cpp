@@ -23,6 +23,7 @@
 #include "bccmis/p4est/bridge.h"
 #include "bccmis/stuff/mesh_shape.h"
 #include "io.h"
+#include "staging_directory.h"
 #include "stuff_input.h"
 #include "stuff_stats.h"
 
@@ -121,26 +122,51 @@ void check_animate_options(const StuffOptions& o, bool gather) {
                      " (spec/distributed.md D14)");
 }
 
+/// D18: rank 0's staging directory's path on every rank.
+std::string broadcast(std::string path, MPI_Comm comm) {
+  unsigned long long length = path.size();
+  MPI_Bcast(&length, 1, MPI_UNSIGNED_LONG_LONG, 0, comm);
+  path.resize(length);
+  MPI_Bcast(path.data(), static_cast<int>(length), MPI_CHAR, 0, comm);
+  return path;
+}
+
 /// D14: --animate N on every rank: every frame's files staged as its
-/// meshes come, renamed once every frame succeeded on every rank (D6);
-/// D17's report printed by rank 0 after the last frame.
+/// meshes come, in D18's staging directory, renamed once every frame
+/// succeeded on every rank (D6); D17's report printed by rank 0 after the
+/// last frame.
 int run_animate(const StuffOptions& o, bool gather, double threshold, MPI_Comm comm) {
   int rank = 0, size = 0;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
-  OutputSet pieces, index;                // index: rank 0's frames (.pvtu or --gather .vtu) and the .pvd, renamed last
   const bool write = !o.outputs.empty();  // else --stats alone (D17)
   const std::string out = write ? o.outputs[0] : std::string();
   const std::string stem = out.substr(0, out.find_last_of('.'));
   const std::string extension = gather ? ".vtu" : ".pvtu";
   const std::string pvd = stem + ".pvd";
+  std::unique_ptr<StagingDirectory> staging;  // D18: removed after the temporaries it holds
+  OutputSet pieces, index;  // index: rank 0's frames (.pvtu or --gather .vtu) and the .pvd, renamed last
   std::shared_ptr<const stuff::Shape> shape;
   distributed::RankAnimation settings;
   std::vector<std::pair<int, std::string>> frames;  // the .pvd index: timestep, file
   bool written = false;                             // this rank wrote a piece
   try {
+    // D18: rank 0 removes what interrupted runs left, then makes the one
+    // directory every rank stages its frames in.
+    std::vector<std::string> stale;
     stage(comm, [&] {
       check_animate_options(o, gather);
+      if (rank != 0 || !write) return;
+      stale = clean_stale_staging(stem);
+      staging = StagingDirectory::make(stem);
+    });
+    if (rank == 0 && !o.quiet)
+      for (const std::string& line : stale) std::cerr << kTool << ": " << line << "\n";
+    const std::string staged = write ? broadcast(staging ? staging->path() : std::string(), comm) : std::string();
+    stage(comm, [&] {
+      if (write && rank != 0) staging = StagingDirectory::adopt(staged);
+      pieces.stage_in(staged);
+      index.stage_in(staged);
       for (int k = 0; k <= o.animate && write; ++k) {
         if (!gather) pieces.open(piece_path(numbered(stem, k, extension), rank));
         if (rank == 0) index.open(numbered(stem, k, extension));

@@ -50,9 +50,11 @@ struct RankFrame {
 /// D17: every later frame's moved forest compared with D10's forest built
 /// for it (forest_digest), and D12's check on the gathered frame.
 /// Collective over `comm`; each step ends with D6's agreement: the lowest
-/// failing rank throws its error (ShapeError, an empty frame's, or
-/// CheckError, a check's, prefixed "frame K: "), every other rank
-/// RankFailed.
+/// failing rank throws its error (ShapeError, an empty frame's, worded by
+/// empty_frame_message as the serial animation's, or CheckError, a check's,
+/// prefixed "frame K: "), every other rank RankFailed. A test hook (D17):
+/// with BCCMIS_TEST_CHECK_PREVIOUS_FRAME set in every rank's environment,
+/// the check's forest is built at frame k - 1's offset, so the check fails.
 void animate_on_ranks(const std::shared_ptr<const stuff::Shape>& world, const RankAnimation& s, MPI_Comm comm,
                       const std::function<void(const RankFrame&)>& on_frame);
 

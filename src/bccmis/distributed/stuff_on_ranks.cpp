@@ -89,7 +89,7 @@ RankRun stuff_on_ranks(const stuff::Shape& world, Replicated& lattice, Forest& f
     if (rank == 0 && tetrahedra == 0) {
       stuff::Fit fit = lattice.fit;
       fit.h = std::ldexp(fit.h, lattice.normalisation.exponent);
-      throw stuff::ShapeError(stuff::empty_mesh_message(world, fit));
+      throw stuff::ShapeError(s.empty_message ? *s.empty_message : stuff::empty_mesh_message(world, fit));
     }
   });
   // D11: S13's statistics reduced on rank 0 (a lost component refused, S27).

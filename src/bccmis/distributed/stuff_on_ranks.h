@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "bccmis/d3/tet_mesh.h"
@@ -33,6 +34,9 @@ struct RankSettings {
   /// D16: the memory one rank may take (--memory-limit); unset: MemAvailable
   /// of its node's /proc/meminfo over the ranks sharing that node.
   std::optional<double> memory_limit;
+  /// S26's refusal of an empty mesh when set (D14: a frame's, as the serial
+  /// animation words it, empty_frame_message); else empty_mesh_message.
+  std::optional<std::string> empty_message;
 };
 
 /// One rank's result. On rank 0 only: mesh, regions, report, warned.
@@ -51,7 +55,7 @@ struct RankRun {
 
 /// D1-D13 on every rank: the fit (S24, S2), D16's memory estimate, the forest (D10), this rank's
 /// piece (D3, D4, D6), D7's numbers, the refusal of an empty mesh (S21,
-/// S26: ShapeError with empty_mesh_message), D11's statistics, and with
+/// S26: ShapeError with empty_mesh_message or `empty_message`), D11's statistics, and with
 /// `gather` the pieces gathered on rank 0, the feature step, --check and
 /// S27 (D12, D13). Collective over `comm`; after each stage the ranks
 /// agree (D6): the lowest failing rank throws its error (ShapeError,

@@ -18,6 +18,10 @@ Vec3 frame_offset(const Vec3& path, int k, int frames) {
   return {path[0] * k / frames, path[1] * k / frames, path[2] * k / frames};
 }
 
+std::string empty_frame_message(const Shape& shape, int k, const Fit& fit) {
+  return shape.describe() + ": frame " + std::to_string(k) + ": the mesh is empty: " + level_hint(shape.bounds(), fit);
+}
+
 Fit fit_moving(const Shape& shape, const Vec3& path, const StuffOptions& options) {
   const Fit fit = fit_lattice(swept_bounds(shape, path), options);
   check_moving_fit(fit);
@@ -69,9 +73,7 @@ AnimationSummary animate_shape(const std::shared_ptr<const Shape>& shape, const 
     }
     frame.mesh = &moving.stuffed().mesh;
     // S26: a frame without tetrahedra is bad input for this level.
-    if (frame.mesh->tets.empty())
-      throw ShapeError(shape->describe() + ": frame " + std::to_string(k) + ": " +
-                       "the mesh is empty: " + level_hint(shape->bounds(), fit));
+    if (frame.mesh->tets.empty()) throw ShapeError(empty_frame_message(*shape, k, fit));
     on_frame(frame);
   }
   summary.mean_step_seconds = step_total / n;

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <string>
 
 #include "bccmis/stuff/animate.h"
 #include "bccmis/stuff/mesh_shape.h"
@@ -43,6 +44,11 @@ Vec3 default_path(const Shape& shape);
 /// S15: frame k's offset, (k / frames) path, one expression for every
 /// caller (the serial animation, the ranks' frames: spec/distributed.md D14).
 Vec3 frame_offset(const Vec3& path, int k, int frames);
+
+/// S26 for frame k of an animation: "SHAPE: frame K: the mesh is empty: "
+/// and level_hint of the shape's box in `fit`, one message for the serial
+/// animation and the ranks' frames (spec/distributed.md D14).
+std::string empty_frame_message(const Shape& shape, int k, const Fit& fit);
 
 /// S14: the lattice fitted to the box the shape sweeps. Throws ShapeError
 /// as fit_lattice() does, and when the moving lattice cannot hold it (S16).

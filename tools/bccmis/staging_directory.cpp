@@ -1,0 +1,87 @@
+#include "staging_directory.h"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <string_view>
+
+#include "io.h"
+#include "temporary_files.h"
+
+namespace bccmis::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// `stem`'s directory and the prefix of its staging directories' names.
+struct Naming {
+  fs::path parent;     // empty: the working directory
+  std::string prefix;  // ".NAME.staging-"
+  fs::path dir() const { return parent.empty() ? fs::path(".") : parent; }
+};
+
+Naming naming(const std::string& stem) {
+  const fs::path p(stem);
+  return {p.parent_path(), "." + p.filename().string() + ".staging-"};
+}
+
+std::string host_name() {
+  char host[256] = {};
+  if (::gethostname(host, sizeof host - 1) != 0) return "unknown";
+  return host;
+}
+
+}  // namespace
+
+std::unique_ptr<StagingDirectory> StagingDirectory::make(const std::string& stem) {
+  const Naming n = naming(stem);
+  std::string name = (n.parent / (n.prefix + std::to_string(::getpid()) + "@" + host_name() + ".tmp-XXXXXX")).string();
+  if (!make_temporary_directory(name))
+    throw InputError(n.dir().string() + ": cannot create a temporary directory: " + std::strerror(errno));
+  return std::unique_ptr<StagingDirectory>(new StagingDirectory(name));
+}
+
+std::unique_ptr<StagingDirectory> StagingDirectory::adopt(const std::string& path) {
+  track_temporary_directory(path);
+  return std::unique_ptr<StagingDirectory>(new StagingDirectory(path));
+}
+
+StagingDirectory::~StagingDirectory() {
+  ::rmdir(path_.c_str());
+  untrack_temporary_directory(path_);
+}
+
+std::vector<std::string> clean_stale_staging(const std::string& stem) {
+  const Naming n = naming(stem);
+  const std::string here = host_name();
+  std::vector<std::string> lines;
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(n.dir(), ec)) {
+    const std::string name = e.path().filename().string();
+    const std::size_t at = name.find('@'), tmp = name.rfind(".tmp-");
+    if (name.rfind(n.prefix, 0) != 0 || at == std::string::npos || tmp == std::string::npos || tmp < at ||
+        !e.is_directory(ec))
+      continue;
+    const std::string pid = name.substr(n.prefix.size(), at - n.prefix.size());
+    const std::string host = name.substr(at + 1, tmp - at - 1);
+    if (pid.empty() || pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos) continue;
+    const bool ended = host == here && ::kill(static_cast<pid_t>(std::stol(pid)), 0) != 0 && errno == ESRCH;
+    if (!ended) {
+      lines.push_back((n.parent / name).string() + ": left by process " + pid + " on " + host +
+                      ", which may still be running: remove it once that run has ended");
+      continue;
+    }
+    const std::string shown = (n.parent / name).string();
+    std::error_code removed;
+    fs::remove_all(e.path(), removed);
+    lines.push_back(removed ? shown + ": left by an interrupted run, cannot remove it: " + removed.message()
+                            : "removed " + shown + ", left by an interrupted run");
+  }
+  return lines;
+}
+
+}  // namespace bccmis::cli
