@@ -428,6 +428,29 @@ TEST(FeatureConformity, FlipsLetARefusedMoveThroughAndKeepTheBoundary) {
   EXPECT_EQ(with.stuffed.mesh.level.size(), with.stuffed.mesh.tets.size());
 }
 
+//= spec/stuffing.md S35 type=test
+TEST(FeatureConformity, FlipsAreKeptOnlyWhereTheyGain) {
+  // S35.9 keeps the run with flips (B) only when it gains on the run
+  // without (A), S35.8's test: on the line, B conforming exactly A's
+  // corners and curves is not kept; one curve more is; a curve more and one
+  // of A's lost (anchor at level 3: curves 12 and 14 gained, 16 lost) is a
+  // trade, not kept; a corner more with a curve lost neither.
+  FeatureConformity a;
+  a.corners = {{0, 0, 0}, {1, 0, 0}};
+  a.conformed_curves = {3, 16};
+  FeatureConformity b = a;
+  EXPECT_FALSE(gains_on(b, a));  // the same: A kept
+  b.conformed_curves = {3, 7, 16};
+  EXPECT_TRUE(gains_on(b, a));
+  b.conformed_curves = {3, 12, 14};
+  EXPECT_FALSE(gains_on(b, a));
+  b.conformed_curves = {3};
+  b.corners = {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}};
+  EXPECT_FALSE(gains_on(b, a));
+  b.conformed_curves = a.conformed_curves;
+  EXPECT_TRUE(gains_on(b, a));  // a corner more
+}
+
 //= spec/stuffing.md S32 type=test
 TEST(FeatureChecker, CatchesACornerMovedOffAndAnUncoveredCurve) {
   const auto cube = make_mesh_shape(turned_cube(), kCubeTriangles, "turned cube");
