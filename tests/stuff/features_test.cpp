@@ -7,7 +7,8 @@
 // nothing, and on CGAL's turbine where vertices moved after them are put
 // back; a piece conformed from its other end on CGAL's anchor; corners and
 // loop ends with no boundary vertex within h searched within 2 h, on a
-// tetrahedron and CGAL's turbine), with S10's dihedral
+// tetrahedron and CGAL's turbine; S35.9's flips at a refused move on
+// CGAL's fandisk), with S10's dihedral
 // bound on every mesh, and the checker's feature layer catching a corner moved off and a curve not covered.
 #include <gtest/gtest.h>
 
@@ -240,13 +241,14 @@ TEST(FeatureConformity, FandiskKeepsItsCornersWithinTheBound) {
   EXPECT_EQ(with.features->curves, 35u);
   EXPECT_EQ(with.features->corners_conformed, with.features->corners);
   // S35's splits: 29 curves conformed (27 with S34's room alone, 26 with
-  // the snapped vertex moved alone).
+  // the snapped vertex moved alone); 30 with S35.9's flips, whose run
+  // conforms the piece S35's split did without its split.
   EXPECT_GE(with.features->curves_conformed, 29u);
   // The vertices S34 moved: interior (on no boundary triangle), lattice
   // vertices not moved without features, and moved now (S30 and S34 move
   // vertices only; S35 appends its vertices after S8's numbering).
   const std::size_t lattice_vertices = without.stuffed.mesh.vertices.size();
-  ASSERT_GT(with.stuffed.mesh.vertices.size(), lattice_vertices);
+  ASSERT_GE(with.stuffed.mesh.vertices.size(), lattice_vertices);
   std::vector<char> on_boundary(with.stuffed.mesh.vertices.size(), 0);
   for (const auto& f : with.boundary)
     for (const std::uint32_t v : f) on_boundary[v] = 1;
@@ -399,6 +401,54 @@ TEST(FeatureConformity, APieceRefusedFromOneEndIsConformedFromTheOther) {
   EXPECT_GT(m.features->splits, 0u);  // the piece's splits, kept
   EXPECT_GE(m.statistics->quality.min_dihedral, kDihedralBounds[0]);
   EXPECT_LE(m.statistics->quality.max_dihedral, kDihedralBounds[1]);
+}
+
+//= spec/stuffing.md S35 type=test
+TEST(FeatureConformity, FlipsLetARefusedMoveThroughAndKeepTheBoundary) {
+  // S35.9: on CGAL's fandisk at level 3, moves S31 and S34 refuse are made
+  // after 2-3 and 4-4 flips of the failing tetrahedra, and the run with
+  // flips gains on the run without (29 curves of 35, FandiskKeepsItsCorners
+  // WithinTheBound with flips off): 30, kept. The checker (Settings::check:
+  // positive orientation, no face in three tetrahedra, the boundary closed,
+  // oriented and on the surface, S10's interval, S32's feature layer)
+  // passes on the flipped mesh.
+  const auto shape = load_mesh_file(kCgal + "/fandisk.off");
+  Settings s;
+  s.lattice.max_level = 3;
+  s.statistics = true;
+  s.check = true;
+  s.features.on = true;
+  const Meshed with = mesh_shape(*shape, s);
+  ASSERT_TRUE(with.features);
+  EXPECT_GT(with.features->flips, 0u);
+  EXPECT_EQ(with.features->curves_conformed, 30u);
+  EXPECT_EQ(with.features->corners_conformed, with.features->corners);
+  EXPECT_GE(with.statistics->quality.min_dihedral, kDihedralBounds[0]);
+  EXPECT_LE(with.statistics->quality.max_dihedral, kDihedralBounds[1]);
+  EXPECT_EQ(with.stuffed.mesh.level.size(), with.stuffed.mesh.tets.size());
+}
+
+//= spec/stuffing.md S35 type=test
+TEST(FeatureConformity, FlipsAreKeptOnlyWhereTheyGain) {
+  // S35.9 keeps the run with flips (B) only when it gains on the run
+  // without (A), S35.8's test: on the line, B conforming exactly A's
+  // corners and curves is not kept; one curve more is; a curve more and one
+  // of A's lost (anchor at level 3: curves 12 and 14 gained, 16 lost) is a
+  // trade, not kept; a corner more with a curve lost neither.
+  FeatureConformity a;
+  a.corners = {{0, 0, 0}, {1, 0, 0}};
+  a.conformed_curves = {3, 16};
+  FeatureConformity b = a;
+  EXPECT_FALSE(gains_on(b, a));  // the same: A kept
+  b.conformed_curves = {3, 7, 16};
+  EXPECT_TRUE(gains_on(b, a));
+  b.conformed_curves = {3, 12, 14};
+  EXPECT_FALSE(gains_on(b, a));
+  b.conformed_curves = {3};
+  b.corners = {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}};
+  EXPECT_FALSE(gains_on(b, a));
+  b.conformed_curves = a.conformed_curves;
+  EXPECT_TRUE(gains_on(b, a));  // a corner more
 }
 
 //= spec/stuffing.md S32 type=test

@@ -44,8 +44,8 @@ Finished finish_gathered(const stuff::Shape& world, const Replicated& r, d3::Tet
     f.features->placed_kept = kept.placed_kept;
   } else if (features.on) {
     found = stuff::detect_features(shape.surface_triangles(), features.angle);
-    conformity = stuff::conform_features(mesh, boundary, found, r.fit.h, features.split_edges);
-    if (conformity.splits > 0) f.regions = io::regions_of(mesh.tets, &boundary);
+    conformity = stuff::conform_features(mesh, boundary, found, r.fit.h, features.split_edges, features.flip);
+    if (conformity.splits > 0 || conformity.flips > 0) f.regions = io::regions_of(mesh.tets, &boundary);
     // D13: S33's report, as mesh_shape() fills it.
     f.features = stuff::feature_report(found, conformity);
   }

@@ -121,10 +121,12 @@ Vec3 point_at(const FeatureCurve& C, double s) {
 /// vertex, and the guard of S31.
 class Snapper {
  public:
-  Snapper(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary, double h, bool split_edges)
+  Snapper(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary, double h, bool split_edges,
+          bool flip)
       : mesh_(mesh),
         h_(h),
         split_edges_(split_edges),
+        flip_(flip),
         tets_at_(mesh.vertices.size()),
         neighbours_(mesh.vertices.size()),
         triangles_(boundary),
@@ -152,7 +154,8 @@ class Snapper {
   /// oriented (S12) with its dihedral angles in S10's interval; when not,
   /// S34: v moved to x with its interior neighbours moved by w (x - v), for
   /// the first w of kRoomWeights that S31 accepts for every tetrahedron at
-  /// a moved vertex.
+  /// a moved vertex; when not, S35.9: v moved to x alone after flips of
+  /// the tetrahedra at it that fail.
   bool move(std::uint32_t v, const Vec3& x, FeatureConformity& r) {
     Moves moved{{v, x}};
     if (!accepted(moved)) {
@@ -169,11 +172,14 @@ class Snapper {
         }
         if ((room = accepted(moved))) break;
       }
-      if (!room) {
+      if (room) {
+        ++r.room_made;
+      } else if (flip_ && flipped_into_place(v, x, r)) {
+        moved = {{v, x}};
+      } else {
         ++r.refused;
         return false;
       }
-      ++r.room_made;
     }
     ++r.moves;
     for (const auto& [u, p] : moved) {
@@ -448,6 +454,194 @@ class Snapper {
     return true;
   }
 
+  /// S35.9: flips of the tetrahedra at v that fail S31's test with v at x,
+  /// the first failing one (in the order of v's tetrahedra) each time, until
+  /// every tetrahedron at v passes: true, the flips kept (`r.flips`
+  /// counts them). A failing tetrahedron with no flip whose pieces all pass,
+  /// or more than kFlips flips: every flip undone, false.
+  bool flipped_into_place(std::uint32_t v, const Vec3& x, FeatureConformity& r) {
+    std::vector<Flip> made;
+    for (std::size_t round = 0; round <= kFlips; ++round) {
+      const auto failing = std::find_if(tets_at_[v].begin(), tets_at_[v].end(),
+                                        [&](std::uint32_t t) { return !passes(placed(mesh_.tets[t], v, x)); });
+      if (failing == tets_at_[v].end()) {
+        for (const Flip& f : made) journal_flip(f);
+        r.flips += made.size();
+        return true;
+      }
+      if (round == kFlips) break;
+      std::optional<Flip> f = flip_at(*failing, v, x);
+      if (!f) break;
+      made.push_back(std::move(*f));
+    }
+    for (auto f = made.rbegin(); f != made.rend(); ++f) undo_flip(*f);
+    return false;
+  }
+
+  /// A flip made: the tetrahedra it replaced (index, old vertices), how many
+  /// it appended, and the tetrahedra at each vertex it touched before it.
+  struct Flip {
+    std::vector<std::pair<std::uint32_t, std::array<std::uint32_t, 4>>> replaced;
+    std::size_t appended = 0;
+    std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>> tets_at;
+  };
+
+  /// S35.9's flips of the failing tetrahedron t = (.., v, ..), v at x: a
+  /// 2-3 flip across each face of t not on the boundary (in the order of the
+  /// vertex it omits), then a 4-4 flip of each edge vu of t with u not on the
+  /// boundary and exactly four tetrahedra around it (u in t's order, the new
+  /// edge the first pair of opposite ring vertices in index order); the
+  /// first whose new edge is no edge of the mesh yet and whose pieces all
+  /// pass S31's test with v at x is made.
+  std::optional<Flip> flip_at(std::uint32_t t, std::uint32_t v, const Vec3& x) {
+    const std::array<std::uint32_t, 4> T = mesh_.tets[t];
+    const auto all_pass = [&](const std::vector<std::array<std::uint32_t, 4>>& pieces) {
+      return std::all_of(pieces.begin(), pieces.end(), [&](const auto& q) { return passes(placed(q, v, x)); });
+    };
+    // 2-3: t and its neighbour u across the face omitting T[k] (apex T[k],
+    // u's other vertex e) become the three with one of the face's vertices
+    // replaced by e (each keeps t's orientation of the face it shares with t).
+    for (std::size_t k = 0; k < 4; ++k) {
+      std::array<std::uint32_t, 3> face;
+      for (std::size_t j = 0, n = 0; j < 4; ++j)
+        if (j != k) face[n++] = T[j];
+      if (is_boundary_triangle(face)) continue;
+      const std::optional<std::pair<std::uint32_t, std::uint32_t>> across = neighbour_across(t, face);
+      if (!across || has_edge(T[k], across->second)) continue;
+      std::vector<std::array<std::uint32_t, 4>> pieces;
+      for (std::size_t j = 0; j < 4; ++j)
+        if (j != k) pieces.push_back(T), pieces.back()[j] = across->second;
+      if (all_pass(pieces)) return replace({t, across->first}, pieces);
+    }
+    // 4-4: the four tetrahedra around vu (the octahedron v, u and the ring
+    // r0..r3) become the four around the diagonal ri rj of the ring: each
+    // ring tetrahedron at ri and rm (m neither i nor j) with u, then with v,
+    // replaced by rj.
+    for (const std::uint32_t u : T) {
+      if (u == v || !neighbours_[u].empty()) continue;
+      std::vector<std::uint32_t> around;
+      for (const std::uint32_t w : tets_at_[v])
+        if (std::find(mesh_.tets[w].begin(), mesh_.tets[w].end(), u) != mesh_.tets[w].end()) around.push_back(w);
+      if (around.size() != 4) continue;
+      std::vector<std::uint32_t> ring;
+      for (const std::uint32_t w : around)
+        for (const std::uint32_t a : mesh_.tets[w])
+          if (a != v && a != u) ring.push_back(a);
+      std::sort(ring.begin(), ring.end());
+      ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+      if (ring.size() != 4) continue;
+      const auto holding = [&](std::uint32_t a, std::uint32_t b) {
+        return std::find_if(around.begin(), around.end(), [&](std::uint32_t w) {
+          const auto& W = mesh_.tets[w];
+          return std::find(W.begin(), W.end(), a) != W.end() && std::find(W.begin(), W.end(), b) != W.end();
+        });
+      };
+      for (std::size_t i = 0; i < 4; ++i)
+        for (std::size_t j = i + 1; j < 4; ++j) {
+          if (holding(ring[i], ring[j]) != around.end() || has_edge(ring[i], ring[j])) continue;  // not opposite
+          std::vector<std::array<std::uint32_t, 4>> pieces;
+          for (std::size_t m = 0; m < 4; ++m) {
+            if (m == i || m == j) continue;
+            const auto w = holding(ring[i], ring[m]);
+            if (w == around.end()) break;
+            for (const std::uint32_t gone : {u, v}) {
+              auto q = mesh_.tets[*w];
+              std::replace(q.begin(), q.end(), gone, ring[j]);
+              pieces.push_back(q);
+            }
+          }
+          if (pieces.size() == 4 && all_pass(pieces)) return replace(around, pieces);
+        }
+    }
+    return std::nullopt;
+  }
+
+  /// The tetrahedra `ids` replaced by `pieces` (those beyond ids' number
+  /// appended, at the level of the first), tets_at_ kept up to date.
+  Flip replace(const std::vector<std::uint32_t>& ids, const std::vector<std::array<std::uint32_t, 4>>& pieces) {
+    Flip f;
+    std::vector<std::uint32_t> touched;
+    for (const std::uint32_t id : ids) touched.insert(touched.end(), mesh_.tets[id].begin(), mesh_.tets[id].end());
+    std::sort(touched.begin(), touched.end());
+    touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+    for (const std::uint32_t a : touched) {
+      f.tets_at.emplace_back(a, tets_at_[a]);
+      for (const std::uint32_t id : ids) std::erase(tets_at_[a], id);
+    }
+    std::vector<std::uint32_t> made = ids;
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      if (i < ids.size()) {
+        f.replaced.emplace_back(ids[i], mesh_.tets[ids[i]]);
+        mesh_.tets[ids[i]] = pieces[i];
+        continue;
+      }
+      made.push_back(static_cast<std::uint32_t>(mesh_.tets.size()));
+      mesh_.tets.push_back(pieces[i]);
+      mesh_.level.push_back(mesh_.level[ids[0]]);
+      ++f.appended;
+    }
+    for (const std::uint32_t id : made)
+      for (const std::uint32_t a : mesh_.tets[id]) tets_at_[a].push_back(id);
+    return f;
+  }
+
+  /// A flip taken back: its tetrahedra and tets_at_ as before it.
+  void undo_flip(const Flip& f) {
+    for (const auto& [a, before] : f.tets_at) tets_at_[a] = before;
+    mesh_.tets.resize(mesh_.tets.size() - f.appended);
+    mesh_.level.resize(mesh_.level.size() - f.appended);
+    for (const auto& [id, before] : f.replaced) mesh_.tets[id] = before;
+  }
+
+  /// A flip kept: S35.4's journal, when open, puts back what it changed
+  /// (what it appended is taken off with the rest).
+  void journal_flip(const Flip& f) {
+    if (!journal_) return;
+    for (const auto& [a, before] : f.tets_at) journal_->steps.emplace_back([this, a, before] { tets_at_[a] = before; });
+    for (const auto& [id, before] : f.replaced)
+      journal_->steps.emplace_back([this, id, before] { mesh_.tets[id] = before; });
+  }
+
+  /// Whether ab is an edge of a tetrahedron.
+  bool has_edge(std::uint32_t a, std::uint32_t b) const {
+    return std::any_of(tets_at_[a].begin(), tets_at_[a].end(), [&](std::uint32_t t) {
+      return std::find(mesh_.tets[t].begin(), mesh_.tets[t].end(), b) != mesh_.tets[t].end();
+    });
+  }
+
+  /// Whether the triangle is one of the boundary's.
+  bool is_boundary_triangle(std::array<std::uint32_t, 3> f) const {
+    std::sort(f.begin(), f.end());
+    return std::any_of(triangles_at_[f[0]].begin(), triangles_at_[f[0]].end(), [&](std::uint32_t i) {
+      auto g = triangles_[i];
+      std::sort(g.begin(), g.end());
+      return g == f;
+    });
+  }
+
+  /// The tetrahedron other than t with the face `face`, and its fourth vertex.
+  std::optional<std::pair<std::uint32_t, std::uint32_t>> neighbour_across(
+      std::uint32_t t, const std::array<std::uint32_t, 3>& face) const {
+    for (const std::uint32_t u : tets_at_[face[0]]) {
+      if (u == t) continue;
+      const auto& U = mesh_.tets[u];
+      const auto in_face = [&](std::uint32_t a) { return std::find(face.begin(), face.end(), a) != face.end(); };
+      if (std::count_if(U.begin(), U.end(), in_face) == 3)
+        return std::pair{u, *std::find_if_not(U.begin(), U.end(), in_face)};
+    }
+    return std::nullopt;
+  }
+
+  /// The corners of the tetrahedron q with v at x.
+  std::array<Vec3, 4> placed(const std::array<std::uint32_t, 4>& q, std::uint32_t v, const Vec3& x) const {
+    std::array<Vec3, 4> p;
+    for (std::size_t i = 0; i < 4; ++i) p[i] = q[i] == v ? x : mesh_.vertices[q[i]];
+    return p;
+  }
+
+  // S35.9: at most 8 flips for one move.
+  static constexpr std::size_t kFlips = 8;
+
   /// S30's search: boundary vertex v moved from x to y filed at y, and
   /// back at x when the journal is rolled back.
   void refile(std::uint32_t v, const Vec3& x, const Vec3& y) {
@@ -599,6 +793,7 @@ class Snapper {
   d3::TetMeshF& mesh_;
   double h_;
   bool split_edges_;  ///< S35 on
+  bool flip_;         ///< S35.9 on
   std::vector<std::vector<std::uint32_t>> tets_at_;
   std::vector<std::vector<std::uint32_t>> neighbours_;
   std::vector<std::array<std::uint32_t, 3>> triangles_;   ///< the boundary triangles, S35's splits included
@@ -614,12 +809,11 @@ std::int64_t corner_index(const Features& features, const Vec3& p) {
   return it != features.corners.end() && *it == p ? it - features.corners.begin() : -1;
 }
 
-}  // namespace
-
-FeatureConformity conform_features(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
-                                   const Features& features, double h, bool split_edges) {
+/// S30-S35.5, with S35.9's flips when `flip`.
+FeatureConformity conform(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
+                          const Features& features, double h, bool split_edges, bool flip) {
   FeatureConformity r;
-  Snapper snapper(mesh, boundary, h, split_edges);
+  Snapper snapper(mesh, boundary, h, split_edges, flip);
   // S30.1: the corners, in order.
   std::vector<std::int64_t> corner_vertex;
   for (const Vec3& c : features.corners) {
@@ -666,6 +860,30 @@ FeatureConformity conform_features(d3::TetMeshF& mesh, const std::vector<std::ar
   return r;
 }
 
+}  // namespace
+
+FeatureConformity conform_features(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
+                                   const Features& features, double h, bool split_edges, bool flip) {
+  if (!flip) return conform(mesh, boundary, features, h, split_edges, false);
+  // S35.9: the run with flips kept only when it gains on the run without.
+  d3::TetMeshF flipped = mesh;
+  FeatureConformity without = conform(mesh, boundary, features, h, split_edges, false);
+  FeatureConformity with = conform(flipped, boundary, features, h, split_edges, true);
+  if (with.flips == 0 || !gains_on(with, without)) return without;
+  mesh = std::move(flipped);
+  return with;
+}
+
+bool gains_on(const FeatureConformity& x, const FeatureConformity& a) {
+  // S30.1 lists the conformed corners in the order of Features::corners
+  // (coordinate order), S30.2 the curves by increasing index: both sorted.
+  const bool corners = std::includes(x.corners.begin(), x.corners.end(), a.corners.begin(), a.corners.end());
+  const bool curves = std::includes(x.conformed_curves.begin(), x.conformed_curves.end(), a.conformed_curves.begin(),
+                                    a.conformed_curves.end());
+  return corners && curves &&
+         (x.corners.size() > a.corners.size() || x.conformed_curves.size() > a.conformed_curves.size());
+}
+
 double corner_search_radius(double nearest, double h) { return nearest <= h ? h : kWideCorner * h; }
 
 double feature_distance(const d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
@@ -709,6 +927,7 @@ FeatureReport feature_report(const Features& features, const FeatureConformity& 
   r.corners_conformed = conformity.corners_conformed;
   r.curves_conformed = conformity.curves_conformed;
   r.splits = conformity.splits;
+  r.flips = conformity.flips;
   r.splits_undone = conformity.splits_undone;
   r.moves_undone = conformity.moves_undone;
   return r;

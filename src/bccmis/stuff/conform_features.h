@@ -31,6 +31,7 @@ struct FeatureConformity {
   std::size_t moves = 0, refused = 0;         ///< the guard's answers (S31)
   std::size_t room_made = 0;                  ///< moves accepted with the interior neighbours moved (S34)
   std::size_t splits = 0;                     ///< boundary edges split onto a crease and kept (S35)
+  std::size_t flips = 0;                      ///< 2-3 and 4-4 flips kept, each with a move (S35.9)
   std::size_t splits_undone = 0;              ///< splits undone, their piece still not conformed (S35.4)
   std::size_t moves_undone =
       0;  ///< moves of older vertices made after those splits (S30.2, S34), undone with them (S35.4)
@@ -44,9 +45,17 @@ struct FeatureConformity {
 /// is the mesh's only while `splits` is 0. A piece its splits do not
 /// conform is left as if they had not been tried (S35.4), then tried from
 /// its other end, undone alike (S35.5); `split_edges` false: none of S35
-/// (S30-S34 only).
+/// (S30-S34 only). S35.9: run again with every move S31 and S34 refuse
+/// tried once more after 2-3 and 4-4 flips of the failing tetrahedra at its
+/// vertex (the boundary and the volume unchanged, tetrahedra changed and
+/// appended), that run kept only when it gains on the first (gains_on);
+/// `flip` false: the first run only.
 FeatureConformity conform_features(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
-                                   const Features& features, double h, bool split_edges = true);
+                                   const Features& features, double h, bool split_edges = true, bool flip = true);
+
+/// S35.8's and S35.9's test: x's conformed corners and curves contain a's,
+/// and are more.
+bool gains_on(const FeatureConformity& x, const FeatureConformity& a);
 
 /// S30.1: the radius within which a corner's candidates are sought, given
 /// the distance `nearest` from the corner to its nearest free boundary
@@ -66,6 +75,7 @@ struct FeatureReport {
   std::size_t corners_conformed = 0, curves_conformed = 0;
   double distance = -1;                       ///< with the statistics, in world units; -1 when not computed
   std::size_t splits = 0, splits_undone = 0;  ///< S35's splits kept, and undone (S35.4)
+  std::size_t flips = 0;                      ///< S35.9's flips kept
   std::size_t moves_undone = 0;               ///< moves undone with them (S35.4)
   bool crease_cuts = false;                   ///< S35.7-S35.8 ran (--crease-cuts)
   std::size_t placed = 0;                     ///< S35.8: vertices placed on the curves in candidate B

@@ -89,21 +89,10 @@ Candidate conformed(Stuffed stuffed, const Features& features, double h, bool sp
   Candidate c{std::move(stuffed), {}, {}};
   (void)io::regions_of(c.stuffed.mesh.tets, &c.boundary);
   c.conformity = conform_features(c.stuffed.mesh, c.boundary, features, h, split_edges);
-  // S35's splits changed the tetrahedra: their boundary again.
-  if (c.conformity.splits > 0) (void)io::regions_of(c.stuffed.mesh.tets, &c.boundary);
+  // S35's splits and S35.9's flips changed the tetrahedra: their boundary again.
+  if (c.conformity.splits > 0 || c.conformity.flips > 0) (void)io::regions_of(c.stuffed.mesh.tets, &c.boundary);
   if (seconds) *seconds += seconds_since(t0);
   return c;
-}
-
-/// S35.8's test: x's conformed corners and curves contain a's, and are more.
-bool gains_on(const FeatureConformity& x, const FeatureConformity& a) {
-  // S30.1 lists the conformed corners in the order of Features::corners
-  // (coordinate order), S30.2 the curves by increasing index: both sorted.
-  const bool corners = std::includes(x.corners.begin(), x.corners.end(), a.corners.begin(), a.corners.end());
-  const bool curves = std::includes(x.conformed_curves.begin(), x.conformed_curves.end(), a.conformed_curves.begin(),
-                                    a.conformed_curves.end());
-  return corners && curves &&
-         (x.corners.size() > a.corners.size() || x.conformed_curves.size() > a.conformed_curves.size());
 }
 
 }  // namespace

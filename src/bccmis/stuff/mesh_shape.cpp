@@ -190,9 +190,10 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
       conformity = std::move(creased.conformity);
     } else {
       features = detect_features(shape.surface_triangles(), settings.features.angle);
-      conformity = conform_features(r.stuffed.mesh, r.boundary, features, fit.h, settings.features.split_edges);
-      // S35's splits changed the tetrahedra: their boundary and regions again.
-      if (conformity.splits > 0) r.regions = io::regions_of(r.stuffed.mesh.tets, &r.boundary);
+      conformity = conform_features(r.stuffed.mesh, r.boundary, features, fit.h, settings.features.split_edges,
+                                    settings.features.flip);
+      // S35's splits and S35.9's flips changed the tetrahedra: their boundary and regions again.
+      if (conformity.splits > 0 || conformity.flips > 0) r.regions = io::regions_of(r.stuffed.mesh.tets, &r.boundary);
     }
     r.features = feature_report(features, conformity);
     r.features->crease_cuts = crease_cuts;
