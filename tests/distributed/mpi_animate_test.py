@@ -29,10 +29,12 @@
       nothing written; --check without --gather (D17, naming D12).
 """
 import collections
+import fcntl
 import json
 import os
 import re
 import signal
+import socket
 import subprocess
 import sys
 import tempfile
@@ -261,8 +263,27 @@ def signals(mpirun, bccmis_mpi, ranks, work):
                   [f"out_{k:04d}_{q:04d}.vtu" for k in range(2) for q in range(ranks)])
     if sorted(os.listdir(work)) != want:
         sys.exit(f"FAIL: the next run left {sorted(os.listdir(work))}, expected {want}")
+    # The lock decides, not the PID (PIDs are reused): a directory named after a live process (this test's) but
+    # held by no lock is removed; one held by a lock is left and named, whatever its PID.
+    host = socket.gethostname()
+    free = os.path.join(work, f".out.staging-{os.getpid()}@{host}.tmp-AAAAAA")
+    held = os.path.join(work, f".out.staging-{2**22 + 7}@{host}.tmp-BBBBBB")
+    os.mkdir(free)
+    os.mkdir(held)
+    lock = os.open(held, os.O_RDONLY)
+    fcntl.flock(lock, fcntl.LOCK_SH)
+    r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", "--shape", "sphere", "-L", "2", "--animate", "1",
+                                  "-o", os.path.join(work, "out.pvtu")])
+    os.close(lock)
+    lines = r.stderr.splitlines()
+    if f"bccmis-mpi stuff: removed {free}, left by an interrupted run" not in lines or os.path.exists(free):
+        sys.exit(f"FAIL: an unlocked staging directory named after a live process was not removed:\n{r.stderr}")
+    if (f"bccmis-mpi stuff: {held}: left by process {2**22 + 7} on {host}, which may still be running: remove it "
+            "once that run has ended") not in lines or not os.path.isdir(held):
+        sys.exit(f"FAIL: a staging directory some process holds locked was not left and named:\n{r.stderr}")
+    os.rmdir(held)
     print(f"ok: {ranks} ranks: SIGTERM to every rank left nothing, SIGKILL one staging directory, removed by the "
-          "next run")
+          "next run; a directory's lock, not its PID, says whether its run has ended")
 
 
 def refusals(mpirun, bccmis_mpi, ranks, work):

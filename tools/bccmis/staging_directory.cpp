@@ -1,6 +1,7 @@
 #include "staging_directory.h"
 
-#include <signal.h>
+#include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -29,6 +30,28 @@ Naming naming(const std::string& stem) {
   return {p.parent_path(), "." + p.filename().string() + ".staging-"};
 }
 
+// A descriptor of the directory `path` holding a shared lock on it, or -1:
+// each process of the run holds one while the run lasts, and the kernel
+// releases it when the process ends, however it ends (D18).
+int hold_shared_lock(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd >= 0 && ::flock(fd, LOCK_SH) != 0) {
+    ::close(fd);
+    return -1;
+  }
+  return fd;
+}
+
+// True when no process holds a lock on the directory `path`: its run has
+// ended. The exclusive lock taken to find out is released at once.
+bool unheld(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool free = ::flock(fd, LOCK_EX | LOCK_NB) == 0;
+  ::close(fd);
+  return free;
+}
+
 std::string host_name() {
   char host[256] = {};
   if (::gethostname(host, sizeof host - 1) != 0) return "unknown";
@@ -42,17 +65,18 @@ std::unique_ptr<StagingDirectory> StagingDirectory::make(const std::string& stem
   std::string name = (n.parent / (n.prefix + std::to_string(::getpid()) + "@" + host_name() + ".tmp-XXXXXX")).string();
   if (!make_temporary_directory(name))
     throw InputError(n.dir().string() + ": cannot create a temporary directory: " + std::strerror(errno));
-  return std::unique_ptr<StagingDirectory>(new StagingDirectory(name));
+  return std::unique_ptr<StagingDirectory>(new StagingDirectory(name, hold_shared_lock(name)));
 }
 
 std::unique_ptr<StagingDirectory> StagingDirectory::adopt(const std::string& path) {
   track_temporary_directory(path);
-  return std::unique_ptr<StagingDirectory>(new StagingDirectory(path));
+  return std::unique_ptr<StagingDirectory>(new StagingDirectory(path, hold_shared_lock(path)));
 }
 
 StagingDirectory::~StagingDirectory() {
   ::rmdir(path_.c_str());
   untrack_temporary_directory(path_);
+  if (lock_fd_ >= 0) ::close(lock_fd_);
 }
 
 std::vector<std::string> clean_stale_staging(const std::string& stem) {
@@ -69,7 +93,7 @@ std::vector<std::string> clean_stale_staging(const std::string& stem) {
     const std::string pid = name.substr(n.prefix.size(), at - n.prefix.size());
     const std::string host = name.substr(at + 1, tmp - at - 1);
     if (pid.empty() || pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos) continue;
-    const bool ended = host == here && ::kill(static_cast<pid_t>(std::stol(pid)), 0) != 0 && errno == ESRCH;
+    const bool ended = host == here && unheld((n.parent / name).string());
     if (!ended) {
       lines.push_back((n.parent / name).string() + ": left by process " + pid + " on " + host +
                       ", which may still be running: remove it once that run has ended");

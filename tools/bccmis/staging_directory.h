@@ -15,11 +15,13 @@ class StagingDirectory {
   /// Makes `DIR/.NAME.staging-PID@HOST.tmp-XXXXXX` for the outputs
   /// `stem`... (DIR/NAME: `stem`'s directory, "." without one, and file
   /// name; PID and HOST: this process's), registered for removal on a
-  /// signal (temporary_files.h). Throws InputError ("DIR: cannot create a
+  /// signal (temporary_files.h) and locked shared while the object lives
+  /// (the lock a later run's `clean_stale_staging` looks for). Throws InputError ("DIR: cannot create a
   /// temporary directory: REASON").
   static std::unique_ptr<StagingDirectory> make(const std::string& stem);
   /// Takes the directory `path` another process of the run made: registered
-  /// for removal on a signal, removed on destruction when empty.
+  /// for removal on a signal, locked shared as `make` locks it, removed on
+  /// destruction when empty.
   static std::unique_ptr<StagingDirectory> adopt(const std::string& path);
   /// Removes the directory when it is empty (the last of the processes
   /// sharing it removes it).
@@ -30,13 +32,16 @@ class StagingDirectory {
   const std::string& path() const { return path_; }
 
  private:
-  explicit StagingDirectory(std::string path) : path_(std::move(path)) {}
+  StagingDirectory(std::string path, int lock_fd) : path_(std::move(path)), lock_fd_(lock_fd) {}
   std::string path_;
+  int lock_fd_;  // holds a shared lock on the directory while the run lasts
 };
 
 /// The staging directories of `stem` (StagingDirectory::make's naming) that
-/// earlier runs left: one made on this host by a process that no longer
-/// exists is removed with its contents; any other is left. A line for each:
+/// earlier runs left: one made on this host on which no process holds a
+/// lock (every process of a run holds a shared lock on it, released by the
+/// kernel when the process ends) is removed with its contents; any other is
+/// left. A line for each:
 /// "removed DIR, left by an interrupted run", or "DIR: left by process PID
 /// on HOST, which may still be running: remove it once that run has ended".
 std::vector<std::string> clean_stale_staging(const std::string& stem);
