@@ -228,7 +228,8 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
       throw CheckError(world.describe() + ": " + r.warnings.front());
   }
   if (settings.statistics) {
-    r.statistics = to_world(statistics(shape, r.stuffed.mesh, r.boundary, settings.hausdorff), n);
+    r.statistics =
+        to_world(statistics(shape, r.stuffed.mesh, r.boundary, settings.hausdorff, settings.lattice.threads), n);
     if (r.features)  // S33, in world units
       r.features->distance = std::ldexp(feature_distance(r.stuffed.mesh, r.boundary, features, fit.h), n.exponent);
   }

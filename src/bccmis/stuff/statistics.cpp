@@ -47,9 +47,9 @@ Hausdorff hausdorff(const Shape& shape, const d3::TetMeshF& mesh,
 }  // namespace
 
 Statistics statistics(const Shape& shape, const d3::TetMeshF& mesh,
-                      const std::vector<std::array<std::uint32_t, 3>>& boundary, bool with_hausdorff) {
+                      const std::vector<std::array<std::uint32_t, 3>>& boundary, bool with_hausdorff, int threads) {
   Statistics s;
-  s.quality = quality(mesh, boundary.size());
+  s.quality = quality(mesh, boundary.size(), threads);
   if (with_hausdorff) s.hausdorff = hausdorff(shape, mesh, boundary);
   s.shape_volume = shape.volume();
   s.vertices = mesh.vertices.size();
