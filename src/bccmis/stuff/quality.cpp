@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "bccmis/d3/mesh.h"
@@ -11,6 +12,8 @@
 #include "bccmis/stuff/stuff.h"
 
 namespace bccmis::stuff {
+
+using Tets = std::vector<std::array<std::uint32_t, 4>>;
 
 namespace {
 
@@ -71,12 +74,12 @@ struct ChunkSums {
   long double volume = 0;
 };
 
-ChunkSums chunk_sums(const d3::TetMeshF& mesh, std::size_t begin, std::size_t end) {
+ChunkSums chunk_sums(const std::vector<Vec3>& vertices, const Tets& tets, std::size_t begin, std::size_t end) {
   static const AngleEdges edges;
   ChunkSums s;
   for (std::size_t i = begin; i < end; ++i) {
-    const auto& t = mesh.tets[i];
-    const std::array<Vec3, 4> p{mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], mesh.vertices[t[3]]};
+    const auto& t = tets[i];
+    const std::array<Vec3, 4> p{vertices[t[0]], vertices[t[1]], vertices[t[2]], vertices[t[3]]};
     bool small = false;
     for (const long double c : d3::dihedral_cosines(p)) {
       s.largest_cosine = std::max(s.largest_cosine, c);
@@ -103,13 +106,17 @@ StuffQuality quality(const d3::TetMeshF& mesh, int threads) {
 }
 
 StuffQuality quality(const d3::TetMeshF& mesh, std::size_t boundary_triangles, int threads) {
+  return quality(mesh.vertices, mesh.tets, boundary_triangles, threads);
+}
+
+StuffQuality quality(const std::vector<Vec3>& vertices, const Tets& tets, std::size_t boundary_triangles, int threads) {
   // S13a: the chunks of kQualityChunk tetrahedra, contiguous runs of them on
   // each thread, each chunk's sums in its own place, joined in chunk order.
-  const std::size_t n = mesh.tets.size();
+  const std::size_t n = tets.size();
   std::vector<ChunkSums> chunks((n + kQualityChunk - 1) / kQualityChunk);
   detail::for_each_range(chunks.size(), threads, 1, [&](std::size_t first, std::size_t last) {
     for (std::size_t c = first; c < last; ++c)
-      chunks[c] = chunk_sums(mesh, c * kQualityChunk, std::min(n, (c + 1) * kQualityChunk));
+      chunks[c] = chunk_sums(vertices, tets, c * kQualityChunk, std::min(n, (c + 1) * kQualityChunk));
   });
   StuffQuality q;
   ChunkSums all;

@@ -161,6 +161,9 @@ StuffQuality quality(const d3::TetMeshF& mesh, int threads = 0);
 /// The same when the boundary is already counted (`boundary_triangles`
 /// triangles).
 StuffQuality quality(const d3::TetMeshF& mesh, std::size_t boundary_triangles, int threads = 0);
+/// The same of the tetrahedra `tets` on `vertices`.
+StuffQuality quality(const std::vector<Vec3>& vertices, const std::vector<std::array<std::uint32_t, 4>>& tets,
+                     std::size_t boundary_triangles, int threads = 0);
 
 /// S13a: the tetrahedra of one chunk of quality()'s pass, whose volumes are
 /// summed in order before the chunks' sums are added in chunk order.
