@@ -48,18 +48,20 @@ Hausdorff hausdorff(const Shape& shape, const std::vector<Vec3>& vertices,
 
 Statistics statistics(const Shape& shape, const d3::TetMeshF& mesh,
                       const std::vector<std::array<std::uint32_t, 3>>& boundary, bool with_hausdorff, int threads) {
-  return statistics(shape, mesh.vertices, mesh.tets, boundary, with_hausdorff, threads);
+  return statistics(shape, quality(mesh, std::size_t{0}, threads), mesh.vertices, mesh.tets.size(), boundary,
+                    with_hausdorff);
 }
 
-Statistics statistics(const Shape& shape, const std::vector<Vec3>& vertices,
-                      const std::vector<std::array<std::uint32_t, 4>>& tets,
-                      const std::vector<std::array<std::uint32_t, 3>>& boundary, bool with_hausdorff, int threads) {
+Statistics statistics(const Shape& shape, const StuffQuality& pass, const std::vector<Vec3>& vertices,
+                      std::size_t tetrahedra, const std::vector<std::array<std::uint32_t, 3>>& boundary,
+                      bool with_hausdorff) {
   Statistics s;
-  s.quality = quality(vertices, tets, boundary.size(), threads);
+  s.quality = pass;
+  s.quality.boundary_triangles = boundary.size();
   if (with_hausdorff) s.hausdorff = hausdorff(shape, vertices, boundary);
   s.shape_volume = shape.volume();
   s.vertices = vertices.size();
-  s.tetrahedra = tets.size();
+  s.tetrahedra = tetrahedra;
   s.relative_volume_error = (s.quality.volume - s.shape_volume) / s.shape_volume;
   return s;
 }

@@ -50,10 +50,11 @@ struct Statistics {
 Statistics statistics(const Shape& shape, const d3::TetMeshF& mesh,
                       const std::vector<std::array<std::uint32_t, 3>>& boundary, bool hausdorff = true,
                       int threads = 0);
-/// The same of the tetrahedra `tets` on `vertices`.
-Statistics statistics(const Shape& shape, const std::vector<Vec3>& vertices,
-                      const std::vector<std::array<std::uint32_t, 4>>& tets,
-                      const std::vector<std::array<std::uint32_t, 3>>& boundary, bool hausdorff, int threads);
+/// The same from the pass over the `tetrahedra` tetrahedra on `vertices`
+/// already made (`pass`, its boundary count not yet set).
+Statistics statistics(const Shape& shape, const StuffQuality& pass, const std::vector<Vec3>& vertices,
+                      std::size_t tetrahedra, const std::vector<std::array<std::uint32_t, 3>>& boundary,
+                      bool hausdorff);
 
 /// S24: statistics computed in local coordinates, in world units: lengths
 /// times 2^k, volumes times 2^3k (infinite when they overflow a double).
