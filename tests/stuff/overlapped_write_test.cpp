@@ -41,13 +41,7 @@ TEST(StuffOverlappedWrite, TheWriterSeesTheWorldMeshAndTheStatisticsAreUnchanged
   EXPECT_EQ(written.tets, plain.stuffed.mesh.tets);
   EXPECT_EQ(overlapped.stuffed.mesh.vertices, plain.stuffed.mesh.vertices);
   ASSERT_TRUE(plain.statistics && overlapped.statistics);
-  const StuffQuality &a = plain.statistics->quality, &b = overlapped.statistics->quality;
-  EXPECT_EQ(a.volume, b.volume);
-  EXPECT_EQ(a.min_dihedral, b.min_dihedral);
-  EXPECT_EQ(a.max_dihedral, b.max_dihedral);
-  EXPECT_EQ(a.histogram, b.histogram);
-  EXPECT_EQ(a.below10, b.below10);
-  EXPECT_EQ(a.boundary_triangles, b.boundary_triangles);
+  EXPECT_TRUE(plain.statistics->quality == overlapped.statistics->quality);
   EXPECT_EQ(plain.statistics->relative_volume_error, overlapped.statistics->relative_volume_error);
   // The phases: "write" after "statistics", only with a writer.
   ASSERT_GE(overlapped.seconds.size(), 2U);

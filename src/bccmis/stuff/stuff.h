@@ -154,6 +154,7 @@ struct StuffQuality {
   std::size_t below10 = 0;                  ///< tetrahedra with an angle below 10 degrees
   std::array<std::size_t, 13> histogram{};  ///< as d3::MeshQuality::histogram
   std::size_t boundary_triangles = 0;
+  bool operator==(const StuffQuality&) const = default;
 };
 /// On `threads` threads (0: every core); the result is the same on any
 /// number (S13a).
