@@ -2,9 +2,7 @@
 // volumes of §4, the five tetrahedron shapes and their dihedral angles, the
 // mesh facts (tiling, conformity, edges, angles) in every state of random
 // operation sequences, exact orientation at coordinates near 2^62, and the
-// three writers read back. Expected values come from spec/mesh3d.md. The
-// cosines of dihedral_cosines, which share cross products between edges,
-// are those of each edge's own two cross products, bit for bit.
+// three writers read back. Expected values come from spec/mesh3d.md.
 #include "bccmis/d3/mesh.h"
 
 #include <gtest/gtest.h>
@@ -782,50 +780,6 @@ TEST(D3MeshWriters, MeditReadsBack) {
   EXPECT_EQ(a, "End");
   EXPECT_FALSE(in.fail());
   EXPECT_FALSE(in >> a) << "text after End";
-}
-
-// Each edge (i, j) on its own: n_k = ij x ik, n_l = ij x il, the cosine
-// dot(n_k, n_l) / sqrt(dot(n_k, n_k) dot(n_l, n_l)), in long double.
-std::array<long double, 6> cosines_edge_by_edge(const std::array<Vec3, 4>& t) {
-  using V = std::array<long double, 3>;
-  const auto sub = [](const Vec3& a, const Vec3& b) {
-    return V{static_cast<long double>(a[0]) - static_cast<long double>(b[0]),
-             static_cast<long double>(a[1]) - static_cast<long double>(b[1]),
-             static_cast<long double>(a[2]) - static_cast<long double>(b[2])};
-  };
-  const auto cross = [](const V& a, const V& b) {
-    return V{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-  };
-  const auto dot = [](const V& a, const V& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
-  static constexpr std::size_t kEdges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
-                                               {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
-  std::array<long double, 6> out{};
-  for (std::size_t e = 0; e < 6; ++e) {
-    const auto [i, j, k, l] = kEdges[e];
-    const V axis = sub(t[j], t[i]);
-    const V nk = cross(axis, sub(t[k], t[i])), nl = cross(axis, sub(t[l], t[i]));
-    out[e] = std::clamp(dot(nk, nl) / std::sqrt(dot(nk, nk) * dot(nl, nl)), -1.0L, 1.0L);
-  }
-  return out;
-}
-
-TEST(D3Mesh, SharedCrossProductsGiveEachEdgesOwnCosine) {
-  // Random points in [1, 2)^3, on a grid of eighths (right angles, exact
-  // zeros) and a hair off it (nearly flat faces).
-  std::mt19937_64 random(7);
-  std::uniform_real_distribution<double> unit(1, 2);
-  std::uniform_int_distribution<int> eighths(0, 8);
-  for (int n = 0; n < 30000; ++n) {
-    std::array<Vec3, 4> t{};
-    for (Vec3& p : t)
-      for (double& x : p)
-        x = n % 3 == 0 ? unit(random) : 1 + eighths(random) / 8.0 + (n % 3 == 2 ? (unit(random) - 1) * 1e-9 : 0.0);
-    const auto want = cosines_edge_by_edge(t), got = dihedral_cosines(t);
-    for (std::size_t e = 0; e < 6; ++e)
-      if (!std::isnan(want[e])) {
-        ASSERT_EQ(got[e], want[e]) << "tetrahedron " << n << ", edge " << e;
-      }
-  }
 }
 
 }  // namespace

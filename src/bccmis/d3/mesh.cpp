@@ -114,30 +114,17 @@ std::array<long double, 6> dihedral_cosines_impl(const std::array<P, 4>& t) {
   };
   auto dot = [](const V& a, const V& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
   // The dihedral angle at edge (i, j) is the angle between the faces (i, j, k)
-  // and (i, j, l): between the components of ik and il orthogonal to ij, the
-  // cosine dot(n_k, n_l) / sqrt(dot(n_k, n_k) dot(n_l, n_l)) of n_k = ij x ik
-  // and n_l = ij x il, for the edges 01, 02, 03, 12, 13, 23 in turn. Edges
-  // through a common vertex share these cross products up to sign, and
-  // b x a = -(a x b) exactly in floating point (each component is the other's
-  // difference of the same two products, negated), as are a dot with one
-  // side negated and a quotient with a negated numerator: so 8 cross products
-  // serve the 12, with the bits of computing each edge's own.
-  const V d01 = sub(t[1], t[0]), d02 = sub(t[2], t[0]), d03 = sub(t[3], t[0]);
-  const V d12 = sub(t[2], t[1]), d13 = sub(t[3], t[1]), d10 = sub(t[0], t[1]);
-  const V d23 = sub(t[3], t[2]), d20 = sub(t[0], t[2]), d21 = sub(t[1], t[2]);
-  const V a = cross(d01, d02), b = cross(d01, d03), c = cross(d02, d03);  // at vertex 0
-  const V d = cross(d12, d10), e = cross(d12, d13), f = cross(d13, d10);  // at vertex 1
-  const V g = cross(d23, d20), h = cross(d23, d21);                       // at edge 23
-  const long double na = dot(a, a), nb = dot(b, b), nc = dot(c, c), nd = dot(d, d), ne = dot(e, e), nf = dot(f, f);
-  const auto cosine = [](long double along, long double nk, long double nl) {
-    return std::clamp(along / std::sqrt(nk * nl), -1.0L, 1.0L);
-  };
-  return {cosine(dot(a, b), na, nb),                 // 01: n_k = a, n_l = b
-          cosine(-dot(a, c), na, nc),                // 02: -a, c
-          cosine(dot(b, c), nb, nc),                 // 03: -b, -c
-          cosine(dot(d, e), nd, ne),                 // 12: d, e
-          cosine(-dot(f, e), nf, ne),                // 13: f, -e
-          cosine(dot(g, h), dot(g, g), dot(h, h))};  // 23: g, h
+  // and (i, j, l): between the components of ik and il orthogonal to ij.
+  static constexpr int kEdges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
+                                       {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
+  std::array<long double, 6> out{};
+  for (int e = 0; e < 6; ++e) {
+    const auto [i, j, k, l] = kEdges[e];
+    const V axis = sub(t[j], t[i]);
+    const V nk = cross(axis, sub(t[k], t[i])), nl = cross(axis, sub(t[l], t[i]));
+    out[static_cast<std::size_t>(e)] = std::clamp(dot(nk, nl) / std::sqrt(dot(nk, nk) * dot(nl, nl)), -1.0L, 1.0L);
+  }
+  return out;
 }
 
 template <class P>
