@@ -93,3 +93,6 @@ endif()
 # S24's map: exactness of the translation, the scale, and a tiny sphere as
 # the unit sphere scaled, coordinate for coordinate.
 bccmis_add_gtest(stuff_normalisation_tests SOURCES normalisation_test.cpp LIBS bccmis::stuffing LABELS unit)
+
+# S13a: the outputs written while the statistics are computed.
+bccmis_add_gtest(stuff_overlapped_write_tests SOURCES overlapped_write_test.cpp LIBS bccmis::stuffing LABELS unit)

@@ -166,6 +166,8 @@ int run(const StuffOptions& o) {
   settings.features.crease_cuts = o.crease_cuts;
   if (o.feature_angle >= 0) settings.features.angle = o.feature_angle;
   if (o.memory_limit_gb > 0) settings.memory_limit = o.memory_limit_gb * 1e9;
+  // The outputs are written while the statistics are computed (S13a).
+  settings.write = [&](const stuff::Meshed& r) { add_mesh_outputs(outputs, o, r.stuffed.mesh, r.regions, r.boundary); };
   stuff::Meshed m;
   try {
     m = stuff::mesh_shape(*shape, settings, progress_of(o));
@@ -178,10 +180,7 @@ int run(const StuffOptions& o) {
   if (!o.quiet)
     for (const std::string& warning : m.warnings) std::cerr << "bccmis stuff: warning: " << warning << "\n";
 
-  const auto t = stuff::Clock::now();
   const d3::TetMeshF& mesh = m.stuffed.mesh;
-  add_mesh_outputs(outputs, o, mesh, m.regions, m.boundary);
-  seconds.emplace_back("write", stuff::seconds_since(t));
   if (o.stats) outputs.add("-", stats_text(shape->describe(), m, seconds, o.json));
   outputs.commit();
   if (!o.quiet && !o.outputs.empty())

@@ -3,11 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <utility>
 
 #include "bccmis/invariants/d3/feature_conformity.h"
 #include "bccmis/invariants/d3/stuffed_mesh.h"
 #include "bccmis/json_writer.h"
+#include "bccmis/stuff/background_statistics.h"
 #include "bccmis/stuff/crease_cuts.h"
 #include "bccmis/stuff/memory_estimate.h"
 #include "bccmis/stuff/normalisation.h"
@@ -177,9 +179,18 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
   // S21 (a soup whose winding number is below 1/2 at every lattice vertex)
   // or S26 (bad input for this level).
   if (r.stuffed.mesh.tets.empty()) throw ShapeError(empty_mesh_message(world, r.fit));
+  // S13a: with a writer, the pass over the tetrahedra runs on its own
+  // threads from the moment the mesh is final (here without features, after
+  // S29-S35 with them) while the boundary is found and the mesh mapped back
+  // and written.
+  std::optional<BackgroundStatistics> background;
+  const auto start_statistics = [&] {
+    if (settings.statistics && settings.write) background.emplace(r.stuffed.mesh, settings.lattice.threads);
+  };
   // One grouping of the faces for S11's boundary and M23's regions (the
   // feature snapping below moves vertices only; S35's splits group them again), timed with the statistics.
   const auto t_faces = Clock::now();
+  if (!settings.features.on) start_statistics();
   r.regions = io::regions_of(r.stuffed.mesh.tets, &r.boundary);
   const double face_seconds = seconds_since(t_faces);
   // S29-S31: the sharp features of a triangle mesh, and the mesh made to hold them.
@@ -200,6 +211,7 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
     r.features->placed = creased.all_curves.placed;
     r.features->placed_kept = creased.placed_kept;
     r.seconds.emplace_back("features", crease_feature_seconds + seconds_since(t0));
+    start_statistics();
     say(std::to_string(features.edges) + " feature edges, " + std::to_string(features.corners.size()) +
         " corners; conformed " + std::to_string(conformity.corners_conformed) + " corners, " +
         std::to_string(conformity.curves_conformed) + " of " + std::to_string(features.curves.size()) + " curves; " +
@@ -229,12 +241,26 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
       throw CheckError(world.describe() + ": " + r.warnings.front());
   }
   if (settings.statistics) {
-    r.statistics = to_world(statistics(shape, r.stuffed.mesh, r.boundary, settings.hausdorff), n);
     if (r.features)  // S33, in world units
       r.features->distance = std::ldexp(feature_distance(r.stuffed.mesh, r.boundary, features, fit.h), n.exponent);
+    if (!background)
+      r.statistics =
+          to_world(statistics(shape, r.stuffed.mesh, r.boundary, settings.hausdorff, settings.lattice.threads), n);
   }
-  r.seconds.emplace_back("statistics", face_seconds + seconds_since(t1));
+  const auto t_world = Clock::now();
   to_world(r.stuffed.mesh, n, r.fit.h);
+  double outside_statistics = seconds_since(t_world);  // the map back and the writing
+  double write_seconds = 0;
+  if (settings.write) {
+    const auto t_write = Clock::now();
+    settings.write(r);
+    write_seconds = seconds_since(t_write);
+    outside_statistics += write_seconds;
+  }
+  if (background) r.statistics = to_world(background->finish(shape, r.boundary, settings.hausdorff), n);
+  // S13a: what the statistics add to the run, the writing's seconds apart.
+  r.seconds.emplace_back("statistics", face_seconds + seconds_since(t1) - outside_statistics);
+  if (settings.write) r.seconds.emplace_back("write", write_seconds);
   return r;
 }
 

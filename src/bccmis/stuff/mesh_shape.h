@@ -48,6 +48,8 @@ struct FeatureSettings {
   double crease_cuts = 0;               ///< S35.7's delta (of h), kept as S35.8 says; 0: none
 };
 
+struct Meshed;
+
 /// Everything a run is told.
 struct Settings {
   StuffOptions lattice;     ///< S2, S3, S6: levels, cells, size, the alphas
@@ -62,6 +64,11 @@ struct Settings {
   /// The memory a run may take (S25); unset: MemAvailable of /proc/meminfo.
   std::optional<double> memory_limit;
   FeatureSettings features;  ///< S29-S33; off: the mesh of S5-S9 exactly
+  /// When set, called once with the result in world coordinates (the mesh,
+  /// its boundary and regions; not yet its statistics) while the statistics
+  /// are computed on other threads (S13a): the caller's writing of the
+  /// outputs, timed as the phase "write".
+  std::function<void(const Meshed&)> write;
 };
 
 /// One line of news for a person watching ("12,345 leaves (0.5 s)").

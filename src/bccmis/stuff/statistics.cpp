@@ -13,11 +13,11 @@ namespace {
 
 /// S13: the boundary's side of the Hausdorff distance, |f| at the three
 /// vertices, three edge midpoints and the centroid of every triangle.
-double from_boundary(const Shape& shape, const d3::TetMeshF& mesh,
+double from_boundary(const Shape& shape, const std::vector<Vec3>& vertices,
                      const std::vector<std::array<std::uint32_t, 3>>& boundary) {
   double d = 0;
   for (const auto& t : boundary) {
-    const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+    const Vec3 &a = vertices[t[0]], &b = vertices[t[1]], &c = vertices[t[2]];
     const auto mix = [](const Vec3& x, const Vec3& y, const Vec3& z, double u, double v, double w) {
       return Vec3{u * x[0] + v * y[0] + w * z[0], u * x[1] + v * y[1] + w * z[1], u * x[2] + v * y[2] + w * z[2]};
     };
@@ -28,17 +28,17 @@ double from_boundary(const Shape& shape, const d3::TetMeshF& mesh,
   return d;
 }
 
-Hausdorff hausdorff(const Shape& shape, const d3::TetMeshF& mesh,
+Hausdorff hausdorff(const Shape& shape, const std::vector<Vec3>& vertices,
                     const std::vector<std::array<std::uint32_t, 3>>& boundary) {
   Hausdorff h;
   h.computed = true;
-  h.from_boundary = from_boundary(shape, mesh, boundary);
+  h.from_boundary = from_boundary(shape, vertices, boundary);
   h.boundary_points = 7 * boundary.size();
 #if BCCMIS_HAVE_STUFF_SURFACE
   // S13: the surface's side, 20,000 samples (seed 1) to the boundary triangles.
   if (!boundary.empty()) {
     h.surface_samples = 20000;
-    h.from_surface = max_distance_to_triangles(shape.sample_surface(h.surface_samples, 1), mesh.vertices, boundary);
+    h.from_surface = max_distance_to_triangles(shape.sample_surface(h.surface_samples, 1), vertices, boundary);
   }
 #endif
   return h;
@@ -47,13 +47,21 @@ Hausdorff hausdorff(const Shape& shape, const d3::TetMeshF& mesh,
 }  // namespace
 
 Statistics statistics(const Shape& shape, const d3::TetMeshF& mesh,
-                      const std::vector<std::array<std::uint32_t, 3>>& boundary, bool with_hausdorff) {
+                      const std::vector<std::array<std::uint32_t, 3>>& boundary, bool with_hausdorff, int threads) {
+  return statistics(shape, quality(mesh, std::size_t{0}, threads), mesh.vertices, mesh.tets.size(), boundary,
+                    with_hausdorff);
+}
+
+Statistics statistics(const Shape& shape, const StuffQuality& pass, const std::vector<Vec3>& vertices,
+                      std::size_t tetrahedra, const std::vector<std::array<std::uint32_t, 3>>& boundary,
+                      bool with_hausdorff) {
   Statistics s;
-  s.quality = quality(mesh, boundary.size());
-  if (with_hausdorff) s.hausdorff = hausdorff(shape, mesh, boundary);
+  s.quality = pass;
+  s.quality.boundary_triangles = boundary.size();
+  if (with_hausdorff) s.hausdorff = hausdorff(shape, vertices, boundary);
   s.shape_volume = shape.volume();
-  s.vertices = mesh.vertices.size();
-  s.tetrahedra = mesh.tets.size();
+  s.vertices = vertices.size();
+  s.tetrahedra = tetrahedra;
   s.relative_volume_error = (s.quality.volume - s.shape_volume) / s.shape_volume;
   return s;
 }

@@ -45,9 +45,16 @@ struct Statistics {
 /// S13 on `mesh`, a mesh of `shape` whose boundary is `boundary`; the
 /// sampled Hausdorff distance only with `hausdorff`. The distance from the
 /// surface needs CGAL's triangle distances: without CGAL in the build it is
-/// not computed (from_surface stays -1).
+/// not computed (from_surface stays -1). The pass over the tetrahedra runs
+/// on `threads` threads (0: every core), the same result on any number (S13a).
 Statistics statistics(const Shape& shape, const d3::TetMeshF& mesh,
-                      const std::vector<std::array<std::uint32_t, 3>>& boundary, bool hausdorff = true);
+                      const std::vector<std::array<std::uint32_t, 3>>& boundary, bool hausdorff = true,
+                      int threads = 0);
+/// The same from the pass over the `tetrahedra` tetrahedra on `vertices`
+/// already made (`pass`, its boundary count not yet set).
+Statistics statistics(const Shape& shape, const StuffQuality& pass, const std::vector<Vec3>& vertices,
+                      std::size_t tetrahedra, const std::vector<std::array<std::uint32_t, 3>>& boundary,
+                      bool hausdorff);
 
 /// S24: statistics computed in local coordinates, in world units: lengths
 /// times 2^k, volumes times 2^3k (infinite when they overflow a double).

@@ -154,10 +154,20 @@ struct StuffQuality {
   std::size_t below10 = 0;                  ///< tetrahedra with an angle below 10 degrees
   std::array<std::size_t, 13> histogram{};  ///< as d3::MeshQuality::histogram
   std::size_t boundary_triangles = 0;
+  bool operator==(const StuffQuality&) const = default;
 };
-StuffQuality quality(const d3::TetMeshF& mesh);
+/// On `threads` threads (0: every core); the result is the same on any
+/// number (S13a).
+StuffQuality quality(const d3::TetMeshF& mesh, int threads = 0);
 /// The same when the boundary is already counted (`boundary_triangles`
 /// triangles).
-StuffQuality quality(const d3::TetMeshF& mesh, std::size_t boundary_triangles);
+StuffQuality quality(const d3::TetMeshF& mesh, std::size_t boundary_triangles, int threads = 0);
+/// The same of the tetrahedra `tets` on `vertices`.
+StuffQuality quality(const std::vector<Vec3>& vertices, const std::vector<std::array<std::uint32_t, 4>>& tets,
+                     std::size_t boundary_triangles, int threads = 0);
+
+/// S13a: the tetrahedra of one chunk of quality()'s pass, whose volumes are
+/// summed in order before the chunks' sums are added in chunk order.
+inline constexpr std::size_t kQualityChunk = 16384;
 
 }  // namespace bccmis::stuff

@@ -2,10 +2,8 @@
 #include "bccmis/stuff/topology.h"
 
 #include <algorithm>
-#include <map>
+#include <cstdint>
 #include <numeric>
-#include <set>
-#include <utility>
 
 namespace bccmis::stuff {
 
@@ -26,19 +24,26 @@ MeshTopology topology(const d3::TetMeshF& mesh, const std::vector<std::array<std
     }
   for (std::uint32_t v = 0; v < parent.size(); ++v)
     if (used[v] && find(v) == v) ++t.boundary_components;
-  // The boundary: V - E + F, and the edges in more than two triangles.
-  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;
-  std::set<std::uint32_t> vertices;
+  // The boundary: V - E + F, and the edges in more than two triangles: the
+  // edges as (low, high) keys, sorted, one run of equal keys an edge.
+  std::vector<std::uint64_t> edges;
+  edges.reserve(3 * boundary.size());
   for (const auto& tri : boundary)
     for (std::size_t i = 0; i < 3; ++i) {
-      vertices.insert(tri[i]);
       const std::uint32_t a = tri[i], b = tri[(i + 1) % 3];
-      ++edges[{std::min(a, b), std::max(a, b)}];
+      edges.push_back(std::uint64_t{std::min(a, b)} << 32 | std::max(a, b));
     }
-  for (const auto& [e, n] : edges)
-    if (n > 2) ++t.nonmanifold_edges;
-  t.boundary_euler = static_cast<long long>(vertices.size()) - static_cast<long long>(edges.size()) +
-                     static_cast<long long>(boundary.size());
+  std::sort(edges.begin(), edges.end());
+  std::size_t edge_count = 0;
+  for (std::size_t e = 0; e < edges.size();) {
+    std::size_t end = e + 1;
+    while (end < edges.size() && edges[end] == edges[e]) ++end;
+    ++edge_count;
+    if (end - e > 2) ++t.nonmanifold_edges;
+    e = end;
+  }
+  const auto vertex_count = static_cast<long long>(std::count(used.begin(), used.end(), char{1}));
+  t.boundary_euler = vertex_count - static_cast<long long>(edge_count) + static_cast<long long>(boundary.size());
   return t;
 }
 
