@@ -519,6 +519,9 @@ FrameReport MovingLattice::step(const Vec3& offset) {
   // distance if any entry knows it.
   std::vector<Candidate> all = std::move(descent.near);
   for (const d3::Point& u : lattice_dirty()) all.push_back({u, true, {}});
+  // S38a: the leaves this step made (a changed cell or a child of one).
+  for (const d3::Point& u : gone)
+    if (g_.is_center(u)) all.push_back({u, true, {}, false, true});
   for (const d3::Point& u : active_) all.push_back({u, false, {}});
   for (const auto& [c, level] : descent.deferred) near_visit(c, level, {}, descent.moved, all);
   std::sort(all.begin(), all.end(), [](const Candidate& a, const Candidate& b) { return a.u < b.u; });
@@ -528,14 +531,13 @@ FrameReport MovingLattice::step(const Vec3& offset) {
       candidates.back().relattice = candidates.back().relattice || c.relattice;
       candidates.back().f = detail::both(candidates.back().f, c.f);
       candidates.back().near = candidates.back().near || c.near;
+      candidates.back().born = candidates.back().born || c.born;
     } else {
       candidates.push_back(c);
     }
   }
   // The last frame's active leaves may have gone since.
   std::erase_if(candidates, [&](const Candidate& c) { return !c.relattice && !g_.is_center(c.u); });
-  // S38a: the leaves this step made, or whose cell it changed.
-  for (Candidate& c : candidates) c.born = std::binary_search(gone.begin(), gone.end(), c.u);
   restuff(candidates, true, report);
   report.stuff_seconds = since(t1);
   return report;
