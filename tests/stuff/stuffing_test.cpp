@@ -245,6 +245,20 @@ TEST(StuffAnimate, RememberedDistanceDecidesOnlyBeyondItsDrift) {
   EXPECT_EQ(detail::both(b, detail::drifted(3.0, 0.25, 0.125)).hi, std::numeric_limits<double>::infinity());
 }
 
+TEST(StuffAnimate, ACellsDistanceBoundsItsChildrenWithinTheirOffset) {
+  // S38: |f| in [1, 1.5] at a cell's center, children 0.25 away, e = 0.125:
+  // in [0.625, 1.875] at theirs; a comparison exactly at either end is
+  // decided (<= at the top, > just below the bottom), one a step inside is
+  // not; the bottom stops at 0.
+  const detail::DistanceBound b = detail::widened({1.0, 1.5}, 0.25, 0.125);
+  EXPECT_EQ(b.at_most(1.875), std::optional<bool>(true));
+  EXPECT_EQ(b.at_most(std::nextafter(1.875, 0.0)), std::nullopt);
+  EXPECT_EQ(b.at_most(std::nextafter(0.625, 0.0)), std::optional<bool>(false));
+  EXPECT_EQ(b.at_most(0.625), std::nullopt);
+  EXPECT_EQ(detail::widened({0.25, 0.25}, 0.25, 0.125).lo, 0.0);
+  EXPECT_EQ(detail::widened({}, 0.25, 0.125).at_most(1e300), std::nullopt);
+}
+
 TEST(StuffAnimate, BuiltInDistancesAreOneLipschitzAsClaimed) {
   // S37 fact 1: each built-in shape (and its translated view) claims a
   // 1-Lipschitz distance; random pairs of points near and far from the
@@ -420,6 +434,90 @@ TEST(StuffAnimate, ADistanceThatIsNotOneLipschitzIsAskedAgainEveryFrame) {
     EXPECT_TRUE(moving.lattice().to_graph() == lattice);
     const Stuffed reference = stuff(*moved, fit, lattice, o);
     EXPECT_TRUE(tet_keys(moving.stuffed().mesh) == tet_keys(reference.mesh));
+  }
+}
+
+/// A shape that counts the distances asked of it, and says whether its
+/// distance is 1-Lipschitz as it is told (S37 fact 1).
+class CountingShape final : public Shape {
+ public:
+  CountingShape(std::shared_ptr<const Shape> s, bool lipschitz) : s_(std::move(s)), lipschitz_(lipschitz) {}
+  double signed_distance(const Vec3& p) const override {
+    ++signed_asked;
+    return s_->signed_distance(p);
+  }
+  double distance(const Vec3& p) const override {
+    ++asked;
+    return s_->distance(p);
+  }
+  bool distance_is_lipschitz() const override { return lipschitz_; }
+  int side(const Vec3& p) const override { return s_->side(p); }
+  double crossing(const Vec3& a, const Vec3& b) const override { return s_->crossing(a, b); }
+  Bounds bounds() const override { return s_->bounds(); }
+  double volume() const override { return s_->volume(); }
+  std::vector<Vec3> sample_surface(std::size_t n, std::uint64_t seed) const override {
+    return s_->sample_surface(n, seed);
+  }
+  std::string describe() const override { return s_->describe(); }
+  mutable std::size_t asked = 0, signed_asked = 0;
+
+ private:
+  std::shared_ptr<const Shape> s_;
+  bool lipschitz_;
+};
+
+TEST(StuffAnimate, ACellsDistanceSparesItsChildrensQueriesWithTheSameFrames) {
+  // S38: in the first step nothing is remembered from an earlier descent
+  // (S37), so every query the 1-Lipschitz ball spares against the same
+  // ball claimed otherwise is a child decided by its parent's distance;
+  // the frames are the same tetrahedra, and the lattice built from scratch.
+  const Vec3 path{0.3, -0.1, 0.05};
+  StuffOptions o;
+  o.max_level = 3;
+  o.cells = 4;
+  const std::shared_ptr<const Shape> ball = make_sphere({0, 0, 0}, 0.4);
+  const Fit fit = fit_lattice(swept_bounds(*ball, path), o);
+  std::size_t asked[2] = {};
+  std::vector<std::pair<d3::Graph, d3::TetMeshF>> frames[2];
+  for (const bool lipschitz : {false, true}) {
+    const auto counting = std::make_shared<CountingShape>(ball, lipschitz);
+    MovingLattice moving(counting, fit, o);
+    for (int frame = 1; frame <= 2; ++frame) {
+      counting->asked = 0;
+      moving.step({path[0] * frame / 4, path[1] * frame / 4, path[2] * frame / 4});
+      if (frame == 1) asked[lipschitz] = counting->asked;
+      frames[lipschitz].emplace_back(moving.lattice().to_graph(), moving.stuffed().mesh);
+    }
+    const auto moved = translated(ball, {path[0] / 2, path[1] / 2, path[2] / 2});
+    EXPECT_TRUE(frames[lipschitz].back().first == background_fast(*moved, fit, o).to_graph());
+  }
+  EXPECT_LT(asked[1], asked[0] * 3 / 4);
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_TRUE(frames[0][k].first == frames[1][k].first) << k;
+    EXPECT_TRUE(tet_keys(frames[0][k].second) == tet_keys(frames[1][k].second)) << k;
+  }
+}
+
+TEST(StuffAnimate, ALeafThatLeftTheBandIsSettledByItsSideAlone) {
+  // S38a: in steps shorter than the band (m < s + 1.05 r_w at level L, so
+  // the descent settles the activity of every leaf it finds), a signed
+  // distance is asked only of leaves the step made: a changed cell and its
+  // 8 children, at most 9 a refine or coarsen. The leaves beside them and
+  // the last frame's active leaves that the descent no longer finds (about
+  // twice as many) are inactive without one.
+  const Vec3 path{0.06, 0.02, 0};
+  StuffOptions o;
+  o.max_level = 3;
+  o.cells = 4;
+  const std::shared_ptr<const Shape> ball = make_sphere({0, 0, 0}, 0.4);
+  const Fit fit = fit_lattice(swept_bounds(*ball, path), o);
+  const auto counting = std::make_shared<CountingShape>(ball, true);
+  MovingLattice moving(counting, fit, o);
+  for (int frame = 1; frame <= 3; ++frame) {
+    counting->signed_asked = 0;
+    const FrameReport r = moving.step({path[0] * frame / 4, path[1] * frame / 4, path[2] * frame / 4});
+    EXPECT_LE(counting->signed_asked, 9 * (r.refines + r.coarsens)) << frame;
+    EXPECT_GT(r.refines + r.coarsens, 0U) << frame;
   }
 }
 

@@ -70,7 +70,7 @@ MovingLattice::MovingLattice(std::shared_ptr<const Shape> shape, const Fit& fit,
   std::vector<Candidate> all;
   for (const d3::Point& u : g_.cells()) all.push_back({u, true, {}});
   FrameReport ignored;
-  restuff(all, ignored);
+  restuff(all, false, ignored);
 }
 
 std::vector<d3::Point> MovingLattice::roots() const {
@@ -89,9 +89,11 @@ std::vector<d3::Point> MovingLattice::roots() const {
 // near the surface, with the distances it computed: the level-L leaves
 // below cells that pass, the coarser leaves that fail, and, to search after
 // the coarsen pass, the failing refined cells that may hold some.
-void MovingLattice::refine_visit(const d3::Point& c, int level, FrameReport& report, Descent& d) {
+void MovingLattice::refine_visit(const d3::Point& c, int level, const detail::DistanceBound& parent,
+                                 FrameReport& report, Descent& d) {
   const double s = static_cast<double>(side(level)) * fit_.scale;
-  detail::DistanceBound f = remembered(c);  // S37: each comparison asks only if f does not decide it
+  // S37, S38: each comparison asks only if f does not decide it.
+  detail::DistanceBound f = detail::both(remembered(c), parent);
   const double k = 0.5 * std::sqrt(3.0);
   // near_visit's bound: a leaf inside c may be a candidate.
   const auto may_hold = [&] { return at_most(c, f, k * s + std::max((1 - k) * 0.5 * s + reach_, d.moved)); };
@@ -99,7 +101,7 @@ void MovingLattice::refine_visit(const d3::Point& c, int level, FrameReport& rep
       level < fit_.size.L && (level < options_.min_level || at_most(c, f, std::sqrt(3.0) * (0.5 * s) + 4 * fit_.h));
   if (!pass) {
     if (g_.is_center(c)) {
-      if (at_most(c, f, std::max(s + reach_, d.moved))) d.near.push_back({c, false, f});
+      if (at_most(c, f, std::max(s + reach_, d.moved))) d.near.push_back({c, false, f, true});
     } else {
       d.failing.push_back({c, level});
       if (may_hold()) d.deferred.push_back({c, level});
@@ -112,14 +114,16 @@ void MovingLattice::refine_visit(const d3::Point& c, int level, FrameReport& rep
     for (const d3::Point& x : r.refined) changed_.push_back({x, *d3::refined_center_level(fit_.size, x)});
   }
   if (level + 1 < fit_.size.L) {
-    for (const d3::Point& child : children(c, side(level))) refine_visit(child, level + 1, report, d);
+    const detail::DistanceBound below = to_children(f, level);
+    for (const d3::Point& child : children(c, side(level))) refine_visit(child, level + 1, below, report, d);
     return;
   }
   // The children are level-L leaves.
   if (!may_hold()) return;
+  const detail::DistanceBound below = to_children(f, level);
   for (const d3::Point& child : children(c, side(level))) {
-    detail::DistanceBound fc = remembered(child);
-    if (at_most(child, fc, std::max(0.5 * s + reach_, d.moved))) d.near.push_back({child, false, fc});
+    detail::DistanceBound fc = detail::both(remembered(child), below);
+    if (at_most(child, fc, std::max(0.5 * s + reach_, d.moved))) d.near.push_back({child, false, fc, true});
   }
 }
 
@@ -144,11 +148,12 @@ bool MovingLattice::coarsen_subtree(const d3::Point& c, int level, FrameReport& 
 // S16's candidates: the leaves that can be active now, |f(u)| <= s_u + 1.05 r_w,
 // or whose sign can have changed since the last frame, |f(u)| <= the
 // distance moved (the surface passed u on the way).
-void MovingLattice::near_visit(const d3::Point& c, int level, double moved, std::vector<Candidate>& out) {
+void MovingLattice::near_visit(const d3::Point& c, int level, const detail::DistanceBound& parent, double moved,
+                               std::vector<Candidate>& out) {
   const double s = static_cast<double>(side(level)) * fit_.scale;
-  detail::DistanceBound f = remembered(c);  // S37
+  detail::DistanceBound f = detail::both(remembered(c), parent);  // S37, S38
   if (g_.is_center(c)) {
-    if (at_most(c, f, std::max(s + reach_, moved))) out.push_back({c, false, f});
+    if (at_most(c, f, std::max(s + reach_, moved))) out.push_back({c, false, f, true});
     return;
   }
   // A leaf u of side s_u inside c is within sqrt(3)/2 (s - s_u) of c's
@@ -156,7 +161,15 @@ void MovingLattice::near_visit(const d3::Point& c, int level, double moved, std:
   // max((1 - sqrt(3)/2) s / 2 + reach, moved).
   const double k = 0.5 * std::sqrt(3.0);
   if (!at_most(c, f, k * s + std::max((1 - k) * 0.5 * s + reach_, moved))) return;
-  for (const d3::Point& child : children(c, side(level))) near_visit(child, level + 1, moved, out);
+  const detail::DistanceBound below = to_children(f, level);
+  for (const d3::Point& child : children(c, side(level))) near_visit(child, level + 1, below, moved, out);
+}
+
+detail::DistanceBound MovingLattice::to_children(const detail::DistanceBound& f, int level) const {
+  // S38: a child's center lies sqrt(3)/4 s from its parent's; f is
+  // 1-Lipschitz in the point only where S37 fact 1 says so.
+  if (!lipschitz_) return {};
+  return detail::widened(f, 0.25 * std::sqrt(3.0) * static_cast<double>(side(level)) * fit_.scale, rounding_);
 }
 
 // The leaf holding the points just beside p in the direction of `octant`
@@ -362,12 +375,12 @@ std::uint32_t MovingLattice::acquire(const d3::Point& p) {
 // (its tetrahedra are output as they are) or outside (no output), its
 // lattice tetrahedra computed again where the lattice changed; then stuff
 // the active leaves and put the frame's mesh together.
-void MovingLattice::restuff(const std::vector<Candidate>& candidates, FrameReport& report) {
+void MovingLattice::restuff(const std::vector<Candidate>& candidates, bool descended, FrameReport& report) {
   std::vector<d3::Tet>& tets = tets_;
   std::vector<d3::Tet> fresh;
   tets.clear();
   std::vector<d3::Point> active;
-  for (const auto& [u, relattice, known] : candidates) {
+  for (const auto& [u, relattice, known, near, born] : candidates) {
     Leaf& leaf = leaves_[u];
     if (leaf.level < 0) leaf.level = g_.level_of(u);
     leaf.stale = leaf.stale || relattice;
@@ -377,7 +390,11 @@ void MovingLattice::restuff(const std::vector<Candidate>& candidates, FrameRepor
     const Vec3 at = fit_.to_space(u);
     bool is_active = false;
     int sign = 0;  // of f, when asked here
-    if (const std::optional<bool> decided = detail::both(known, remembered(u)).at_most(s + reach_)) {
+    if (descended && !near && !born) {
+      // S38a: a leaf throughout the step that the descent did not find has
+      // |f| > max(s + 1.05 r_w, m): inactive; its side is asked alone.
+      is_active = false;
+    } else if (const std::optional<bool> decided = detail::both(known, remembered(u)).at_most(s + reach_)) {
       is_active = *decided;
     } else {
       const double f = moved_->signed_distance(at);
@@ -473,7 +490,7 @@ FrameReport MovingLattice::step(const Vec3& offset) {
   // lets no more go.
   Descent descent;
   descent.moved = moved * 1.01;
-  for (const d3::Point& c : top) refine_visit(c, 0, report, descent);
+  for (const d3::Point& c : top) refine_visit(c, 0, {}, report, descent);
   for (bool changed = true; changed;) {
     changed = false;
     for (const auto& [c, level] : descent.failing)
@@ -502,21 +519,26 @@ FrameReport MovingLattice::step(const Vec3& offset) {
   // distance if any entry knows it.
   std::vector<Candidate> all = std::move(descent.near);
   for (const d3::Point& u : lattice_dirty()) all.push_back({u, true, {}});
+  // S38a: the leaves this step made (a changed cell or a child of one).
+  for (const d3::Point& u : gone)
+    if (g_.is_center(u)) all.push_back({u, true, {}, false, true});
   for (const d3::Point& u : active_) all.push_back({u, false, {}});
-  for (const auto& [c, level] : descent.deferred) near_visit(c, level, descent.moved, all);
+  for (const auto& [c, level] : descent.deferred) near_visit(c, level, {}, descent.moved, all);
   std::sort(all.begin(), all.end(), [](const Candidate& a, const Candidate& b) { return a.u < b.u; });
   std::vector<Candidate> candidates;
   for (const Candidate& c : all) {
     if (!candidates.empty() && candidates.back().u == c.u) {
       candidates.back().relattice = candidates.back().relattice || c.relattice;
       candidates.back().f = detail::both(candidates.back().f, c.f);
+      candidates.back().near = candidates.back().near || c.near;
+      candidates.back().born = candidates.back().born || c.born;
     } else {
       candidates.push_back(c);
     }
   }
   // The last frame's active leaves may have gone since.
   std::erase_if(candidates, [&](const Candidate& c) { return !c.relattice && !g_.is_center(c.u); });
-  restuff(candidates, report);
+  restuff(candidates, true, report);
   report.stuff_seconds = since(t1);
   return report;
 }

@@ -68,6 +68,10 @@ class MovingLattice {
     d3::Point u;
     bool relattice = false;
     detail::DistanceBound f;
+    /// Found by the descent: |f| <= max(s + 1.05 r_w, m) (S16, S38a).
+    bool near = false;
+    /// A changed cell of this step or a child of one (S38a).
+    bool born = false;
   };
 
   /// What the frame's descent collects (S15, S16).
@@ -79,9 +83,14 @@ class MovingLattice {
 
   std::int64_t side(int level) const { return d3::cell_side(fit_.size, level); }
   std::vector<d3::Point> roots() const;
-  void refine_visit(const d3::Point& c, int level, FrameReport& report, Descent& d);
+  void refine_visit(const d3::Point& c, int level, const detail::DistanceBound& parent, FrameReport& report,
+                    Descent& d);
   bool coarsen_subtree(const d3::Point& c, int level, FrameReport& report);
-  void near_visit(const d3::Point& c, int level, double moved, std::vector<Candidate>& out);
+  void near_visit(const d3::Point& c, int level, const detail::DistanceBound& parent, double moved,
+                  std::vector<Candidate>& out);
+  /// S38: what f's bound at a cell of `level` says of f at its children's
+  /// centers.
+  detail::DistanceBound to_children(const detail::DistanceBound& f, int level) const;
   /// S37: what the distances asked before say of |f(p)| now.
   detail::DistanceBound remembered(const d3::Point& p) const;
   /// S37: whether |f(p)| <= t, from `f` when it decides, else asked of the
@@ -89,7 +98,9 @@ class MovingLattice {
   bool at_most(const d3::Point& p, detail::DistanceBound& f, double t);
   bool leaf_at(const d3::Point& p, const std::array<int, 3>& octant, int from, d3::Point& out) const;
   std::vector<d3::Point> lattice_dirty();
-  void restuff(const std::vector<Candidate>& candidates, FrameReport& report);
+  /// `descended`: the candidates follow a descent, which found every leaf
+  /// near the surface (S38a); else every candidate's activity is asked.
+  void restuff(const std::vector<Candidate>& candidates, bool descended, FrameReport& report);
   void release(Leaf& leaf);
   std::uint32_t acquire(const d3::Point& p);
   void assemble(const StuffedPart& part);

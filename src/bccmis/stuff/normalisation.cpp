@@ -13,16 +13,20 @@ std::string shortest(double x) {
   char buf[32];
   return std::string(buf, std::to_chars(buf, buf + sizeof buf, x).ptr);
 }
+/// x 2^k (S24): ldexp(x, 0) is x, and most shapes need no scaling; every
+/// query of the views below passes here (a moving shape's step asks about
+/// a million).
+double scaled(double x, int k) { return k == 0 ? x : std::ldexp(x, k); }
 }  // namespace
 
 Vec3 Normalisation::to_local(const Vec3& p) const {
-  return {std::ldexp(p[0] - translation[0], -exponent), std::ldexp(p[1] - translation[1], -exponent),
-          std::ldexp(p[2] - translation[2], -exponent)};
+  return {scaled(p[0] - translation[0], -exponent), scaled(p[1] - translation[1], -exponent),
+          scaled(p[2] - translation[2], -exponent)};
 }
 
 Vec3 Normalisation::to_world(const Vec3& p) const {
-  return {translation[0] + std::ldexp(p[0], exponent), translation[1] + std::ldexp(p[1], exponent),
-          translation[2] + std::ldexp(p[2], exponent)};
+  return {translation[0] + scaled(p[0], exponent), translation[1] + scaled(p[1], exponent),
+          translation[2] + scaled(p[2], exponent)};
 }
 
 Normalisation normalisation_of(const Bounds& box) {
@@ -91,7 +95,7 @@ class NormalisedView final : public Shape {
   }
 
  private:
-  double down(double d) const { return std::ldexp(d, -n_.exponent); }
+  double down(double d) const { return scaled(d, -n_.exponent); }
   const Shape& s_;
   Normalisation n_;
 };
@@ -132,7 +136,7 @@ class Placed final : public Shape {
   }
 
  private:
-  double up(double d) const { return std::ldexp(d, n_.exponent); }
+  double up(double d) const { return scaled(d, n_.exponent); }
   std::unique_ptr<Shape> local_;
   Normalisation n_;
 };

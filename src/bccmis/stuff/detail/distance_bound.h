@@ -1,5 +1,5 @@
-// spec/stuffing.md S37: what a distance asked at another offset of a moving
-// shape says of the distance now.
+// spec/stuffing.md S37, S38: what a distance asked at another offset of a
+// moving shape, or at another point, says of the distance here and now.
 #pragma once
 
 #include <algorithm>
@@ -27,6 +27,12 @@ struct DistanceBound {
 inline DistanceBound drifted(double f0, double drift, double e) {
   if (drift == 0) return {f0, f0};
   return {std::max(0.0, f0 - drift - e), f0 + drift + e};
+}
+
+/// S38: the bound of f at a point `r` away from where f is known to lie in
+/// `f` (the same offset), `e` the rounding's share.
+inline DistanceBound widened(const DistanceBound& f, double r, double e) {
+  return {std::max(0.0, f.lo - r - e), f.hi + r + e};
 }
 
 /// Both bounds hold: the value when either is one, else their
