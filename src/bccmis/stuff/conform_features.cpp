@@ -597,9 +597,10 @@ class Snapper {
   /// (what it appended is taken off with the rest).
   void journal_flip(const Flip& f) {
     if (!journal_) return;
-    for (const auto& [a, before] : f.tets_at) journal_->steps.emplace_back([this, a, before] { tets_at_[a] = before; });
+    for (const auto& [a, before] : f.tets_at)
+      journal_->steps.emplace_back([this, a = a, before = before] { tets_at_[a] = before; });
     for (const auto& [id, before] : f.replaced)
-      journal_->steps.emplace_back([this, id, before] { mesh_.tets[id] = before; });
+      journal_->steps.emplace_back([this, id = id, before = before] { mesh_.tets[id] = before; });
   }
 
   /// Whether ab is an edge of a tetrahedron.
