@@ -17,8 +17,8 @@ bccmis_add_test(cli.fem_poisson COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${CMAKE_CURRENT
 
 # Outputs fail early and leave nothing (spec/cli.md, "Outputs"): an
 # unwritable -o ends `stuff` before meshing with the reason; SIGTERM and
-# SIGINT while meshing leave no temporary and no output
-# (tests/io/outputs_early_test.py).
+# SIGINT while meshing leave no temporary and no output; --animate makes each
+# frame's temporary as it writes the frame (tests/io/outputs_early_test.py).
 bccmis_add_test(cli.outputs_early COMMAND ${BCCMIS_SYSTEM_PYTHON3} ${CMAKE_CURRENT_LIST_DIR}/outputs_early_test.py
                                         $<TARGET_FILE:bccmis>
                                         LABELS cli TIMEOUT 120)

@@ -6,7 +6,10 @@
   progress line is printed and no other output or temporary is left;
 - SIGTERM or SIGINT while `bccmis stuff` meshes (its temporaries already
   exist: they are created before the meshing) ends it by that signal and
-  leaves no temporary and no output.
+  leaves no temporary and no output;
+- under --animate the .pvd's temporary is made before the meshing and each
+  frame's as the frame is written: while frame 1's exists, frame 2's and
+  3's do not; SIGTERM then leaves no temporary and no output.
 
 Usage: outputs_early_test.py BCCMIS
 """
@@ -56,6 +59,40 @@ def interrupted(bccmis, d, sig):
     print("%s while meshing: ended by the signal, nothing left" % sig.name)
 
 
+def animated(bccmis, d, sig):
+    pvd = os.path.join(d, "a.pvd")
+    p = subprocess.Popen([bccmis] + SHAPE + ["--animate", "3", "--quiet", "-o", pvd])
+    deadline = time.monotonic() + 120
+    first = None
+    while True:
+        temporaries = sorted(f for f in os.listdir(d) if ".tmp-" in f)
+        if first is None and temporaries:
+            first = temporaries
+        if any(f.startswith(".a_0001.vtu.tmp-") for f in temporaries):
+            break
+        if p.poll() is not None or time.monotonic() > deadline:
+            p.kill()
+            p.wait()
+            fail("--animate: frame 1's temporary did not appear while bccmis ran (exit %s)" % p.returncode)
+        time.sleep(0.001)
+    later = [f for f in temporaries if f.startswith((".a_0002.vtu.tmp-", ".a_0003.vtu.tmp-"))]
+    if later:
+        p.kill()
+        p.wait()
+        fail("--animate: later frames' temporaries %s exist while frame 1 is written" % later)
+    if len(first) != 1 or not first[0].startswith(".a.pvd.tmp-"):
+        p.kill()
+        p.wait()
+        fail("--animate: the first temporaries were %s, not the .pvd's alone" % first)
+    p.send_signal(sig)
+    p.wait(timeout=60)
+    if p.returncode != -sig:
+        fail("--animate: %s: bccmis ended with %d, not by the signal" % (sig.name, p.returncode))
+    if os.listdir(d):
+        fail("--animate: %s: left %s" % (sig.name, os.listdir(d)))
+    print("--animate: the .pvd's temporary first, each frame's as it is written; %s leaves nothing" % sig.name)
+
+
 def main():
     if len(sys.argv) != 2:
         fail("usage: outputs_early_test.py BCCMIS")
@@ -63,6 +100,7 @@ def main():
         unwritable(sys.argv[1], d)
         interrupted(sys.argv[1], d, signal.SIGTERM)
         interrupted(sys.argv[1], d, signal.SIGINT)
+        animated(sys.argv[1], d, signal.SIGTERM)
     print("ok")
 
 
