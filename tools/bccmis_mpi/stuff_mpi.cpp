@@ -21,6 +21,7 @@
 #include "bccmis/io/pvtu.h"
 #include "bccmis/io/vtu.h"
 #include "bccmis/p4est/bridge.h"
+#include "bccmis/stuff/animate_shape.h"
 #include "bccmis/stuff/mesh_shape.h"
 #include "io.h"
 #include "staging_directory.h"
@@ -211,6 +212,11 @@ int run_animate(const StuffOptions& o, bool gather, double threshold, MPI_Comm c
         frames.emplace_back(k, file_name(frame));
       });
       if (rank == 0 && !o.quiet) {
+        // S14's notice, in bccmis stuff --animate's words (the lattice fitted
+        // on every rank before frame 0, so it does not throw here).
+        if (k == 0)
+          if (const auto notice = stuff::swept_box_notice(*shape, settings.path, settings.lattice))
+            std::cerr << kTool << ": " << *notice << "\n";
         std::cerr << kTool << ": frame " << k << "/" << o.animate << ": " << tetrahedra << " tetrahedra";
         if (k > 0)  // D15: what the step did to the forest
           std::cerr << "; forest: " << step.coarsened << " coarsened, " << step.refined << " refined, "
