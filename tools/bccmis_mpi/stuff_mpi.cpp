@@ -166,6 +166,8 @@ int run_animate(const StuffOptions& o, bool gather, double threshold, MPI_Comm c
     const std::string staged = write ? broadcast(staging ? staging->path() : std::string(), comm) : std::string();
     stage(comm, [&] {
       if (write && rank != 0) staging = StagingDirectory::adopt(staged);
+      if (staging && !staging->warning().empty() && !o.quiet)  // D18: a lock not held, said by the rank
+        std::cerr << kTool << ": rank " << rank << ": warning: " << staging->warning() << "\n";
       pieces.stage_in(staged);
       index.stage_in(staged);
       for (int k = 0; k <= o.animate && write; ++k) {
