@@ -150,26 +150,37 @@ TEST(StuffFast, StuffShapeRunsEitherLattice) {
   EXPECT_GT(tr.lattice, 0);
 }
 
+/// A torus off the lattice's symmetry at level 2, on `threads` threads.
+struct TorusRun {
+  explicit TorusRun(int threads) {
+    o.max_level = 2;
+    o.cells = 4;
+    o.threads = threads;
+    fit = fit_lattice(torus->bounds(), o);
+  }
+  static std::unique_ptr<Shape> shape() { return make_torus({0.05, -0.021, 0.013}, 1, 0.4); }
+  /// b is a, which has tetrahedra and warped vertices.
+  static void expect_same(const Stuffed& b, const Stuffed& a) {
+    EXPECT_GT(a.mesh.tets.size(), 0U);
+    EXPECT_GT(a.warped, 0U);
+    EXPECT_EQ(first_difference(b, a), "");
+  }
+  StuffOptions o;
+  std::unique_ptr<Shape> torus = shape();
+  Fit fit;
+};
+
 TEST(StuffFast, FreeingTheLatticeAfterTheWarpChangesNoByte) {
   // spec/mesh3d.md M26: stuff() on a lattice it may free reads every leaf's
   // level before freeing it after S6, and makes the same mesh as stuff() on
   // a lattice it keeps, on one thread and on two; the lattice is freed.
   for (const int threads : {1, 2}) {
     SCOPED_TRACE(threads);
-    StuffOptions o;
-    o.max_level = 2;
-    o.cells = 4;
-    o.threads = threads;
-    const auto torus = make_torus({0.05, -0.021, 0.013}, 1, 0.4);
-    const Fit fit = fit_lattice(torus->bounds(), o);
-    const d3::fast::Lattice kept = background_fast(*torus, fit, o);
-    d3::fast::Lattice freed = background_fast(*torus, fit, o);
+    const TorusRun r(threads);
+    const d3::fast::Lattice kept = background_fast(*r.torus, r.fit, r.o);
+    d3::fast::Lattice freed = background_fast(*r.torus, r.fit, r.o);
     ASSERT_GT(freed.memory_bytes(), 0U);
-    const Stuffed a = stuff(*torus, fit, kept, o);
-    const Stuffed b = stuff(*torus, fit, std::move(freed), o);
-    EXPECT_GT(a.mesh.tets.size(), 0U);
-    EXPECT_GT(a.warped, 0U);
-    EXPECT_EQ(first_difference(b, a), "");
+    TorusRun::expect_same(stuff(*r.torus, r.fit, std::move(freed), r.o), stuff(*r.torus, r.fit, kept, r.o));
     EXPECT_EQ(freed.memory_bytes(), 0U);  // NOLINT(bugprone-use-after-move): moved from, its memory freed
   }
 }
@@ -200,19 +211,10 @@ TEST(StuffFast, OnlyTheSignOfSideEnters) {
   // on two.
   for (const int threads : {1, 2}) {
     SCOPED_TRACE(threads);
-    StuffOptions o;
-    o.max_level = 2;
-    o.cells = 4;
-    o.threads = threads;
-    const auto torus = make_torus({0.05, -0.021, 0.013}, 1, 0.4);
-    const WideSides wide(make_torus({0.05, -0.021, 0.013}, 1, 0.4));
-    const Fit fit = fit_lattice(torus->bounds(), o);
-    const d3::fast::Lattice g = background_fast(*torus, fit, o);
-    const Stuffed a = stuff(*torus, fit, g, o);
-    const Stuffed b = stuff(wide, fit, g, o);
-    EXPECT_GT(a.mesh.tets.size(), 0U);
-    EXPECT_GT(a.warped, 0U);
-    EXPECT_EQ(first_difference(b, a), "");
+    const TorusRun r(threads);
+    const WideSides wide(TorusRun::shape());
+    const d3::fast::Lattice g = background_fast(*r.torus, r.fit, r.o);
+    TorusRun::expect_same(stuff(wide, r.fit, g, r.o), stuff(*r.torus, r.fit, g, r.o));
   }
 }
 
