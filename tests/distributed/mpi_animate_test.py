@@ -18,7 +18,8 @@
       ranks refuse it with exit 2 and the same message (S26, D14), nothing
       written; D17's check of the moved forest, handed a wrong forest by its
       test hook (BCCMIS_TEST_CHECK_PREVIOUS_FRAME), exit 1 naming the frame,
-      nothing written.
+      nothing written; the notice that the lattice fits the swept box, in
+      bccmis stuff's words (S26, D14).
   mpi_animate_test.py signals MPIRUN BCCMIS BCCMIS_MPI RANKS
       D18: while the ranks stage their frames, SIGKILL to every rank leaves
       one hidden staging directory and nothing else, which the next run of
@@ -193,8 +194,19 @@ def faults(mpirun, bccmis, bccmis_mpi, ranks, work):
         sys.exit(f"FAIL: the check of a wrong forest: exit {p.returncode} (expected 1), stderr:\n{p.stderr}")
     if os.listdir(work):
         sys.exit(f"FAIL: a failed check left {os.listdir(work)}")
+    # D14: the swept box's notice (S26) in bccmis stuff's words, from the one function.
+    moving = ["--shape", "sphere", "-L", "2", "--animate", "1", "--stats"]
+    notice = "--animate fits the lattice to the swept box: "
+    serial = run([bccmis, "stuff", *moving])
+    r = run(mpi(mpirun, ranks) + [bccmis_mpi, "stuff", *moving])
+    said = [line[len("bccmis stuff: "):] for line in serial.stderr.splitlines() if notice in line]
+    heard = [line[len("bccmis-mpi stuff: "):] for line in r.stderr.splitlines() if notice in line]
+    if len(said) != 1 or not said[0].startswith(notice):
+        sys.exit(f"FAIL: bccmis stuff's swept box notice:\n{serial.stderr}")
+    if heard != said:
+        sys.exit(f"FAIL: the ranks' swept box notice {heard}, bccmis stuff's {said}")
     print(f"ok: {ranks} ranks: an empty frame refused in bccmis stuff's words ({want[:40]}...), a wrong forest "
-          "refused by --check (exit 1), nothing written")
+          "refused by --check (exit 1), nothing written; the swept box's notice as bccmis stuff's")
 
 
 STAGING = re.compile(r"\.out\.staging-(\d+)@[^/]+\.tmp-[A-Za-z0-9]{6}")

@@ -6,7 +6,10 @@
   progress line is printed and no other output or temporary is left;
 - SIGTERM or SIGINT while `bccmis stuff` meshes (its temporaries already
   exist: they are created before the meshing) ends it by that signal and
-  leaves no temporary and no output.
+  leaves no temporary and no output;
+- under --animate the .pvd's temporary is made before the meshing and each
+  frame's as the frame is written: while frame 1's exists, frame 2's and
+  3's do not; SIGTERM then leaves no temporary and no output.
 
 Usage: outputs_early_test.py BCCMIS
 """
@@ -37,23 +40,53 @@ def unwritable(bccmis, d):
     print("unwritable outputs: exit 2 with the reason, before meshing, nothing left")
 
 
-def interrupted(bccmis, d, sig):
-    outs = [os.path.join(d, "a.vtu"), os.path.join(d, "b.msh")]
-    p = subprocess.Popen([bccmis] + SHAPE + ["--quiet", "-o", outs[0], "-o", outs[1]])
-    deadline = time.monotonic() + 60
-    while len([f for f in os.listdir(d) if ".tmp-" in f]) < 2:
+def temporaries_until(p, d, ready, what, timeout=60):
+    """The temporaries in d once ready(them) holds, polled while bccmis runs."""
+    deadline = time.monotonic() + timeout
+    while True:
+        temporaries = sorted(f for f in os.listdir(d) if ".tmp-" in f)
+        if ready(temporaries):
+            return temporaries
         if p.poll() is not None or time.monotonic() > deadline:
             p.kill()
             p.wait()
-            fail("%s: the two temporaries did not appear while bccmis ran (exit %s)" % (sig.name, p.returncode))
+            fail("%s did not appear while bccmis ran (exit %s)" % (what, p.returncode))
         time.sleep(0.001)
+
+
+def ended_by(p, d, sig, what):
+    """Sends sig: bccmis must end by it and leave nothing in d."""
     p.send_signal(sig)
     p.wait(timeout=60)
     if p.returncode != -sig:
-        fail("%s: bccmis ended with %d, not by the signal" % (sig.name, p.returncode))
+        fail("%s%s: bccmis ended with %d, not by the signal" % (what, sig.name, p.returncode))
     if os.listdir(d):
-        fail("%s: left %s" % (sig.name, os.listdir(d)))
+        fail("%s%s: left %s" % (what, sig.name, os.listdir(d)))
+
+
+def interrupted(bccmis, d, sig):
+    outs = [os.path.join(d, "a.vtu"), os.path.join(d, "b.msh")]
+    p = subprocess.Popen([bccmis] + SHAPE + ["--quiet", "-o", outs[0], "-o", outs[1]])
+    temporaries_until(p, d, lambda t: len(t) >= 2, "%s: the two temporaries" % sig.name)
+    ended_by(p, d, sig, "")
     print("%s while meshing: ended by the signal, nothing left" % sig.name)
+
+
+def animated(bccmis, d, sig):
+    p = subprocess.Popen([bccmis] + SHAPE + ["--animate", "3", "--quiet", "-o", os.path.join(d, "a.pvd")])
+    first = temporaries_until(p, d, bool, "--animate: a temporary", timeout=120)
+    temporaries = temporaries_until(p, d, lambda t: any(f.startswith(".a_0001.vtu.tmp-") for f in t),
+                                    "--animate: frame 1's temporary", timeout=120)
+    later = [f for f in temporaries if f.startswith((".a_0002.vtu.tmp-", ".a_0003.vtu.tmp-"))]
+    wrong = ("later frames' temporaries %s exist while frame 1 is written" % later if later else
+             "the first temporaries were %s, not the .pvd's alone" % first
+             if len(first) != 1 or not first[0].startswith(".a.pvd.tmp-") else None)
+    if wrong:
+        p.kill()
+        p.wait()
+        fail("--animate: " + wrong)
+    ended_by(p, d, sig, "--animate: ")
+    print("--animate: the .pvd's temporary first, each frame's as it is written; %s leaves nothing" % sig.name)
 
 
 def main():
@@ -63,6 +96,7 @@ def main():
         unwritable(sys.argv[1], d)
         interrupted(sys.argv[1], d, signal.SIGTERM)
         interrupted(sys.argv[1], d, signal.SIGINT)
+        animated(sys.argv[1], d, signal.SIGTERM)
     print("ok")
 
 

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <memory>
 #include <sstream>
@@ -149,27 +150,71 @@ TEST(StuffFast, StuffShapeRunsEitherLattice) {
   EXPECT_GT(tr.lattice, 0);
 }
 
+/// A torus off the lattice's symmetry at level 2, on `threads` threads.
+struct TorusRun {
+  explicit TorusRun(int threads) {
+    o.max_level = 2;
+    o.cells = 4;
+    o.threads = threads;
+    fit = fit_lattice(torus->bounds(), o);
+  }
+  static std::unique_ptr<Shape> shape() { return make_torus({0.05, -0.021, 0.013}, 1, 0.4); }
+  /// b is a, which has tetrahedra and warped vertices.
+  static void expect_same(const Stuffed& b, const Stuffed& a) {
+    EXPECT_GT(a.mesh.tets.size(), 0U);
+    EXPECT_GT(a.warped, 0U);
+    EXPECT_EQ(first_difference(b, a), "");
+  }
+  StuffOptions o;
+  std::unique_ptr<Shape> torus = shape();
+  Fit fit;
+};
+
 TEST(StuffFast, FreeingTheLatticeAfterTheWarpChangesNoByte) {
   // spec/mesh3d.md M26: stuff() on a lattice it may free reads every leaf's
   // level before freeing it after S6, and makes the same mesh as stuff() on
   // a lattice it keeps, on one thread and on two; the lattice is freed.
   for (const int threads : {1, 2}) {
     SCOPED_TRACE(threads);
-    StuffOptions o;
-    o.max_level = 2;
-    o.cells = 4;
-    o.threads = threads;
-    const auto torus = make_torus({0.05, -0.021, 0.013}, 1, 0.4);
-    const Fit fit = fit_lattice(torus->bounds(), o);
-    const d3::fast::Lattice kept = background_fast(*torus, fit, o);
-    d3::fast::Lattice freed = background_fast(*torus, fit, o);
+    const TorusRun r(threads);
+    const d3::fast::Lattice kept = background_fast(*r.torus, r.fit, r.o);
+    d3::fast::Lattice freed = background_fast(*r.torus, r.fit, r.o);
     ASSERT_GT(freed.memory_bytes(), 0U);
-    const Stuffed a = stuff(*torus, fit, kept, o);
-    const Stuffed b = stuff(*torus, fit, std::move(freed), o);
-    EXPECT_GT(a.mesh.tets.size(), 0U);
-    EXPECT_GT(a.warped, 0U);
-    EXPECT_EQ(first_difference(b, a), "");
+    TorusRun::expect_same(stuff(*r.torus, r.fit, std::move(freed), r.o), stuff(*r.torus, r.fit, kept, r.o));
     EXPECT_EQ(freed.memory_bytes(), 0U);  // NOLINT(bugprone-use-after-move): moved from, its memory freed
+  }
+}
+
+/// A shape whose side() answers 256 times the sign (S5 reads only the sign):
+/// a stuffer that kept the answer in a byte as it is would read 0.
+class WideSides : public Shape {
+ public:
+  explicit WideSides(std::unique_ptr<Shape> inner) : inner_(std::move(inner)) {}
+  double signed_distance(const Vec3& p) const override { return inner_->signed_distance(p); }
+  int side(const Vec3& p) const override { return 256 * inner_->side(p); }
+  double crossing(const Vec3& a, const Vec3& b) const override { return inner_->crossing(a, b); }
+  Bounds bounds() const override { return inner_->bounds(); }
+  double volume() const override { return inner_->volume(); }
+  std::vector<Vec3> sample_surface(std::size_t n, std::uint64_t seed) const override {
+    return inner_->sample_surface(n, seed);
+  }
+  std::string describe() const override { return "wide " + inner_->describe(); }
+
+ private:
+  std::unique_ptr<Shape> inner_;
+};
+
+TEST(StuffFast, OnlyTheSignOfSideEnters) {
+  //= spec/stuffing.md S28d type=test
+  // The flat stuffer keeps each vertex's side as a byte, the sign of what
+  // side() answers: a side of +-256 makes the mesh of +-1, on one thread and
+  // on two.
+  for (const int threads : {1, 2}) {
+    SCOPED_TRACE(threads);
+    const TorusRun r(threads);
+    const WideSides wide(TorusRun::shape());
+    const d3::fast::Lattice g = background_fast(*r.torus, r.fit, r.o);
+    TorusRun::expect_same(stuff(wide, r.fit, g, r.o), stuff(*r.torus, r.fit, g, r.o));
   }
 }
 

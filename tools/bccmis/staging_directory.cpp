@@ -30,16 +30,18 @@ Naming naming(const std::string& stem) {
   return {p.parent_path(), "." + p.filename().string() + ".staging-"};
 }
 
-// A descriptor of the directory `path` holding a shared lock on it, or -1:
-// each process of the run holds one while the run lasts, and the kernel
-// releases it when the process ends, however it ends (D18).
-int hold_shared_lock(const std::string& path) {
+// A descriptor of the directory `path` holding a shared lock on it, or -1
+// with `warning` saying why not: each process of the run holds one while the
+// run lasts, and the kernel releases it when the process ends, however it
+// ends (D18).
+int hold_shared_lock(const std::string& path, std::string& warning) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd >= 0 && ::flock(fd, LOCK_SH) != 0) {
-    ::close(fd);
-    return -1;
-  }
-  return fd;
+  if (fd >= 0 && ::flock(fd, LOCK_SH) == 0) return fd;
+  const int error = errno;
+  if (fd >= 0) ::close(fd);
+  warning = path + ": cannot lock the staging directory (a run of the same outputs may take it for an " +
+            "interrupted run's and remove it): " + std::strerror(error);
+  return -1;
 }
 
 // True when no process holds a lock on the directory `path`: its run has
@@ -65,12 +67,16 @@ std::unique_ptr<StagingDirectory> StagingDirectory::make(const std::string& stem
   std::string name = (n.parent / (n.prefix + std::to_string(::getpid()) + "@" + host_name() + ".tmp-XXXXXX")).string();
   if (!make_temporary_directory(name))
     throw InputError(n.dir().string() + ": cannot create a temporary directory: " + std::strerror(errno));
-  return std::unique_ptr<StagingDirectory>(new StagingDirectory(name, hold_shared_lock(name)));
+  std::string warning;
+  const int fd = hold_shared_lock(name, warning);
+  return std::unique_ptr<StagingDirectory>(new StagingDirectory(name, fd, warning));
 }
 
 std::unique_ptr<StagingDirectory> StagingDirectory::adopt(const std::string& path) {
   track_temporary_directory(path);
-  return std::unique_ptr<StagingDirectory>(new StagingDirectory(path, hold_shared_lock(path)));
+  std::string warning;
+  const int fd = hold_shared_lock(path, warning);
+  return std::unique_ptr<StagingDirectory>(new StagingDirectory(path, fd, warning));
 }
 
 StagingDirectory::~StagingDirectory() {

@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace bccmis::cli {
@@ -31,10 +32,19 @@ class StagingDirectory {
 
   const std::string& path() const { return path_; }
 
+  /// Empty when the shared lock is held; else why it is not, for the run
+  /// to print as a warning ("PATH: cannot lock the staging directory (a run
+  /// of the same outputs may take it for an interrupted run's and remove
+  /// it): REASON", REASON the system's strerror text of open's or flock's
+  /// failure). The directory is used all the same (D18).
+  const std::string& warning() const { return warning_; }
+
  private:
-  StagingDirectory(std::string path, int lock_fd) : path_(std::move(path)), lock_fd_(lock_fd) {}
+  StagingDirectory(std::string path, int lock_fd, std::string warning)
+      : path_(std::move(path)), lock_fd_(lock_fd), warning_(std::move(warning)) {}
   std::string path_;
-  int lock_fd_;  // holds a shared lock on the directory while the run lasts
+  int lock_fd_;  // holds a shared lock on the directory while the run lasts, or -1
+  std::string warning_;
 };
 
 /// The staging directories of `stem` (StagingDirectory::make's naming) that

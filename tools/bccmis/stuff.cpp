@@ -70,10 +70,9 @@ int run_animate(const StuffOptions& o, const std::shared_ptr<const stuff::Shape>
   const std::string pvd = o.outputs.empty() ? "" : o.outputs[0];
   const std::string stem = pvd.substr(0, pvd.size() - 4);
   const std::string base = stem.substr(stem.find_last_of('/') + 1);
-  if (!pvd.empty()) {  // every file created before the first frame is made
-    for (int k = 0; k <= o.animate; ++k) outputs.open(numbered(stem, k, ".vtu"));
-    outputs.open(pvd);
-  }
+  // The .pvd's temporary before the first frame is made (its directory is
+  // the frames'); each frame's as the frame is written (spec/cli.md).
+  outputs.open(pvd);
   std::vector<std::pair<int, std::string>> frames;  // the .pvd index: timestep, file
   JsonWriter json;
   json.begin_object().key("frames").begin_array();

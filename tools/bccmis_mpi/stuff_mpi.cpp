@@ -21,6 +21,7 @@
 #include "bccmis/io/pvtu.h"
 #include "bccmis/io/vtu.h"
 #include "bccmis/p4est/bridge.h"
+#include "bccmis/stuff/animate_shape.h"
 #include "bccmis/stuff/mesh_shape.h"
 #include "io.h"
 #include "staging_directory.h"
@@ -165,6 +166,8 @@ int run_animate(const StuffOptions& o, bool gather, double threshold, MPI_Comm c
     const std::string staged = write ? broadcast(staging ? staging->path() : std::string(), comm) : std::string();
     stage(comm, [&] {
       if (write && rank != 0) staging = StagingDirectory::adopt(staged);
+      if (staging && !staging->warning().empty() && !o.quiet)  // D18: a lock not held, said by the rank
+        std::cerr << kTool << ": rank " << rank << ": warning: " << staging->warning() << "\n";
       pieces.stage_in(staged);
       index.stage_in(staged);
       for (int k = 0; k <= o.animate && write; ++k) {
@@ -211,6 +214,11 @@ int run_animate(const StuffOptions& o, bool gather, double threshold, MPI_Comm c
         frames.emplace_back(k, file_name(frame));
       });
       if (rank == 0 && !o.quiet) {
+        // S14's notice, in bccmis stuff --animate's words (the lattice fitted
+        // on every rank before frame 0, so it does not throw here).
+        if (k == 0)
+          if (const auto notice = stuff::swept_box_notice(*shape, settings.path, settings.lattice))
+            std::cerr << kTool << ": " << *notice << "\n";
         std::cerr << kTool << ": frame " << k << "/" << o.animate << ": " << tetrahedra << " tetrahedra";
         if (k > 0)  // D15: what the step did to the forest
           std::cerr << "; forest: " << step.coarsened << " coarsened, " << step.refined << " refined, "

@@ -1,6 +1,7 @@
 // `bccmis stuff --animate` as a library call (animate_shape.h; spec/stuffing.md S14-S16).
 #include "bccmis/stuff/animate_shape.h"
 
+#include <optional>
 #include <string>
 
 #include "bccmis/json_writer.h"
@@ -28,14 +29,20 @@ Fit fit_moving(const Shape& shape, const Vec3& path, const StuffOptions& options
   return fit;
 }
 
+std::optional<std::string> swept_box_notice(const Shape& shape, const Vec3& path, const StuffOptions& options) {
+  const double swept = fit_lattice(swept_bounds(shape, path), options).h;
+  const double still = fit_lattice(shape.bounds(), options).h;
+  if (!(swept > still)) return std::nullopt;
+  return "--animate fits the lattice to the swept box: finest side " + JsonWriter::number(swept) + " against " +
+         JsonWriter::number(still) + " for the shape alone";
+}
+
 AnimationSummary animate_shape(const std::shared_ptr<const Shape>& shape, const AnimateSettings& settings,
                                const std::function<void(const Frame&)>& on_frame, const Progress& progress) {
   const Fit fit = fit_moving(*shape, settings.path, settings.lattice);
   // S14: the lattice is fitted to the swept box; say what that costs.
   if (progress)
-    if (const double still = fit_lattice(shape->bounds(), settings.lattice).h; fit.h > still)
-      progress("--animate fits the lattice to the swept box: finest side " + JsonWriter::number(fit.h) + " against " +
-               JsonWriter::number(still) + " for the shape alone");
+    if (const auto notice = swept_box_notice(*shape, settings.path, settings.lattice)) progress(*notice);
   const StuffOptions& options = settings.lattice;
   const int n = settings.frames;
   const auto t0 = Clock::now();

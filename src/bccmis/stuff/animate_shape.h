@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "bccmis/stuff/animate.h"
@@ -54,9 +55,16 @@ std::string empty_frame_message(const Shape& shape, int k, const Fit& fit);
 /// as fit_lattice() does, and when the moving lattice cannot hold it (S16).
 Fit fit_moving(const Shape& shape, const Vec3& path, const StuffOptions& options);
 
+/// S14: when the lattice fitted to the box the shape sweeps along `path` is
+/// coarser than the one fitted to the shape alone, the notice that says so
+/// ("--animate fits the lattice to the swept box: finest side H against H0
+/// for the shape alone"); else nothing. One message for the serial
+/// animation and the ranks' (spec/distributed.md D14); the CLIs print it.
+/// Throws ShapeError as fit_lattice() does.
+std::optional<std::string> swept_box_notice(const Shape& shape, const Vec3& path, const StuffOptions& options);
+
 /// Frames 0..frames, each handed to `on_frame` as it is made; `progress`,
-/// when given, hears when the lattice fitted to the swept box is coarser
-/// than the shape's own (S14). Throws
+/// when given, hears swept_box_notice() when there is one (S14). Throws
 /// ShapeError as fit_moving() does, and CheckError (mesh_shape.h) when
 /// `check` finds a frame that differs from the one made from scratch or
 /// fails the checker's stuffed-mesh layer.

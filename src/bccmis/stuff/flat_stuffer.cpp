@@ -111,19 +111,22 @@ class Stuffer {
   Stuffed run_whole(int threads, PhaseTimes* times) {
     detail::PhaseClock clock(times);
     begin_numbering(2 * cell_count(g_) + node_count(g_));
-    // S28b: on more than one thread each block is numbered on its own where
-    // it is extracted, then merged into the one table in block order; on
-    // one, numbered into the one table at once (the same ids, S28b).
-    std::vector<Numbering> blocks(static_cast<std::size_t>(detail::thread_count(threads)));
-    if (blocks.size() == 1)
-      detail::for_each_block(
-          g_, threads, [](std::size_t, std::span<const d3::Tet>) {},
-          [this](std::size_t, std::span<const d3::Tet> block) { number(block); });
-    else
-      detail::for_each_block(
-          g_, threads,
-          [&blocks](std::size_t slot, std::span<const d3::Tet> block) { number_block(block, blocks[slot]); },
-          [this, &blocks](std::size_t slot, std::span<const d3::Tet>) { merge(blocks[slot]); });
+    {
+      // S28b: on more than one thread each block is numbered on its own where
+      // it is extracted, then merged into the one table in block order; on
+      // one, numbered into the one table at once (the same ids, S28b). The
+      // blocks' tables and lists are freed here, not kept through S5-S9 (S28d).
+      std::vector<Numbering> blocks(static_cast<std::size_t>(detail::thread_count(threads)));
+      if (blocks.size() == 1)
+        detail::for_each_block(
+            g_, threads, [](std::size_t, std::span<const d3::Tet>) {},
+            [this](std::size_t, std::span<const d3::Tet> block) { number(block); });
+      else
+        detail::for_each_block(
+            g_, threads,
+            [&blocks](std::size_t slot, std::span<const d3::Tet> block) { number_block(block, blocks[slot]); },
+            [this, &blocks](std::size_t slot, std::span<const d3::Tet>) { merge(blocks[slot]); });
+    }
     end_numbering();
     clock.lap(&PhaseTimes::mesh);
     return stuff(times);
@@ -324,7 +327,8 @@ class Stuffer {
     detail::for_each_range(points_.size(), options_.threads, kLeastPerThread, [this](std::size_t b, std::size_t e) {
       for (std::size_t i = b; i < e; ++i) {
         pos_[i] = fit_.to_space(points_[i]);
-        value_[i] = shape_.side(pos_[i]);  // S5: only the sign enters
+        const int side = shape_.side(pos_[i]);  // S5: only the sign enters
+        value_[i] = static_cast<std::int8_t>((side > 0) - (side < 0));
       }
     });
   }
@@ -389,7 +393,7 @@ class Stuffer {
       for (std::size_t i = 0; i < 4; ++i)
         for (std::size_t j = i + 1; j < 4; ++j) {
           const std::uint32_t x = std::min(t[i], t[j]), y = std::max(t[i], t[j]);
-          const double fx = value_[x], fy = value_[y];
+          const int fx = value_[x], fy = value_[y];
           if (!((fx < 0 && fy > 0) || (fx > 0 && fy < 0))) continue;
           has_cut = true;
           const VKey k = cut_key(x, y);
@@ -443,6 +447,9 @@ class Stuffer {
                           [this, &ranges, &begins](std::size_t k, std::size_t b, std::size_t e) {
                             ranges[k].fill(b, e, begin_ ? &begins[k] : nullptr);
                           });
+    // S28d: the lattice's tetrahedra are done with: their memory goes before
+    // the join below, which holds the ranges' outputs and their copy at once.
+    std::vector<Ids>().swap(ids_);
     std::size_t total = 0;
     for (Range& r : ranges) total += r.tets().size();
     if (begin_) {
@@ -484,7 +491,6 @@ class Stuffer {
   Stuffed finish() {
     // S8: the output vertices in key order: the lattice vertices used (keys
     // (i, i), in order of i) merged with the cut points used (in key order).
-    std::vector<Ids>().swap(ids_);  // the lattice's tetrahedra are done with (M26: their memory)
     const std::size_t n = points_.size();
     std::vector<std::uint8_t> used_vertex(n, 0), used_cut(cuts_.size(), 0);
     for (const auto& t : tets_out_)
@@ -541,7 +547,7 @@ class Stuffer {
   std::vector<std::uint32_t> table_;  ///< points_ by hash of position, while numbering
   std::vector<d3::Point> points_;     ///< the lattice vertices of the mesh, sorted
   std::vector<Ids> ids_;              ///< the lattice tetrahedra on points_, in order
-  std::vector<double> value_;         ///< the sign of f (-1, 0, 1), 0 once warped
+  std::vector<std::int8_t> value_;    ///< the sign of f (-1, 0, 1), 0 once warped (S28d: a byte)
   std::vector<Vec3> pos_;             ///< in space, warped or not
   std::vector<std::uint8_t> warped_;
   std::vector<detail::Cut> cuts_;
