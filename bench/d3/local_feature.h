@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -84,13 +85,18 @@ class LocalFeature {
     // §9.11 S3a: the level-(L-1) cubes meeting the old ball, not the new one.
     todo_.clear();
     for_cells(finest, old, radius_, &ball_, radius_, [&](const d3::Point& n) { todo_.push_back(n); });
-    for (int l = finest; l >= 0 && !todo_.empty(); --l) {
+    // In a list, with the lattice's look-ahead (§9.12); every seed spreads
+    // (§9.11 S3b: a seed refused adds candidates that are refused too).
+    ops_ += coarsen_each(g_, todo_);
+    next_.clear();
+    if (finest > 0)
+      for (const d3::Point& n : todo_) push_touching(n, finest, next_);
+    std::swap(todo_, next_);
+    for (int l = finest - 1; l >= 0 && !todo_.empty(); --l) {
       // §9.11 S1: a level in any order; a candidate may repeat. Layer by
       // layer, row by row (the order the build allocated the records in).
-      if (l < finest) {
-        std::sort(todo_.begin(), todo_.end(), row_order);
-        todo_.erase(std::unique(todo_.begin(), todo_.end()), todo_.end());
-      }
+      std::sort(todo_.begin(), todo_.end(), row_order);
+      todo_.erase(std::unique(todo_.begin(), todo_.end()), todo_.end());
       next_.clear();
       for (const d3::Point& n : todo_) {
         // A leaf is no refined center: is_center reads the table line
@@ -212,6 +218,17 @@ class LocalFeature {
         level = l;
         return c;
       }
+    }
+  }
+
+  // The lattice's coarsen_each where it has one, else one coarsen a node.
+  static std::size_t coarsen_each(L& g, const std::vector<d3::Point>& nodes) {
+    if constexpr (requires { g.coarsen_each(std::span<const d3::Point>(nodes)); }) {
+      return g.coarsen_each(std::span<const d3::Point>(nodes));
+    } else {
+      std::size_t applied = 0;
+      for (const d3::Point& n : nodes) applied += coarsen(g, n).applied();
+      return applied;
     }
   }
 
