@@ -243,6 +243,7 @@ class LocalFeature {
 
   // Refines c, first refining every coarser face- or edge-neighbor
   // (recursively): the leaves just outside c's 6 faces and 12 edges.
+  // Precondition: c is a leaf of level `level`.
   bool refine_balanced(const d3::Point& c, int level) {
     const auto why = can_refine(g_, c);
     if (why == RefineRefusal::CoarserNeighbor) {
@@ -256,9 +257,12 @@ class LocalFeature {
             if (nonzero == 0 || nonzero == 3) continue;  // c itself, a corner
             const d3::Point q{c.x + dx * h, c.y + dy * h, c.z + dz * h};
             if (q.x < 0 || q.y < 0 || q.z < 0 || q.x >= X || q.y >= Y || q.z >= Z) continue;
-            int nl = 0;
-            const d3::Point x = locate(q, nl);
-            if (nl < level) refine_balanced(x, nl);
+            // The leaf at q is a face-or-edge neighbour of c, so of level
+            // level - 1 or finer (§2): coarser only when it is the level-
+            // (level-1) cube there, one lookup (§9.11).
+            const std::int64_t s = d3::cell_side(size_, level - 1);
+            const d3::Point x{(q.x / s) * s + s / 2, (q.y / s) * s + s / 2, (q.z / s) * s + s / 2};
+            if (is_center(g_, x)) refine_balanced(x, level - 1);
           }
     } else if (why) {
       return false;
