@@ -82,6 +82,7 @@ class LocalFeature {
     const Ball old = ball_;
     ball_ = ball_position(size_, ++frame_, speed_);
     const int finest = size_.L - 1;
+    if (finest < 0) return 0;  // depth 0: no operation applies
     // §9.11 S3a: the level-(L-1) cubes meeting the old ball, not the new one.
     todo_.clear();
     for_cells(finest, old, radius_, &ball_, radius_, [&](const d3::Point& n) { todo_.push_back(n); });
