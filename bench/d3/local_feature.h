@@ -9,7 +9,7 @@
 //     row by row;
 //   - a frame (spec/lattice3d.md §9.11) coarsens, finest level first, from
 //     the level-(L-1) cubes the ball left, then tries only the coarser cubes
-//     touching a cube it coarsened (S3a, S3b); then refines to level L the
+//     touching a cube it coarsened (C1, C2); then refines to level L the
 //     level-(L-1) cubes the ball reached. Between frames it keeps nothing
 //     but the lattice: no table of the leaves near the ball to update.
 //
@@ -83,11 +83,11 @@ class LocalFeature {
     ball_ = ball_position(size_, ++frame_, speed_);
     const int finest = size_.L - 1;
     if (finest < 0) return 0;  // depth 0: no operation applies
-    // §9.11 S3a: the level-(L-1) cubes meeting the old ball, not the new one.
+    // §9.11 C1: the level-(L-1) cubes meeting the old ball, not the new one.
     todo_.clear();
     for_cells(finest, old, radius_, &ball_, radius_, [&](const d3::Point& n) { todo_.push_back(n); });
     // In a list, with the lattice's look-ahead (§9.12); every seed spreads
-    // (§9.11 S3b: a seed refused adds candidates that are refused too).
+    // (§9.11 C2: a seed refused adds candidates that are refused too).
     ops_ += coarsen_each(g_, todo_);
     next_.clear();
     if (finest > 0)
@@ -104,7 +104,7 @@ class LocalFeature {
         // can_coarsen reads next (can_coarsen would search for the node).
         if (is_center(g_, n) || can_coarsen(g_, n) || !coarsen(g_, n).applied()) continue;
         ++ops_;
-        if (l > 0) push_touching(n, l, next_);  // §9.11 S3b
+        if (l > 0) push_touching(n, l, next_);  // §9.11 C2
       }
       std::swap(todo_, next_);
     }
@@ -182,7 +182,7 @@ class LocalFeature {
     return a.z != b.z ? a.z < b.z : a.y != b.y ? a.y < b.y : a.x < b.x;
   }
 
-  // §9.11 S3b: appends the level-(l-1) cubes touching the closed level-l cube
+  // §9.11 C2: appends the level-(l-1) cubes touching the closed level-l cube
   // centred at n that do not meet the ball. On each axis n's cube touches
   // its parent's and, across the parent's side it lies on, the next one
   // (none beyond the domain): at most 2 x 2 x 2 cubes, all distinct.
