@@ -7,15 +7,11 @@
 //     (with the balance cascade where a coarser face- or edge-neighbor is in
 //     the way), l = 0 .. L-1, enumerating only the cells that meet the ball,
 //     row by row;
-//   - a frame visits the changed shells only: for coarsening, the level-l
-//     cells within R + 2 s_l of the old ball that do not meet the new ball
-//     (finest level first); for refinement, the level-L cells meeting the new
-//     ball but not the old one.
-//
-// Why R + 2 s_l: a refined level-l cell of the balanced mesh meets the ball
-// (l < L) or touches a refined level-(l+1) cell, so its distance D_l to the
-// ball is at most D_(l+1) + sqrt(3) s_(l+1), D_(L-1) = 0, and the s_k halve:
-// D_l < sqrt(3) s_l. Cells beyond R + 2 s_l of the old ball were not refined.
+//   - a frame (spec/lattice3d.md §9.11) coarsens, finest level first, from
+//     the level-(L-1) cubes the ball left, then tries only the coarser cubes
+//     touching a cube it coarsened (C1, C2); then refines to level L the
+//     level-(L-1) cubes the ball reached. Between frames it keeps nothing
+//     but the lattice: no table of the leaves near the ball to update.
 //
 // bench_p8est --bccmis_verify compares the leaf sets with p8est's refine +
 // coarsen + balance(P8EST_CONNECT_EDGE) after every frame.
@@ -24,7 +20,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <utility>
+#include <vector>
 
 #include "bccmis/d3/point.h"
 #include "bccmis/lattice.h"
@@ -75,17 +73,48 @@ class LocalFeature {
   }
 
   /// Moves the ball one frame on and adapts; returns the operations applied.
+  /// spec/lattice3d.md §9.11: the coarsenings start at the level-(L-1)
+  /// cubes the ball left and spread only from a cube just coarsened to the
+  /// coarser cubes touching it (S1); the refinements start at the
+  /// level-(L-1) cubes the ball reached.
   std::size_t frame() {
     ops_ = 0;
     const Ball old = ball_;
     ball_ = ball_position(size_, ++frame_, speed_);
-    for (int l = size_.L - 1; l >= 0; --l) {
-      const double margin = radius_ + 2.0 * static_cast<double>(d3::cell_side(size_, l));
-      for_cells(l, old, margin, &ball_, radius_, [&](const d3::Point& n) {
-        if (!can_coarsen(g_, n)) ops_ += coarsen(g_, n).applied();
-      });
+    const int finest = size_.L - 1;
+    if (finest < 0) return 0;  // depth 0: no operation applies
+    // §9.11 C1: the level-(L-1) cubes meeting the old ball, not the new one.
+    todo_.clear();
+    for_cells(finest, old, radius_, &ball_, radius_, [&](const d3::Point& n) { todo_.push_back(n); });
+    // In a list, with the lattice's look-ahead (§9.12); every seed spreads
+    // (§9.11 C2: a seed refused adds candidates that are refused too).
+    ops_ += coarsen_each(g_, todo_);
+    next_.clear();
+    if (finest > 0)
+      for (const d3::Point& n : todo_) push_touching(n, finest, next_);
+    std::swap(todo_, next_);
+    for (int l = finest - 1; l >= 0 && !todo_.empty(); --l) {
+      // §9.11 S1: a level in any order; a candidate may repeat. Layer by
+      // layer, row by row (the order the build allocated the records in).
+      std::sort(todo_.begin(), todo_.end(), row_order);
+      todo_.erase(std::unique(todo_.begin(), todo_.end()), todo_.end());
+      next_.clear();
+      for (const d3::Point& n : todo_) {
+        // A leaf is no refined center: is_center reads the table line
+        // can_coarsen reads next (can_coarsen would search for the node).
+        if (is_center(g_, n) || can_coarsen(g_, n) || !coarsen(g_, n).applied()) continue;
+        ++ops_;
+        if (l > 0) push_touching(n, l, next_);  // §9.11 C2
+      }
+      std::swap(todo_, next_);
     }
-    for_cells(size_.L, ball_, radius_, &old, radius_, [&](const d3::Point& p) { refine_to(p, size_.L); });
+    // §9.11, the refine pass: the level-(L-1) cubes meeting the new ball, not the old one.
+    for_cells(finest, ball_, radius_, &old, radius_, [&](const d3::Point& p) {
+      if (is_center(g_, p))
+        refine_balanced(p, finest);
+      else if (!is_node(g_, p))  // inside a coarser leaf (not refined already)
+        refine_to(p, size_.L);
+    });
     return ops_;
   }
 
@@ -149,6 +178,37 @@ class LocalFeature {
       }
   }
 
+  static bool row_order(const d3::Point& a, const d3::Point& b) {
+    return a.z != b.z ? a.z < b.z : a.y != b.y ? a.y < b.y : a.x < b.x;
+  }
+
+  // §9.11 C2: appends the level-(l-1) cubes touching the closed level-l cube
+  // centred at n that do not meet the ball. On each axis n's cube touches
+  // its parent's and, across the parent's side it lies on, the next one
+  // (none beyond the domain): at most 2 x 2 x 2 cubes, all distinct.
+  void push_touching(const d3::Point& n, int l, std::vector<d3::Point>& out) const {
+    const std::int64_t s = d3::cell_side(size_, l - 1);
+    const std::int64_t S = d3::level0_side(size_);
+    const std::int64_t extent[3] = {size_.W * S, size_.H * S, size_.D * S};
+    const std::int64_t at[3] = {n.x, n.y, n.z};
+    std::int64_t c[3][2];
+    int count[3];
+    for (int a = 0; a < 3; ++a) {
+      const std::int64_t parent = (at[a] / s) * s + s / 2;
+      const std::int64_t beyond = at[a] < parent ? parent - s : parent + s;
+      c[a][0] = parent;
+      count[a] = beyond > 0 && beyond < extent[a] ? 2 : 1;
+      c[a][1] = beyond;
+    }
+    const double h = static_cast<double>(s) / 2;
+    for (int i = 0; i < count[0]; ++i)
+      for (int j = 0; j < count[1]; ++j)
+        for (int k = 0; k < count[2]; ++k) {
+          const d3::Point q{c[0][i], c[1][j], c[2][k]};
+          if (!cube_meets(q, h, ball_, radius_)) out.push_back(q);
+        }
+  }
+
   // The leaf cell containing p (strictly inside a level-L cell), searching
   // from level L up: the leaves a frame visits are fine.
   d3::Point locate(const d3::Point& p, int& level) const {
@@ -159,6 +219,17 @@ class LocalFeature {
         level = l;
         return c;
       }
+    }
+  }
+
+  // The lattice's coarsen_each where it has one, else one coarsen a node.
+  static std::size_t coarsen_each(L& g, const std::vector<d3::Point>& nodes) {
+    if constexpr (requires { g.coarsen_each(std::span<const d3::Point>(nodes)); }) {
+      return g.coarsen_each(std::span<const d3::Point>(nodes));
+    } else {
+      std::size_t applied = 0;
+      for (const d3::Point& n : nodes) applied += coarsen(g, n).applied();
+      return applied;
     }
   }
 
@@ -173,6 +244,7 @@ class LocalFeature {
 
   // Refines c, first refining every coarser face- or edge-neighbor
   // (recursively): the leaves just outside c's 6 faces and 12 edges.
+  // Precondition: c is a leaf of level `level`.
   bool refine_balanced(const d3::Point& c, int level) {
     const auto why = can_refine(g_, c);
     if (why == RefineRefusal::CoarserNeighbor) {
@@ -186,9 +258,12 @@ class LocalFeature {
             if (nonzero == 0 || nonzero == 3) continue;  // c itself, a corner
             const d3::Point q{c.x + dx * h, c.y + dy * h, c.z + dz * h};
             if (q.x < 0 || q.y < 0 || q.z < 0 || q.x >= X || q.y >= Y || q.z >= Z) continue;
-            int nl = 0;
-            const d3::Point x = locate(q, nl);
-            if (nl < level) refine_balanced(x, nl);
+            // The leaf at q is a face-or-edge neighbour of c, so of level
+            // level - 1 or finer (§2): coarser only when it is the level-
+            // (level-1) cube there, one lookup (§9.11).
+            const std::int64_t s = d3::cell_side(size_, level - 1);
+            const d3::Point x{(q.x / s) * s + s / 2, (q.y / s) * s + s / 2, (q.z / s) * s + s / 2};
+            if (is_center(g_, x)) refine_balanced(x, level - 1);
           }
     } else if (why) {
       return false;
@@ -205,6 +280,7 @@ class LocalFeature {
   int frame_ = 0;
   Ball ball_;
   std::size_t ops_ = 0;
+  std::vector<d3::Point> todo_, next_;  // a frame's candidates, kept for their capacity
 };
 
 }  // namespace bccmis::d3::bench

@@ -70,6 +70,8 @@ TEST(Fast3Bulk, FromGraphOfRandomStatesContinuesInLockStep) {
   EXPECT_GT(applied, 40u * 10u);  // the continuations mostly apply
 }
 
+// Lists longer than coarsen_each's look-ahead (spec/lattice3d.md §9.12: 16
+// positions): the prefetches must change no result.
 TEST(Fast3Bulk, RefineEachAndCoarsenEachAreOneCallPerPosition) {
   const d3::LatticeSize size{2, 1, 1, 3};
   d3::Graph g(size);

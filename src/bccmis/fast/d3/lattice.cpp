@@ -969,6 +969,13 @@ void Lattice::prefetch_home(const Point& p) const {
   if (const int t = center_tz(p); t >= 0) table_.prefetch(key_hash_at(p, t));
 }
 
+Lattice::Index Lattice::peek_node(const Point& p) const {
+  const int t = center_tz(p);
+  if (t < 0) return kNone;
+  const Index r = table_.find(key_hash_at(p, t), [](Index q) { return (q & kNodeBit) != 0; });
+  return r == kNone ? kNone : r & ~kNodeBit;
+}
+
 namespace {
 // op(p) for each p in order, the table line of the position kAhead later
 // prefetched first; how many op applied.
@@ -990,8 +997,25 @@ std::size_t Lattice::refine_each(std::span<const Point> cells) {
 }
 
 std::size_t Lattice::coarsen_each(std::span<const Point> nodes) {
-  return apply_each(
-      nodes, [this](const Point& p) { prefetch_home(p); }, [this](const Point& p) { return coarsen(p).applied(); });
+  // spec/lattice3d.md §9.12: three stages of look-ahead, each reading only
+  // what the stage before brought in.
+  constexpr std::size_t kTable = 16, kNode = 8, kCells = 4;
+  std::size_t applied = 0;
+  const std::size_t k = nodes.size();
+  for (std::size_t i = 0; i < k; ++i) {
+    if (i + kTable < k) prefetch_home(nodes[i + kTable]);
+    if (i + kNode < k)
+      if (const Index n = peek_node(nodes[i + kNode]); n != kNone) __builtin_prefetch(&nodes_[n]);
+    if (i + kCells < k)
+      if (const Index n = peek_node(nodes[i + kCells]); n != kNone)
+        for (const Index c : nodes_[n].cell)
+          if (c < centers_.size()) {  // kNone, and the free mark, are not
+            __builtin_prefetch(&centers_[c]);
+            __builtin_prefetch(reinterpret_cast<const char*>(&centers_[c]) + 64);
+          }
+    applied += coarsen(nodes[i]).applied();
+  }
+  return applied;
 }
 
 }  // namespace bccmis::d3::fast

@@ -93,7 +93,8 @@ class Lattice {
   /// refine / coarsen of every position in order, each exactly as a single
   /// call would; returns how many were applied. Prefetches the position
   /// table slot of an operation a few ahead, so long lists on large lattices
-  /// wait less for memory.
+  /// wait less for memory; coarsen_each also the node's record and its
+  /// cells' records, nearer ahead (spec/lattice3d.md §9.12).
   std::size_t refine_each(std::span<const d3::Point> cells);
   std::size_t coarsen_each(std::span<const d3::Point> nodes);
 
@@ -221,6 +222,9 @@ class Lattice {
   /// its slots (§9.3).
   Index locate(const d3::Point& p, int o) const;
   void prefetch_home(const d3::Point& p) const;  ///< the table line of p's home, if p can be a center
+  /// A live node whose table entry has p's hash bits, or kNone: p's node when
+  /// p is a refined center, read without confirming the position (§9.12).
+  Index peek_node(const d3::Point& p) const;
 
   /// The refusal, or none with the record and its table hash.
   std::optional<RefineRefusal> refine_refusal(const d3::Point& c, Index& ci, std::uint64_t& hash) const;
