@@ -69,6 +69,15 @@ if(TARGET bccmis::stuff_surface)
                    LABELS unit)
 endif()
 
+# S35.9's flips on hand-made two-tetrahedron meshes: a flip whose pieces
+# pass is made; one whose piece without the moved vertex leaves S10's
+# interval is not.
+if(TARGET bccmis::stuff_surface)
+  bccmis_add_gtest(stuff_flips_tests SOURCES flips_test.cpp
+                   LIBS bccmis::stuffing bccmis::stuff_surface
+                   LABELS unit)
+endif()
+
 # S25: the memory estimate on its line, with and without S35.8's second
 # mesh (--crease-cuts), on CGAL's fandisk at level 2.
 if(TARGET bccmis::stuff_surface)
