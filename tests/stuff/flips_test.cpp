@@ -1,12 +1,17 @@
 // S35.9's flips at a refused move (spec/stuffing.md S35.9), on hand-made
 // two-tetrahedron meshes: a 2-3 flip whose three pieces pass S31's test is
 // made and lets the move through; the same flip with its piece without the
-// moved vertex positively oriented but outside S10's interval is not.
+// moved vertex positively oriented but outside S10's interval is not. S35.10's
+// sequence of two flips on a piece of CGAL's anchor at level 4.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <fstream>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "bccmis/d3/mesh.h"
@@ -54,6 +59,43 @@ bool in_interval(const d3::TetMeshF& m, const std::array<std::uint32_t, 4>& t) {
   return true;
 }
 
+double distance(const Vec3& a, const Vec3& b) {
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+// A piece of a stuffed mesh: the target x, vertex 0 the vertex to move
+// there, the other vertices and the tetrahedra (lines "x", "v", "t").
+struct Piece {
+  Vec3 x{};
+  d3::TetMeshF mesh;
+};
+
+Piece read_piece(const std::string& path) {
+  Piece p;
+  std::ifstream in(path);
+  EXPECT_TRUE(in) << path;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream s(line);
+    std::string key;
+    s >> key;
+    if (key == "x") s >> p.x[0] >> p.x[1] >> p.x[2];
+    if (key == "v") s >> p.mesh.vertices.emplace_back()[0] >> p.mesh.vertices.back()[1] >> p.mesh.vertices.back()[2];
+    if (key == "t")
+      s >> p.mesh.tets.emplace_back()[0] >> p.mesh.tets.back()[1] >> p.mesh.tets.back()[2] >> p.mesh.tets.back()[3];
+  }
+  p.mesh.kind.assign(p.mesh.vertices.size(), 0);
+  p.mesh.level.assign(p.mesh.tets.size(), 0);
+  return p;
+}
+
+// Triangles each turned to start at its smallest vertex, then sorted.
+std::vector<std::array<std::uint32_t, 3>> same_order(std::vector<std::array<std::uint32_t, 3>> triangles) {
+  for (auto& f : triangles) std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+  std::sort(triangles.begin(), triangles.end());
+  return triangles;
+}
+
 //= spec/stuffing.md S35 type=test
 TEST(Flips, AFlipWhosePiecesPassLetsTheRefusedMoveThrough) {
   d3::TetMeshF m = two_tetrahedra(kGoodE);
@@ -64,13 +106,7 @@ TEST(Flips, AFlipWhosePiecesPassLetsTheRefusedMoveThrough) {
   ASSERT_EQ(m.tets.size(), 3u);  // 2-3: one appended
   EXPECT_EQ(m.vertices[0], kCorner);
   for (const auto& t : m.tets) EXPECT_TRUE(in_interval(m, t)) << t[0] << t[1] << t[2] << t[3];
-  // The boundary is the same triangles, oriented the same (S35.9).
-  auto before = boundary, after = boundary_triangles(m);
-  for (auto* list : {&before, &after}) {
-    for (auto& f : *list) std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
-    std::sort(list->begin(), list->end());
-  }
-  EXPECT_EQ(after, before);
+  EXPECT_EQ(same_order(boundary_triangles(m)), same_order(boundary));  // the same triangles, oriented the same
 }
 
 //= spec/stuffing.md S35 type=test
@@ -86,6 +122,42 @@ TEST(Flips, APieceWithoutTheVertexOutsideTheIntervalStopsTheFlip) {
   EXPECT_EQ(m.tets, before.tets);
   EXPECT_EQ(m.vertices, before.vertices);
   for (const auto& t : m.tets) EXPECT_TRUE(in_interval(m, t)) << t[0] << t[1] << t[2] << t[3];
+}
+
+//= spec/stuffing.md S35 type=test
+TEST(Flips, ASequenceOfTwoFlipsLetsThroughAMoveNoSingleFlipSaves) {
+  // S35.10 on a piece of CGAL's anchor at level 4: vertex 0's move to x,
+  // asked for as a corner at x. The boundary vertices within h = |x - v0|
+  // of x are corners before it (each snapped onto itself and taken), so
+  // vertex 0 is x's only candidate. Without flips (A) the move is refused;
+  // with them, a sequence of two flips lets it through (S35.9's single
+  // flips do not), the mesh stays in S10's interval and its boundary the
+  // same triangles.
+  const Piece piece = read_piece(std::string(BCCMIS_STUFF_TEST_DIR) + "/flips/anchor_L4_two_flips.txt");
+  ASSERT_EQ(piece.mesh.tets.size(), 65u);
+  const auto boundary = boundary_triangles(piece.mesh);
+  const double h = distance(piece.x, piece.mesh.vertices[0]);
+  Features f;
+  std::vector<std::uint32_t> near;
+  for (const auto& t : boundary)
+    for (const std::uint32_t a : t)
+      if (a != 0 && distance(piece.x, piece.mesh.vertices[a]) <= h) near.push_back(a);
+  std::sort(near.begin(), near.end());
+  near.erase(std::unique(near.begin(), near.end()), near.end());
+  ASSERT_FALSE(near.empty());
+  for (const std::uint32_t a : near) f.corners.push_back(piece.mesh.vertices[a]);
+  f.corners.push_back(piece.x);
+  for (const auto& t : piece.mesh.tets) ASSERT_TRUE(in_interval(piece.mesh, t));
+
+  d3::TetMeshF a = piece.mesh;
+  EXPECT_EQ(conform_features(a, boundary, f, h, true, false).corners_conformed, near.size());  // A: x refused
+  d3::TetMeshF m = piece.mesh;
+  const FeatureConformity r = conform_features(m, boundary, f, h);
+  EXPECT_EQ(r.corners_conformed, near.size() + 1);
+  EXPECT_EQ(r.flips, 2u);
+  EXPECT_EQ(m.vertices[0], piece.x);
+  for (const auto& t : m.tets) EXPECT_TRUE(in_interval(m, t)) << t[0] << " " << t[1] << " " << t[2] << " " << t[3];
+  EXPECT_EQ(same_order(boundary_triangles(m)), same_order(boundary));
 }
 
 }  // namespace

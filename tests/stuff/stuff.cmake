@@ -71,10 +71,12 @@ endif()
 
 # S35.9's flips on hand-made two-tetrahedron meshes: a flip whose pieces
 # pass is made; one whose piece without the moved vertex leaves S10's
-# interval is not.
+# interval is not. S35.10's sequence of two flips on a piece of CGAL's
+# anchor at level 4 (flips/).
 if(TARGET bccmis::stuff_surface)
   bccmis_add_gtest(stuff_flips_tests SOURCES flips_test.cpp
                    LIBS bccmis::stuffing bccmis::stuff_surface
+                   DEFINITIONS BCCMIS_STUFF_TEST_DIR="${CMAKE_CURRENT_LIST_DIR}"
                    LABELS unit)
 endif()
 
