@@ -117,16 +117,20 @@ Vec3 point_at(const FeatureCurve& C, double s) {
   return C.points.back();
 }
 
+/// Which flips a move S31 and S34 refuse is tried again after: none,
+/// S35.9's, or S35.9's then S35.10's sequences.
+enum class Flips { none, single, sequences };
+
 /// The mesh as S30 walks it: the boundary graph, the tetrahedra at each
 /// vertex, and the guard of S31.
 class Snapper {
  public:
   Snapper(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary, double h, bool split_edges,
-          bool flip)
+          Flips flips)
       : mesh_(mesh),
         h_(h),
         split_edges_(split_edges),
-        flip_(flip),
+        flips_(flips),
         tets_at_(mesh.vertices.size()),
         neighbours_(mesh.vertices.size()),
         triangles_(boundary),
@@ -174,7 +178,7 @@ class Snapper {
       }
       if (room) {
         ++r.room_made;
-      } else if (flip_ && flipped_into_place(v, x, r)) {
+      } else if (flips_ != Flips::none && flipped_into_place(v, x, r)) {
         moved = {{v, x}};
       } else {
         ++r.refused;
@@ -458,8 +462,8 @@ class Snapper {
   /// the first failing one (in the order of v's tetrahedra) each time, until
   /// every tetrahedron at v passes: true, the flips kept (`r.flips`
   /// counts them). A failing tetrahedron with no flip whose pieces all pass,
-  /// or more than kFlips flips: every flip undone, then S35.10's sequences
-  /// of flips tried; none: false, the mesh as before.
+  /// or more than kFlips flips: every flip undone, then (Flips::sequences)
+  /// S35.10's sequences of flips tried; none: false, the mesh as before.
   struct Flip;
   bool flipped_into_place(std::uint32_t v, const Vec3& x, FeatureConformity& r) {
     std::vector<Flip> made;
@@ -477,6 +481,7 @@ class Snapper {
       made.push_back(std::move(*f));
     }
     for (auto f = made.rbegin(); f != made.rend(); ++f) undo_flip(*f);
+    if (flips_ != Flips::sequences) return false;
     // S35.10: sequences of up to kSequence flips, the shortest first.
     made.clear();
     std::vector<std::uint32_t> fresh;
@@ -866,7 +871,7 @@ class Snapper {
   d3::TetMeshF& mesh_;
   double h_;
   bool split_edges_;  ///< S35 on
-  bool flip_;         ///< S35.9 on
+  Flips flips_;       ///< S35.9, and S35.10, on
   std::vector<std::vector<std::uint32_t>> tets_at_;
   std::vector<std::vector<std::uint32_t>> neighbours_;
   std::vector<std::array<std::uint32_t, 3>> triangles_;   ///< the boundary triangles, S35's splits included
@@ -882,11 +887,11 @@ std::int64_t corner_index(const Features& features, const Vec3& p) {
   return it != features.corners.end() && *it == p ? it - features.corners.begin() : -1;
 }
 
-/// S30-S35.5, with S35.9's flips when `flip`.
+/// S30-S35.5, with the flips `flips` asks for (S35.9, S35.10).
 FeatureConformity conform(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
-                          const Features& features, double h, bool split_edges, bool flip) {
+                          const Features& features, double h, bool split_edges, Flips flips) {
   FeatureConformity r;
-  Snapper snapper(mesh, boundary, h, split_edges, flip);
+  Snapper snapper(mesh, boundary, h, split_edges, flips);
   // S30.1: the corners, in order.
   std::vector<std::int64_t> corner_vertex;
   for (const Vec3& c : features.corners) {
@@ -937,14 +942,19 @@ FeatureConformity conform(d3::TetMeshF& mesh, const std::vector<std::array<std::
 
 FeatureConformity conform_features(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
                                    const Features& features, double h, bool split_edges, bool flip) {
-  if (!flip) return conform(mesh, boundary, features, h, split_edges, false);
-  // S35.9: the run with flips kept only when it gains on the run without.
-  d3::TetMeshF flipped = mesh;
-  FeatureConformity without = conform(mesh, boundary, features, h, split_edges, false);
-  FeatureConformity with = conform(flipped, boundary, features, h, split_edges, true);
-  if (with.flips == 0 || !gains_on(with, without)) return without;
-  mesh = std::move(flipped);
-  return with;
+  if (!flip) return conform(mesh, boundary, features, h, split_edges, Flips::none);
+  // S35.9: the run with flips (B) kept only when it gains on the run
+  // without (A); S35.10: the run with sequences of flips too (C) kept only
+  // when it gains on the one kept.
+  d3::TetMeshF original = mesh;
+  d3::TetMeshF flipped = original;
+  FeatureConformity kept = conform(mesh, boundary, features, h, split_edges, Flips::none);
+  FeatureConformity with = conform(flipped, boundary, features, h, split_edges, Flips::single);
+  if (with.flips > 0 && gains_on(with, kept)) mesh = std::move(flipped), kept = std::move(with);
+  flipped = {};
+  with = conform(original, boundary, features, h, split_edges, Flips::sequences);
+  if (with.flips > 0 && gains_on(with, kept)) mesh = std::move(original), kept = std::move(with);
+  return kept;
 }
 
 bool gains_on(const FeatureConformity& x, const FeatureConformity& a) {
