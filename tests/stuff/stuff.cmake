@@ -59,13 +59,18 @@ if(TARGET bccmis::stuff_surface)
                    LABELS unit)
 endif()
 
-# Sharp features (spec/stuffing.md S29-S34): detection on hand-built
+# Sharp features (spec/stuffing.md S29-S35): detection on hand-built
 # surfaces, conformity on a turned cube and on fandisk at level 3 with S10's
-# bound and the feature checker, the checker's planted failures.
+# bound and the feature checker, the checker's planted failures; S35.9's
+# flips on hand-made two-tetrahedron meshes (flips_test.cpp: a flip whose
+# pieces pass is made, one whose piece without the moved vertex leaves
+# S10's interval is not) and S35.10's sequence of two flips on a piece of
+# CGAL's anchor at level 4 (flips/).
 if(TARGET bccmis::stuff_surface)
-  bccmis_add_gtest(stuff_features_tests SOURCES features_test.cpp
+  bccmis_add_gtest(stuff_features_tests SOURCES features_test.cpp flips_test.cpp
                    LIBS bccmis::stuffing bccmis::stuff_surface bccmis::invariants_d3
                    DEFINITIONS BCCMIS_CGAL_MESHES_DIR="${bccmis_cgal_data}/data/meshes"
+                               BCCMIS_STUFF_TEST_DIR="${CMAKE_CURRENT_LIST_DIR}"
                    LABELS unit)
 endif()
 

@@ -117,16 +117,20 @@ Vec3 point_at(const FeatureCurve& C, double s) {
   return C.points.back();
 }
 
+/// Which flips a move S31 and S34 refuse is tried again after: none,
+/// S35.9's, or S35.9's then S35.10's sequences.
+enum class Flips { none, single, sequences };
+
 /// The mesh as S30 walks it: the boundary graph, the tetrahedra at each
 /// vertex, and the guard of S31.
 class Snapper {
  public:
   Snapper(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary, double h, bool split_edges,
-          bool flip)
+          Flips flips)
       : mesh_(mesh),
         h_(h),
         split_edges_(split_edges),
-        flip_(flip),
+        flips_(flips),
         tets_at_(mesh.vertices.size()),
         neighbours_(mesh.vertices.size()),
         triangles_(boundary),
@@ -154,8 +158,8 @@ class Snapper {
   /// oriented (S12) with its dihedral angles in S10's interval; when not,
   /// S34: v moved to x with its interior neighbours moved by w (x - v), for
   /// the first w of kRoomWeights that S31 accepts for every tetrahedron at
-  /// a moved vertex; when not, S35.9: v moved to x alone after flips of
-  /// the tetrahedra at it that fail.
+  /// a moved vertex; when not, S35.9 and S35.10: v moved to x alone after
+  /// flips of the tetrahedra at it that fail.
   bool move(std::uint32_t v, const Vec3& x, FeatureConformity& r) {
     Moves moved{{v, x}};
     if (!accepted(moved)) {
@@ -174,7 +178,7 @@ class Snapper {
       }
       if (room) {
         ++r.room_made;
-      } else if (flip_ && flipped_into_place(v, x, r)) {
+      } else if (flips_ != Flips::none && flipped_into_place(v, x, r)) {
         moved = {{v, x}};
       } else {
         ++r.refused;
@@ -458,7 +462,9 @@ class Snapper {
   /// the first failing one (in the order of v's tetrahedra) each time, until
   /// every tetrahedron at v passes: true, the flips kept (`r.flips`
   /// counts them). A failing tetrahedron with no flip whose pieces all pass,
-  /// or more than kFlips flips: every flip undone, false.
+  /// or more than kFlips flips: every flip undone, then (Flips::sequences)
+  /// S35.10's sequences of flips tried; none: false, the mesh as before.
+  struct Flip;
   bool flipped_into_place(std::uint32_t v, const Vec3& x, FeatureConformity& r) {
     std::vector<Flip> made;
     for (std::size_t round = 0; round <= kFlips; ++round) {
@@ -475,6 +481,47 @@ class Snapper {
       made.push_back(std::move(*f));
     }
     for (auto f = made.rbegin(); f != made.rend(); ++f) undo_flip(*f);
+    if (flips_ != Flips::sequences) return false;
+    // S35.10: sequences of up to kSequence flips, the shortest first.
+    made.clear();
+    std::vector<std::uint32_t> fresh;
+    for (std::size_t depth = 1; depth <= kSequence; ++depth)
+      if (sequence(v, x, depth, made, fresh)) {
+        for (const Flip& f : made) journal_flip(f);
+        r.flips += made.size();
+        return true;
+      }
+    return false;
+  }
+
+  /// S35.10: a sequence of at most `depth` more flips after `made`, depth
+  /// first, each of the first tetrahedron failing S31's test with v at x
+  /// (at v, else among `fresh`, those the sequence made), its pieces
+  /// positively oriented: true when none fails any longer (the flips kept
+  /// in `made`), else false with everything this call made undone.
+  bool sequence(std::uint32_t v, const Vec3& x, std::size_t depth, std::vector<Flip>& made,
+                std::vector<std::uint32_t>& fresh) {
+    const auto fails = [&](std::uint32_t t) { return !passes(placed(mesh_.tets[t], v, x)); };
+    auto failing = std::find_if(tets_at_[v].begin(), tets_at_[v].end(), fails);
+    std::uint32_t t = 0;
+    if (failing != tets_at_[v].end()) {
+      t = *failing;
+    } else if (const auto f = std::find_if(fresh.begin(), fresh.end(), fails); f != fresh.end()) {
+      t = *f;
+    } else {
+      return true;
+    }
+    if (depth == 0) return false;
+    for (const Candidate& c : candidates(t, v, x, true)) {
+      const std::size_t tets = mesh_.tets.size(), fresh_before = fresh.size();
+      made.push_back(replace(c.ids, c.pieces));
+      fresh.insert(fresh.end(), c.ids.begin(), c.ids.end());
+      for (std::size_t id = tets; id < mesh_.tets.size(); ++id) fresh.push_back(static_cast<std::uint32_t>(id));
+      if (sequence(v, x, depth - 1, made, fresh)) return true;
+      undo_flip(made.back());
+      made.pop_back();
+      fresh.resize(fresh_before);
+    }
     return false;
   }
 
@@ -486,17 +533,39 @@ class Snapper {
     std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>> tets_at;
   };
 
-  /// S35.9's flips of the failing tetrahedron t = (.., v, ..), v at x: a
-  /// 2-3 flip across each face of t not on the boundary (in the order of the
-  /// vertex it omits), then a 4-4 flip of each edge vu of t with u not on the
-  /// boundary and exactly four tetrahedra around it (u in t's order, the new
-  /// edge the first pair of opposite ring vertices in index order); the
-  /// first whose new edge is no edge of the mesh yet and whose pieces all
-  /// pass S31's test with v at x is made.
+  /// S35.9's flips of the failing tetrahedron t = (.., v, ..), v at x: the
+  /// first of its candidates (S35.9's) whose pieces all pass S31's test
+  /// with v at x is made.
   std::optional<Flip> flip_at(std::uint32_t t, std::uint32_t v, const Vec3& x) {
+    for (const Candidate& c : candidates(t, v, x, false))
+      if (std::all_of(c.pieces.begin(), c.pieces.end(), [&](const auto& q) { return passes(placed(q, v, x)); }))
+        return replace(c.ids, c.pieces);
+    return std::nullopt;
+  }
+
+  /// A flip not yet made: the tetrahedra it replaces and its pieces.
+  struct Candidate {
+    std::vector<std::uint32_t> ids;
+    std::vector<std::array<std::uint32_t, 4>> pieces;
+  };
+
+  /// The flips of tetrahedron t whose new edge is no edge of the mesh yet
+  /// and whose pieces are positively oriented with v at x, in order: a 2-3
+  /// flip across each face of t not on the boundary (in the order of the
+  /// vertex it omits), then a 4-4 flip of each edge pq of t with exactly
+  /// four tetrahedra around it and a closed ring of four (the new edge each
+  /// pair of opposite ring vertices, in index order). The edges: S35.9's
+  /// (`wider` false), vu with u not on the boundary (u in t's order, p = v);
+  /// S35.10's, every edge of t (pairs in t's order).
+  std::vector<Candidate> candidates(std::uint32_t t, std::uint32_t v, const Vec3& x, bool wider) const {
+    std::vector<Candidate> out;
     const std::array<std::uint32_t, 4> T = mesh_.tets[t];
-    const auto all_pass = [&](const std::vector<std::array<std::uint32_t, 4>>& pieces) {
-      return std::all_of(pieces.begin(), pieces.end(), [&](const auto& q) { return passes(placed(q, v, x)); });
+    const auto offer = [&](const std::vector<std::uint32_t>& ids, std::vector<std::array<std::uint32_t, 4>> pieces) {
+      if (std::all_of(pieces.begin(), pieces.end(), [&](const auto& q) {
+            const auto p = placed(q, v, x);
+            return orientation(p[0], p[1], p[2], p[3]) > 0;
+          }))
+        out.push_back({ids, std::move(pieces)});
     };
     // 2-3: t and its neighbour u across the face omitting T[k] (apex T[k],
     // u's other vertex e) become the three with one of the face's vertices
@@ -511,22 +580,28 @@ class Snapper {
       std::vector<std::array<std::uint32_t, 4>> pieces;
       for (std::size_t j = 0; j < 4; ++j)
         if (j != k) pieces.push_back(T), pieces.back()[j] = across->second;
-      if (all_pass(pieces)) return replace({t, across->first}, pieces);
+      offer({t, across->first}, std::move(pieces));
     }
-    // 4-4: the four tetrahedra around vu (the octahedron v, u and the ring
+    // 4-4: the four tetrahedra around pq (the octahedron p, q and the ring
     // r0..r3) become the four around the diagonal ri rj of the ring: each
-    // ring tetrahedron at ri and rm (m neither i nor j) with u, then with v,
+    // ring tetrahedron at ri and rm (m neither i nor j) with q, then with p,
     // replaced by rj.
-    for (const std::uint32_t u : T) {
-      if (u == v || !neighbours_[u].empty()) continue;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+    for (std::size_t i = 0; i < 4; ++i)
+      for (std::size_t j = i + 1; j < 4; ++j)
+        if (wider) edges.emplace_back(T[i], T[j]);
+    if (!wider)
+      for (const std::uint32_t u : T)
+        if (u != v && neighbours_[u].empty()) edges.emplace_back(v, u);
+    for (const auto& [p, q] : edges) {
       std::vector<std::uint32_t> around;
-      for (const std::uint32_t w : tets_at_[v])
-        if (std::find(mesh_.tets[w].begin(), mesh_.tets[w].end(), u) != mesh_.tets[w].end()) around.push_back(w);
+      for (const std::uint32_t w : tets_at_[p])
+        if (std::find(mesh_.tets[w].begin(), mesh_.tets[w].end(), q) != mesh_.tets[w].end()) around.push_back(w);
       if (around.size() != 4) continue;
       std::vector<std::uint32_t> ring;
       for (const std::uint32_t w : around)
         for (const std::uint32_t a : mesh_.tets[w])
-          if (a != v && a != u) ring.push_back(a);
+          if (a != p && a != q) ring.push_back(a);
       std::sort(ring.begin(), ring.end());
       ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
       if (ring.size() != 4) continue;
@@ -544,16 +619,16 @@ class Snapper {
             if (m == i || m == j) continue;
             const auto w = holding(ring[i], ring[m]);
             if (w == around.end()) break;
-            for (const std::uint32_t gone : {u, v}) {
-              auto q = mesh_.tets[*w];
-              std::replace(q.begin(), q.end(), gone, ring[j]);
-              pieces.push_back(q);
+            for (const std::uint32_t gone : {q, p}) {
+              auto piece = mesh_.tets[*w];
+              std::replace(piece.begin(), piece.end(), gone, ring[j]);
+              pieces.push_back(piece);
             }
           }
-          if (pieces.size() == 4 && all_pass(pieces)) return replace(around, pieces);
+          if (pieces.size() == 4) offer(around, std::move(pieces));
         }
     }
-    return std::nullopt;
+    return out;
   }
 
   /// The tetrahedra `ids` replaced by `pieces` (those beyond ids' number
@@ -642,6 +717,8 @@ class Snapper {
 
   // S35.9: at most 8 flips for one move.
   static constexpr std::size_t kFlips = 8;
+  // S35.10: sequences of at most 3 flips.
+  static constexpr std::size_t kSequence = 3;
 
   /// S30's search: boundary vertex v moved from x to y filed at y, and
   /// back at x when the journal is rolled back.
@@ -794,7 +871,7 @@ class Snapper {
   d3::TetMeshF& mesh_;
   double h_;
   bool split_edges_;  ///< S35 on
-  bool flip_;         ///< S35.9 on
+  Flips flips_;       ///< S35.9, and S35.10, on
   std::vector<std::vector<std::uint32_t>> tets_at_;
   std::vector<std::vector<std::uint32_t>> neighbours_;
   std::vector<std::array<std::uint32_t, 3>> triangles_;   ///< the boundary triangles, S35's splits included
@@ -810,11 +887,11 @@ std::int64_t corner_index(const Features& features, const Vec3& p) {
   return it != features.corners.end() && *it == p ? it - features.corners.begin() : -1;
 }
 
-/// S30-S35.5, with S35.9's flips when `flip`.
+/// S30-S35.5, with the flips `flips` asks for (S35.9, S35.10).
 FeatureConformity conform(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
-                          const Features& features, double h, bool split_edges, bool flip) {
+                          const Features& features, double h, bool split_edges, Flips flips) {
   FeatureConformity r;
-  Snapper snapper(mesh, boundary, h, split_edges, flip);
+  Snapper snapper(mesh, boundary, h, split_edges, flips);
   // S30.1: the corners, in order.
   std::vector<std::int64_t> corner_vertex;
   for (const Vec3& c : features.corners) {
@@ -865,14 +942,19 @@ FeatureConformity conform(d3::TetMeshF& mesh, const std::vector<std::array<std::
 
 FeatureConformity conform_features(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
                                    const Features& features, double h, bool split_edges, bool flip) {
-  if (!flip) return conform(mesh, boundary, features, h, split_edges, false);
-  // S35.9: the run with flips kept only when it gains on the run without.
-  d3::TetMeshF flipped = mesh;
-  FeatureConformity without = conform(mesh, boundary, features, h, split_edges, false);
-  FeatureConformity with = conform(flipped, boundary, features, h, split_edges, true);
-  if (with.flips == 0 || !gains_on(with, without)) return without;
-  mesh = std::move(flipped);
-  return with;
+  if (!flip) return conform(mesh, boundary, features, h, split_edges, Flips::none);
+  // S35.9: the run with flips (B) kept only when it gains on the run
+  // without (A); S35.10: the run with sequences of flips too (C) kept only
+  // when it gains on the one kept.
+  d3::TetMeshF original = mesh;
+  d3::TetMeshF flipped = original;
+  FeatureConformity kept = conform(mesh, boundary, features, h, split_edges, Flips::none);
+  FeatureConformity with = conform(flipped, boundary, features, h, split_edges, Flips::single);
+  if (with.flips > 0 && gains_on(with, kept)) mesh = std::move(flipped), kept = std::move(with);
+  flipped = {};
+  with = conform(original, boundary, features, h, split_edges, Flips::sequences);
+  if (with.flips > 0 && gains_on(with, kept)) mesh = std::move(original), kept = std::move(with);
+  return kept;
 }
 
 bool gains_on(const FeatureConformity& x, const FeatureConformity& a) {

@@ -49,7 +49,9 @@ struct FeatureConformity {
 /// tried once more after 2-3 and 4-4 flips of the failing tetrahedra at its
 /// vertex (the boundary and the volume unchanged, tetrahedra changed and
 /// appended), that run kept only when it gains on the first (gains_on);
-/// `flip` false: the first run only.
+/// S35.10: a third run, where a move those flips do not let through is
+/// tried after a sequence of up to 3 flips, kept only when it gains on the
+/// run kept; `flip` false: the first run only.
 FeatureConformity conform_features(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
                                    const Features& features, double h, bool split_edges = true, bool flip = true);
 
