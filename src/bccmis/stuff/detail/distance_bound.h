@@ -1,8 +1,11 @@
-// spec/stuffing.md S37, S38: what a distance asked at another offset of a
-// moving shape, or at another point, says of the distance here and now.
+// spec/stuffing.md S37, S38, S39: what a distance asked at another offset of
+// a moving shape, or at another point, and a point of the surface, say of
+// the distance here and now.
 #pragma once
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <limits>
 #include <optional>
 
@@ -12,6 +15,8 @@ namespace bccmis::stuff::detail {
 struct DistanceBound {
   double lo = 0;
   double hi = std::numeric_limits<double>::infinity();
+  /// S39: a point of the surface at the current offset, when one is known.
+  std::optional<std::array<double, 3>> nearest = std::nullopt;
 
   bool exact() const { return lo == hi; }
   /// Whether |f| <= t, when the bound decides it.
@@ -32,16 +37,27 @@ inline DistanceBound drifted(double f0, double drift, double e) {
 /// S38: the bound of f at a point `r` away from where f is known to lie in
 /// `f` (the same offset), `e` the rounding's share.
 inline DistanceBound widened(const DistanceBound& f, double r, double e) {
-  return {std::max(0.0, f.lo - r - e), f.hi + r + e};
+  return {std::max(0.0, f.lo - r - e), f.hi + r + e, f.nearest};
+}
+
+/// S39: the bound at x lowered to x's distance from the known point of the
+/// surface, `e` the rounding's share (nothing known if rounding beyond e
+/// left it empty); the value itself stays.
+inline DistanceBound closer(DistanceBound f, const std::array<double, 3>& x, double e) {
+  if (!f.nearest || f.exact()) return f;
+  const std::array<double, 3>& q = *f.nearest;
+  f.hi = std::min(f.hi, std::hypot(x[0] - q[0], x[1] - q[1], x[2] - q[2]) + e);
+  return f.lo <= f.hi ? f : DistanceBound{};
 }
 
 /// Both bounds hold: the value when either is one, else their
 /// intersection (nothing known if rounding beyond e left it empty).
 inline DistanceBound both(const DistanceBound& a, const DistanceBound& b) {
-  if (a.exact()) return a;
-  if (b.exact()) return b;
-  const DistanceBound r{std::max(a.lo, b.lo), std::min(a.hi, b.hi)};
-  return r.lo <= r.hi ? r : DistanceBound{};
+  DistanceBound r{std::max(a.lo, b.lo), std::min(a.hi, b.hi), a.nearest ? a.nearest : b.nearest};
+  if (a.exact()) r.lo = r.hi = a.lo;
+  else if (b.exact()) r.lo = r.hi = b.lo;
+  else if (r.lo > r.hi) return {};
+  return r;
 }
 
 }  // namespace bccmis::stuff::detail
