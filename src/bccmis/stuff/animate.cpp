@@ -339,16 +339,25 @@ detail::DistanceBound MovingLattice::remembered(const d3::Point& p) const {
   // surface now: |f(p)| is at most its distance from p.
   const Vec3& q = *a.nearest;
   f.nearest = Vec3{q[0] + (offset_[0] - a.at[0]), q[1] + (offset_[1] - a.at[1]), q[2] + (offset_[2] - a.at[2])};
-  return detail::closer(f, fit_.to_space(p), rounding_);
+  return f;
 }
 
 detail::DistanceBound MovingLattice::known(const d3::Point& p, const detail::DistanceBound& parent) const {
-  // S37, S38, S39.
-  return detail::closer(detail::both(remembered(p), parent), fit_.to_space(p), rounding_);
+  // S37, S38; S39's point comes with either.
+  return detail::both(remembered(p), parent);
+}
+
+std::optional<bool> MovingLattice::decide(const d3::Point& p, detail::DistanceBound& f, double t) const {
+  if (const std::optional<bool> decided = f.at_most(t)) return decided;
+  // S39: the point's distance, computed only where S37 and S38 leave the
+  // comparison open.
+  if (!f.nearest || f.exact()) return std::nullopt;
+  f = detail::closer(f, fit_.to_space(p), rounding_);
+  return f.at_most(t);
 }
 
 bool MovingLattice::at_most(const d3::Point& p, detail::DistanceBound& f, double t) {
-  if (const std::optional<bool> decided = f.at_most(t)) return *decided;
+  if (const std::optional<bool> decided = decide(p, f, t)) return *decided;
   Shape::Nearest n = moved_->nearest(fit_.to_space(p));
   const double value = n.distance;
   const auto [i, inserted] = asked_index_.insert(pack(p), static_cast<std::uint32_t>(asked_.size()));
@@ -410,7 +419,8 @@ void MovingLattice::restuff(const std::vector<Candidate>& candidates, bool desce
       // |f| > max(s + 1.05 r_w, m): inactive; its side is asked alone. S39a:
       // so has a leaf the step made, when |f| is the distance to the surface.
       is_active = false;
-    } else if (const std::optional<bool> decided = this->known(u, known).at_most(s + reach_)) {
+    } else if (detail::DistanceBound bound = this->known(u, known);
+               const std::optional<bool> decided = decide(u, bound, s + reach_)) {
       is_active = *decided;
     } else {
       const double f = moved_->signed_distance(at);

@@ -97,6 +97,9 @@ class MovingLattice {
   /// S37, S38, S39: `parent` with what the distances asked before say of
   /// |f(p)| now.
   detail::DistanceBound known(const d3::Point& p, const detail::DistanceBound& parent) const;
+  /// S37, S38, S39: whether |f(p)| <= t, when `f` decides it (lowered by
+  /// its point of the surface if need be, S39).
+  std::optional<bool> decide(const d3::Point& p, detail::DistanceBound& f, double t) const;
   /// S37: whether |f(p)| <= t, from `f` when it decides, else asked of the
   /// shape (f then the value, remembered).
   bool at_most(const d3::Point& p, detail::DistanceBound& f, double t);

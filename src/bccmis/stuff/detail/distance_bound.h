@@ -46,7 +46,8 @@ inline DistanceBound widened(const DistanceBound& f, double r, double e) {
 inline DistanceBound closer(DistanceBound f, const std::array<double, 3>& x, double e) {
   if (!f.nearest || f.exact()) return f;
   const std::array<double, 3>& q = *f.nearest;
-  f.hi = std::min(f.hi, std::hypot(x[0] - q[0], x[1] - q[1], x[2] - q[2]) + e);
+  const double dx = x[0] - q[0], dy = x[1] - q[1], dz = x[2] - q[2];
+  f.hi = std::min(f.hi, std::sqrt(dx * dx + dy * dy + dz * dz) + e);
   return f.lo <= f.hi ? f : DistanceBound{};
 }
 
