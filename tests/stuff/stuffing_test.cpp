@@ -265,18 +265,18 @@ TEST(StuffAnimate, APointOfTheSurfaceBoundsTheDistanceFromAbove) {
   // origin, e = 0.125: |f| <= 5.125, decided exactly there (<=) and not a
   // step below; the lower end stays; the value itself stays the value; an
   // upper end below the lower end (rounding beyond e) knows nothing.
-  const std::array<double, 3> x{3, 4, 0};
-  const detail::DistanceBound b = detail::closer({1.0, 10.0, std::array<double, 3>{0, 0, 0}}, x, 0.125);
+  const std::array<double, 3> x{3, 4, 0}, q{0, 0, 0};
+  const detail::DistanceBound b = detail::closer({1.0, 10.0, 7}, x, q, 0.125);
   EXPECT_EQ(b.hi, 5.125);
   EXPECT_EQ(b.lo, 1.0);
   EXPECT_EQ(b.at_most(5.125), std::optional<bool>(true));
   EXPECT_EQ(b.at_most(std::nextafter(5.125, 0.0)), std::nullopt);
-  EXPECT_EQ(detail::closer({7.0, 7.0, std::array<double, 3>{0, 0, 0}}, x, 0.125).hi, 7.0);
-  EXPECT_EQ(detail::closer({6.0, 10.0, std::array<double, 3>{0, 0, 0}}, x, 0.125).at_most(1e300), std::nullopt);
-  EXPECT_EQ(detail::closer({1.0, 10.0}, x, 0.125).hi, 10.0);  // no point: nothing to lower
+  EXPECT_EQ(detail::closer({7.0, 7.0}, x, q, 0.125).hi, 7.0);
+  EXPECT_EQ(detail::closer({6.0, 10.0}, x, q, 0.125).at_most(1e300), std::nullopt);
   // The point goes with a bound to the children and through an intersection.
-  EXPECT_TRUE(detail::widened(b, 0.25, 0.125).nearest.has_value());
-  EXPECT_TRUE(detail::both(detail::DistanceBound{}, b).nearest.has_value());
+  EXPECT_EQ(detail::widened(b, 0.25, 0.125).nearest, 7U);
+  EXPECT_EQ(detail::both(detail::DistanceBound{}, b).nearest, 7U);
+  EXPECT_EQ(detail::both(detail::DistanceBound{}, detail::DistanceBound{}).nearest, detail::DistanceBound::kNoPoint);
 }
 
 TEST(StuffAnimate, NearestIsTheDistanceWithAPointOfTheSurface) {

@@ -335,10 +335,7 @@ detail::DistanceBound MovingLattice::remembered(const d3::Point& p) const {
   if (drift != 0 && !lipschitz_) return {};
   detail::DistanceBound f = detail::drifted(a.f, drift, rounding_);
   if (!lipschitz_ || !a.nearest) return f;
-  // S39: the point found then, moved with the shape, is a point of the
-  // surface now: |f(p)| is at most its distance from p.
-  const Vec3& q = *a.nearest;
-  f.nearest = Vec3{q[0] + (offset_[0] - a.at[0]), q[1] + (offset_[1] - a.at[1]), q[2] + (offset_[2] - a.at[2])};
+  f.nearest = i;  // S39
   return f;
 }
 
@@ -351,8 +348,15 @@ std::optional<bool> MovingLattice::decide(const d3::Point& p, detail::DistanceBo
   if (const std::optional<bool> decided = f.at_most(t)) return decided;
   // S39: the point's distance, computed only where S37 and S38 leave the
   // comparison open.
-  if (!f.nearest || f.exact()) return std::nullopt;
-  f = detail::closer(f, fit_.to_space(p), rounding_);
+  if (f.nearest == detail::DistanceBound::kNoPoint || f.exact()) return std::nullopt;
+  // The point found then, moved with the shape, is a point of the surface
+  // now: |f(p)| is at most its distance from p.
+  const Asked& a = asked_[f.nearest];
+  if (!a.nearest) return std::nullopt;
+  const Vec3& q = *a.nearest;
+  f = detail::closer(f, fit_.to_space(p),
+                     {q[0] + (offset_[0] - a.at[0]), q[1] + (offset_[1] - a.at[1]), q[2] + (offset_[2] - a.at[2])},
+                     rounding_);
   return f.at_most(t);
 }
 
@@ -365,7 +369,7 @@ bool MovingLattice::at_most(const d3::Point& p, detail::DistanceBound& f, double
     asked_.push_back({value, offset_, n.point});
   else
     asked_[i] = {value, offset_, n.point};
-  f = {value, value, lipschitz_ ? n.point : std::nullopt};
+  f = {value, value, lipschitz_ && n.point ? i : detail::DistanceBound::kNoPoint};
   return value <= t;
 }
 

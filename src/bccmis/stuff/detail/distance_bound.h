@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 
@@ -15,8 +16,10 @@ namespace bccmis::stuff::detail {
 struct DistanceBound {
   double lo = 0;
   double hi = std::numeric_limits<double>::infinity();
-  /// S39: a point of the surface at the current offset, when one is known.
-  std::optional<std::array<double, 3>> nearest = std::nullopt;
+  /// S39: which remembered distance's point of the surface goes with the
+  /// bound (an index the moving lattice gives), or kNoPoint.
+  static constexpr std::uint32_t kNoPoint = 0xFFFFFFFFu;
+  std::uint32_t nearest = kNoPoint;
 
   bool exact() const { return lo == hi; }
   /// Whether |f| <= t, when the bound decides it.
@@ -40,12 +43,12 @@ inline DistanceBound widened(const DistanceBound& f, double r, double e) {
   return {std::max(0.0, f.lo - r - e), f.hi + r + e, f.nearest};
 }
 
-/// S39: the bound at x lowered to x's distance from the known point of the
-/// surface, `e` the rounding's share (nothing known if rounding beyond e
-/// left it empty); the value itself stays.
-inline DistanceBound closer(DistanceBound f, const std::array<double, 3>& x, double e) {
-  if (!f.nearest || f.exact()) return f;
-  const std::array<double, 3>& q = *f.nearest;
+/// S39: the bound at x lowered to x's distance from q, a point of the
+/// surface now, `e` the rounding's share (nothing known if rounding beyond
+/// e left it empty); the value itself stays.
+inline DistanceBound closer(DistanceBound f, const std::array<double, 3>& x, const std::array<double, 3>& q,
+                            double e) {
+  if (f.exact()) return f;
   const double dx = x[0] - q[0], dy = x[1] - q[1], dz = x[2] - q[2];
   f.hi = std::min(f.hi, std::sqrt(dx * dx + dy * dy + dz * dz) + e);
   return f.lo <= f.hi ? f : DistanceBound{};
@@ -54,7 +57,8 @@ inline DistanceBound closer(DistanceBound f, const std::array<double, 3>& x, dou
 /// Both bounds hold: the value when either is one, else their
 /// intersection (nothing known if rounding beyond e left it empty).
 inline DistanceBound both(const DistanceBound& a, const DistanceBound& b) {
-  DistanceBound r{std::max(a.lo, b.lo), std::min(a.hi, b.hi), a.nearest ? a.nearest : b.nearest};
+  DistanceBound r{std::max(a.lo, b.lo), std::min(a.hi, b.hi),
+                  a.nearest != DistanceBound::kNoPoint ? a.nearest : b.nearest};
   if (a.exact()) r.lo = r.hi = a.lo;
   else if (b.exact()) r.lo = r.hi = b.lo;
   else if (r.lo > r.hi) return {};
