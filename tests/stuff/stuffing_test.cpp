@@ -24,6 +24,7 @@
 #include "bccmis/fast/d3/lattice.h"
 #include "bccmis/invariants/d3/stuffed_mesh.h"
 #include "bccmis/stuff/animate.h"
+#include "bccmis/stuff/normalisation.h"
 #include "bccmis/stuff/stuff.h"
 
 namespace bccmis::stuff {
@@ -259,6 +260,50 @@ TEST(StuffAnimate, ACellsDistanceBoundsItsChildrenWithinTheirOffset) {
   EXPECT_EQ(detail::widened({}, 0.25, 0.125).at_most(1e300), std::nullopt);
 }
 
+TEST(StuffAnimate, APointOfTheSurfaceBoundsTheDistanceFromAbove) {
+  // S39: |f| in [1, 10] at x = (3, 4, 0) with a point of the surface at the
+  // origin, e = 0.125: |f| <= 5.125, decided exactly there (<=) and not a
+  // step below; the lower end stays; the value itself stays the value; an
+  // upper end below the lower end (rounding beyond e) knows nothing.
+  const std::array<double, 3> x{3, 4, 0}, q{0, 0, 0};
+  const detail::DistanceBound b = detail::closer({1.0, 10.0, 7}, x, q, 0.125);
+  EXPECT_EQ(b.hi, 5.125);
+  EXPECT_EQ(b.lo, 1.0);
+  EXPECT_EQ(b.at_most(5.125), std::optional<bool>(true));
+  EXPECT_EQ(b.at_most(std::nextafter(5.125, 0.0)), std::nullopt);
+  EXPECT_EQ(detail::closer({7.0, 7.0}, x, q, 0.125).hi, 7.0);
+  EXPECT_EQ(detail::closer({6.0, 10.0}, x, q, 0.125).at_most(1e300), std::nullopt);
+  // The point goes with a bound to the children and through an intersection.
+  EXPECT_EQ(detail::widened(b, 0.25, 0.125).nearest, 7U);
+  EXPECT_EQ(detail::both(detail::DistanceBound{}, b).nearest, 7U);
+  EXPECT_EQ(detail::both(detail::DistanceBound{}, detail::DistanceBound{}).nearest, detail::DistanceBound::kNoPoint);
+}
+
+TEST(StuffAnimate, NearestIsTheDistanceWithAPointOfTheSurface) {
+  // S39 fact 1: nearest() gives distance() bit for bit, and a point of the
+  // surface at that distance, through the translated and normalised views.
+  std::mt19937_64 rng(39);
+  std::uniform_real_distribution<double> u(-2.5, 2.5);
+  const std::shared_ptr<const Shape> ball = make_sphere({0.25, 0, 0}, 0.75);
+  const auto moved = translated(ball, {0.1, -0.2, 0.3});
+  const Normalisation map{{0.5, 0, 0}, 1};
+  const std::unique_ptr<Shape> seen = view_normalised(*moved, map);
+  const std::unique_ptr<Shape> back = placed(make_sphere(map.to_local({0.35, -0.2, 0.3}), 0.375), map);
+  for (const Shape* shape : std::array<const Shape*, 4>{ball.get(), moved.get(), seen.get(), back.get()})
+    for (int i = 0; i < 2000; ++i) {
+      const Vec3 p{u(rng), u(rng), u(rng)};
+      const Shape::Nearest n = shape->nearest(p);
+      ASSERT_EQ(n.distance, shape->distance(p)) << i;
+      ASSERT_TRUE(n.point.has_value());
+      EXPECT_LE(shape->distance(*n.point), 1e-14) << i;
+      EXPECT_NEAR(std::hypot(p[0] - (*n.point)[0], p[1] - (*n.point)[1], p[2] - (*n.point)[2]), n.distance, 1e-14)
+          << i;
+    }
+  // No point where the distance is not the distance to one surface.
+  EXPECT_FALSE(make_builtin("spheres")->nearest({0, 0, 0}).point.has_value());
+  EXPECT_FALSE(make_builtin("torus")->nearest({0, 0, 0}).point.has_value());
+}
+
 TEST(StuffAnimate, BuiltInDistancesAreOneLipschitzAsClaimed) {
   // S37 fact 1: each built-in shape (and its translated view) claims a
   // 1-Lipschitz distance; random pairs of points near and far from the
@@ -441,7 +486,8 @@ TEST(StuffAnimate, ADistanceThatIsNotOneLipschitzIsAskedAgainEveryFrame) {
 /// distance is 1-Lipschitz as it is told (S37 fact 1).
 class CountingShape final : public Shape {
  public:
-  CountingShape(std::shared_ptr<const Shape> s, bool lipschitz) : s_(std::move(s)), lipschitz_(lipschitz) {}
+  CountingShape(std::shared_ptr<const Shape> s, bool lipschitz, bool points = false)
+      : s_(std::move(s)), lipschitz_(lipschitz), points_(points) {}
   double signed_distance(const Vec3& p) const override {
     ++signed_asked;
     return s_->signed_distance(p);
@@ -451,6 +497,11 @@ class CountingShape final : public Shape {
     return s_->distance(p);
   }
   bool distance_is_lipschitz() const override { return lipschitz_; }
+  Nearest nearest(const Vec3& p) const override {
+    if (!points_) return Shape::nearest(p);
+    ++asked;
+    return s_->nearest(p);
+  }
   int side(const Vec3& p) const override { return s_->side(p); }
   double crossing(const Vec3& a, const Vec3& b) const override { return s_->crossing(a, b); }
   Bounds bounds() const override { return s_->bounds(); }
@@ -463,39 +514,106 @@ class CountingShape final : public Shape {
 
  private:
   std::shared_ptr<const Shape> s_;
-  bool lipschitz_;
+  bool lipschitz_, points_;
 };
 
-TEST(StuffAnimate, ACellsDistanceSparesItsChildrensQueriesWithTheSameFrames) {
-  // S38: in the first step nothing is remembered from an earlier descent
-  // (S37), so every query the 1-Lipschitz ball spares against the same
-  // ball claimed otherwise is a child decided by its parent's distance;
-  // the frames are the same tetrahedra, and the lattice built from scratch.
+/// The ball of radius 0.4 moved by `path` in quarters through a level-3
+/// lattice, counted (CountingShape): the distances asked in each of
+/// `frames` steps, and each frame's lattice and mesh; the last lattice is
+/// checked against the one built from scratch.
+struct CountedRun {
+  std::vector<std::size_t> asked;
+  std::vector<std::pair<d3::Graph, d3::TetMeshF>> frames;
+};
+CountedRun run_counted(bool lipschitz, bool points, int frames) {
   const Vec3 path{0.3, -0.1, 0.05};
   StuffOptions o;
   o.max_level = 3;
   o.cells = 4;
   const std::shared_ptr<const Shape> ball = make_sphere({0, 0, 0}, 0.4);
   const Fit fit = fit_lattice(swept_bounds(*ball, path), o);
-  std::size_t asked[2] = {};
-  std::vector<std::pair<d3::Graph, d3::TetMeshF>> frames[2];
-  for (const bool lipschitz : {false, true}) {
-    const auto counting = std::make_shared<CountingShape>(ball, lipschitz);
-    MovingLattice moving(counting, fit, o);
-    for (int frame = 1; frame <= 2; ++frame) {
-      counting->asked = 0;
-      moving.step({path[0] * frame / 4, path[1] * frame / 4, path[2] * frame / 4});
-      if (frame == 1) asked[lipschitz] = counting->asked;
-      frames[lipschitz].emplace_back(moving.lattice().to_graph(), moving.stuffed().mesh);
+  const auto counting = std::make_shared<CountingShape>(ball, lipschitz, points);
+  MovingLattice moving(counting, fit, o);
+  CountedRun out;
+  Vec3 offset{};
+  for (int frame = 1; frame <= frames; ++frame) {
+    counting->asked = 0;
+    offset = {path[0] * frame / 4, path[1] * frame / 4, path[2] * frame / 4};
+    moving.step(offset);
+    out.asked.push_back(counting->asked);
+    out.frames.emplace_back(moving.lattice().to_graph(), moving.stuffed().mesh);
+  }
+  EXPECT_TRUE(out.frames.back().first == background_fast(*translated(ball, offset), fit, o).to_graph());
+  return out;
+}
+
+/// The same lattices and the same tetrahedra, frame by frame.
+void expect_same_frames(const CountedRun& a, const CountedRun& b) {
+  ASSERT_EQ(a.frames.size(), b.frames.size());
+  for (std::size_t k = 0; k < a.frames.size(); ++k) {
+    EXPECT_TRUE(a.frames[k].first == b.frames[k].first) << k;
+    EXPECT_TRUE(tet_keys(a.frames[k].second) == tet_keys(b.frames[k].second)) << k;
+  }
+}
+
+TEST(StuffAnimate, ACellsDistanceSparesItsChildrensQueriesWithTheSameFrames) {
+  // S38: in the first step nothing is remembered from an earlier descent
+  // (S37), so every query the 1-Lipschitz ball spares against the same
+  // ball claimed otherwise is a child decided by its parent's distance;
+  // the frames are the same tetrahedra, and the lattice built from scratch.
+  const CountedRun asked_always = run_counted(false, false, 2), bounded = run_counted(true, false, 2);
+  EXPECT_LT(bounded.asked[0], asked_always.asked[0] * 3 / 4);
+  expect_same_frames(asked_always, bounded);
+}
+
+TEST(StuffAnimate, APointOfTheSurfaceSparesQueriesWithTheSameFrames) {
+  // S39: the same 1-Lipschitz ball with and without its nearest points:
+  // with them, fewer distances are asked in every step (the upper end of a
+  // remembered or a parent's bound is the moved point's distance), and the
+  // frames are the same lattice and tetrahedra, the lattice built from
+  // scratch.
+  const CountedRun without = run_counted(true, false, 2), with = run_counted(true, true, 2);
+  for (std::size_t k = 0; k < 2; ++k) EXPECT_LT(with.asked[k], without.asked[k]) << k;
+  expect_same_frames(without, with);
+}
+
+TEST(StuffAnimate, NoLeafCoarserThanLevelLIsActive) {
+  // S39a: for a shape whose distance is the distance to its surface, every
+  // active leaf has level L, so a leaf the step made that the descent did not
+  // find is inactive (S38a needs no exception for it). A ball of radius 0.3
+  // (h = 1, L = 6, level-0 cells of side 64, where a coarse leaf could be
+  // active by S16's threshold alone) moves in steps of 5 across a corner
+  // where 8 level-0 cells meet: on every frame the active leaves are
+  // exactly the leaves with |f(u)| <= s_u + 1.05 r_w, all of level L, and the
+  // coarse leaves come within 25 finest sides of their threshold.
+  StuffOptions o;
+  o.max_level = 6;
+  Fit fit;
+  fit.size.W = fit.size.H = fit.size.D = 2;
+  fit.size.L = 6;
+  fit.scale = 0.5;
+  fit.h = 1;
+  const std::shared_ptr<const Shape> ball = make_sphere({44.6, 46.6, 47.1}, 0.3);
+  MovingLattice moving(ball, fit, o);
+  const double reach = 1.05 * std::max(o.alpha_long * fit.h, o.alpha_short * 0.5 * std::sqrt(3.0) * fit.h);
+  double nearest_coarse = 1e300;
+  for (int frame = 1; frame <= 8; ++frame) {
+    SCOPED_TRACE(frame);
+    const FrameReport r = moving.step({5.0 * frame, 4.0 * frame, 3.0 * frame});
+    std::size_t active = 0;
+    for (const d3::Point& u : moving.lattice().cells()) {
+      const int level = moving.lattice().level_of(u);
+      const double s = static_cast<double>(d3::cell_side(fit.size, level)) * fit.scale;
+      const double f = std::abs(moving.shape().signed_distance(fit.to_space(u)));
+      active += f <= s + reach;
+      if (level < fit.size.L) {
+        EXPECT_GT(f, s + reach) << d3::to_string(u);
+        if (level <= 1) nearest_coarse = std::min(nearest_coarse, f - s);
+      }
     }
-    const auto moved = translated(ball, {path[0] / 2, path[1] / 2, path[2] / 2});
-    EXPECT_TRUE(frames[lipschitz].back().first == background_fast(*moved, fit, o).to_graph());
+    EXPECT_EQ(r.restuffed_leaves, active);
   }
-  EXPECT_LT(asked[1], asked[0] * 3 / 4);
-  for (std::size_t k = 0; k < 2; ++k) {
-    EXPECT_TRUE(frames[0][k].first == frames[1][k].first) << k;
-    EXPECT_TRUE(tet_keys(frames[0][k].second) == tet_keys(frames[1][k].second)) << k;
-  }
+  EXPECT_LT(nearest_coarse, 25.0);
 }
 
 TEST(StuffAnimate, ALeafThatLeftTheBandIsSettledByItsSideAlone) {

@@ -77,6 +77,29 @@ TEST(SurfaceCube, SignedDistanceAtKnownPoints) {
   }
 }
 
+TEST(SurfaceCube, NearestIsTheDistanceWithTheClosestPoint) {
+  // spec/stuffing.md S39 fact 1: the distance bit for bit, and the tree's
+  // closest point: on the surface, at that distance.
+  const auto s = make_mesh_shape(cube_vertices(), cube_triangles(), "cube");
+  const std::vector<std::pair<Vec3, Vec3>> known{
+      {{1, 1, 0.5}, {1, 1, 0}}, {{3, 1, 1}, {2, 1, 1}}, {{3, 3, 3}, {2, 2, 2}}, {{1, -0.5, 1}, {1, 0, 1}}};
+  for (const auto& [p, q] : known) {
+    const Shape::Nearest n = s->nearest(p);
+    EXPECT_EQ(n.distance, s->distance(p));
+    ASSERT_TRUE(n.point.has_value());
+    EXPECT_EQ(*n.point, q);
+  }
+  std::mt19937_64 rng(39);
+  std::uniform_real_distribution<double> u(-1, 3);
+  for (int i = 0; i < 500; ++i) {
+    const Vec3 p{u(rng), u(rng), u(rng)};
+    const Shape::Nearest n = s->nearest(p);
+    ASSERT_EQ(n.distance, s->distance(p)) << i;
+    ASSERT_TRUE(n.point.has_value());
+    EXPECT_EQ(s->distance(*n.point), 0) << i;
+  }
+}
+
 TEST(SurfaceCube, CrossingAtKnownParameter) {
   const auto s = make_mesh_shape(cube_vertices(), cube_triangles(), "cube");
   EXPECT_DOUBLE_EQ(s->crossing({1, 1, 1}, {1, 1, 5}), 0.25);  // z = 2

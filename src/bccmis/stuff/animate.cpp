@@ -66,6 +66,9 @@ MovingLattice::MovingLattice(std::shared_ptr<const Shape> shape, const Fit& fit,
   for (const d3::Point& corner : {d3::Point{0, 0, 0}, d3::Point{fit_.size.W * S, fit_.size.H * S, fit_.size.D * S}})
     for (const double x : fit_.to_space(corner)) R = std::max(R, std::abs(x));
   rounding_ = 1e-9 * (R + fit_.h);
+  // S39a: the shapes that give a nearest point (S39 fact 1) have |f| the
+  // distance to their surface.
+  surface_distance_ = lipschitz_ && shape_->nearest(fit_.to_space({0, 0, 0})).point.has_value();
   leaves_.reserve(2 * g_.cell_count());
   std::vector<Candidate> all;
   for (const d3::Point& u : g_.cells()) all.push_back({u, true, {}});
@@ -92,8 +95,8 @@ std::vector<d3::Point> MovingLattice::roots() const {
 void MovingLattice::refine_visit(const d3::Point& c, int level, const detail::DistanceBound& parent,
                                  FrameReport& report, Descent& d) {
   const double s = static_cast<double>(side(level)) * fit_.scale;
-  // S37, S38: each comparison asks only if f does not decide it.
-  detail::DistanceBound f = detail::both(remembered(c), parent);
+  // S37, S38, S39: each comparison asks only if f does not decide it.
+  detail::DistanceBound f = known(c, parent);
   const double k = 0.5 * std::sqrt(3.0);
   // near_visit's bound: a leaf inside c may be a candidate.
   const auto may_hold = [&] { return at_most(c, f, k * s + std::max((1 - k) * 0.5 * s + reach_, d.moved)); };
@@ -122,7 +125,7 @@ void MovingLattice::refine_visit(const d3::Point& c, int level, const detail::Di
   if (!may_hold()) return;
   const detail::DistanceBound below = to_children(f, level);
   for (const d3::Point& child : children(c, side(level))) {
-    detail::DistanceBound fc = detail::both(remembered(child), below);
+    detail::DistanceBound fc = known(child, below);
     if (at_most(child, fc, std::max(0.5 * s + reach_, d.moved))) d.near.push_back({child, false, fc, true});
   }
 }
@@ -151,7 +154,7 @@ bool MovingLattice::coarsen_subtree(const d3::Point& c, int level, FrameReport& 
 void MovingLattice::near_visit(const d3::Point& c, int level, const detail::DistanceBound& parent, double moved,
                                std::vector<Candidate>& out) {
   const double s = static_cast<double>(side(level)) * fit_.scale;
-  detail::DistanceBound f = detail::both(remembered(c), parent);  // S37, S38
+  detail::DistanceBound f = known(c, parent);  // S37, S38, S39
   if (g_.is_center(c)) {
     if (at_most(c, f, std::max(s + reach_, moved))) out.push_back({c, false, f, true});
     return;
@@ -330,18 +333,43 @@ detail::DistanceBound MovingLattice::remembered(const d3::Point& p) const {
   // S37: the value itself at the offset it was asked at, a bound elsewhere
   // only for a 1-Lipschitz distance.
   if (drift != 0 && !lipschitz_) return {};
-  return detail::drifted(a.f, drift, rounding_);
+  detail::DistanceBound f = detail::drifted(a.f, drift, rounding_);
+  if (!lipschitz_ || !a.nearest) return f;
+  f.nearest = i;  // S39
+  return f;
+}
+
+detail::DistanceBound MovingLattice::known(const d3::Point& p, const detail::DistanceBound& parent) const {
+  // S37, S38; S39's point comes with either.
+  return detail::both(remembered(p), parent);
+}
+
+std::optional<bool> MovingLattice::decide(const d3::Point& p, detail::DistanceBound& f, double t) const {
+  if (const std::optional<bool> decided = f.at_most(t)) return decided;
+  // S39: the point's distance, computed only where S37 and S38 leave the
+  // comparison open.
+  if (f.nearest == detail::DistanceBound::kNoPoint || f.exact()) return std::nullopt;
+  // The point found then, moved with the shape, is a point of the surface
+  // now: |f(p)| is at most its distance from p.
+  const Asked& a = asked_[f.nearest];
+  if (!a.nearest) return std::nullopt;
+  const Vec3& q = *a.nearest;
+  f = detail::closer(f, fit_.to_space(p),
+                     {q[0] + (offset_[0] - a.at[0]), q[1] + (offset_[1] - a.at[1]), q[2] + (offset_[2] - a.at[2])},
+                     rounding_);
+  return f.at_most(t);
 }
 
 bool MovingLattice::at_most(const d3::Point& p, detail::DistanceBound& f, double t) {
-  if (const std::optional<bool> decided = f.at_most(t)) return *decided;
-  const double value = moved_->distance(fit_.to_space(p));
+  if (const std::optional<bool> decided = decide(p, f, t)) return *decided;
+  Shape::Nearest n = moved_->nearest(fit_.to_space(p));
+  const double value = n.distance;
   const auto [i, inserted] = asked_index_.insert(pack(p), static_cast<std::uint32_t>(asked_.size()));
   if (inserted)
-    asked_.push_back({value, offset_});
+    asked_.push_back({value, offset_, n.point});
   else
-    asked_[i] = {value, offset_};
-  f = {value, value};
+    asked_[i] = {value, offset_, n.point};
+  f = {value, value, lipschitz_ && n.point ? i : detail::DistanceBound::kNoPoint};
   return value <= t;
 }
 
@@ -390,11 +418,13 @@ void MovingLattice::restuff(const std::vector<Candidate>& candidates, bool desce
     const Vec3 at = fit_.to_space(u);
     bool is_active = false;
     int sign = 0;  // of f, when asked here
-    if (descended && !near && !born) {
+    if (descended && !near && (!born || surface_distance_)) {
       // S38a: a leaf throughout the step that the descent did not find has
-      // |f| > max(s + 1.05 r_w, m): inactive; its side is asked alone.
+      // |f| > max(s + 1.05 r_w, m): inactive; its side is asked alone. S39a:
+      // so has a leaf the step made, when |f| is the distance to the surface.
       is_active = false;
-    } else if (const std::optional<bool> decided = detail::both(known, remembered(u)).at_most(s + reach_)) {
+    } else if (detail::DistanceBound bound = this->known(u, known);
+               const std::optional<bool> decided = decide(u, bound, s + reach_)) {
       is_active = *decided;
     } else {
       const double f = moved_->signed_distance(at);

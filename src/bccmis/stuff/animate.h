@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -93,6 +94,12 @@ class MovingLattice {
   detail::DistanceBound to_children(const detail::DistanceBound& f, int level) const;
   /// S37: what the distances asked before say of |f(p)| now.
   detail::DistanceBound remembered(const d3::Point& p) const;
+  /// S37, S38, S39: `parent` with what the distances asked before say of
+  /// |f(p)| now.
+  detail::DistanceBound known(const d3::Point& p, const detail::DistanceBound& parent) const;
+  /// S37, S38, S39: whether |f(p)| <= t, when `f` decides it (lowered by
+  /// its point of the surface if need be, S39).
+  std::optional<bool> decide(const d3::Point& p, detail::DistanceBound& f, double t) const;
   /// S37: whether |f(p)| <= t, from `f` when it decides, else asked of the
   /// shape (f then the value, remembered).
   bool at_most(const d3::Point& p, detail::DistanceBound& f, double t);
@@ -137,15 +144,18 @@ class MovingLattice {
   };
   // The lattice points of the inside leaves' tetrahedra, counted.
   PackedIndex index_;
-  /// S37: each point asked, its distance and the offset it was asked at.
+  /// S37: each point asked, its distance and the offset it was asked at;
+  /// S39: a point of the surface at that distance, when the shape gave one.
   struct Asked {
     double f;
     Vec3 at;
+    std::optional<Vec3> nearest;
   };
   PackedIndex asked_index_;
   std::vector<Asked> asked_;
   bool lipschitz_ = false;  ///< S37 fact 1: the shape's distance() is 1-Lipschitz
   double rounding_ = 0;     ///< S37 fact 2: e
+  bool surface_distance_ = false;  ///< S39a: |f| is the distance to the surface
   std::vector<d3::Point> point_;
   std::vector<std::uint32_t> refs_;
   std::vector<std::uint32_t> free_;

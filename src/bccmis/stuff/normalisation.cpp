@@ -71,6 +71,12 @@ class NormalisedView final : public Shape {
   double signed_distance(const Vec3& p) const override { return down(s_.signed_distance(n_.to_world(p))); }
   double distance(const Vec3& p) const override { return down(s_.distance(n_.to_world(p))); }
   bool distance_is_lipschitz() const override { return s_.distance_is_lipschitz(); }
+  Nearest nearest(const Vec3& p) const override {
+    Nearest n = s_.nearest(n_.to_world(p));
+    n.distance = down(n.distance);
+    if (n.point) n.point = n_.to_local(*n.point);
+    return n;
+  }
   int side(const Vec3& p) const override { return s_.side(n_.to_world(p)); }
   double crossing(const Vec3& a, const Vec3& b) const override { return s_.crossing(n_.to_world(a), n_.to_world(b)); }
   Bounds bounds() const override {
@@ -107,6 +113,12 @@ class Placed final : public Shape {
   double signed_distance(const Vec3& p) const override { return up(local_->signed_distance(n_.to_local(p))); }
   double distance(const Vec3& p) const override { return up(local_->distance(n_.to_local(p))); }
   bool distance_is_lipschitz() const override { return local_->distance_is_lipschitz(); }
+  Nearest nearest(const Vec3& p) const override {
+    Nearest n = local_->nearest(n_.to_local(p));
+    n.distance = up(n.distance);
+    if (n.point) n.point = n_.to_world(*n.point);
+    return n;
+  }
   int side(const Vec3& p) const override { return local_->side(n_.to_local(p)); }
   double crossing(const Vec3& a, const Vec3& b) const override {
     return local_->crossing(n_.to_local(a), n_.to_local(b));

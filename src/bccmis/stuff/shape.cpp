@@ -36,6 +36,14 @@ class Sphere final : public Shape {
   }
   double signed_distance(const Vec3& p) const override { return norm(sub(p, c_)) - r_; }
   bool distance_is_lipschitz() const override { return true; }  // S37: the distance to the sphere
+  // S39: the point of the sphere on the ray from its center through p.
+  Nearest nearest(const Vec3& p) const override {
+    const Vec3 v = sub(p, c_);
+    const double n = norm(v);
+    const Vec3 q = n > 0 ? Vec3{c_[0] + v[0] * (r_ / n), c_[1] + v[1] * (r_ / n), c_[2] + v[2] * (r_ / n)}
+                         : Vec3{c_[0] + r_, c_[1], c_[2]};
+    return {distance(p), q};
+  }
   double crossing(const Vec3& a, const Vec3& b) const override {
     // |a + t d - c|^2 = r^2: the root in [0, 1] of a quadratic, refined by bisection
     // when rounding puts it outside.
@@ -178,6 +186,11 @@ class Translated final : public Shape {
   double signed_distance(const Vec3& p) const override { return s_->signed_distance(sub(p, d_)); }
   double distance(const Vec3& p) const override { return s_->distance(sub(p, d_)); }
   bool distance_is_lipschitz() const override { return s_->distance_is_lipschitz(); }
+  Nearest nearest(const Vec3& p) const override {
+    Nearest n = s_->nearest(sub(p, d_));
+    if (n.point) n.point = add(*n.point, d_);
+    return n;
+  }
   int side(const Vec3& p) const override { return s_->side(sub(p, d_)); }
   double crossing(const Vec3& a, const Vec3& b) const override { return s_->crossing(sub(a, d_), sub(b, d_)); }
   Bounds bounds() const override {

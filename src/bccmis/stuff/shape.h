@@ -51,6 +51,14 @@ class Shape {
   /// |p - q| up to rounding (spec/stuffing.md S37, fact 1): the distance to
   /// the surface itself, or a minimum of such. False: only a lower bound.
   virtual bool distance_is_lipschitz() const { return false; }
+  /// distance(p), and a point q of the surface that attains it, when the
+  /// shape has one (spec/stuffing.md S39): distance(x) <= |x - q| for every
+  /// x, up to rounding. The distance is distance(p)'s, bit for bit.
+  struct Nearest {
+    double distance = 0;
+    std::optional<Vec3> point;
+  };
+  virtual Nearest nearest(const Vec3& p) const { return {distance(p), std::nullopt}; }
   /// The sign of signed_distance(p): -1 inside, 0 on the surface, 1 outside
   /// (S5); shapes whose distance costs more than their sign compute it alone.
   virtual int side(const Vec3& p) const {

@@ -366,6 +366,12 @@ class MeshShape final : public Shape {
   // Without the side query (a ray cast): the distance alone.
   double distance(const Vec3& p) const override { return std::sqrt(tree_.squared_distance(Point(p[0], p[1], p[2]))); }
   bool distance_is_lipschitz() const override { return true; }  // S37: the distance to the triangles
+  // S39: the tree's closest point; its squared distance as the tree computes it.
+  Nearest nearest(const Vec3& p) const override {
+    const Point q(p[0], p[1], p[2]);
+    const Point c = tree_.closest_point(q);
+    return {std::sqrt(Tree::AABB_traits().squared_distance_object()(q, c)), Vec3{c.x(), c.y(), c.z()}};
+  }
 
   double crossing(const Vec3& a, const Vec3& b) const override {
     if (a == b) return 0;
@@ -784,6 +790,13 @@ class SoupShape final : public Shape {
 
   /// S37: the distance to the triangles, unless an open boundary adds S20's bound.
   bool distance_is_lipschitz() const override { return boundary_.empty(); }
+  /// S39: the tree's closest point where the distance is the triangles' alone.
+  Nearest nearest(const Vec3& p) const override {
+    if (!boundary_.empty()) return {distance(p), std::nullopt};
+    const Point q(p[0], p[1], p[2]);
+    const Point c = tree_.closest_point(q);
+    return {std::sqrt(SoupTree::AABB_traits().squared_distance_object()(q, c)), Vec3{c.x(), c.y(), c.z()}};
+  }
 
   /// S20: the first intersection of [a, b] with the triangles after which the
   /// side differs from a's, else bisection on the side.
