@@ -32,9 +32,9 @@ Finished finish_gathered(const stuff::Shape& world, const Replicated& r, d3::Tet
     found = stuff::detect_features(shape.surface_triangles(), features.angle);
     stuff::Stuffed a;
     a.mesh = std::move(mesh);
-    stuff::CreaseConformed kept = stuff::conform_on_creases(std::move(a), shape, r.fit, r.options, found,
-                                                            features.crease_cuts, r.fit.h, features.split_edges,
-                                                            features.split_chords);
+    stuff::CreaseConformed kept =
+        stuff::conform_on_creases(std::move(a), shape, r.fit, r.options, found, features.crease_cuts, r.fit.h,
+                                  features.split_edges, features.split_chords);
     mesh = std::move(kept.stuffed.mesh);
     conformity = std::move(kept.conformity);
     f.regions = io::regions_of(mesh.tets, &boundary);
@@ -46,7 +46,7 @@ Finished finish_gathered(const stuff::Shape& world, const Replicated& r, d3::Tet
   } else if (features.on) {
     found = stuff::detect_features(shape.surface_triangles(), features.angle);
     conformity = stuff::conform_features(mesh, boundary, found, r.fit.h, features.split_edges, features.flip,
-                                          features.split_chords);
+                                         features.split_chords);
     if (conformity.splits > 0 || conformity.flips > 0) f.regions = io::regions_of(mesh.tets, &boundary);
     // D13: S33's report, as mesh_shape() fills it.
     f.features = stuff::feature_report(found, conformity);

@@ -812,8 +812,7 @@ class Snapper {
     double s_from = 0;
     for (std::size_t k = 1; k < chain.size(); ++k) {
       const double s_to = arc_length(C, chain, k);
-      if (!chord_holds(C, s_vertex, mesh_.vertices[chain[k - 1]], mesh_.vertices[chain[k]], s_from, s_to))
-        return false;
+      if (!chord_holds(C, s_vertex, mesh_.vertices[chain[k - 1]], mesh_.vertices[chain[k]], s_from, s_to)) return false;
       s_from = s_to;
     }
     return true;
@@ -923,16 +922,16 @@ class Snapper {
  private:
   d3::TetMeshF& mesh_;
   double h_;
-  bool split_edges_;  ///< S35 on
+  bool split_edges_;   ///< S35 on
   bool split_chords_;  ///< S35.11 on (with S35)
-  Flips flips_;       ///< S35.9, and S35.10, on
+  Flips flips_;        ///< S35.9, and S35.10, on
   std::vector<std::vector<std::uint32_t>> tets_at_;
   std::vector<std::vector<std::uint32_t>> neighbours_;
   std::vector<std::array<std::uint32_t, 3>> triangles_;   ///< the boundary triangles, S35's splits included
   std::vector<std::vector<std::uint32_t>> triangles_at_;  ///< those at each vertex
   std::vector<char> taken_;
-  BoxGrid grid_;                    ///< the boundary vertices at their current places, in cubes of side h (S30)
-  std::optional<Journal> journal_;  ///< open while a piece's splits may be undone (S35.4)
+  BoxGrid grid_;                      ///< the boundary vertices at their current places, in cubes of side h (S30)
+  std::optional<Journal> journal_;    ///< open while a piece's splits may be undone (S35.4)
   std::vector<std::uint32_t> chain_;  ///< the path of the piece S30.2 conformed last, along it (S35.11)
 };
 
@@ -944,8 +943,7 @@ std::int64_t corner_index(const Features& features, const Vec3& p) {
 
 /// S30-S35.5, with the flips `flips` asks for (S35.9, S35.10).
 FeatureConformity conform(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
-                          const Features& features, double h, bool split_edges, Flips flips,
-                          bool split_chords) {
+                          const Features& features, double h, bool split_edges, Flips flips, bool split_chords) {
   FeatureConformity r;
   Snapper snapper(mesh, boundary, h, split_edges, flips, split_chords);
   // S30.1: the corners, in order.
@@ -997,8 +995,7 @@ FeatureConformity conform(d3::TetMeshF& mesh, const std::vector<std::array<std::
 }  // namespace
 
 FeatureConformity conform_features(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
-                                   const Features& features, double h, bool split_edges, bool flip,
-                                   bool split_chords) {
+                                   const Features& features, double h, bool split_edges, bool flip, bool split_chords) {
   if (!flip) return conform(mesh, boundary, features, h, split_edges, Flips::none, split_chords);
   // S35.9: the run with flips (B) kept only when it gains on the run
   // without (A); S35.10: the run with sequences of flips too (C) kept only

@@ -93,11 +93,11 @@ struct FeatureReport {
   double distance = -1;                       ///< with the statistics, in world units; -1 when not computed
   std::size_t splits = 0, splits_undone = 0;  ///< S35's splits kept, and undone (S35.4)
   std::size_t chord_splits = 0, chord_splits_refused = 0;  ///< S35.11's chord splits made, and refused
-  std::size_t flips = 0;                      ///< S35.9's flips kept
-  std::size_t moves_undone = 0;               ///< moves undone with them (S35.4)
-  bool crease_cuts = false;                   ///< S35.7-S35.8 ran (--crease-cuts)
-  std::size_t placed = 0;                     ///< S35.8: vertices placed on the curves in candidate B
-  std::size_t placed_kept = 0;                ///< S35.8: vertices at a placed point in the mesh kept
+  std::size_t flips = 0;                                   ///< S35.9's flips kept
+  std::size_t moves_undone = 0;                            ///< moves undone with them (S35.4)
+  bool crease_cuts = false;                                ///< S35.7-S35.8 ran (--crease-cuts)
+  std::size_t placed = 0;                                  ///< S35.8: vertices placed on the curves in candidate B
+  std::size_t placed_kept = 0;                             ///< S35.8: vertices at a placed point in the mesh kept
 };
 
 /// S33's report of `features` conformed as `conformity` says (the distance

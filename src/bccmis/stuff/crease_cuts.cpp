@@ -178,20 +178,20 @@ Stuffed stuff_on_creases(const Shape& shape, const Fit& fit, const StuffOptions&
 }
 
 CreaseConformed stuff_and_conform_on_creases(const Shape& shape, const Fit& fit, const StuffOptions& options,
-                                             const Features& features, double delta, double h, bool split_edges, bool split_chords,
-                                             PhaseTimes* times, double* feature_seconds,
+                                             const Features& features, double delta, double h, bool split_edges,
+                                             bool split_chords, PhaseTimes* times, double* feature_seconds,
                                              const std::function<void(std::size_t, double)>& on_lattice) {
   if (times) *times = {};
   if (feature_seconds) *feature_seconds = 0;
   // A: the run without S35.7, the same calls as mesh_shape's.
   Stuffed without = stuff_fitted(shape, fit, options, Impl::fast, times, on_lattice);
-  return conform_on_creases(std::move(without), shape, fit, options, features, delta, h, split_edges, split_chords, times,
-                            feature_seconds);
+  return conform_on_creases(std::move(without), shape, fit, options, features, delta, h, split_edges, split_chords,
+                            times, feature_seconds);
 }
 
 CreaseConformed conform_on_creases(Stuffed without, const Shape& shape, const Fit& fit, const StuffOptions& options,
-                                   const Features& features, double delta, double h, bool split_edges, bool split_chords,
-                                   PhaseTimes* times, double* feature_seconds) {
+                                   const Features& features, double delta, double h, bool split_edges,
+                                   bool split_chords, PhaseTimes* times, double* feature_seconds) {
   const auto add = [times](const PhaseTimes& t) {
     if (!times) return;
     times->lattice += t.lattice, times->mesh += t.mesh, times->cut += t.cut, times->warp += t.warp;

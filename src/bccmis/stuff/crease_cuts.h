@@ -65,8 +65,9 @@ struct CreaseConformed {
 /// receives every candidate's S3-S9 phases, added up, `feature_seconds`
 /// the seconds of their S30-S35.
 CreaseConformed stuff_and_conform_on_creases(const Shape& shape, const Fit& fit, const StuffOptions& options,
-                                             const Features& features, double delta, double h, bool split_edges, bool split_chords,
-                                             PhaseTimes* times = nullptr, double* feature_seconds = nullptr,
+                                             const Features& features, double delta, double h, bool split_edges,
+                                             bool split_chords, PhaseTimes* times = nullptr,
+                                             double* feature_seconds = nullptr,
                                              const std::function<void(std::size_t, double)>& on_lattice = {});
 
 /// S35.8 from candidate A's stuffing on: `without` is S5-S9's mesh on `fit`
@@ -76,7 +77,7 @@ CreaseConformed stuff_and_conform_on_creases(const Shape& shape, const Fit& fit,
 /// stuff_fitted, then this). `times` and `feature_seconds` are added to,
 /// not reset.
 CreaseConformed conform_on_creases(Stuffed without, const Shape& shape, const Fit& fit, const StuffOptions& options,
-                                   const Features& features, double delta, double h, bool split_edges, bool split_chords,
-                                   PhaseTimes* times = nullptr, double* feature_seconds = nullptr);
+                                   const Features& features, double delta, double h, bool split_edges,
+                                   bool split_chords, PhaseTimes* times = nullptr, double* feature_seconds = nullptr);
 
 }  // namespace bccmis::stuff

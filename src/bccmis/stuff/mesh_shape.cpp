@@ -156,7 +156,8 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
   if (crease_cuts) {
     features = detect_features(shape.surface_triangles(), settings.features.angle);
     creased = stuff_and_conform_on_creases(shape, fit, options, features, settings.features.crease_cuts, fit.h,
-                                           settings.features.split_edges, settings.features.split_chords, &times, &crease_feature_seconds, on_lattice);
+                                           settings.features.split_edges, settings.features.split_chords, &times,
+                                           &crease_feature_seconds, on_lattice);
     r.stuffed = std::move(creased.stuffed);
     const CreaseCuts& b = creased.all_curves;
     say(std::to_string(b.placed) + " vertices placed on the creases, " + std::to_string(b.excluded) +
@@ -216,8 +217,8 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
         " corners; conformed " + std::to_string(conformity.corners_conformed) + " corners, " +
         std::to_string(conformity.curves_conformed) + " of " + std::to_string(features.curves.size()) + " curves; " +
         std::to_string(conformity.moves) + " moves, " + std::to_string(conformity.refused) + " refused by the guard, " +
-        std::to_string(conformity.splits) + " edges split (" + std::to_string(conformity.chord_splits) +
-        " chords, " + std::to_string(conformity.chord_splits_refused) + " chord splits refused), " +
+        std::to_string(conformity.splits) + " edges split (" + std::to_string(conformity.chord_splits) + " chords, " +
+        std::to_string(conformity.chord_splits_refused) + " chord splits refused), " +
         std::to_string(conformity.splits_undone) + " splits undone");
   }
   const auto t1 = Clock::now();
