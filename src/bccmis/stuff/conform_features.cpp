@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <queue>
+#include <set>
 #include <tuple>
 #include <unordered_map>
 #include <utility>
@@ -283,7 +284,9 @@ class Snapper {
   /// s; an edge uw farther than kChordTolerance h from an input feature
   /// point strictly between its ends is split at the farthest by S35.2's
   /// guarded split when both halves meet S32's chord condition, its halves
-  /// walked next; a refused split leaves uw. None without S35 (split_edges).
+  /// walked next; a refused split leaves uw, as does an edge of a piece
+  /// walked before (two curves between the same two corners' vertices may
+  /// share their one edge). None without S35 (split_edges).
   void split_chords(const FeatureCurve& C, FeatureConformity& r) {
     if (!split_edges_ || !split_chords_) return;
     const std::vector<double> s_vertex = arc_lengths(C);
@@ -299,8 +302,8 @@ class Snapper {
       }
       const Vec3 c = C.points[static_cast<std::size_t>(i)];
       const double s_c = s_vertex[static_cast<std::size_t>(i)];
-      if (!chord_holds(C, s_vertex, a, c, s[k - 1], s_c) || !chord_holds(C, s_vertex, c, b, s_c, s[k]) ||
-          !split(chain[k - 1], chain[k], c)) {
+      if (on_paths_.contains(std::minmax(chain[k - 1], chain[k])) || !chord_holds(C, s_vertex, a, c, s[k - 1], s_c) ||
+          !chord_holds(C, s_vertex, c, b, s_c, s[k]) || !split(chain[k - 1], chain[k], c)) {
         ++r.chord_splits_refused;
         ++k;
         continue;
@@ -311,6 +314,7 @@ class Snapper {
       chain.insert(chain.begin() + static_cast<std::ptrdiff_t>(k), p);
       s.insert(s.begin() + static_cast<std::ptrdiff_t>(k), s_c);
     }
+    for (std::size_t k = 1; k < chain.size(); ++k) on_paths_.insert(std::minmax(chain[k - 1], chain[k]));
   }
 
  private:
@@ -933,6 +937,7 @@ class Snapper {
   BoxGrid grid_;                      ///< the boundary vertices at their current places, in cubes of side h (S30)
   std::optional<Journal> journal_;    ///< open while a piece's splits may be undone (S35.4)
   std::vector<std::uint32_t> chain_;  ///< the path of the piece S30.2 conformed last, along it (S35.11)
+  std::set<std::pair<std::uint32_t, std::uint32_t>> on_paths_;  ///< edges of the pieces S35.11 walked (u < w)
 };
 
 /// The corner of `features` at p, if any (its index), by exact equality.
