@@ -280,17 +280,31 @@ class Snapper {
     return conformed;
   }
 
-  /// S35.11: the path of the piece C conformed last, walked in the order of
+  /// S35.11's record of the piece C just conformed: its path, along it.
+  void keep_path(const FeatureCurve& C) { paths_.emplace_back(C, chain_); }
+
+  /// S35.11 on every piece keep_path recorded, in order, after every curve
+  /// (no curve's path sees the splits). None without S35 (split_edges).
+  void split_chords(FeatureConformity& r) {
+    if (!split_edges_ || !split_chords_) return;
+    std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
+    for (const auto& [C, chain] : paths_)
+      for (std::size_t k = 1; k < chain.size(); ++k)
+        if (!seen.insert(std::minmax(chain[k - 1], chain[k])).second)
+          shared_.insert(std::minmax(chain[k - 1], chain[k]));
+    for (const auto& [C, chain] : paths_) split_chords(C, chain, r);
+  }
+
+ private:
+  /// S35.11 on the piece C whose path is `chain`, walked in the order of
   /// s; an edge uw farther than kChordTolerance h from an input feature
   /// point strictly between its ends is split at the farthest by S35.2's
   /// guarded split when both halves meet S32's chord condition, its halves
-  /// walked next; a refused split leaves uw, as does an edge of a piece
-  /// walked before (two curves between the same two corners' vertices may
-  /// share their one edge). None without S35 (split_edges).
-  void split_chords(const FeatureCurve& C, FeatureConformity& r) {
-    if (!split_edges_ || !split_chords_) return;
+  /// walked next; a refused split leaves uw, as does an edge of two pieces'
+  /// paths (two curves between the same two corners' vertices may share
+  /// their one edge).
+  void split_chords(const FeatureCurve& C, std::vector<std::uint32_t> chain, FeatureConformity& r) {
     const std::vector<double> s_vertex = arc_lengths(C);
-    std::vector<std::uint32_t> chain = chain_;
     std::vector<double> s{0};
     for (std::size_t k = 1; k < chain.size(); ++k) s.push_back(arc_length(C, chain, k));
     for (std::size_t k = 1; k < chain.size();) {
@@ -302,7 +316,7 @@ class Snapper {
       }
       const Vec3 c = C.points[static_cast<std::size_t>(i)];
       const double s_c = s_vertex[static_cast<std::size_t>(i)];
-      if (on_paths_.contains(std::minmax(chain[k - 1], chain[k])) || !chord_holds(C, s_vertex, a, c, s[k - 1], s_c) ||
+      if (shared_.contains(std::minmax(chain[k - 1], chain[k])) || !chord_holds(C, s_vertex, a, c, s[k - 1], s_c) ||
           !chord_holds(C, s_vertex, c, b, s_c, s[k]) || !split(chain[k - 1], chain[k], c)) {
         ++r.chord_splits_refused;
         ++k;
@@ -314,10 +328,8 @@ class Snapper {
       chain.insert(chain.begin() + static_cast<std::ptrdiff_t>(k), p);
       s.insert(s.begin() + static_cast<std::ptrdiff_t>(k), s_c);
     }
-    for (std::size_t k = 1; k < chain.size(); ++k) on_paths_.insert(std::minmax(chain[k - 1], chain[k]));
   }
 
- private:
   /// S30.2's attempts on the piece C from `from` to `to`: nothing when every
   /// attempt failed (no vertex taken); otherwise whether the path taken
   /// meets S32's chord condition.
@@ -937,7 +949,8 @@ class Snapper {
   BoxGrid grid_;                      ///< the boundary vertices at their current places, in cubes of side h (S30)
   std::optional<Journal> journal_;    ///< open while a piece's splits may be undone (S35.4)
   std::vector<std::uint32_t> chain_;  ///< the path of the piece S30.2 conformed last, along it (S35.11)
-  std::set<std::pair<std::uint32_t, std::uint32_t>> on_paths_;  ///< edges of the pieces S35.11 walked (u < w)
+  std::vector<std::pair<FeatureCurve, std::vector<std::uint32_t>>> paths_;  ///< the pieces conformed, with their paths
+  std::set<std::pair<std::uint32_t, std::uint32_t>> shared_;  ///< edges of two pieces' paths (u < w), not split
 };
 
 /// The corner of `features` at p, if any (its index), by exact equality.
@@ -989,11 +1002,12 @@ FeatureConformity conform(d3::TetMeshF& mesh, const std::vector<std::array<std::
       const bool ok = ends[i] >= 0 && ends[i + 1] >= 0 &&
                       snapper.snap_piece(pieces[i], static_cast<std::uint32_t>(ends[i]),
                                          static_cast<std::uint32_t>(ends[i + 1]), r);
-      if (ok) r.pieces.push_back(pieces[i]), snapper.split_chords(pieces[i], r);
+      if (ok) r.pieces.push_back(pieces[i]), snapper.keep_path(pieces[i]);
       conformed = conformed && ok;
     }
     if (conformed) ++r.curves_conformed, r.conformed_curves.push_back(curve);
   }
+  snapper.split_chords(r);  // S35.11, after every curve
   return r;
 }
 
