@@ -139,7 +139,7 @@ TEST(CreaseCuts, TheMeshKeptLosesNothingTheRunWithoutItConforms) {
   ASSERT_FALSE(contains(all_curves, expected)) << "S35.7 alone loses nothing here: the input shows no loss";
   EXPECT_TRUE(find_feature_problem(fit, placed.mesh, expected).has_value());
 
-  const CreaseConformed kept = stuff_and_conform_on_creases(local, fit, options, features, kDelta, fit.h, true);
+  const CreaseConformed kept = stuff_and_conform_on_creases(local, fit, options, features, kDelta, fit.h, true, true);
   EXPECT_EQ(find_feature_problem(fit, kept.stuffed.mesh, expected).value_or(""), "");
   EXPECT_TRUE(contains(kept.conformity, expected));
   EXPECT_GE(kept.conformity.curves_conformed, expected.curves_conformed);

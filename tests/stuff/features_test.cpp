@@ -263,6 +263,15 @@ TEST(FeatureConformity, FandiskKeepsItsCornersWithinTheBound) {
       nearest = std::min(nearest, nearest_on_curve(C, with.stuffed.mesh.vertices[i]).distance);
     EXPECT_LE(nearest, 1e-9 * with.fit.h) << i;
   }
+  // S35.11: chords of conformed paths split at input feature points, each
+  // new vertex one of them exactly.
+  EXPECT_GT(with.features->chord_splits, 0u);
+  std::size_t at_feature_points = 0;
+  for (std::size_t i = lattice_vertices; i < with.stuffed.mesh.vertices.size(); ++i)
+    at_feature_points += std::any_of(creases.curves.begin(), creases.curves.end(), [&](const FeatureCurve& C) {
+      return std::find(C.points.begin(), C.points.end(), with.stuffed.mesh.vertices[i]) != C.points.end();
+    });
+  EXPECT_GE(at_feature_points, with.features->chord_splits);
   std::size_t room = 0;
   for (std::size_t i = 0; i < lattice_vertices; ++i) {
     if (with.stuffed.mesh.kind[i] != kRoomVertex) continue;
@@ -351,6 +360,7 @@ TEST(FeatureConformity, SplitsThatConformNothingAreUndone) {
   Settings s;
   s.lattice.max_level = 2;
   s.features.on = true;
+  s.features.split_chords = false;  // S35.11 splits conformed pieces' chords, not undone
   const Meshed with = mesh_shape(*shape, s);
   s.features.split_edges = false;
   const Meshed without = mesh_shape(*shape, s);
@@ -374,6 +384,7 @@ TEST(FeatureConformity, MovesAfterUndoneSplitsAreUndone) {
   Settings s;
   s.lattice.max_level = 3;
   s.features.on = true;
+  s.features.split_chords = false;  // S35.11 splits conformed pieces' chords, not undone
   const Meshed with = mesh_shape(*shape, s);
   s.features.split_edges = false;
   const Meshed without = mesh_shape(*shape, s);
@@ -449,6 +460,26 @@ TEST(FeatureConformity, FlipsAreKeptOnlyWhereTheyGain) {
   EXPECT_FALSE(gains_on(b, a));
   b.conformed_curves = a.conformed_curves;
   EXPECT_TRUE(gains_on(b, a));  // a corner more
+}
+
+//= spec/stuffing.md S35 type=test
+TEST(FeatureConformity, ChordSplitStandsOnTheTolerance) {
+  // S35.11: a chord is split at the input feature point farthest from it
+  // (strictly between its ends' arc lengths) only when that point is more
+  // than the tolerance away: exactly at it, not split; just above, split.
+  const double tau = kChordTolerance;  // h = 1
+  const Vec3 a{0, 0, 0}, b{1, 0, 0};
+  const auto curve = [](double y) { return FeatureCurve{{{0, 0, 0}, {0.25, 0, 0}, {0.5, y, 0}, {1, 0, 0}}, false}; };
+  EXPECT_EQ(chord_split_vertex(curve(tau), a, b, 0, curve(tau).length(), tau), -1);
+  const FeatureCurve above = curve(std::nextafter(tau, 1.0));
+  EXPECT_EQ(chord_split_vertex(above, a, b, 0, above.length(), tau), 2);
+  // Only points strictly between the chord's ends count.
+  const double s2 = 0.25 + std::hypot(0.25, std::nextafter(tau, 1.0));
+  EXPECT_EQ(chord_split_vertex(above, a, b, 0, s2, tau), -1);
+  EXPECT_EQ(chord_split_vertex(above, a, b, 0, std::nextafter(s2, 1.0), tau), 2);
+  // The farthest point; the first of two as far.
+  const FeatureCurve two{{{0, 0, 0}, {0.25, 0.01, 0}, {0.5, 0.02, 0}, {0.75, 0.02, 0}, {1, 0, 0}}, false};
+  EXPECT_EQ(chord_split_vertex(two, a, b, 0, two.length(), tau), 2);
 }
 
 //= spec/stuffing.md S32 type=test

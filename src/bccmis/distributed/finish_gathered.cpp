@@ -32,8 +32,9 @@ Finished finish_gathered(const stuff::Shape& world, const Replicated& r, d3::Tet
     found = stuff::detect_features(shape.surface_triangles(), features.angle);
     stuff::Stuffed a;
     a.mesh = std::move(mesh);
-    stuff::CreaseConformed kept = stuff::conform_on_creases(std::move(a), shape, r.fit, r.options, found,
-                                                            features.crease_cuts, r.fit.h, features.split_edges);
+    stuff::CreaseConformed kept =
+        stuff::conform_on_creases(std::move(a), shape, r.fit, r.options, found, features.crease_cuts, r.fit.h,
+                                  features.split_edges, features.split_chords);
     mesh = std::move(kept.stuffed.mesh);
     conformity = std::move(kept.conformity);
     f.regions = io::regions_of(mesh.tets, &boundary);
@@ -44,7 +45,8 @@ Finished finish_gathered(const stuff::Shape& world, const Replicated& r, d3::Tet
     f.features->placed_kept = kept.placed_kept;
   } else if (features.on) {
     found = stuff::detect_features(shape.surface_triangles(), features.angle);
-    conformity = stuff::conform_features(mesh, boundary, found, r.fit.h, features.split_edges, features.flip);
+    conformity = stuff::conform_features(mesh, boundary, found, r.fit.h, features.split_edges, features.flip,
+                                         features.split_chords);
     if (conformity.splits > 0 || conformity.flips > 0) f.regions = io::regions_of(mesh.tets, &boundary);
     // D13: S33's report, as mesh_shape() fills it.
     f.features = stuff::feature_report(found, conformity);

@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <queue>
+#include <set>
 #include <tuple>
 #include <unordered_map>
 #include <utility>
@@ -117,6 +118,13 @@ Vec3 point_at(const FeatureCurve& C, double s) {
   return C.points.back();
 }
 
+/// The arc length of each vertex of C's polyline.
+std::vector<double> arc_lengths(const FeatureCurve& C) {
+  std::vector<double> s{0};
+  for (std::size_t i = 1; i < C.points.size(); ++i) s.push_back(s.back() + distance(C.points[i - 1], C.points[i]));
+  return s;
+}
+
 /// Which flips a move S31 and S34 refuse is tried again after: none,
 /// S35.9's, or S35.9's then S35.10's sequences.
 enum class Flips { none, single, sequences };
@@ -126,10 +134,11 @@ enum class Flips { none, single, sequences };
 class Snapper {
  public:
   Snapper(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary, double h, bool split_edges,
-          Flips flips)
+          Flips flips, bool split_chords)
       : mesh_(mesh),
         h_(h),
         split_edges_(split_edges),
+        split_chords_(split_chords),
         flips_(flips),
         tets_at_(mesh.vertices.size()),
         neighbours_(mesh.vertices.size()),
@@ -245,8 +254,10 @@ class Snapper {
       if (undone_unless(r, made, [&] {
             if (with_splits && (made = split_crossings(reversed, r)) == 0) return false;
             return follow(reversed, to, from, r).value_or(false);
-          }))
+          })) {
+        std::reverse(chain_.begin(), chain_.end());  // along C
         return true;
+      }
     }
     return false;
   }
@@ -269,7 +280,56 @@ class Snapper {
     return conformed;
   }
 
+  /// S35.11's record of the piece C just conformed: its path, along it.
+  void keep_path(const FeatureCurve& C) { paths_.emplace_back(C, chain_); }
+
+  /// S35.11 on every piece keep_path recorded, in order, after every curve
+  /// (no curve's path sees the splits). None without S35 (split_edges).
+  void split_chords(FeatureConformity& r) {
+    if (!split_edges_ || !split_chords_) return;
+    std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
+    for (const auto& [C, chain] : paths_)
+      for (std::size_t k = 1; k < chain.size(); ++k)
+        if (!seen.insert(std::minmax(chain[k - 1], chain[k])).second)
+          shared_.insert(std::minmax(chain[k - 1], chain[k]));
+    for (const auto& [C, chain] : paths_) split_chords(C, chain, r);
+  }
+
  private:
+  /// S35.11 on the piece C whose path is `chain`, walked in the order of
+  /// s; an edge uw farther than kChordTolerance h from an input feature
+  /// point strictly between its ends is split at the farthest by S35.2's
+  /// guarded split when both halves meet S32's chord condition, its halves
+  /// walked next; a refused split leaves uw, as does an edge of two pieces'
+  /// paths (two curves between the same two corners' vertices may share
+  /// their one edge).
+  void split_chords(const FeatureCurve& C, std::vector<std::uint32_t> chain, FeatureConformity& r) {
+    const std::vector<double> s_vertex = arc_lengths(C);
+    std::vector<double> s{0};
+    for (std::size_t k = 1; k < chain.size(); ++k) s.push_back(arc_length(C, chain, k));
+    for (std::size_t k = 1; k < chain.size();) {
+      const Vec3 &a = mesh_.vertices[chain[k - 1]], &b = mesh_.vertices[chain[k]];
+      const std::int64_t i = chord_split_vertex(C, a, b, s[k - 1], s[k], kChordTolerance * h_);
+      if (i < 0) {
+        ++k;
+        continue;
+      }
+      const Vec3 c = C.points[static_cast<std::size_t>(i)];
+      const double s_c = s_vertex[static_cast<std::size_t>(i)];
+      if (shared_.contains(std::minmax(chain[k - 1], chain[k])) || !chord_holds(C, s_vertex, a, c, s[k - 1], s_c) ||
+          !chord_holds(C, s_vertex, c, b, s_c, s[k]) || !split(chain[k - 1], chain[k], c)) {
+        ++r.chord_splits_refused;
+        ++k;
+        continue;
+      }
+      const auto p = static_cast<std::uint32_t>(mesh_.vertices.size() - 1);
+      taken_[p] = 1;
+      ++r.splits, ++r.chord_splits;
+      chain.insert(chain.begin() + static_cast<std::ptrdiff_t>(k), p);
+      s.insert(s.begin() + static_cast<std::ptrdiff_t>(k), s_c);
+    }
+  }
+
   /// S30.2's attempts on the piece C from `from` to `to`: nothing when every
   /// attempt failed (no vertex taken); otherwise whether the path taken
   /// meets S32's chord condition.
@@ -304,7 +364,10 @@ class Snapper {
       }
       if (failed < 0) {
         for (const std::uint32_t v : path) keep(taken_, v), taken_[v] = 1;
-        return chords_within(C, from, path, to);
+        chain_ = {from};
+        chain_.insert(chain_.end(), path.begin(), path.end());
+        chain_.push_back(to);
+        return chords_within(C, chain_);
       }
       near.erase(static_cast<std::uint32_t>(failed));
     }
@@ -345,9 +408,7 @@ class Snapper {
     };
     const auto near = near_vertices(C, 0, 0, true);
     std::vector<Crossing> crossings;
-    std::vector<double> s_vertex{0};
-    for (std::size_t i = 1; i < C.points.size(); ++i)
-      s_vertex.push_back(s_vertex.back() + distance(C.points[i - 1], C.points[i]));
+    const std::vector<double> s_vertex = arc_lengths(C);
     for (const auto& [u, du] : near) {
       if (du > h_ || neighbours_[u].empty()) continue;
       for (const std::uint32_t w : neighbours_[u]) {
@@ -759,26 +820,33 @@ class Snapper {
     triangles_.resize(j.triangles);
   }
 
-  /// S32's chord condition on the path from -> path -> to, whose vertices
-  /// lie on C in order: every vertex of C between two consecutive ones
-  /// within h/4 of the edge joining them.
-  bool chords_within(const FeatureCurve& C, std::uint32_t from, const std::vector<std::uint32_t>& path,
-                     std::uint32_t to) const {
-    std::vector<std::uint32_t> chain{from};
-    chain.insert(chain.end(), path.begin(), path.end());
-    chain.push_back(to);
-    std::vector<double> s_vertex{0};
-    for (std::size_t i = 1; i < C.points.size(); ++i)
-      s_vertex.push_back(s_vertex.back() + distance(C.points[i - 1], C.points[i]));
+  /// S32's chord condition on the path `chain`, whose vertices lie on C in
+  /// order from its start's to its end's: every vertex of C between two
+  /// consecutive ones within h/4 of the edge joining them.
+  bool chords_within(const FeatureCurve& C, const std::vector<std::uint32_t>& chain) const {
+    const std::vector<double> s_vertex = arc_lengths(C);
     double s_from = 0;
     for (std::size_t k = 1; k < chain.size(); ++k) {
-      const Vec3 &a = mesh_.vertices[chain[k - 1]], &b = mesh_.vertices[chain[k]];
-      const double s_to = k + 1 == chain.size() ? C.length() : nearest_on_curve(C, b).s;
-      for (std::size_t i = 0; i < C.points.size(); ++i)
-        if (s_vertex[i] > s_from && s_vertex[i] < s_to && nearest_on_segment(a, b, C.points[i]).distance > h_ / 4)
-          return false;
+      const double s_to = arc_length(C, chain, k);
+      if (!chord_holds(C, s_vertex, mesh_.vertices[chain[k - 1]], mesh_.vertices[chain[k]], s_from, s_to)) return false;
       s_from = s_to;
     }
+    return true;
+  }
+
+  /// The arc length along C of the k-th vertex of the path `chain` on C: 0
+  /// at its start, C's length at its end, the nearest point's between.
+  double arc_length(const FeatureCurve& C, const std::vector<std::uint32_t>& chain, std::size_t k) const {
+    return k == 0 ? 0 : k + 1 == chain.size() ? C.length() : nearest_on_curve(C, mesh_.vertices[chain[k]]).s;
+  }
+
+  /// S32's chord condition on one edge ab of a path on C, from arc length
+  /// s_from to s_to: every vertex of C strictly between within h/4 of ab.
+  bool chord_holds(const FeatureCurve& C, const std::vector<double>& s_vertex, const Vec3& a, const Vec3& b,
+                   double s_from, double s_to) const {
+    for (std::size_t i = 0; i < C.points.size(); ++i)
+      if (s_vertex[i] > s_from && s_vertex[i] < s_to && nearest_on_segment(a, b, C.points[i]).distance > h_ / 4)
+        return false;
     return true;
   }
 
@@ -870,15 +938,19 @@ class Snapper {
  private:
   d3::TetMeshF& mesh_;
   double h_;
-  bool split_edges_;  ///< S35 on
-  Flips flips_;       ///< S35.9, and S35.10, on
+  bool split_edges_;   ///< S35 on
+  bool split_chords_;  ///< S35.11 on (with S35)
+  Flips flips_;        ///< S35.9, and S35.10, on
   std::vector<std::vector<std::uint32_t>> tets_at_;
   std::vector<std::vector<std::uint32_t>> neighbours_;
   std::vector<std::array<std::uint32_t, 3>> triangles_;   ///< the boundary triangles, S35's splits included
   std::vector<std::vector<std::uint32_t>> triangles_at_;  ///< those at each vertex
   std::vector<char> taken_;
-  BoxGrid grid_;                    ///< the boundary vertices at their current places, in cubes of side h (S30)
-  std::optional<Journal> journal_;  ///< open while a piece's splits may be undone (S35.4)
+  BoxGrid grid_;                      ///< the boundary vertices at their current places, in cubes of side h (S30)
+  std::optional<Journal> journal_;    ///< open while a piece's splits may be undone (S35.4)
+  std::vector<std::uint32_t> chain_;  ///< the path of the piece S30.2 conformed last, along it (S35.11)
+  std::vector<std::pair<FeatureCurve, std::vector<std::uint32_t>>> paths_;  ///< the pieces conformed, with their paths
+  std::set<std::pair<std::uint32_t, std::uint32_t>> shared_;  ///< edges of two pieces' paths (u < w), not split
 };
 
 /// The corner of `features` at p, if any (its index), by exact equality.
@@ -889,9 +961,9 @@ std::int64_t corner_index(const Features& features, const Vec3& p) {
 
 /// S30-S35.5, with the flips `flips` asks for (S35.9, S35.10).
 FeatureConformity conform(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
-                          const Features& features, double h, bool split_edges, Flips flips) {
+                          const Features& features, double h, bool split_edges, Flips flips, bool split_chords) {
   FeatureConformity r;
-  Snapper snapper(mesh, boundary, h, split_edges, flips);
+  Snapper snapper(mesh, boundary, h, split_edges, flips, split_chords);
   // S30.1: the corners, in order.
   std::vector<std::int64_t> corner_vertex;
   for (const Vec3& c : features.corners) {
@@ -930,31 +1002,44 @@ FeatureConformity conform(d3::TetMeshF& mesh, const std::vector<std::array<std::
       const bool ok = ends[i] >= 0 && ends[i + 1] >= 0 &&
                       snapper.snap_piece(pieces[i], static_cast<std::uint32_t>(ends[i]),
                                          static_cast<std::uint32_t>(ends[i + 1]), r);
-      if (ok) r.pieces.push_back(pieces[i]);
+      if (ok) r.pieces.push_back(pieces[i]), snapper.keep_path(pieces[i]);
       conformed = conformed && ok;
     }
     if (conformed) ++r.curves_conformed, r.conformed_curves.push_back(curve);
   }
+  snapper.split_chords(r);  // S35.11, after every curve
   return r;
 }
 
 }  // namespace
 
 FeatureConformity conform_features(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
-                                   const Features& features, double h, bool split_edges, bool flip) {
-  if (!flip) return conform(mesh, boundary, features, h, split_edges, Flips::none);
+                                   const Features& features, double h, bool split_edges, bool flip, bool split_chords) {
+  if (!flip) return conform(mesh, boundary, features, h, split_edges, Flips::none, split_chords);
   // S35.9: the run with flips (B) kept only when it gains on the run
   // without (A); S35.10: the run with sequences of flips too (C) kept only
   // when it gains on the one kept.
   d3::TetMeshF original = mesh;
   d3::TetMeshF flipped = original;
-  FeatureConformity kept = conform(mesh, boundary, features, h, split_edges, Flips::none);
-  FeatureConformity with = conform(flipped, boundary, features, h, split_edges, Flips::single);
+  FeatureConformity kept = conform(mesh, boundary, features, h, split_edges, Flips::none, split_chords);
+  FeatureConformity with = conform(flipped, boundary, features, h, split_edges, Flips::single, split_chords);
   if (with.flips > 0 && gains_on(with, kept)) mesh = std::move(flipped), kept = std::move(with);
   flipped = {};
-  with = conform(original, boundary, features, h, split_edges, Flips::sequences);
+  with = conform(original, boundary, features, h, split_edges, Flips::sequences, split_chords);
   if (with.flips > 0 && gains_on(with, kept)) mesh = std::move(original), kept = std::move(with);
   return kept;
+}
+
+std::int64_t chord_split_vertex(const FeatureCurve& C, const Vec3& a, const Vec3& b, double s_from, double s_to,
+                                double tolerance) {
+  const std::vector<double> s_vertex = arc_lengths(C);
+  std::int64_t farthest = -1;
+  double worst = tolerance;
+  for (std::size_t i = 0; i < C.points.size(); ++i)
+    if (s_vertex[i] > s_from && s_vertex[i] < s_to)
+      if (const double d = nearest_on_segment(a, b, C.points[i]).distance; d > worst)
+        worst = d, farthest = static_cast<std::int64_t>(i);
+  return farthest;
 }
 
 bool gains_on(const FeatureConformity& x, const FeatureConformity& a) {
@@ -1012,6 +1097,8 @@ FeatureReport feature_report(const Features& features, const FeatureConformity& 
   r.splits = conformity.splits;
   r.flips = conformity.flips;
   r.splits_undone = conformity.splits_undone;
+  r.chord_splits = conformity.chord_splits;
+  r.chord_splits_refused = conformity.chord_splits_refused;
   r.moves_undone = conformity.moves_undone;
   return r;
 }

@@ -30,7 +30,9 @@ struct FeatureConformity {
   std::vector<std::size_t> conformed_curves;  ///< their indices in Features::curves, increasing (S35.8)
   std::size_t moves = 0, refused = 0;         ///< the guard's answers (S31)
   std::size_t room_made = 0;                  ///< moves accepted with the interior neighbours moved (S34)
-  std::size_t splits = 0;                     ///< boundary edges split onto a crease and kept (S35)
+  std::size_t splits = 0;                     ///< boundary edges split onto a crease and kept (S35, S35.11)
+  std::size_t chord_splits = 0;               ///< of them, a conformed path's chords split (S35.11)
+  std::size_t chord_splits_refused = 0;       ///< chord splits S35.2's test refused (S35.11)
   std::size_t flips = 0;                      ///< 2-3 and 4-4 flips kept, each with a move (S35.9)
   std::size_t splits_undone = 0;              ///< splits undone, their piece still not conformed (S35.4)
   std::size_t moves_undone =
@@ -51,9 +53,22 @@ struct FeatureConformity {
 /// appended), that run kept only when it gains on the first (gains_on);
 /// S35.10: a third run, where a move those flips do not let through is
 /// tried after a sequence of up to 3 flips, kept only when it gains on the
-/// run kept; `flip` false: the first run only.
+/// run kept; `flip` false: the first run only. S35.11: a conformed piece's
+/// chords split at the input feature points off them (`split_chords`,
+/// with `split_edges`).
 FeatureConformity conform_features(d3::TetMeshF& mesh, const std::vector<std::array<std::uint32_t, 3>>& boundary,
-                                   const Features& features, double h, bool split_edges = true, bool flip = true);
+                                   const Features& features, double h, bool split_edges = true, bool flip = true,
+                                   bool split_chords = true);
+
+/// S35.11's tolerance, in units of h: a chord is split at an input feature
+/// point more than this far from it.
+inline constexpr double kChordTolerance = 1e-9;
+
+/// S35.11: of the vertices of C's polyline strictly between arc lengths
+/// `s_from` and `s_to`, the one farthest from the segment ab (the first on
+/// a tie) when it is more than `tolerance` from it; -1 otherwise.
+std::int64_t chord_split_vertex(const FeatureCurve& C, const Vec3& a, const Vec3& b, double s_from, double s_to,
+                                double tolerance);
 
 /// S35.8's and S35.9's test: x's conformed corners and curves contain a's,
 /// and are more.
@@ -77,11 +92,12 @@ struct FeatureReport {
   std::size_t corners_conformed = 0, curves_conformed = 0;
   double distance = -1;                       ///< with the statistics, in world units; -1 when not computed
   std::size_t splits = 0, splits_undone = 0;  ///< S35's splits kept, and undone (S35.4)
-  std::size_t flips = 0;                      ///< S35.9's flips kept
-  std::size_t moves_undone = 0;               ///< moves undone with them (S35.4)
-  bool crease_cuts = false;                   ///< S35.7-S35.8 ran (--crease-cuts)
-  std::size_t placed = 0;                     ///< S35.8: vertices placed on the curves in candidate B
-  std::size_t placed_kept = 0;                ///< S35.8: vertices at a placed point in the mesh kept
+  std::size_t chord_splits = 0, chord_splits_refused = 0;  ///< S35.11's chord splits made, and refused
+  std::size_t flips = 0;                                   ///< S35.9's flips kept
+  std::size_t moves_undone = 0;                            ///< moves undone with them (S35.4)
+  bool crease_cuts = false;                                ///< S35.7-S35.8 ran (--crease-cuts)
+  std::size_t placed = 0;                                  ///< S35.8: vertices placed on the curves in candidate B
+  std::size_t placed_kept = 0;                             ///< S35.8: vertices at a placed point in the mesh kept
 };
 
 /// S33's report of `features` conformed as `conformity` says (the distance

@@ -84,11 +84,12 @@ struct Candidate {
   FeatureConformity conformity;
 };
 
-Candidate conformed(Stuffed stuffed, const Features& features, double h, bool split_edges, double* seconds) {
+Candidate conformed(Stuffed stuffed, const Features& features, double h, bool split_edges, bool split_chords,
+                    double* seconds) {
   const auto t0 = Clock::now();
   Candidate c{std::move(stuffed), {}, {}};
   (void)io::regions_of(c.stuffed.mesh.tets, &c.boundary);
-  c.conformity = conform_features(c.stuffed.mesh, c.boundary, features, h, split_edges);
+  c.conformity = conform_features(c.stuffed.mesh, c.boundary, features, h, split_edges, true, split_chords);
   // S35's splits and S35.9's flips changed the tetrahedra: their boundary again.
   if (c.conformity.splits > 0 || c.conformity.flips > 0) (void)io::regions_of(c.stuffed.mesh.tets, &c.boundary);
   if (seconds) *seconds += seconds_since(t0);
@@ -178,19 +179,19 @@ Stuffed stuff_on_creases(const Shape& shape, const Fit& fit, const StuffOptions&
 
 CreaseConformed stuff_and_conform_on_creases(const Shape& shape, const Fit& fit, const StuffOptions& options,
                                              const Features& features, double delta, double h, bool split_edges,
-                                             PhaseTimes* times, double* feature_seconds,
+                                             bool split_chords, PhaseTimes* times, double* feature_seconds,
                                              const std::function<void(std::size_t, double)>& on_lattice) {
   if (times) *times = {};
   if (feature_seconds) *feature_seconds = 0;
   // A: the run without S35.7, the same calls as mesh_shape's.
   Stuffed without = stuff_fitted(shape, fit, options, Impl::fast, times, on_lattice);
-  return conform_on_creases(std::move(without), shape, fit, options, features, delta, h, split_edges, times,
-                            feature_seconds);
+  return conform_on_creases(std::move(without), shape, fit, options, features, delta, h, split_edges, split_chords,
+                            times, feature_seconds);
 }
 
 CreaseConformed conform_on_creases(Stuffed without, const Shape& shape, const Fit& fit, const StuffOptions& options,
                                    const Features& features, double delta, double h, bool split_edges,
-                                   PhaseTimes* times, double* feature_seconds) {
+                                   bool split_chords, PhaseTimes* times, double* feature_seconds) {
   const auto add = [times](const PhaseTimes& t) {
     if (!times) return;
     times->lattice += t.lattice, times->mesh += t.mesh, times->cut += t.cut, times->warp += t.warp;
@@ -198,7 +199,7 @@ CreaseConformed conform_on_creases(Stuffed without, const Shape& shape, const Fi
   };
   CreaseConformed r;
   PhaseTimes t;
-  Candidate a = conformed(std::move(without), features, h, split_edges, feature_seconds);
+  Candidate a = conformed(std::move(without), features, h, split_edges, split_chords, feature_seconds);
   const auto keep = [&r](Candidate&& c, CreaseCandidate which, std::size_t placed) {
     r.stuffed = std::move(c.stuffed);
     r.boundary = std::move(c.boundary);
@@ -209,7 +210,7 @@ CreaseConformed conform_on_creases(Stuffed without, const Shape& shape, const Fi
   // B: S35.7 with every curve.
   {
     Candidate b = conformed(stuff_on_creases(shape, fit, options, features, delta, &r.all_curves, &t), features, h,
-                            split_edges, feature_seconds);
+                            split_edges, split_chords, feature_seconds);
     add(t);
     r.candidates = 2;
     if (gains_on(b.conformity, a.conformity)) {
@@ -227,7 +228,7 @@ CreaseConformed conform_on_creases(Stuffed without, const Shape& shape, const Fi
       b = {};
       CreaseCuts cuts;
       Candidate c = conformed(stuff_on_creases(shape, fit, options, gained, delta, &cuts, &t), features, h, split_edges,
-                              feature_seconds);
+                              split_chords, feature_seconds);
       add(t);
       r.candidates = 3;
       if (gains_on(c.conformity, a.conformity)) {

@@ -59,14 +59,15 @@ struct CreaseConformed {
 
 /// S35.8 on a fitted lattice: candidates A, B and (when B is not kept and
 /// B conforms a curve A does not) C, each S5-S9 (fast) then
-/// conform_features(`h`, `split_edges`), and the one kept: B when its
+/// conform_features(`h`, `split_edges`, `split_chords`), and the one kept: B when its
 /// conformed corners and curves contain A's and are more, else C when
 /// likewise, else A (the mesh without S35.7, byte for byte). `times`
 /// receives every candidate's S3-S9 phases, added up, `feature_seconds`
 /// the seconds of their S30-S35.
 CreaseConformed stuff_and_conform_on_creases(const Shape& shape, const Fit& fit, const StuffOptions& options,
                                              const Features& features, double delta, double h, bool split_edges,
-                                             PhaseTimes* times = nullptr, double* feature_seconds = nullptr,
+                                             bool split_chords, PhaseTimes* times = nullptr,
+                                             double* feature_seconds = nullptr,
                                              const std::function<void(std::size_t, double)>& on_lattice = {});
 
 /// S35.8 from candidate A's stuffing on: `without` is S5-S9's mesh on `fit`
@@ -77,6 +78,6 @@ CreaseConformed stuff_and_conform_on_creases(const Shape& shape, const Fit& fit,
 /// not reset.
 CreaseConformed conform_on_creases(Stuffed without, const Shape& shape, const Fit& fit, const StuffOptions& options,
                                    const Features& features, double delta, double h, bool split_edges,
-                                   PhaseTimes* times = nullptr, double* feature_seconds = nullptr);
+                                   bool split_chords, PhaseTimes* times = nullptr, double* feature_seconds = nullptr);
 
 }  // namespace bccmis::stuff

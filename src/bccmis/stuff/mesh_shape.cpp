@@ -156,7 +156,8 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
   if (crease_cuts) {
     features = detect_features(shape.surface_triangles(), settings.features.angle);
     creased = stuff_and_conform_on_creases(shape, fit, options, features, settings.features.crease_cuts, fit.h,
-                                           settings.features.split_edges, &times, &crease_feature_seconds, on_lattice);
+                                           settings.features.split_edges, settings.features.split_chords, &times,
+                                           &crease_feature_seconds, on_lattice);
     r.stuffed = std::move(creased.stuffed);
     const CreaseCuts& b = creased.all_curves;
     say(std::to_string(b.placed) + " vertices placed on the creases, " + std::to_string(b.excluded) +
@@ -202,7 +203,7 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
     } else {
       features = detect_features(shape.surface_triangles(), settings.features.angle);
       conformity = conform_features(r.stuffed.mesh, r.boundary, features, fit.h, settings.features.split_edges,
-                                    settings.features.flip);
+                                    settings.features.flip, settings.features.split_chords);
       // S35's splits and S35.9's flips changed the tetrahedra: their boundary and regions again.
       if (conformity.splits > 0 || conformity.flips > 0) r.regions = io::regions_of(r.stuffed.mesh.tets, &r.boundary);
     }
@@ -216,8 +217,9 @@ Meshed mesh_shape(const Shape& world, const Settings& settings, const Progress& 
         " corners; conformed " + std::to_string(conformity.corners_conformed) + " corners, " +
         std::to_string(conformity.curves_conformed) + " of " + std::to_string(features.curves.size()) + " curves; " +
         std::to_string(conformity.moves) + " moves, " + std::to_string(conformity.refused) + " refused by the guard, " +
-        std::to_string(conformity.splits) + " edges split, " + std::to_string(conformity.splits_undone) +
-        " splits undone");
+        std::to_string(conformity.splits) + " edges split (" + std::to_string(conformity.chord_splits) + " chords, " +
+        std::to_string(conformity.chord_splits_refused) + " chord splits refused), " +
+        std::to_string(conformity.splits_undone) + " splits undone");
   }
   const auto t1 = Clock::now();
   // S11 first, so that S27's topology errors below come from meshes that pass it.

@@ -45,6 +45,7 @@ struct FeatureSettings {
   double angle = kDefaultFeatureAngle;  ///< phi, degrees (S29)
   bool split_edges = true;              ///< S35's splits; false: S30-S34 only
   bool flip = true;                     ///< S35.9's flips at a refused move; false: none
+  bool split_chords = true;             ///< S35.11's chord splits (with split_edges); false: none
   double crease_cuts = 0;               ///< S35.7's delta (of h), kept as S35.8 says; 0: none
 };
 
