@@ -296,8 +296,7 @@ TEST(StuffAnimate, NearestIsTheDistanceWithAPointOfTheSurface) {
       ASSERT_EQ(n.distance, shape->distance(p)) << i;
       ASSERT_TRUE(n.point.has_value());
       EXPECT_LE(shape->distance(*n.point), 1e-14) << i;
-      EXPECT_NEAR(std::hypot(p[0] - (*n.point)[0], p[1] - (*n.point)[1], p[2] - (*n.point)[2]), n.distance, 1e-14)
-          << i;
+      EXPECT_NEAR(std::hypot(p[0] - (*n.point)[0], p[1] - (*n.point)[1], p[2] - (*n.point)[2]), n.distance, 1e-14) << i;
     }
   // No point where the distance is not the distance to one surface.
   EXPECT_FALSE(make_builtin("spheres")->nearest({0, 0, 0}).point.has_value());

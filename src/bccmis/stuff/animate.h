@@ -153,8 +153,8 @@ class MovingLattice {
   };
   PackedIndex asked_index_;
   std::vector<Asked> asked_;
-  bool lipschitz_ = false;  ///< S37 fact 1: the shape's distance() is 1-Lipschitz
-  double rounding_ = 0;     ///< S37 fact 2: e
+  bool lipschitz_ = false;         ///< S37 fact 1: the shape's distance() is 1-Lipschitz
+  double rounding_ = 0;            ///< S37 fact 2: e
   bool surface_distance_ = false;  ///< S39a: |f| is the distance to the surface
   std::vector<d3::Point> point_;
   std::vector<std::uint32_t> refs_;

@@ -46,8 +46,7 @@ inline DistanceBound widened(const DistanceBound& f, double r, double e) {
 /// S39: the bound at x lowered to x's distance from q, a point of the
 /// surface now, `e` the rounding's share (nothing known if rounding beyond
 /// e left it empty); the value itself stays.
-inline DistanceBound closer(DistanceBound f, const std::array<double, 3>& x, const std::array<double, 3>& q,
-                            double e) {
+inline DistanceBound closer(DistanceBound f, const std::array<double, 3>& x, const std::array<double, 3>& q, double e) {
   if (f.exact()) return f;
   const double dx = x[0] - q[0], dy = x[1] - q[1], dz = x[2] - q[2];
   f.hi = std::min(f.hi, std::sqrt(dx * dx + dy * dy + dz * dz) + e);
@@ -59,9 +58,12 @@ inline DistanceBound closer(DistanceBound f, const std::array<double, 3>& x, con
 inline DistanceBound both(const DistanceBound& a, const DistanceBound& b) {
   DistanceBound r{std::max(a.lo, b.lo), std::min(a.hi, b.hi),
                   a.nearest != DistanceBound::kNoPoint ? a.nearest : b.nearest};
-  if (a.exact()) r.lo = r.hi = a.lo;
-  else if (b.exact()) r.lo = r.hi = b.lo;
-  else if (r.lo > r.hi) return {};
+  if (a.exact())
+    r.lo = r.hi = a.lo;
+  else if (b.exact())
+    r.lo = r.hi = b.lo;
+  else if (r.lo > r.hi)
+    return {};
   return r;
 }
 
